@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs what usina needs to build and test, from Debian 12's packages.
+# Run as root (or with sudo) on a fresh Debian 12 machine.
+set -euo pipefail
+pkgs=(
+  build-essential cmake ninja-build pkg-config git python3
+  libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libexpected-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  clang-14 libclang-rt-14-dev clang-format
+)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,115 @@
+// The canonical operations: the one stream between front ends and back ends
+// (DESIGN.md; the trace format of spec/trace.md). Plain data, absolute mm,
+// after every offset, rotation, scale and mirror: what the tool centre does.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/diagnostic.hpp"
+#include "core/vec3.hpp"
+
+namespace usina::canon {
+
+using core::Vec2;
+using core::Vec3;
+
+// Rotary axes A, B, C in degrees.
+using Abc = std::array<double, 3>;
+
+struct Traverse {
+  Vec3 to;
+  Abc abc{};
+};
+
+struct Feed {
+  Vec3 to;
+  std::optional<double> f;  // mm/min; empty under inverse-time or per-revolution feed
+  Abc abc{};
+};
+
+// Arc or helix about `center` (axial coordinate of the start), axis `normal`;
+// turn > 0 counter-clockwise seen from the normal's tip, |turn| − 1 extra turns.
+struct Arc {
+  Vec3 to;
+  Vec3 center;
+  Vec3 normal;
+  int turn = 1;
+  std::optional<double> f;
+  Abc abc{};
+};
+
+struct Probe {
+  Vec3 to;
+  Abc abc{};
+};
+
+struct Dwell {
+  double s = 0.0;
+};
+
+struct ToolChange {
+  int tool = 0;
+  std::optional<double> diameter;  // mm
+};
+
+enum class SpindleDir { Cw, Ccw, Off };
+
+struct Spindle {
+  double rpm = 0.0;
+  SpindleDir dir = SpindleDir::Off;
+};
+
+struct Coolant {
+  bool mist = false;
+  bool flood = false;
+};
+
+// A drilled hole (feature), emitted besides the moves that make it.
+struct Hole {
+  Vec3 at;  // centre of the hole at the top
+  double diameter = 0.0;
+  double depth = 0.0;
+};
+
+// A closed outline: straight segments and arcs (turn ±1) from `start`.
+struct OutlineSegment {
+  Vec2 to;
+  std::optional<Vec2> center;
+  int turn = 0;
+};
+
+struct Outline {
+  Vec2 start;
+  std::vector<OutlineSegment> segs;
+};
+
+struct Pocket {
+  Outline outline;
+  double depth = 0.0;
+};
+
+struct Comment {
+  std::string text;
+};
+
+struct ProgramEnd {};
+
+using OpKind = std::variant<Traverse, Feed, Arc, Probe, Dwell, ToolChange, Spindle, Coolant, Hole,
+                            Pocket, Comment, ProgramEnd>;
+
+struct Op {
+  OpKind kind;
+  core::SourceLoc src;  // the block that made it
+};
+
+// The name of an op in the trace ("traverse", "feed", ...).
+const char* op_name(const OpKind& kind);
+
+// True for the ops that move the tool (traverse, feed, arc, probe).
+bool is_motion(const OpKind& kind);
+
+}  // namespace usina::canon

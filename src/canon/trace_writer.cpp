@@ -1,0 +1,234 @@
+#include "canon/trace_writer.hpp"
+
+#include <cmath>
+#include <iterator>
+
+namespace usina::canon {
+namespace {
+
+using Out = std::back_insert_iterator<fmt::memory_buffer>;
+
+// Shortest representation that round-trips; -0 written as 0.
+void num(Out out, double v) {
+  if (v == 0.0) v = 0.0;
+  fmt::format_to(out, "{}", v);
+}
+
+void vec(Out out, const Vec3& v) {
+  fmt::format_to(out, "[");
+  num(out, v.x);
+  fmt::format_to(out, ",");
+  num(out, v.y);
+  fmt::format_to(out, ",");
+  num(out, v.z);
+  fmt::format_to(out, "]");
+}
+
+void vec2(Out out, const Vec2& v) {
+  fmt::format_to(out, "[");
+  num(out, v.x);
+  fmt::format_to(out, ",");
+  num(out, v.y);
+  fmt::format_to(out, "]");
+}
+
+void abc(Out out, const Abc& a) {
+  if (a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0) return;
+  fmt::format_to(out, ",\"abc\":");
+  vec(out, {a[0], a[1], a[2]});
+}
+
+void feed(Out out, const std::optional<double>& f) {
+  fmt::format_to(out, ",\"f\":");
+  if (f) {
+    num(out, *f);
+  } else {
+    fmt::format_to(out, "null");
+  }
+}
+
+void json_string(Out out, std::string_view s) {
+  fmt::format_to(out, "\"");
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      fmt::format_to(out, "\\{}", c);
+    } else if (u < 0x20) {
+      fmt::format_to(out, "\\u{:04x}", u);
+    } else {
+      *out++ = c;
+    }
+  }
+  fmt::format_to(out, "\"");
+}
+
+const char* dir_name(SpindleDir d) {
+  switch (d) {
+    case SpindleDir::Cw: return "cw";
+    case SpindleDir::Ccw: return "ccw";
+    case SpindleDir::Off: return "off";
+  }
+  return "off";
+}
+
+struct JsonFields {
+  Out out;
+  void operator()(const Traverse& m) const {
+    fmt::format_to(out, ",\"to\":");
+    vec(out, m.to);
+    abc(out, m.abc);
+  }
+  void operator()(const Feed& m) const {
+    fmt::format_to(out, ",\"to\":");
+    vec(out, m.to);
+    feed(out, m.f);
+    abc(out, m.abc);
+  }
+  void operator()(const Arc& m) const {
+    fmt::format_to(out, ",\"to\":");
+    vec(out, m.to);
+    fmt::format_to(out, ",\"center\":");
+    vec(out, m.center);
+    fmt::format_to(out, ",\"normal\":");
+    vec(out, m.normal);
+    fmt::format_to(out, ",\"turn\":{}", m.turn);
+    feed(out, m.f);
+    abc(out, m.abc);
+  }
+  void operator()(const Probe& m) const {
+    fmt::format_to(out, ",\"to\":");
+    vec(out, m.to);
+    abc(out, m.abc);
+  }
+  void operator()(const Dwell& m) const {
+    fmt::format_to(out, ",\"s\":");
+    num(out, m.s);
+  }
+  void operator()(const ToolChange& m) const {
+    fmt::format_to(out, ",\"tool\":{},\"diameter\":", m.tool);
+    if (m.diameter) {
+      num(out, *m.diameter);
+    } else {
+      fmt::format_to(out, "null");
+    }
+  }
+  void operator()(const Spindle& m) const {
+    fmt::format_to(out, ",\"rpm\":");
+    num(out, m.rpm);
+    fmt::format_to(out, ",\"dir\":\"{}\"", dir_name(m.dir));
+  }
+  void operator()(const Coolant& m) const {
+    fmt::format_to(out, ",\"mist\":{},\"flood\":{}", m.mist, m.flood);
+  }
+  void operator()(const Hole& m) const {
+    fmt::format_to(out, ",\"at\":");
+    vec(out, m.at);
+    fmt::format_to(out, ",\"diameter\":");
+    num(out, m.diameter);
+    fmt::format_to(out, ",\"depth\":");
+    num(out, m.depth);
+  }
+  void operator()(const Pocket& m) const {
+    fmt::format_to(out, ",\"outline\":{{\"start\":");
+    vec2(out, m.outline.start);
+    fmt::format_to(out, ",\"segs\":[");
+    bool first = true;
+    for (const OutlineSegment& s : m.outline.segs) {
+      fmt::format_to(out, "{}{{\"to\":", first ? "" : ",");
+      first = false;
+      vec2(out, s.to);
+      if (s.center) {
+        fmt::format_to(out, ",\"center\":");
+        vec2(out, *s.center);
+        fmt::format_to(out, ",\"turn\":{}", s.turn);
+      }
+      fmt::format_to(out, "}}");
+    }
+    fmt::format_to(out, "]}},\"depth\":");
+    num(out, m.depth);
+  }
+  void operator()(const Comment& m) const {
+    fmt::format_to(out, ",\"text\":");
+    json_string(out, m.text);
+  }
+  void operator()(const ProgramEnd&) const {}
+};
+
+void write_json(Out out, const Op& op) {
+  fmt::format_to(out, "{{\"op\":\"{}\",\"src\":[{},{}]", op_name(op.kind), op.src.line, op.src.col);
+  std::visit(JsonFields{out}, op.kind);
+  fmt::format_to(out, "}}");
+}
+
+void xyz(Out out, const Vec3& v) { fmt::format_to(out, " X{:.4f} Y{:.4f} Z{:.4f}", v.x, v.y, v.z); }
+
+struct TextFields {
+  Out out;
+  void operator()(const Traverse& m) const { xyz(out, m.to); }
+  void operator()(const Feed& m) const {
+    xyz(out, m.to);
+    if (m.f) fmt::format_to(out, " F{:g}", *m.f);
+  }
+  void operator()(const Arc& m) const {
+    xyz(out, m.to);
+    fmt::format_to(out, " about ({:.4f}, {:.4f}, {:.4f}) turn {}", m.center.x, m.center.y,
+                   m.center.z, m.turn);
+    if (m.f) fmt::format_to(out, " F{:g}", *m.f);
+  }
+  void operator()(const Probe& m) const { xyz(out, m.to); }
+  void operator()(const Dwell& m) const { fmt::format_to(out, " {:g} s", m.s); }
+  void operator()(const ToolChange& m) const {
+    fmt::format_to(out, " T{}", m.tool);
+    if (m.diameter) fmt::format_to(out, " diameter {:g} mm", *m.diameter);
+  }
+  void operator()(const Spindle& m) const {
+    fmt::format_to(out, " {} {:g} rpm", dir_name(m.dir), m.rpm);
+  }
+  void operator()(const Coolant& m) const {
+    fmt::format_to(out, " mist {} flood {}", m.mist ? "on" : "off", m.flood ? "on" : "off");
+  }
+  void operator()(const Hole& m) const {
+    fmt::format_to(out, " at ({:.4f}, {:.4f}, {:.4f}) diameter {:g} depth {:g}", m.at.x, m.at.y,
+                   m.at.z, m.diameter, m.depth);
+  }
+  void operator()(const Pocket& m) const {
+    fmt::format_to(out, " {} segments, depth {:g}", m.outline.segs.size(), m.depth);
+  }
+  void operator()(const Comment& m) const { fmt::format_to(out, " {}", m.text); }
+  void operator()(const ProgramEnd&) const {}
+};
+
+}  // namespace
+
+std::string to_jsonl(const Op& op) {
+  fmt::memory_buffer buf;
+  write_json(std::back_inserter(buf), op);
+  return fmt::to_string(buf);
+}
+
+TraceWriter::~TraceWriter() { finish(); }
+
+void TraceWriter::on(const Op& op) {
+  auto out = std::back_inserter(buf_);
+  if (format_ == TraceFormat::Jsonl) {
+    write_json(out, op);
+  } else {
+    fmt::format_to(out, "{:>5}:{:<3} {:<8}", op.src.line, op.src.col, op_name(op.kind));
+    std::visit(TextFields{out}, op.kind);
+  }
+  buf_.push_back('\n');
+  flush_if_full();
+}
+
+void TraceWriter::flush_if_full() {
+  if (buf_.size() >= (64u << 10)) finish();
+}
+
+void TraceWriter::finish() {
+  if (buf_.size() == 0) return;
+  std::fwrite(buf_.data(), 1, buf_.size(), out_);
+  buf_.clear();
+  std::fflush(out_);
+}
+
+}  // namespace usina::canon

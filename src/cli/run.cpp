@@ -1,0 +1,122 @@
+#include "cli/run.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/source.hpp"
+#include "gcode/interp/interpreter.hpp"
+#include "gcode/var_file.hpp"
+
+namespace usina::cli {
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  app.add_option("file", o.file, "NC program ('-' reads standard input)")->required();
+  app.add_option("--dialect", o.dialect, "the control's language")
+      ->check(CLI::IsMember({"rs274ngc"}))
+      ->capture_default_str();
+  app.add_option("--tool-table", o.tool_table, "LinuxCNC tool table (lengths in machine units)");
+  app.add_option("--machine-units", o.machine_units,
+                 "units of the machine: of the tool table, parameters and programs without G20/G21")
+      ->check(CLI::IsMember({"mm", "inch"}))
+      ->capture_default_str();
+  app.add_option("--var-file", o.var_file, "LinuxCNC parameter file to start from");
+  app.add_option("--subroutine-path", o.subroutine_path,
+                 "folders searched for o<name> call files, separated by ':' (then the program's own)");
+  app.add_option("--peck-clearance", o.peck_clearance, "G73/G83 retract above the last peck, mm")
+      ->capture_default_str();
+  app.add_option("--max-iterations", o.max_iterations, "iterations a loop may run before it is an error")
+      ->capture_default_str();
+  app.add_flag("--no-block-delete", o.no_block_delete, "run the blocks that start with '/'");
+}
+
+namespace {
+
+class StderrDiagnostics final : public core::DiagnosticSink {
+ public:
+  explicit StderrDiagnostics(const core::SourceManager& sources) : sources_(sources) {}
+  void report(core::Diagnostic d) override {
+    if (d.severity == core::Severity::Error) ++errors_;
+    const std::string text = core::render(d, sources_);
+    std::fwrite(text.data(), 1, text.size(), stderr);
+  }
+  int errors() const { return errors_; }
+
+ private:
+  const core::SourceManager& sources_;
+  int errors_ = 0;
+};
+
+std::unique_ptr<core::SourceFile> open_input(const std::string& path) {
+  if (path == "-") {
+    std::ostringstream ss;
+    ss << std::cin.rdbuf();
+    return core::SourceFile::from_string("<stdin>", ss.str());
+  }
+  std::string err;
+  auto f = core::SourceFile::open(path, err);
+  if (!f) fmt::print(stderr, "usina: error: cannot read {}: {}\n", path, err);
+  return f;
+}
+
+std::vector<std::string> split_path(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= s.size() && !s.empty()) {
+    const std::size_t end = s.find(':', start);
+    out.push_back(s.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+std::string folder_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+}  // namespace
+
+int run_program(const RunOptions& o, canon::Sink& sink) {
+  core::SourceManager sources;
+  StderrDiagnostics diags(sources);
+  auto program = open_input(o.file);
+  if (!program) return 2;
+  const std::uint32_t main_id = sources.add(std::move(program));
+
+  gcode::InterpOptions opts;
+  opts.machine_units = o.machine_units == "inch" ? core::LengthUnit::Inch : core::LengthUnit::Mm;
+  opts.peck_clearance_mm = o.peck_clearance;
+  opts.max_loop_iterations = o.max_iterations;
+  opts.block_delete = !o.no_block_delete;
+  opts.subroutine_path = split_path(o.subroutine_path);
+  if (o.file != "-") opts.subroutine_path.push_back(folder_of(o.file));
+
+  if (!o.tool_table.empty()) {
+    auto f = open_input(o.tool_table);
+    if (!f) return 2;
+    const std::uint32_t id = sources.add(std::move(f));
+    auto table = gcode::read_tool_table(*sources.get(id), id, core::mm_per(opts.machine_units), diags);
+    if (!table) return 2;
+    opts.tools = std::move(*table);
+  }
+  std::vector<gcode::VarFileEntry> vars;
+  if (!o.var_file.empty()) {
+    auto f = open_input(o.var_file);
+    if (!f) return 2;
+    const std::uint32_t id = sources.add(std::move(f));
+    auto read = gcode::read_var_file(*sources.get(id), id, diags);
+    if (!read) return 2;
+    vars = std::move(*read);
+  }
+  gcode::Interpreter interp(sources, std::move(opts), sink, diags);
+  for (const auto& v : vars) interp.set_parameter(v.number, v.value);
+  const bool ok = interp.run(main_id);
+  return ok && diags.errors() == 0 ? 0 : 1;
+}
+
+}  // namespace usina::cli

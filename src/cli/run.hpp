@@ -1,0 +1,32 @@
+// What the verbs that interpret a program share: the options (dialect,
+// tool table, units, parameter file, subroutine path) and one run.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "canon/sink.hpp"
+
+namespace usina::cli {
+
+struct RunOptions {
+  std::string file;
+  std::string dialect = "rs274ngc";
+  std::string tool_table;
+  std::string machine_units = "mm";
+  std::string var_file;
+  std::string subroutine_path;
+  double peck_clearance = 1.0;
+  long max_iterations = 10'000'000;
+  bool no_block_delete = false;
+};
+
+void add_run_options(CLI::App& app, RunOptions& o);
+
+// Interprets the program into `sink`, printing diagnostics to stderr.
+// Returns the exit status: 0, 1 when the program has an error, 2 when the
+// input cannot be read.
+int run_program(const RunOptions& o, canon::Sink& sink);
+
+}  // namespace usina::cli

@@ -1,0 +1,15 @@
+// The verbs of the usina command; each registers itself on the app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace usina::cli {
+
+void add_trace(CLI::App& app);
+void add_check(CLI::App& app);
+
+// The status the chosen verb left.
+int exit_status();
+void set_exit_status(int status);
+
+}  // namespace usina::cli

@@ -1,0 +1,708 @@
+// Canned cycles, move for move as LinuxCNC 2.10 makes them. The rules below
+// are LinuxCNC's (src/emc/rs274ngc/interp_cycles.cc, interp_convert.cc) and
+// were checked against its traces (shared/conformance/rs274ngc and the
+// Debian linuxcnc-uspace rs274); the code is usina's own.
+#include "gcode/interp/canned_cycles.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace usina::gcode {
+namespace {
+
+using canon::SpindleDir;
+using core::Code;
+using core::Plane;
+
+// Limits that keep a hostile block finite (DESIGN.md, "Errors and bad input").
+constexpr double kMaxRepeats = 100000;  // L
+constexpr long kMaxPecks = 100000;      // G73/G83 pecks in one hole
+constexpr long kMaxPasses = 100000;     // G76 passes
+constexpr double kMaxMoves = 4e6;       // moves one block may make
+
+InterpError error(Code code, std::string message) { return {code, std::move(message)}; }
+
+int g_of(int motion) { return motion / 10; }
+
+char axis_letter(int axis) { return "XYZ"[axis]; }
+
+const char* plane_name(Plane p) {
+  switch (p) {
+    case Plane::XY: return "the XY plane (G17)";
+    case Plane::ZX: return "the ZX plane (G18)";
+    case Plane::YZ: return "the YZ plane (G19)";
+  }
+  return "?";
+}
+
+// LinuxCNC computes in program units; usina holds mm. mm / 25.4 can miss the
+// number LinuxCNC read by an ulp, and then a depth that is an exact multiple
+// of Q gets one peck more or less; 15 significant digits bring it back.
+struct Units {
+  double mm = 1.0;  // mm per program unit
+
+  double in(double v) const {
+    if (mm == 1.0) return v;
+    std::array<char, 40> buf{};
+    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v / mm,
+                                   std::chars_format::general, 15);
+    double u = v / mm;
+    std::from_chars(buf.data(), res.ptr, u);
+    return u;
+  }
+
+  double out(double u) const { return u * mm; }
+  Vec3 out(const Vec3& u) const { return u * mm; }
+};
+
+// A whole number as LinuxCNC reads one (read_integer_value): within 0.0001.
+std::optional<long> whole_number(double v) {
+  if (!(std::abs(v) < 1e9)) return std::nullopt;
+  const double f = std::floor(v);
+  if (v - f > 0.9999) return static_cast<long>(f) + 1;
+  if (v - f > 0.0001) return std::nullopt;
+  return static_cast<long>(f);
+}
+
+// LinuxCNC's cycle_traverse and cycle_feed: (a, b) in the plane, c on its normal.
+class Mover {
+ public:
+  Mover(MotionTarget& target, Plane plane, Units units)
+      : target_(target), plane_(plane), units_(units) {}
+
+  Vec3 at(double a, double b, double c) const {
+    return units_.out(core::from_plane({a, b}, c, plane_));
+  }
+
+  void traverse(double a, double b, double c) { target_.traverse(at(a, b, c)); }
+  void feed(double a, double b, double c) { target_.feed(at(a, b, c)); }
+  void dwell(double s) { target_.dwell(s); }
+  void spindle(SpindleDir d) { target_.spindle(d); }
+  void hole(double a, double b, double r, double bottom) {
+    target_.hole(at(a, b, r), units_.out(r - bottom));
+  }
+
+ private:
+  MotionTarget& target_;
+  Plane plane_;
+  Units units_;
+};
+
+// One block of G73/G74/G81-G89, in program units, named as in convert_cycle_xy.
+struct DrillPlan {
+  int motion = 810;
+  Plane plane = Plane::XY;
+  double cur_a = 0, cur_b = 0, cur_c = 0;  // the current point (c on the plane's normal)
+  double a = 0, b = 0;                     // the hole before the first repeat's increment
+  double da = 0, db = 0, dradius = 0, dtheta = 0;  // G91 increments per repeat
+  double r = 0, bottom = 0, clear = 0;
+  bool raise = false;         // rapid up to R first: the initial level is below it
+  double middle = 0;          // G87: top of the back bore
+  double off_a = 0, off_b = 0;  // G87: offsets of the tool's way in
+  double dwell = 0, peck = 0, clearance = 0;
+  long repeats = 1;
+  SpindleDir spindle = SpindleDir::Off;
+};
+
+// The words of the block with the sticky ones filled in (mm, as written).
+struct Resolved {
+  double r = 0, bottom = 0, p = 0, q = 0;
+  std::array<double, 3> ijk{};
+};
+
+std::optional<InterpError> read_repeats(const CycleWords& w, int motion, long& repeats) {
+  repeats = 1;
+  if (!w.l) return std::nullopt;
+  const std::optional<long> l = whole_number(*w.l);
+  if (*w.l == 0) {
+    return error(Code::BadWordValue,
+                 fmt::format("G{} L0: a cycle cannot run zero times; give L1 or more, or no L",
+                             g_of(motion)));
+  }
+  if (*w.l > kMaxRepeats) {
+    return error(Code::TooManyIterations,
+                 fmt::format("G{} L{:g} repeats the cycle more than {:g} times", g_of(motion),
+                             *w.l, kMaxRepeats));
+  }
+  if (!l || *l < 0) {
+    return error(Code::BadWordValue,
+                 fmt::format("G{} L{:g}: the number of repeats must be a positive whole number",
+                             g_of(motion), *w.l));
+  }
+  repeats = *l;
+  return std::nullopt;
+}
+
+// R and the bottom: from the block, or kept from the last block of the same
+// cycle (LinuxCNC convert_cycle: cycle_r; convert_cycle_xy: cycle_cc).
+std::optional<InterpError> resolve_levels(const CycleWords& w, const CycleModal& m,
+                                          const CannedCycles::Sticky& s, Resolved& out) {
+  const int g = g_of(m.motion);
+  if (!w.r && m.motion_mode_changed) {
+    return error(Code::MissingWord,
+                 fmt::format("G{} needs R, the retract plane, in the block that starts the cycle",
+                             g));
+  }
+  const int normal = core::axes_of(m.plane).axial;
+  const std::array<const std::optional<double>*, 3> axis{&w.x, &w.y, &w.z};
+  const std::optional<double>& bottom = *axis[static_cast<std::size_t>(normal)];
+  if (!bottom && m.motion_mode_changed) {
+    return error(Code::MissingWord,
+                 fmt::format("G{} in {} needs {}, the bottom of the hole, in the block that "
+                             "starts the cycle",
+                             g, plane_name(m.plane), axis_letter(normal)));
+  }
+  out.r = w.r.value_or(s.r);
+  out.bottom = bottom.value_or(s.bottom);
+  return std::nullopt;
+}
+
+// P, Q, I, J, K as each cycle needs them (convert_cycle_xy, per cycle).
+std::optional<InterpError> resolve_cycle_words(const CycleWords& w, const CycleModal& m,
+                                               const CannedCycles::Sticky& s, Resolved& out) {
+  const int g = g_of(m.motion);
+  const bool dwells = g == 82 || g == 86 || g == 88 || g == 89;
+  if (dwells && !w.p && m.motion_mode_changed) {
+    return error(Code::MissingWord,
+                 fmt::format("G{} needs P, the dwell in seconds, in the block that starts the "
+                             "cycle",
+                             g));
+  }
+  out.p = w.p.value_or(s.p);  // G74/G84 dwell P (or the last P of any cycle; 0 at first)
+  if (out.p < 0) {
+    return error(Code::BadWordValue,
+                 fmt::format("G{} P{:g}: the dwell must be 0 seconds or more", g, out.p));
+  }
+  if ((g == 73 || g == 83) && !w.q && m.motion_mode_changed) {
+    return error(Code::MissingWord,
+                 fmt::format("G{} needs Q, the peck depth, in the block that starts the cycle", g));
+  }
+  out.q = w.q.value_or(s.q);
+  if ((g == 73 || g == 83) && out.q <= 0) {
+    return error(Code::CycleBadValue,
+                 fmt::format("G{} Q{:g}: the peck depth must be greater than 0 mm", g, out.q));
+  }
+  const std::array<const std::optional<double>*, 3> ijk{&w.i, &w.j, &w.k};
+  const std::array<double, 3> kept{s.i, s.j, s.k};
+  for (std::size_t n = 0; n < 3; ++n) {
+    if (g == 87 && !*ijk[n] && m.motion_mode_changed) {
+      return error(Code::MissingWord,
+                   fmt::format("G87 needs I, J and K (the offset of the tool's way in and the top "
+                               "of the back bore) in the block that starts the cycle; {} is "
+                               "missing",
+                               "IJK"[n]));
+    }
+    out.ijk[n] = ijk[n]->value_or(kept[n]);
+  }
+  return std::nullopt;
+}
+
+// LinuxCNC checks the spindle inside each cycle (convert_cycle_g74_g84, _g86, _g87, _g88).
+std::optional<InterpError> check_spindle(int motion, SpindleDir dir) {
+  const int g = g_of(motion);
+  const auto turning = [](SpindleDir d) { return d == SpindleDir::Off ? "stopped" : "turning"; };
+  if (g == 84 && dir != SpindleDir::Cw) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G84 taps right-hand: start the spindle clockwise (M3) first; it is "
+                             "{}{}",
+                             turning(dir), dir == SpindleDir::Ccw ? " counter-clockwise" : ""));
+  }
+  if (g == 74 && dir != SpindleDir::Ccw) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G74 taps left-hand: start the spindle counter-clockwise (M4) first; "
+                             "it is {}{}",
+                             turning(dir), dir == SpindleDir::Cw ? " clockwise" : ""));
+  }
+  if ((g == 86 || g == 87 || g == 88 || g == 76) && dir == SpindleDir::Off) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G{} needs the spindle turning: start it with M3 or M4 first", g));
+  }
+  return std::nullopt;
+}
+
+// convert_cycle_xy/_zx/_yz: the hole, R, bottom and clear level in program units.
+std::optional<InterpError> plan_levels(const CycleWords& w, const CycleModal& m,
+                                       const Resolved& v, Units u, double initial,
+                                       DrillPlan& p) {
+  const core::PlaneAxes ax = core::axes_of(m.plane);
+  const std::array<const std::optional<double>*, 3> axis{&w.x, &w.y, &w.z};
+  const auto word = [&](int n) { return *axis[static_cast<std::size_t>(n)]; };
+  p.a = p.cur_a;
+  p.b = p.cur_b;
+  if (m.incremental) {  // NCMS p. 98: R from the initial level, the bottom from R
+    p.da = word(ax.first) ? u.in(*word(ax.first)) : 0.0;
+    p.db = word(ax.second) ? u.in(*word(ax.second)) : 0.0;
+    p.dradius = w.polar_radius ? u.in(*w.polar_radius) : 0.0;
+    p.dtheta = w.polar_angle ? *w.polar_angle * (std::numbers::pi / 180.0) : 0.0;
+    p.r = u.in(v.r) + initial;
+    p.bottom = p.r + u.in(v.bottom);
+  } else {
+    if (word(ax.first)) p.a = u.in(*word(ax.first));
+    if (word(ax.second)) p.b = u.in(*word(ax.second));
+    if (w.polar_radius || w.polar_angle) {
+      const double radius = w.polar_radius ? u.in(*w.polar_radius) : std::hypot(p.b, p.a);
+      const double theta =
+          w.polar_angle ? *w.polar_angle * (std::numbers::pi / 180.0) : std::atan2(p.b, p.a);
+      p.a = radius * std::cos(theta);
+      p.b = radius * std::sin(theta);
+    }
+    p.r = u.in(v.r);
+    p.bottom = u.in(v.bottom);
+  }
+  if (p.r < p.bottom) {
+    const char n = axis_letter(ax.axial);
+    return error(Code::CycleBadValue,
+                 fmt::format("G{}: the retract plane R ({}{:g} mm) is below the bottom of the "
+                             "hole ({}{:g} mm); R must be at or above the bottom{}",
+                             g_of(m.motion), n, u.out(p.r), n, u.out(p.bottom),
+                             m.incremental ? " (under G91 R counts from the initial level and "
+                                             "the bottom from R)"
+                                           : ""));
+  }
+  p.raise = initial < p.r;  // below the R plane: rapid straight up to it first
+  p.clear = m.retract_to_r ? p.r : std::max(initial, p.r);
+  const double k = u.in(v.ijk[static_cast<std::size_t>(ax.axial)]);
+  p.middle = m.incremental ? p.bottom + k : k;  // G87: K from the bottom under G91
+  p.off_a = u.in(v.ijk[static_cast<std::size_t>(ax.first)]);
+  p.off_b = u.in(v.ijk[static_cast<std::size_t>(ax.second)]);
+  return std::nullopt;
+}
+
+// CYCLE_MACRO's increments for one repeat; false at the origin, where an
+// incremental polar move has no direction.
+bool advance(const DrillPlan& p, double& a, double& b) {
+  a += p.da;
+  b += p.db;
+  if (p.dradius != 0.0) {
+    if (a == 0.0 && b == 0.0) return false;
+    const double theta = std::atan2(b, a);
+    const double radius = std::hypot(b, a) + p.dradius;
+    a = radius * std::cos(theta);
+    b = radius * std::sin(theta);
+  }
+  if (p.dtheta != 0.0) {
+    if (a == 0.0 && b == 0.0) return false;
+    const double theta = std::atan2(b, a) + p.dtheta;
+    const double radius = std::hypot(b, a);
+    a = radius * std::cos(theta);
+    b = radius * std::sin(theta);
+  }
+  return true;
+}
+
+long count_pecks(const DrillPlan& p) {
+  long n = 0;
+  for (double d = p.r - p.peck; d > p.bottom && n <= kMaxPecks; d -= p.peck) ++n;
+  return n;
+}
+
+// Everything that could still fail, before the first move.
+std::optional<InterpError> check_plan(const DrillPlan& p) {
+  if (auto e = check_spindle(p.motion, p.spindle)) return e;
+  double a = p.a;
+  double b = p.b;
+  for (long n = 0; n < p.repeats; ++n) {
+    if (!advance(p, a, b)) {
+      return error(Code::CycleBadValue,
+                   fmt::format("G{}: an incremental polar step (G91 @ or ^) from X0 Y0 has no "
+                               "direction; start the cycle away from the origin",
+                               g_of(p.motion)));
+    }
+  }
+  const bool pecks = p.motion == 730 || p.motion == 830;
+  const long n = pecks ? count_pecks(p) : 0;
+  if (n > kMaxPecks || static_cast<double>(p.repeats) * static_cast<double>(3 * n + 12) > kMaxMoves) {
+    return error(Code::TooManyIterations,
+                 fmt::format("G{} would make more than {:g} moves (Q{:g} mm is too small for the "
+                             "depth, or L too large)",
+                             g_of(p.motion), kMaxMoves, p.peck));
+  }
+  return std::nullopt;
+}
+
+// The moves to the hole (CYCLE_MACRO): the first repeat moves in the plane at
+// the current level, raised to R if it was below, then down to R; later
+// repeats move at the clear level.
+void move_over(Mover& m, const DrillPlan& p, double a, double b, bool first, double current) {
+  if (first && current > p.r) {
+    m.traverse(a, b, current);
+    m.traverse(a, b, p.r);
+    return;
+  }
+  m.traverse(a, b, p.clear);
+  if (p.clear > p.r) m.traverse(a, b, p.r);
+}
+
+// G81 drilling (convert_cycle_g81), G82 with a dwell at the bottom (_g82).
+void g81_g82(Mover& m, const DrillPlan& p, double a, double b) {
+  m.feed(a, b, p.bottom);
+  if (p.motion == 820) m.dwell(p.dwell);
+  m.traverse(a, b, p.clear);
+}
+
+// G73 chip breaking: back off by the peck clearance after each peck (_g73).
+void g73(Mover& m, const DrillPlan& p, double a, double b) {
+  for (double d = p.r - p.peck; d > p.bottom; d -= p.peck) {
+    m.feed(a, b, d);
+    m.traverse(a, b, d + p.clearance);
+  }
+  m.feed(a, b, p.bottom);
+  m.traverse(a, b, p.clear);
+}
+
+// G83 peck drilling: out to R after each peck, then rapid back down to the
+// peck clearance above the last depth (_g83).
+void g83(Mover& m, const DrillPlan& p, double a, double b) {
+  for (double d = p.r - p.peck; d > p.bottom; d -= p.peck) {
+    m.feed(a, b, d);
+    m.traverse(a, b, p.r);
+    m.traverse(a, b, d + p.clearance);
+  }
+  m.feed(a, b, p.bottom);
+  m.traverse(a, b, p.clear);
+}
+
+// G84 right-hand and G74 left-hand floating tapping (convert_cycle_g74_g84).
+// In G18 and G19 LinuxCNC hands the hole's coordinates to cycle_feed in
+// another order than every other cycle does, so both feeds go to a point off
+// the hole (its traces show it: tests/interp/g84/g18, g19); usina does the same.
+void g74_g84(Mover& m, const DrillPlan& p, double a, double b) {
+  const bool right = p.motion == 840;
+  const auto tap_feed = [&](double c) {
+    switch (p.plane) {
+      case Plane::XY: m.feed(a, b, c); break;
+      case Plane::ZX: m.feed(b, c, a); break;
+      case Plane::YZ: m.feed(c, a, b); break;
+    }
+  };
+  tap_feed(p.bottom);
+  m.spindle(SpindleDir::Off);
+  m.spindle(right ? SpindleDir::Ccw : SpindleDir::Cw);
+  m.dwell(p.dwell);
+  tap_feed(p.clear);
+  m.spindle(SpindleDir::Off);
+  m.spindle(right ? SpindleDir::Cw : SpindleDir::Ccw);
+}
+
+// G85 boring, feed out to R (_g85); G89 the same with a dwell, feed out to the clear level (_g89).
+void g85_g89(Mover& m, const DrillPlan& p, double a, double b) {
+  m.feed(a, b, p.bottom);
+  if (p.motion == 890) {
+    m.dwell(p.dwell);
+    m.feed(a, b, p.clear);
+    return;
+  }
+  m.feed(a, b, p.r);
+  m.traverse(a, b, p.clear);
+}
+
+// G86 boring: dwell, stop the spindle, rapid out, restart it (_g86).
+void g86(Mover& m, const DrillPlan& p, double a, double b) {
+  m.feed(a, b, p.bottom);
+  m.dwell(p.dwell);
+  m.spindle(SpindleDir::Off);
+  m.traverse(a, b, p.clear);
+  m.spindle(p.spindle);
+}
+
+// G87 back boring (_g87). The spindle orientations (ORIENT_SPINDLE) are not motion.
+void g87(Mover& m, const DrillPlan& p, double a, double b) {
+  const double oa = a + p.off_a;
+  const double ob = b + p.off_b;
+  m.traverse(oa, ob, p.r);
+  m.spindle(SpindleDir::Off);
+  m.traverse(oa, ob, p.bottom);
+  m.traverse(a, b, p.bottom);
+  m.spindle(p.spindle);
+  m.feed(a, b, p.middle);
+  m.feed(a, b, p.bottom);
+  m.spindle(SpindleDir::Off);
+  m.traverse(oa, ob, p.bottom);
+  m.traverse(oa, ob, p.clear);
+  m.traverse(a, b, p.clear);
+  m.spindle(p.spindle);
+}
+
+// G88 boring: dwell, stop the spindle; the operator retracts by hand during
+// LinuxCNC's PROGRAM_STOP (not motion), then the spindle restarts (_g88).
+void g88(Mover& m, const DrillPlan& p, double a, double b) {
+  m.feed(a, b, p.bottom);
+  m.dwell(p.dwell);
+  m.spindle(SpindleDir::Off);
+  m.spindle(p.spindle);
+}
+
+void cycle_body(Mover& m, const DrillPlan& p, double a, double b) {
+  switch (p.motion) {
+    case 730: g73(m, p, a, b); break;
+    case 830: g83(m, p, a, b); break;
+    case 740:
+    case 840: g74_g84(m, p, a, b); break;
+    case 860: g86(m, p, a, b); break;
+    case 870: g87(m, p, a, b); break;
+    case 880: g88(m, p, a, b); break;
+    case 850:
+    case 890: g85_g89(m, p, a, b); break;
+    default: g81_g82(m, p, a, b); break;
+  }
+}
+
+// G76 in program units, named as in LinuxCNC's convert_threading_cycle. The
+// drive line is the X where the cycle starts; I is the thread peak's offset
+// from it (negative: external thread), J the first cut's depth beyond the
+// peak, K the full thread depth.
+struct ThreadPlan {
+  bool boring = false;  // I > 0: an internal thread
+  double safe_x = 0, start_y = 0, start_z = 0;
+  double full_dia_depth = 0, start_depth = 0, cut_increment = 0;
+  double full_threadheight = 0, end_depth = 0;
+  double angle = 0;   // compound slide angle, radians, signed by the direction along Z
+  double taper = 0;   // E, signed like the angle
+  double target_z = 0, degression = 1;
+  long spring_passes = 0;
+  bool entry_taper = false, exit_taper = false;
+  Vec3 end;
+};
+
+std::optional<InterpError> read_count(const std::optional<double>& w, char letter,
+                                      const char* what, long& out) {
+  out = 0;
+  if (!w) return std::nullopt;
+  const std::optional<long> n = whole_number(*w);
+  if (!n || *n < 0) {
+    return error(Code::BadWordValue,
+                 fmt::format("G76 {}{:g}: {} must be a whole number, 0 or more", letter, *w, what));
+  }
+  if (*n > kMaxPasses) {
+    return error(Code::TooManyIterations,
+                 fmt::format("G76 {}{:g}: more than {} {}", letter, *w, kMaxPasses, what));
+  }
+  out = *n;
+  return std::nullopt;
+}
+
+// In LinuxCNC's order: words as read, the block's checks, then the cycle's.
+std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleModal& m,
+                                              long& spring, long& tapers) {
+  if (auto e = read_count(w.h, 'H', "the number of spring passes", spring)) return e;
+  if (auto e = read_count(w.l, 'L', "L (taper ends: 1 entry, 2 exit, 3 both)", tapers)) return e;
+  if (!w.p) return error(Code::MissingWord, "G76 needs P, the thread pitch");
+  if (!w.i || !w.j || !w.k) {
+    return error(Code::MissingWord,
+                 fmt::format("G76 needs I, J and K (peak offset, first cut depth, thread depth); "
+                             "{} is missing",
+                             !w.i ? 'I' : (!w.j ? 'J' : 'K')));
+  }
+  if (auto e = check_spindle(m.motion, m.spindle)) return e;
+  if (*w.i == 0) {
+    return error(Code::CycleBadValue,
+                 "G76 I0: the thread peak offset from the drive line must not be 0 (negative for "
+                 "an external thread, positive for an internal one)");
+  }
+  if (*w.j <= 0) {
+    return error(Code::CycleBadValue,
+                 fmt::format("G76 J{:g}: the first cut depth must be greater than 0 mm", *w.j));
+  }
+  if (*w.k <= *w.j) {
+    return error(Code::CycleBadValue,
+                 fmt::format("G76 K{:g}: the thread depth must be greater than J{:g} mm", *w.k,
+                             *w.j));
+  }
+  return std::nullopt;
+}
+
+ThreadPlan plan_thread(const CycleWords& w, const CycleModal& m, Units u, const Vec3& pos) {
+  ThreadPlan t;
+  const Vec3 start{u.in(pos.x), u.in(pos.y), u.in(pos.z)};
+  const auto end_of = [&](const std::optional<double>& word, double from) {
+    if (!word) return from;
+    return m.incremental ? from + u.in(*word) : u.in(*word);
+  };
+  t.end = {end_of(w.x, start.x), end_of(w.y, start.y), end_of(w.z, start.z)};
+  const double half = m.diameter_mode ? 2.0 : 1.0;  // G7: I, J, K are on the diameter
+  const double i = u.in(*w.i) / half;
+  const double j = u.in(*w.j) / half;
+  const double k = u.in(*w.k) / half;
+  t.boring = i > 0.0;
+  t.safe_x = start.x;
+  t.start_y = start.y;
+  t.start_z = start.z;
+  t.full_dia_depth = std::abs(i);
+  t.start_depth = std::abs(i) + std::abs(j);
+  t.cut_increment = std::abs(j);
+  t.full_threadheight = std::abs(k);
+  t.end_depth = std::abs(k) + std::abs(i);
+  // LinuxCNC scales by M_PIl / 180 in long double.
+  t.angle = static_cast<double>(static_cast<long double>(w.q.value_or(0.0)) *
+                                (std::numbers::pi_v<long double> / 180.0L));
+  t.taper = std::max(0.0, w.e ? u.in(*w.e) : 0.0);
+  if (t.end.z > t.start_z) {  // cutting towards +Z: the angle and taper turn round
+    t.angle = -t.angle;
+    t.taper = -t.taper;
+  }
+  t.degression = (w.r && *w.r >= 1.0) ? *w.r : 1.0;
+  t.target_z = t.end.z + std::abs(k) * std::tan(t.angle);
+  return t;
+}
+
+// One pass (LinuxCNC threading_pass): back, in (straight or along the entry
+// taper), over to the end (with the exit taper), out.
+void thread_pass(Mover& m, const ThreadPlan& t, double depth, double zoff) {
+  const double back = t.boring ? t.safe_x + depth - t.end_depth : t.safe_x - depth + t.end_depth;
+  const double in = t.boring ? t.safe_x + depth : t.safe_x - depth;
+  const double crest =
+      t.boring ? t.safe_x + depth - t.full_threadheight : t.safe_x - depth + t.full_threadheight;
+  const double y = t.start_y;
+  m.traverse(back, y, t.start_z - zoff);
+  if (t.taper != 0.0 && t.entry_taper) {
+    m.feed(crest, y, t.start_z - zoff);
+    m.feed(in, y, t.start_z - zoff - t.taper);
+  } else {
+    m.traverse(in, y, t.start_z - zoff);
+  }
+  if (t.taper != 0.0 && t.exit_taper) {
+    m.feed(in, y, t.target_z - zoff + t.taper);
+    m.feed(crest, y, t.target_z - zoff);
+  } else {
+    m.feed(in, y, t.target_z - zoff);
+  }
+  m.traverse(back, y, t.target_z - zoff);
+}
+
+// The depth of pass n + 1 after pass n: the cut area stays about the same
+// when the degression R is 2 (depth ~ sqrt(n)), the depth step when R is 1.
+double next_depth(const ThreadPlan& t, long& pass) {
+  ++pass;
+  return t.full_dia_depth + t.cut_increment * std::pow(static_cast<double>(pass), 1.0 / t.degression);
+}
+
+long count_thread_passes(const ThreadPlan& t) {
+  long pass = 1;
+  long n = 0;
+  for (double depth = t.start_depth; depth < t.end_depth && n <= kMaxPasses;
+       depth = next_depth(t, pass)) {
+    ++n;
+  }
+  return n + t.spring_passes + 1;
+}
+
+void cut_thread(Mover& m, const ThreadPlan& t) {
+  const double tan_angle = std::tan(t.angle);
+  long pass = 1;
+  for (double depth = t.start_depth; depth < t.end_depth; depth = next_depth(t, pass)) {
+    thread_pass(m, t, depth, (depth - t.full_dia_depth) * tan_angle);
+  }
+  // The full depth, once and then once per spring pass.
+  const double zoff = (t.end_depth - t.full_dia_depth) * tan_angle;
+  for (long n = 0; n <= t.spring_passes; ++n) thread_pass(m, t, t.end_depth, zoff);
+  m.traverse(t.end.x, t.end.y, t.end.z);
+}
+
+bool is_drilling_cycle(int motion) {
+  return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890 && motion % 10 == 0);
+}
+
+}  // namespace
+
+std::optional<InterpError> CannedCycles::run(const CycleWords& words, const CycleModal& modal,
+                                             MotionTarget& target) {
+  if (modal.motion == 760) return run_threading(words, modal, target);
+  if (!is_drilling_cycle(modal.motion)) {
+    return error(Code::Unsupported,
+                 fmt::format("G{:g} is not a canned cycle", modal.motion / 10.0));
+  }
+  return run_drilling(words, modal, target);
+}
+
+std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
+                                                      const CycleModal& modal,
+                                                      MotionTarget& target) {
+  if ((words.polar_radius || words.polar_angle) && modal.plane != Plane::XY) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G{}: polar coordinates (@, ^) work only in the XY plane (G17)",
+                             g_of(modal.motion)));
+  }
+  Resolved v;
+  DrillPlan p;
+  if (auto e = resolve_levels(words, modal, sticky_, v)) return e;
+  if (auto e = read_repeats(words, modal.motion, p.repeats)) return e;
+  if (auto e = resolve_cycle_words(words, modal, sticky_, v)) return e;
+  const Units u{modal.length_unit};
+  const Vec3 pos = target.position();
+  const Vec2 cur = core::in_plane(pos, modal.plane);
+  const double initial_mm = initial_level_.value_or(pos[core::axes_of(modal.plane).axial]);
+  p.motion = modal.motion;
+  p.plane = modal.plane;
+  p.cur_a = u.in(cur.x);
+  p.cur_b = u.in(cur.y);
+  p.cur_c = u.in(pos[core::axes_of(modal.plane).axial]);
+  const double initial = u.in(initial_mm);
+  if (auto e = plan_levels(words, modal, v, u, initial, p)) return e;
+  p.dwell = v.p;
+  p.peck = u.in(v.q);
+  p.clearance = modal.peck_clearance / u.mm;
+  p.spindle = modal.spindle;
+  if (auto e = check_plan(p)) return e;
+
+  Mover m(target, p.plane, u);
+  double current = p.cur_c;
+  if (p.raise) {
+    m.traverse(p.cur_a, p.cur_b, p.r);
+    current = p.r;
+  }
+  double a = p.a;
+  double b = p.b;
+  for (long n = 0; n < p.repeats; ++n) {
+    advance(p, a, b);
+    move_over(m, p, a, b, n == 0, current);
+    m.hole(a, b, p.r, p.bottom);
+    cycle_body(m, p, a, b);
+  }
+  initial_level_ = initial_mm;  // LinuxCNC's cycle_il, kept until another motion
+  sticky_.r = v.r;
+  sticky_.bottom = v.bottom;
+  const int g = g_of(modal.motion);
+  if (g == 74 || g == 82 || g == 84 || g == 86 || g == 88 || g == 89) sticky_.p = v.p;
+  if (g == 73 || g == 83) sticky_.q = v.q;
+  if (g == 87) {
+    sticky_.i = v.ijk[0];
+    sticky_.j = v.ijk[1];
+    sticky_.k = v.ijk[2];
+  }
+  end_point_ = m.at(a, b, p.clear);
+  return std::nullopt;
+}
+
+// G76 (LinuxCNC convert_straight / convert_threading_cycle). Its moves are in
+// X and Z whatever the plane; LinuxCNC runs it in G17 as well.
+std::optional<InterpError> CannedCycles::run_threading(const CycleWords& words,
+                                                       const CycleModal& modal,
+                                                       MotionTarget& target) {
+  long spring = 0;
+  long tapers = 0;
+  if (auto e = check_thread_words(words, modal, spring, tapers)) return e;
+  const Units u{modal.length_unit};
+  ThreadPlan t = plan_thread(words, modal, u, target.position());
+  t.spring_passes = spring;
+  t.entry_taper = (tapers & 1) != 0;
+  t.exit_taper = (tapers & 2) != 0;
+  if (count_thread_passes(t) > kMaxPasses) {
+    return error(Code::TooManyIterations,
+                 fmt::format("G76 would cut more than {} passes (degression R{:g} is too large "
+                             "for J and K)",
+                             kMaxPasses, t.degression));
+  }
+  Mover m(target, Plane::XY, u);  // XY: (a, b, c) are (x, y, z)
+  cut_thread(m, t);
+  note_other_motion();  // G76 is not a canned cycle to LinuxCNC's convert_motion
+  end_point_ = u.out(t.end);
+  return std::nullopt;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,96 @@
+#include "gcode/interp/canon_machine.hpp"
+
+#include <cmath>
+
+#include "core/units.hpp"
+
+namespace usina::gcode {
+
+Vec3 CanonMachine::to_absolute(const Vec3& p) const {
+  const ModalState& s = *state_;
+  Vec3 q = p + xyz(s.g92);
+  if (s.rotation_deg != 0.0) {
+    const Vec2 r = core::rotate({q.x, q.y}, core::deg_to_rad(s.rotation_deg));
+    q.x = r.x;
+    q.y = r.y;
+  }
+  return q + xyz(s.g5x);
+}
+
+Vec3 CanonMachine::to_program(const Vec3& abs) const {
+  const ModalState& s = *state_;
+  Vec3 q = abs - xyz(s.g5x);
+  if (s.rotation_deg != 0.0) {
+    const Vec2 r = core::rotate({q.x, q.y}, -core::deg_to_rad(s.rotation_deg));
+    q.x = r.x;
+    q.y = r.y;
+  }
+  return q - xyz(s.g92);
+}
+
+std::optional<double> CanonMachine::feed_rate() const {
+  if (state_->feed_mode != FeedMode::UnitsPerMinute) return std::nullopt;
+  return state_->feed;
+}
+
+void CanonMachine::emit(canon::OpKind kind) { sink_.on(canon::Op{std::move(kind), src_}); }
+
+void CanonMachine::traverse_axes(const Axes& to) {
+  state_->pos = to;
+  emit(canon::Traverse{to_absolute(xyz(to)), abc_of(to)});
+}
+
+void CanonMachine::feed_axes(const Axes& to) {
+  state_->pos = to;
+  emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to)});
+}
+
+void CanonMachine::probe_axes(const Axes& to) {
+  state_->pos = to;
+  emit(canon::Probe{to_absolute(xyz(to)), abc_of(to)});
+}
+
+void CanonMachine::arc_axes(const Axes& to, const Vec3& center, int turn) {
+  const core::PlaneAxes ax = core::axes_of(state_->plane);
+  Vec3 c = center;
+  c[ax.axial] = state_->pos[static_cast<std::size_t>(ax.axial)];  // the start's axial coordinate
+  Vec3 normal = core::normal_of(state_->plane);
+  if (state_->rotation_deg != 0.0) {
+    const Vec2 r = core::rotate({normal.x, normal.y}, core::deg_to_rad(state_->rotation_deg));
+    normal.x = r.x;
+    normal.y = r.y;
+  }
+  state_->pos = to;
+  emit(canon::Arc{to_absolute(xyz(to)), to_absolute(c), normal, turn, feed_rate(), abc_of(to)});
+}
+
+void CanonMachine::traverse(const Vec3& to) {
+  Axes a = state_->pos;
+  set_xyz(a, to);
+  traverse_axes(a);
+}
+
+void CanonMachine::feed(const Vec3& to) {
+  Axes a = state_->pos;
+  set_xyz(a, to);
+  feed_axes(a);
+}
+
+void CanonMachine::arc(const Vec3& to, const Vec3& center, int turn) {
+  Axes a = state_->pos;
+  set_xyz(a, to);
+  arc_axes(a, center, turn);
+}
+
+void CanonMachine::dwell(double seconds) { emit(canon::Dwell{seconds}); }
+
+void CanonMachine::spindle(canon::SpindleDir dir) {
+  state_->spindle = dir;
+  emit(canon::Spindle{state_->speed, dir});
+}
+
+void CanonMachine::hole(const Vec3& top, double depth) {
+  emit(canon::Hole{to_absolute(top), hole_diameter_, depth});
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,52 @@
+// The interpreter's canonical machine: takes moves in program coordinates and
+// emits canon ops in absolute mm after G92, XY rotation and the work offset
+// (the order LinuxCNC's canon layer applies them), each attributed to a block.
+#pragma once
+
+#include "canon/sink.hpp"
+#include "gcode/interp/motion.hpp"
+#include "gcode/interp/state.hpp"
+
+namespace usina::gcode {
+
+class CanonMachine final : public MotionTarget {
+ public:
+  CanonMachine(canon::Sink& sink, ModalState& state) : sink_(sink), state_(&state) {}
+
+  // The state the machine reads (offsets, feed) and updates (position).
+  void bind(ModalState& state) { state_ = &state; }
+
+  void traverse(const Vec3& to) override;
+  void feed(const Vec3& to) override;
+  void arc(const Vec3& to, const Vec3& center, int turn) override;
+  void dwell(double seconds) override;
+  void spindle(canon::SpindleDir dir) override;
+  void hole(const Vec3& top, double depth) override;
+  Vec3 position() const override { return xyz(state_->pos); }
+  void set_source(const core::SourceLoc& loc) override { src_ = loc; }
+
+  // Moves with every axis (rotary and UVW too).
+  void traverse_axes(const Axes& to);
+  void feed_axes(const Axes& to);
+  void probe_axes(const Axes& to);
+  void arc_axes(const Axes& to, const Vec3& center, int turn);
+  void emit(canon::OpKind kind);
+  const core::SourceLoc& source() const { return src_; }
+  // Diameter of the tool in the spindle, for hole features.
+  void set_tool_diameter(double mm) { hole_diameter_ = mm; }
+
+  // Program coordinates → absolute (trace) coordinates.
+  Vec3 to_absolute(const Vec3& p) const;
+  // The inverse: absolute → program coordinates.
+  Vec3 to_program(const Vec3& abs) const;
+
+ private:
+  std::optional<double> feed_rate() const;
+  canon::Abc abc_of(const Axes& a) const { return {a[3], a[4], a[5]}; }
+  canon::Sink& sink_;
+  ModalState* state_;
+  core::SourceLoc src_;
+  double hole_diameter_ = 0.0;
+};
+
+}  // namespace usina::gcode

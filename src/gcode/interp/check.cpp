@@ -1,0 +1,129 @@
+// Step 2 of a block: its codes sorted into modal groups, conflicts and
+// words that no code of the block uses reported.
+#include <fmt/format.h>
+
+#include "gcode/interp/block_words.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+
+bool Interpreter::place_g(BlockWords& w, GCode g, std::uint32_t col) {
+  const int group = g_group(g);
+  if (group < 0) {
+    return error(core::Code::UnknownGCode, col, fmt::format("unknown G code {}", g_name(g).data()));
+  }
+  const auto gi = static_cast<std::size_t>(group);
+  if (w.g[gi] != -1) {
+    return error(core::Code::ModalGroupConflict, col,
+                 fmt::format("{} and {} are in the same modal group; one per block",
+                             g_name(w.g[gi]).data(), g_name(g).data()));
+  }
+  w.g[gi] = g;
+  w.gcol[gi] = col;
+  return true;
+}
+
+bool Interpreter::place_m(BlockWords& w, int m, std::uint32_t col) {
+  const int group = m_group(m);
+  if (group < 0) return error(core::Code::UnknownMCode, col, fmt::format("unknown M code M{}", m));
+  const auto gi = static_cast<std::size_t>(group);
+  if (group == kMGroupUser) {
+    if (w.user_m_count == static_cast<int>(w.user_m.size())) {
+      return error(core::Code::ModalGroupConflict, col, "too many user M codes in one block");
+    }
+    w.user_m[static_cast<std::size_t>(w.user_m_count++)] = m;
+    return true;
+  }
+  if (w.m[gi] != -1) {
+    // LinuxCNC lets mist and flood be turned on in one block.
+    const bool coolants = group == kMGroupCoolant && ((w.m[gi] == 7 && m == 8) || (w.m[gi] == 8 && m == 7));
+    if (!coolants) {
+      return error(core::Code::ModalGroupConflict, col,
+                   fmt::format("M{} and M{} are in the same modal group; one per block", w.m[gi], m));
+    }
+    w.m7_and_m8 = true;
+    return true;
+  }
+  w.m[gi] = m;
+  w.mcol[gi] = col;
+  return true;
+}
+
+namespace {
+
+bool uses_axes(GCode g0) {
+  return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520 || g0 == 920;
+}
+
+bool is_arc(GCode g) { return g == 20 || g == 30; }
+
+bool is_cycle(GCode g) { return g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890); }
+
+}  // namespace
+
+bool Interpreter::check(BlockWords& w) {
+  const GCode g0 = w.g[kGroupNonModal];
+  const GCode g1 = w.g[kGroupMotion];
+  const bool axes = w.has_axis() || w.has_polar();
+  if (g1 != -1) {
+    w.motion = g1;
+  } else if (axes && !uses_axes(g0)) {
+    w.motion = state_.motion;
+  }
+  if (w.motion == 800 && axes && !uses_axes(g0)) {
+    return error(core::Code::AxisWordsConflict, w.has_axis() ? w.col_of('X') : 0,
+                 "axis words with G80 (motion off): give G0, G1, G2 or G3, or remove them");
+  }
+  if (g1 != -1 && g1 != 800 && uses_axes(g0) && axes) {
+    return error(core::Code::AxisWordsConflict, w.gcol[kGroupNonModal],
+                 fmt::format("{} and {} both use the axis words", g_name(g0).data(),
+                             g_name(g1).data()));
+  }
+  if (g0 == 530 && w.motion != 0 && w.motion != 10) {
+    return error(core::Code::NotAllowedInMode, w.gcol[kGroupNonModal],
+                 "G53 needs G0 or G1 motion");
+  }
+  return check_unused(w);
+}
+
+bool Interpreter::check_unused(const BlockWords& w) {
+  const GCode mo = w.motion;
+  const GCode g0 = w.g[kGroupNonModal];
+  const bool arc = is_arc(mo);
+  const bool cycle = is_cycle(mo);
+  const bool spline = mo == 50 || mo == 51 || mo == 52;
+  const int mio = w.m[kMGroupIo];
+  auto unused = [&](char letter, const char* who) {
+    return error(core::Code::UnusedWord, w.col_of(letter),
+                 fmt::format("{} word with no code that uses it ({})", letter, who));
+  };
+  if ((w.has('I') || w.has('J')) && !(arc || spline || mo == 870 || mo == 760 || g0 == 100)) {
+    return unused(w.has('I') ? 'I' : 'J', "G2, G3, G5, G76, G87");
+  }
+  if (w.has('K') && !(arc || mo == 870 || mo == 760 || mo == 330 || mo == 331)) {
+    return unused('K', "G2, G3, G33, G76, G87");
+  }
+  if (w.has('R') && !(arc || cycle || g0 == 100 || w.m[kMGroupSpindle] == 19)) {
+    return unused('R', "G2, G3, canned cycles, G10");
+  }
+  const bool p_user = w.g[kGroupPathControl] == 640 || g0 == 40 || g0 == 100 || arc || cycle ||
+                      spline || mio != -1 || w.m[kMGroupSubprogram] != -1 ||
+                      w.user_m_count > 0 || w.m[kMGroupSpindle] == 19 || mo == 760;
+  if (w.has('P') && !p_user) return unused('P', "G4, G10, G64, G2/G3 turns, dwell cycles, M62-M68");
+  const bool q_user = w.g[kGroupPathControl] == 640 || mo == 730 || mo == 830 || mo == 760 ||
+                      mo == 50 || mio == 66 || w.user_m_count > 0 || w.m[kMGroupSpindle] == 19;
+  if (w.has('Q') && !q_user) return unused('Q', "G64, G73, G83, G5, G76");
+  if (w.has('L') && !(g0 == 100 || cycle || mo == 52 || w.m[kMGroupSubprogram] != -1 || mio == 66)) {
+    return unused('L', "G10, canned cycles, G5.2, M98");
+  }
+  const GCode comp = w.g[kGroupCutterComp];
+  if (w.has('D') && !(comp == 410 || comp == 420 || comp == 411 || comp == 421)) {
+    return unused('D', "G41, G42, G41.1, G42.1");
+  }
+  const GCode tlo = w.g[kGroupToolLength];
+  if (w.has('H') && !(tlo == 430 || tlo == 432 || mo == 760)) return unused('H', "G43, G43.2");
+  if (w.has('E') && mo != 760) return unused('E', "G76");
+  return true;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,335 @@
+// O-word control flow: subroutines, branches and loops (LinuxCNC manual,
+// "O Codes"), and Fanuc-style M98/M99 subprograms. Jumps go through the
+// program index; a loop that runs more than max_loop_iterations is an error.
+#include <sys/stat.h>
+
+#include <fmt/format.h>
+
+#include "gcode/interp/block_words.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+
+const ProgramIndex& Interpreter::index_of(std::uint32_t file) {
+  auto it = indexes_.find(file);
+  if (it == indexes_.end()) {
+    it = indexes_.emplace(file, ProgramIndex::build(*sources_.get(file), file)).first;
+  }
+  return it->second;
+}
+
+void Interpreter::jump_to(std::uint32_t file, const OEntry& e, bool after) {
+  cursor_.file = file;
+  cursor_.offset = after ? e.next_line : e.offset;
+  cursor_.line = after ? e.line + 1 : e.line;
+}
+
+std::optional<bool> Interpreter::condition(const OWord& o) {
+  EvalError err;
+  auto v = gcode::evaluate(block_, o.expr, *this, err);
+  if (!v) {
+    error(err.error, err.col);
+    return std::nullopt;
+  }
+  return *v != 0.0;
+}
+
+Interpreter::Flow Interpreter::control(const OWord& o, std::uint64_t line_offset,
+                                       std::uint64_t next) {
+  const ProgramIndex& idx = index_of(cursor_.file);
+  const std::uint32_t e = idx.find(line_offset);
+  if (e == kNoEntry) {
+    error(core::Code::BadOWord, o.col, "O-word statement after other text on the line");
+    return Flow::Error;
+  }
+  switch (o.kind) {
+    case OKind::Sub: {
+      const std::uint32_t end = idx.next_of(e, {OKind::EndSub});
+      if (end == kNoEntry) {
+        error(core::Code::UnclosedBlock, o.col, fmt::format("o<{}> sub has no endsub", o.label));
+        return Flow::Error;
+      }
+      jump_to(cursor_.file, idx.at(end), true);
+      return Flow::Jumped;
+    }
+    case OKind::EndSub:
+    case OKind::Return: return leave_sub(o);
+    case OKind::Call: return call(o, next);
+    case OKind::If:
+    case OKind::ElseIf:
+    case OKind::Else:
+    case OKind::EndIf: return branch(idx, e, o);
+    case OKind::Program: return Flow::Next;
+    default: return loop(idx, e, o);
+  }
+}
+
+Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o) {
+  const bool evaluate_elseif = o.kind == OKind::ElseIf && pending_elseif_ == e;
+  pending_elseif_ = kNoEntry;
+  if (o.kind == OKind::EndIf) return Flow::Next;
+  if (o.kind == OKind::If || evaluate_elseif) {
+    auto c = condition(o);
+    if (!c) return Flow::Error;
+    if (*c) return Flow::Next;
+    const std::uint32_t alt = idx.next_of(e, {OKind::ElseIf, OKind::Else, OKind::EndIf});
+    if (alt == kNoEntry) {
+      error(core::Code::UnclosedBlock, o.col, fmt::format("o{} if has no endif", o.label));
+      return Flow::Error;
+    }
+    const OEntry& a = idx.at(alt);
+    if (a.kind == OKind::ElseIf) pending_elseif_ = alt;
+    jump_to(cursor_.file, a, a.kind != OKind::ElseIf);
+    return Flow::Jumped;
+  }
+  // An elseif or else reached from a branch that ran: skip to the endif.
+  const std::uint32_t end = idx.next_of(e, {OKind::EndIf});
+  if (end == kNoEntry) {
+    error(core::Code::UnclosedBlock, o.col, fmt::format("o{} {} has no endif", o.label, okind_name(o.kind)));
+    return Flow::Error;
+  }
+  jump_to(cursor_.file, idx.at(end), true);
+  return Flow::Jumped;
+}
+
+Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, bool after) {
+  const std::uint64_t key = (static_cast<std::uint64_t>(cursor_.file) << 32) | e;
+  if (++iterations_[key] > options_.max_loop_iterations) {
+    error(core::Code::TooManyIterations, 0,
+          fmt::format("loop o{} ran more than {} times; raise the limit with --max-iterations",
+                      target.label, options_.max_loop_iterations));
+    return Flow::Error;
+  }
+  jump_to(cursor_.file, target, after);
+  return Flow::Jumped;
+}
+
+Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o) {
+  auto missing = [&](const char* what) {
+    error(core::Code::UnclosedBlock, o.col, fmt::format("o{} {} has no {}", o.label, okind_name(o.kind), what));
+    return Flow::Error;
+  };
+  auto leave = [&](std::uint32_t end) {
+    iterations_.erase((static_cast<std::uint64_t>(cursor_.file) << 32) | e);
+    jump_to(cursor_.file, idx.at(end), true);
+    return Flow::Jumped;
+  };
+  const OEntry& me = idx.at(e);
+  switch (o.kind) {
+    case OKind::Do: return Flow::Next;
+    case OKind::While: {
+      auto c = condition(o);
+      if (!c) return Flow::Error;
+      if (me.ends_do) {
+        const std::uint32_t start = idx.prev_of(e, {OKind::Do});
+        if (start == kNoEntry) return missing("do");
+        return *c ? loop_back(start, idx.at(start), true) : Flow::Next;
+      }
+      if (*c) return Flow::Next;
+      const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
+      return end == kNoEntry ? missing("endwhile") : leave(end);
+    }
+    case OKind::EndWhile: {
+      const std::uint32_t start = idx.prev_of(e, {OKind::While});
+      return start == kNoEntry ? missing("while") : loop_back(start, idx.at(start), false);
+    }
+    case OKind::Repeat: {
+      EvalError err;
+      auto n = gcode::evaluate(block_, o.expr, *this, err);
+      if (!n) {
+        error(err.error, err.col);
+        return Flow::Error;
+      }
+      const std::uint32_t end = idx.next_of(e, {OKind::EndRepeat});
+      if (end == kNoEntry) return missing("endrepeat");
+      if (*n < 1.0) return leave(end);
+      loops_.push_back({cursor_.file, e, static_cast<long>(*n)});
+      return Flow::Next;
+    }
+    case OKind::EndRepeat: {
+      const std::uint32_t start = idx.prev_of(e, {OKind::Repeat});
+      if (start == kNoEntry || loops_.empty() || loops_.back().entry != start) return missing("repeat");
+      if (--loops_.back().count > 0) return loop_back(start, idx.at(start), true);
+      loops_.pop_back();
+      return Flow::Next;
+    }
+    case OKind::Break: {
+      const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
+      if (end == kNoEntry) return missing("loop end");
+      if (idx.at(end).kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
+      return leave(end);
+    }
+    case OKind::Continue: {
+      const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
+      if (end == kNoEntry) return missing("loop end");
+      // The loop's end decides: endwhile goes back to its while, endrepeat
+      // counts down, a do-while's while tests its condition.
+      jump_to(cursor_.file, idx.at(end), false);
+      return Flow::Jumped;
+    }
+    default: break;
+  }
+  error(core::Code::UnmatchedControl, o.col, fmt::format("unexpected o{} {}", o.label, okind_name(o.kind)));
+  return Flow::Error;
+}
+
+std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name) {
+  auto cached = sub_files_.find(name);
+  if (cached != sub_files_.end()) return cached->second;
+  // The name is only ever a file name: never expanded by a shell (LinuxCNC
+  // passes it to wordexp, which runs $(...)); no folders, no leading dot.
+  if (name.empty() || name.find('/') != std::string::npos || name.front() == '.' ||
+      name.find('\0') != std::string::npos) {
+    return std::nullopt;
+  }
+  for (const std::string& dir : options_.subroutine_path) {
+    const std::string path = (dir.empty() ? std::string(".") : dir) + "/" + name + ".ngc";
+    struct stat st {};
+    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    std::string err;
+    auto file = core::SourceFile::open(path, err);
+    if (!file) continue;
+    const std::uint32_t id = sources_.add(std::move(file));
+    sub_files_.emplace(name, id);
+    return id;
+  }
+  return std::nullopt;
+}
+
+Interpreter::Flow Interpreter::call(const OWord& o, std::uint64_t next) {
+  (void)next;
+  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
+    error(core::Code::RecursionTooDeep, o.col,
+          fmt::format("o<{}> call nests deeper than {} calls", o.label, options_.max_call_depth));
+    return Flow::Error;
+  }
+  std::vector<double> args;
+  for (const ExprRef a : o.args) {
+    EvalError err;
+    auto v = gcode::evaluate(block_, a, *this, err);
+    if (!v) {
+      error(err.error, err.col);
+      return Flow::Error;
+    }
+    args.push_back(*v);
+  }
+  if (args.size() > 30) {
+    error(core::Code::BadOWord, o.col, "a call takes at most 30 arguments");
+    return Flow::Error;
+  }
+  std::uint32_t file = cursor_.file;
+  std::uint32_t entry = index_of(file).sub(o.label);
+  if (entry == kNoEntry && file != 0) {
+    file = 0;  // subroutines of the main program are known everywhere
+    entry = index_of(file).sub(o.label);
+  }
+  bool whole_file = false;
+  if (entry == kNoEntry) {
+    auto loaded = load_sub_file(o.label);
+    if (!loaded) {
+      error(core::Code::UnknownSubroutine, o.col,
+            fmt::format("unknown subroutine o<{}>: not in this program nor {}.ngc on the "
+                        "subroutine path",
+                        o.label, o.label));
+      return Flow::Error;
+    }
+    file = *loaded;
+    entry = index_of(file).sub(o.label);
+    whole_file = entry == kNoEntry;
+  }
+  frames_.push_back({cursor_, o.label, whole_file, false, 0, 0, 0, file});
+  params_.push_scope();
+  for (int i = 1; i <= 30; ++i) {
+    params_.set(i, i <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(i - 1)] : 0.0);
+  }
+  if (whole_file) {
+    cursor_ = {file, 0, 1};
+  } else {
+    jump_to(file, index_of(file).at(entry), true);
+  }
+  return Flow::Jumped;
+}
+
+Interpreter::Flow Interpreter::leave_sub(const OWord& o) {
+  if (frames_.empty() || frames_.back().fanuc) {
+    error(core::Code::UnmatchedControl, o.col,
+          fmt::format("o<{}> {} outside a subroutine call", o.label, okind_name(o.kind)));
+    return Flow::Error;
+  }
+  value_returned_ = false;
+  if (o.expr != kNoExpr) {
+    EvalError err;
+    auto v = gcode::evaluate(block_, o.expr, *this, err);
+    if (!v) {
+      error(err.error, err.col);
+      return Flow::Error;
+    }
+    value_ = *v;
+    value_returned_ = true;
+  }
+  params_.pop_scope();
+  cursor_ = frames_.back().ret;
+  frames_.pop_back();
+  return Flow::Jumped;
+}
+
+bool Interpreter::end_of_file() {
+  if (!frames_.empty() && frames_.back().whole_file && frames_.back().file == cursor_.file) {
+    params_.pop_scope();
+    cursor_ = frames_.back().ret;
+    frames_.pop_back();
+    return true;
+  }
+  if (!frames_.empty()) {
+    loc_ = {cursor_.file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
+    error(core::Code::UnclosedBlock, 0,
+          fmt::format("end of file inside subroutine o<{}>: endsub or M99 missing",
+                      frames_.back().name));
+    return false;
+  }
+  at_eof_ = true;
+  return false;
+}
+
+// M98 P<program> [L<times>]: run the Fanuc-style subprogram O<program>,
+// which returns at M99.
+bool Interpreter::fanuc_call(const BlockWords& w) {
+  if (!w.has('P')) return error(core::Code::MissingWord, w.mcol[kMGroupSubprogram], "M98 needs P (the program number)");
+  const std::string label = fmt::format("{}", w.get('P'));
+  const ProgramIndex& idx = index_of(cursor_.file);
+  std::uint32_t entry = kNoEntry;
+  for (std::uint32_t i = 0; i < idx.entries().size(); ++i) {
+    if (idx.at(i).kind == OKind::Program && idx.at(i).label == label) entry = i;
+  }
+  if (entry == kNoEntry) {
+    return error(core::Code::UnknownSubroutine, w.col_of('P'), fmt::format("no subprogram O{} in this file", label));
+  }
+  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
+    return error(core::Code::RecursionTooDeep, w.col_of('P'), "M98 calls nest too deep");
+  }
+  const long times = w.has('L') ? static_cast<long>(w.get('L')) : 1;
+  if (times < 1) return true;
+  const OEntry& e = idx.at(entry);
+  frames_.push_back({cursor_, label, false, true, times - 1, e.next_line, e.line + 1, cursor_.file});
+  jump_to(cursor_.file, e, true);
+  return true;
+}
+
+bool Interpreter::fanuc_return() {
+  if (frames_.empty() || !frames_.back().fanuc) {
+    // M99 in the main program: LinuxCNC's task would restart it; a trace ends.
+    ended_ = true;
+    return true;
+  }
+  Frame& f = frames_.back();
+  if (f.repeats_left > 0) {
+    --f.repeats_left;
+    cursor_ = {f.file, f.body, f.body_line};
+    return true;
+  }
+  cursor_ = f.ret;
+  frames_.pop_back();
+  return true;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,168 @@
+// Step 4 of a block: execution in RS274NGC's order (LinuxCNC
+// execute_block): comments, feed mode, F, S, T, M6, spindle, coolant,
+// overrides, user M codes, dwell, plane, units, lathe mode, cutter
+// compensation, tool length, work offsets, path control, distance modes,
+// retract mode, G10/G28/G30/G52/G92, motion, stop.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/interp/block_words.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+
+double Interpreter::tool_diameter(int tool) const {
+  const ToolEntry* t = options_.tools.find(tool);
+  return t != nullptr ? t->diameter : 0.0;
+}
+
+bool Interpreter::comments(const Block& b) {
+  for (const CommentText& c : b.comments) {
+    std::string_view t = c.text;
+    while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+    // (MSG, text) is an operator message; other comments are kept too, so a
+    // drawing or a post-processor can show them.
+    const bool msg = t.size() >= 4 && (t[0] == 'M' || t[0] == 'm') && (t[1] == 'S' || t[1] == 's') &&
+                     (t[2] == 'G' || t[2] == 'g') && t[3] == ',';
+    if (msg) {
+      t.remove_prefix(4);
+      core::SourceLoc loc = loc_;
+      loc.col = c.col;
+      diags_.report({core::Code::Message, core::Severity::Note, loc, std::string(t)});
+    }
+    machine_.emit(canon::Comment{std::string(t)});
+  }
+  return true;
+}
+
+bool Interpreter::execute(const Block& b, BlockWords& w) {
+  comments(b);
+  if (!tool_and_spindle(w)) return false;
+  if (w.g[kGroupNonModal] == 40) {
+    if (!w.has('P') || w.get('P') < 0) {
+      return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G4 needs P (seconds, not negative)");
+    }
+    machine_.dwell(w.get('P'));
+  }
+  if (!modal_settings(w) || !modal_zero(w)) return false;
+  if (w.motion != -1 && !motion(w)) return false;
+  return stop(w);
+}
+
+bool Interpreter::tool_and_spindle(BlockWords& w) {
+  ModalState& s = state_;
+  if (w.g[kGroupFeedMode] != -1) {
+    const GCode g = w.g[kGroupFeedMode];
+    s.feed_mode = g == 930 ? FeedMode::InverseTime : (g == 950 ? FeedMode::UnitsPerRev : FeedMode::UnitsPerMinute);
+    // LinuxCNC: entering inverse time clears the feed rate.
+    if (g == 930) s.feed = 0.0;
+  }
+  if (w.has('F')) {
+    if (w.get('F') < 0) return error(core::Code::BadWordValue, w.col_of('F'), "negative feed rate");
+    s.feed = s.feed_mode == FeedMode::InverseTime ? w.get('F') : mm(w.get('F'));
+  }
+  if (w.g[kGroupSpindleMode] != -1) s.css = w.g[kGroupSpindleMode] == 960;
+  if (w.has('S')) {
+    if (w.get('S') < 0) return error(core::Code::BadWordValue, w.col_of('S'), "negative spindle speed");
+    s.speed = w.get('S');
+  }
+  if (w.has('T')) {
+    const double t = w.get('T');
+    if (t < 0 || std::floor(t) != t) {
+      return error(core::Code::BadWordValue, w.col_of('T'), fmt::format("T{} is not a tool number", t));
+    }
+    s.selected_tool = static_cast<int>(t);
+  }
+  const int tc = w.m[kMGroupToolChange];
+  if (tc == 6 || tc == 61) {
+    if (tc == 61 && !w.has('Q')) return error(core::Code::MissingWord, w.mcol[kMGroupToolChange], "M61 needs Q (the tool number)");
+    const int tool = tc == 61 ? static_cast<int>(w.get('Q')) : s.selected_tool;
+    if (tool < 0) return error(core::Code::MissingWord, w.mcol[kMGroupToolChange], "M6 with no tool selected: give T first");
+    // LinuxCNC's M6 stops the spindle before the change.
+    if (tc == 6 && s.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
+    s.tool = tool;
+    const double d = tool_diameter(tool);
+    machine_.set_tool_diameter(d);
+    machine_.emit(canon::ToolChange{tool, d > 0 ? std::optional<double>(d) : std::nullopt});
+  }
+  switch (w.m[kMGroupSpindle]) {
+    case 3: machine_.spindle(canon::SpindleDir::Cw); break;
+    case 4: machine_.spindle(canon::SpindleDir::Ccw); break;
+    case 5: machine_.spindle(canon::SpindleDir::Off); break;
+    default: break;
+  }
+  const int cool = w.m[kMGroupCoolant];
+  if (cool != -1) {
+    if (cool == 7 || w.m7_and_m8) s.mist = true;
+    if (cool == 8 || w.m7_and_m8) s.flood = true;
+    if (cool == 9) s.mist = s.flood = false;
+    machine_.emit(canon::Coolant{s.mist, s.flood});
+  }
+  switch (w.m[kMGroupOverride]) {
+    case 48: s.feed_override = s.speed_override = true; break;
+    case 49: s.feed_override = s.speed_override = false; break;
+    case 50: s.feed_override = !w.has('P') || w.get('P') != 0; break;
+    case 51: s.speed_override = !w.has('P') || w.get('P') != 0; break;
+    default: break;
+  }
+  for (int i = 0; i < w.user_m_count; ++i) {
+    machine_.emit(canon::Comment{fmt::format("M{} (user M code)", w.user_m[static_cast<std::size_t>(i)])});
+  }
+  return true;
+}
+
+bool Interpreter::modal_settings(BlockWords& w) {
+  ModalState& s = state_;
+  switch (w.g[kGroupPlane]) {
+    case 170: s.plane = core::Plane::XY; break;
+    case 180: s.plane = core::Plane::ZX; break;
+    case 190: s.plane = core::Plane::YZ; break;
+    default: break;
+  }
+  if (w.g[kGroupUnits] != -1 && !set_units(w.g[kGroupUnits] == 200 ? core::LengthUnit::Inch : core::LengthUnit::Mm)) {
+    return false;
+  }
+  if (w.g[kGroupLathe] != -1) s.lathe_diameter = w.g[kGroupLathe] == 70;
+  if (w.g[kGroupCutterComp] != -1 && !cutter_comp_mode(w)) return false;
+  if (w.g[kGroupToolLength] != -1 && !tool_length(w)) return false;
+  if (w.g[kGroupCoordSystem] != -1) {
+    const GCode g = w.g[kGroupCoordSystem];
+    if (!select_coord_system(g <= 590 ? g / 10 - 53 : 6 + g - 590)) return false;
+  }
+  if (w.g[kGroupPathControl] != -1) s.path_mode = w.g[kGroupPathControl];
+  if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;
+  if (w.g[kGroupArcDistance] != -1) s.arc_absolute = w.g[kGroupArcDistance] == 901;
+  if (w.g[kGroupRetract] != -1) s.retract = w.g[kGroupRetract] == 990 ? RetractMode::RPlane : RetractMode::OldZ;
+  return true;
+}
+
+bool Interpreter::set_units(core::LengthUnit u) {
+  // Units change what later words mean; positions are kept in mm, so
+  // nothing else moves. The feed rate keeps its value in mm/min.
+  state_.units = u;
+  return true;
+}
+
+bool Interpreter::stop(const BlockWords& w) {
+  const int m = w.m[kMGroupSubprogram];
+  if (m == 98 && !fanuc_call(w)) return false;
+  if (m == 99 && !fanuc_return()) return false;
+  switch (w.m[kMGroupStop]) {
+    case 2:
+    case 30: {
+      // LinuxCNC's program end: spindle and coolant off, then the end.
+      if (state_.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
+      machine_.emit(canon::ProgramEnd{});
+      ended_ = true;
+      break;
+    }
+    case 0:
+    case 1:
+    case 60: machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])}); break;
+    default: break;
+  }
+  return true;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,168 @@
+#include "gcode/interp/interpreter.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/interp/block_words.hpp"
+#include "gcode/parser.hpp"
+
+namespace usina::gcode {
+
+Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
+                         core::DiagnosticSink& diags)
+    : sources_(sources),
+      options_(std::move(options)),
+      sink_(sink),
+      diags_(diags),
+      machine_(sink, state_),
+      words_(std::make_unique<BlockWords>()) {
+  // A LinuxCNC machine starts in its own units (a machine configuration
+  // without G20/G21 in the program reads lengths in the machine's units).
+  state_.units = options_.machine_units;
+}
+
+Interpreter::~Interpreter() = default;
+
+bool Interpreter::error(core::Code code, std::uint32_t col, std::string message) {
+  core::SourceLoc loc = loc_;
+  if (col > 0) {
+    loc.col = col;
+    loc.length = 1;
+  }
+  diags_.report({code, core::Severity::Error, loc, std::move(message)});
+  failed_ = true;
+  return false;
+}
+
+bool Interpreter::error(const InterpError& e, std::uint32_t col) {
+  return error(e.code, col, e.message);
+}
+
+void Interpreter::warn(core::Code code, std::uint32_t col, std::string message) {
+  core::SourceLoc loc = loc_;
+  if (col > 0) loc.col = col;
+  diags_.report({code, core::Severity::Warning, loc, std::move(message)});
+}
+
+bool Interpreter::run(std::uint32_t file) {
+  cursor_ = {file, 0, 1};
+  const core::SourceFile* f = sources_.get(file);
+  if (f == nullptr) return false;
+  // UTF-8 byte-order mark: LinuxCNC rejects it; editors on Windows write it.
+  if (f->text().substr(0, 3) == "\xEF\xBB\xBF") {
+    loc_ = {file, 1, 1, 3, 0};
+    warn(core::Code::ByteOrderMark, 1, "UTF-8 byte-order mark at the start of the file ignored");
+    cursor_.offset = 3;
+  }
+  while (!ended_ && !failed_ && !at_eof_) step();
+  if (!failed_ && !ended_) {
+    loc_ = {file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
+    warn(core::Code::NoProgramEnd, 0,
+         "the program ends without M2, M30 or '%'; taken as its end (LinuxCNC reports an error)");
+  }
+  sink_.finish();
+  return !failed_;
+}
+
+Interpreter::Flow Interpreter::step() {
+  core::SourceFile* f = sources_.get(cursor_.file);
+  if (cursor_.offset >= f->text().size()) return end_of_file() ? Flow::Next : Flow::End;
+  const LineView lv = line_at(f->text(), cursor_.offset);
+  f->release_before(cursor_.offset);
+  const LinePos where{cursor_.file, cursor_.line, cursor_.offset};
+  cursor_.offset = lv.next;
+  ++cursor_.line;
+  if (!parse_block(lv.text, where, block_, diags_)) {
+    failed_ = true;
+    return Flow::Error;
+  }
+  loc_ = block_.loc;
+  machine_.set_source(loc_);
+  if (block_.percent) {
+    // A first '%' opens the program; the next one ends it.
+    if (percent_mode_ || where.offset > 3 || frames_.size() > 0) {
+      ended_ = true;
+      return Flow::End;
+    }
+    percent_mode_ = true;
+    return Flow::Next;
+  }
+  if (block_.deleted && options_.block_delete) return Flow::Next;
+  if (block_.o) return control(*block_.o, where.offset, lv.next);
+  if (block_.empty()) return Flow::Next;
+  BlockWords& w = *words_;
+  if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return Flow::Error;
+  if (!execute(block_, w)) return Flow::Error;
+  return ended_ ? Flow::End : Flow::Next;
+}
+
+bool Interpreter::evaluate(const Block& b, BlockWords& w) {
+  w.reset();
+  EvalError err;
+  for (const Word& word : b.words) {
+    auto v = gcode::evaluate(b, word.value, *this, err);
+    if (!v) return error(err.error, err.col);
+    if (word.letter == 'G' || word.letter == 'M') {
+      // Codes are read in tenths (G38.2 → 382); M codes must be integers.
+      const double tenths = std::round(*v * 10.0);
+      if (std::fabs(*v * 10.0 - tenths) > 1e-6 || *v < 0 ||
+          (word.letter == 'M' && static_cast<long>(tenths) % 10 != 0) || tenths > 99990) {
+        return error(word.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode,
+                     word.col, fmt::format("{}{} is not a code", word.letter, *v));
+      }
+      const int code = static_cast<int>(tenths);
+      if (!(word.letter == 'G' ? place_g(w, code, word.col) : place_m(w, code / 10, word.col))) {
+        return false;
+      }
+      continue;
+    }
+    if (w.has(word.letter)) {
+      return error(core::Code::RepeatedWord, word.col,
+                   fmt::format("{} word appears twice in the block", word.letter));
+    }
+    w.set(word.letter, *v, word.col);
+  }
+  return true;
+}
+
+bool Interpreter::assign_parameters(const Block& b) {
+  // RS274NGC 3.2.1: every value of the block is read before any assignment
+  // takes effect, so all right-hand sides are evaluated first.
+  struct Pending {
+    int index;
+    std::string name;
+    double value;
+    std::uint32_t col;
+  };
+  std::vector<Pending> pending;
+  EvalError err;
+  for (const ParamAssign& a : b.assigns) {
+    auto v = gcode::evaluate(b, a.value, *this, err);
+    if (!v) return error(err.error, err.col);
+    if (a.index == kNoExpr) {
+      std::string name = normalise_name(a.name);
+      if (predefined(name)) {
+        return error(core::Code::ReadOnlyParameter, a.col,
+                     fmt::format("#<{}> is a read-only parameter", name));
+      }
+      pending.push_back({0, std::move(name), *v, a.col});
+      continue;
+    }
+    auto idx = gcode::evaluate(b, a.index, *this, err);
+    if (!idx) return error(err.error, err.col);
+    auto index = parameter_index(*idx, a.col, err);
+    if (!index) return error(err.error, err.col);
+    pending.push_back({*index, {}, *v, a.col});
+  }
+  for (const Pending& p : pending) {
+    if (p.index > 0) {
+      params_.set(p.index, p.value);
+    } else {
+      params_.set_named(p.name, p.value);
+    }
+  }
+  return true;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,170 @@
+// The RS274NGC interpreter (LinuxCNC's language): blocks in, canon ops out.
+// Each block runs in four steps (grbl's order): evaluate its words, check
+// them, plan the targets, execute in the standard's order of execution.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "canon/sink.hpp"
+#include "core/source.hpp"
+#include "gcode/block.hpp"
+#include "gcode/expr.hpp"
+#include "gcode/interp/canon_machine.hpp"
+#include "gcode/interp/state.hpp"
+#include "gcode/parameters.hpp"
+#include "gcode/program_index.hpp"
+#include "gcode/tool_table.hpp"
+
+namespace usina::gcode {
+
+struct InterpOptions {
+  core::LengthUnit machine_units = core::LengthUnit::Mm;  // of the tool table and parameters
+  double peck_clearance_mm = 1.0;                         // G73/G83 retract above the last peck
+  std::vector<std::string> subroutine_path;               // folders searched for o<name> call
+  long max_loop_iterations = 10'000'000;                  // per loop, so a runaway loop ends
+  int max_call_depth = 200;
+  double spline_tolerance_mm = 0.001;
+  bool block_delete = true;  // '/' blocks skipped
+  ToolTable tools;
+};
+
+struct BlockWords;
+
+class Interpreter final : private ParameterSource {
+ public:
+  Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
+              core::DiagnosticSink& diags);
+  ~Interpreter() override;
+  Interpreter(const Interpreter&) = delete;
+  Interpreter& operator=(const Interpreter&) = delete;
+
+  // Sets a numbered parameter before the run (a parameter file).
+  void set_parameter(int index, double value) { params_.set(index, value); }
+  // Runs the program in `file` to its end (M2/M30, '%' or end of file) or to
+  // the first error. True when no error was reported.
+  bool run(std::uint32_t file);
+
+  const ModalState& state() const { return state_; }
+  const Parameters& parameters() const { return params_; }
+
+ private:
+  struct Cursor {
+    std::uint32_t file = 0;
+    std::uint64_t offset = 0;
+    std::uint32_t line = 1;
+  };
+  struct Frame {
+    Cursor ret;
+    std::string name;
+    bool whole_file = false;  // a called file without o<name> sub
+    bool fanuc = false;       // M98: returns at M99, no new parameter scope
+    long repeats_left = 0;    // M98 L: further runs of the subprogram
+    std::uint64_t body = 0;   // M98: where the subprogram's body starts
+    std::uint32_t body_line = 0;
+    std::uint32_t file = 0;
+  };
+  struct LoopCount {
+    std::uint32_t file;
+    std::uint32_t entry;
+    long count;
+  };
+  enum class Flow { Next, Jumped, End, Error };
+
+  // ParameterSource
+  double numbered(int index) const override;
+  std::optional<double> named(std::string_view name) const override;
+  std::optional<double> predefined(std::string_view name) const;
+
+  // The main loop and control flow (control.cpp).
+  Flow step();
+  Flow control(const OWord& o, std::uint64_t line_offset, std::uint64_t next);
+  Flow call(const OWord& o, std::uint64_t next);
+  Flow leave_sub(const OWord& o);
+  Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_back(std::uint32_t e, const OEntry& target, bool after);
+  std::optional<bool> condition(const OWord& o);
+  bool fanuc_call(const BlockWords& w);
+  bool fanuc_return();
+  std::optional<std::uint32_t> load_sub_file(const std::string& name);
+  const ProgramIndex& index_of(std::uint32_t file);
+  void jump_to(std::uint32_t file, const OEntry& e, bool after);
+  bool end_of_file();
+
+  // Block steps (interpreter.cpp, execute.cpp).
+  bool evaluate(const Block& b, BlockWords& w);
+  bool assign_parameters(const Block& b);
+  bool place_g(BlockWords& w, GCode g, std::uint32_t col);
+  bool place_m(BlockWords& w, int m, std::uint32_t col);
+  bool check(BlockWords& w);
+  bool check_unused(const BlockWords& w);
+  bool execute(const Block& b, BlockWords& w);
+  bool comments(const Block& b);
+  bool tool_and_spindle(BlockWords& w);
+  bool modal_settings(BlockWords& w);
+  bool modal_zero(BlockWords& w);
+  bool stop(const BlockWords& w);
+  bool set_units(core::LengthUnit u);
+  bool select_coord_system(int n);
+  bool tool_length(BlockWords& w);
+  bool cutter_comp_mode(BlockWords& w);
+  bool g10(BlockWords& w);
+  bool g92(BlockWords& w);
+  bool home(BlockWords& w, int g);
+  void apply_work_offsets(int n);
+  void write_g92_params();
+
+  // Motion (motion_exec.cpp).
+  bool motion(BlockWords& w);
+  Axes target(const BlockWords& w, bool machine_coords) const;
+  bool straight(BlockWords& w, GCode g, const Axes& end);
+  bool arc(BlockWords& w, GCode g, const Axes& end);
+  bool probe(BlockWords& w, const Axes& end);
+  bool cycle(BlockWords& w, GCode g);
+  bool spline(BlockWords& w, GCode g, const Axes& end);
+  bool require_feed(const BlockWords& w);
+
+  bool error(core::Code code, std::uint32_t col, std::string message);
+  bool error(const InterpError& e, std::uint32_t col = 0);
+  void warn(core::Code code, std::uint32_t col, std::string message);
+  double mm(double program_value) const { return program_value * core::mm_per(state_.units); }
+  double machine_mm() const { return core::mm_per(options_.machine_units); }
+  double tool_diameter(int tool) const;
+
+  core::SourceManager& sources_;
+  InterpOptions options_;
+  canon::Sink& sink_;
+  core::DiagnosticSink& diags_;
+  ModalState state_;
+  Parameters params_;
+  CanonMachine machine_;
+  Block block_;
+  std::unique_ptr<BlockWords> words_;
+  Cursor cursor_;
+  core::SourceLoc loc_;
+  std::vector<Frame> frames_;
+  std::vector<LoopCount> loops_;
+  std::unordered_map<std::uint64_t, long> iterations_;
+  std::uint32_t pending_elseif_ = kNoEntry;
+  bool at_eof_ = false;
+  std::unordered_map<std::uint32_t, ProgramIndex> indexes_;
+  std::unordered_map<std::string, std::uint32_t> sub_files_;
+  bool percent_mode_ = false;
+  bool ended_ = false;
+  bool failed_ = false;
+  double value_ = 0.0;
+  bool value_returned_ = false;
+  // Sticky spline state: the previous G5's second control point, for a G5 without I J.
+  std::optional<Vec2> last_g5_ctrl_;
+  // A NURBS block being read (G5.2 ... G5.3): control points and weights.
+  std::vector<Vec2> nurbs_points_;
+  std::vector<double> nurbs_weights_;
+  int nurbs_order_ = 0;
+  void emit_polyline(const std::vector<Vec2>& pts);
+};
+
+}  // namespace usina::gcode

@@ -1,0 +1,172 @@
+// Motion: targets in program coordinates (units, G90/G91, polar words, G53,
+// lathe diameter mode), straight moves, arcs (centre and radius formats),
+// probing, splines; canned cycles and cutter compensation are modules of
+// their own driven from here.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/spline.hpp"
+#include "gcode/interp/block_words.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+namespace {
+
+bool is_rotary(int axis) { return axis >= 3 && axis <= 5; }
+
+}  // namespace
+
+Axes Interpreter::target(const BlockWords& w, bool machine_coords) const {
+  const ModalState& s = state_;
+  Axes end = s.pos;
+  if (machine_coords) {
+    // G53: the words are machine coordinates of the controlled point.
+    Vec3 abs = machine_.to_absolute(xyz(s.pos)) + xyz(s.tool_offset);
+    for (int a = 0; a < 3; ++a) {
+      if (w.has(kAxisLetters[a])) abs[a] = mm(w.get(kAxisLetters[a]));
+    }
+    set_xyz(end, machine_.to_program(abs - xyz(s.tool_offset)));
+  }
+  for (int a = machine_coords ? 3 : 0; a < kAxisCount; ++a) {
+    const char letter = kAxisLetters[a];
+    if (!w.has(letter)) continue;
+    double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
+    if (a == 0 && s.lathe_diameter) v /= 2.0;  // G7: X words are diameters
+    const auto i = static_cast<std::size_t>(a);
+    end[i] = s.incremental ? s.pos[i] + v : v;
+  }
+  if (w.has_polar()) {
+    // LinuxCNC polar words: @ radius and ^ angle (degrees) about the origin;
+    // under G91 both add to the current point's polar coordinates.
+    const double r0 = std::hypot(s.pos[0], s.pos[1]);
+    const double t0 = core::rad_to_deg(std::atan2(s.pos[1], s.pos[0]));
+    const double r = w.has('@') ? (s.incremental ? r0 + mm(w.get('@')) : mm(w.get('@'))) : r0;
+    const double t = w.has('^') ? (s.incremental ? t0 + w.get('^') : w.get('^')) : t0;
+    end[0] = r * std::cos(core::deg_to_rad(t));
+    end[1] = r * std::sin(core::deg_to_rad(t));
+  }
+  return end;
+}
+
+bool Interpreter::require_feed(const BlockWords& w) {
+  const ModalState& s = state_;
+  if (s.feed_mode == FeedMode::InverseTime && !w.has('F')) {
+    return error(core::Code::NoFeedRate, 0, "inverse time feed (G93) needs F on every feed move");
+  }
+  if (s.feed <= 0.0) {
+    return error(core::Code::NoFeedRate, 0,
+                 fmt::format("{} with no feed rate: give F", g_name(w.motion).data()));
+  }
+  return true;
+}
+
+bool Interpreter::motion(BlockWords& w) {
+  const GCode g = w.motion;
+  if (w.has_polar() && (w.has('X') || w.has('Y'))) {
+    return error(core::Code::AxisWordsConflict, w.col_of('X') != 0 ? w.col_of('X') : w.col_of('Y'),
+                 "polar words (@ ^) and X/Y in one block");
+  }
+  if (w.has_polar() && state_.plane != core::Plane::XY) {
+    return error(core::Code::NotAllowedInMode, 0, "polar words need the XY plane (G17)");
+  }
+  state_.motion = g;
+  if (g == 800) return true;
+  const bool g53 = w.g[kGroupNonModal] == 530;
+  if (g == 0 || g == 10 || g == 330 || g == 331) return straight(w, g, target(w, g53));
+  if (g == 20 || g == 30) return arc(w, g, target(w, false));
+  if (g >= 382 && g <= 385) return probe(w, target(w, false));
+  if (g >= 50 && g <= 53) return spline(w, g, target(w, false));
+  return cycle(w, g);
+}
+
+bool Interpreter::straight(BlockWords& w, GCode g, const Axes& end) {
+  if (g != 0 && !require_feed(w)) return false;
+  if (state_.comp != CompSideState::Off) {
+    return error(core::Code::Unsupported, 0, "cutter radius compensation is not finished yet");
+  }
+  if (g == 0) {
+    machine_.traverse_axes(end);
+  } else if (g == 331) {
+    // G33.1 rigid tapping: in to the depth and back out, synchronised.
+    const Axes start = state_.pos;
+    machine_.feed_axes(end);
+    machine_.feed_axes(start);
+  } else {
+    machine_.feed_axes(end);
+  }
+  return true;
+}
+
+bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
+  if (!require_feed(w)) return false;
+  const core::Plane plane = state_.plane;
+  const core::PlaneAxes ax = core::axes_of(plane);
+  const Vec3 start3 = xyz(state_.pos);
+  const Vec3 end3 = xyz(end);
+  const Vec2 start = core::in_plane(start3, plane);
+  const Vec2 stop = core::in_plane(end3, plane);
+  const bool ccw = g == 30;
+  const char first = "IJK"[ax.first];
+  const char second = "IJK"[ax.second];
+  int turns = 1;
+  if (w.has('P')) {
+    const double p = w.get('P');
+    if (p < 1 || std::floor(p) != p) {
+      return error(core::Code::BadWordValue, w.col_of('P'), fmt::format("P{} turns: must be a positive integer", p));
+    }
+    turns = static_cast<int>(p);
+  }
+  Vec2 center;
+  const double unit_tol = state_.units == core::LengthUnit::Inch ? 0.0005 * 25.4 : 0.001;
+  if (w.has('R')) {
+    if (w.has(first) || w.has(second)) {
+      return error(core::Code::ArcMissingCenter, w.col_of('R'), "an arc takes R or I/J/K, not both");
+    }
+    const double r = mm(w.get('R'));
+    if (core::distance(start, stop) < 1e-12) {
+      return error(core::Code::ArcZeroLength, w.col_of('R'), "R-format arc with its end at its start: use I/J/K for a full circle");
+    }
+    auto c = core::arc_center_from_radius(start, stop, r, ccw, unit_tol);
+    if (!c) {
+      return error(core::Code::ArcRadiusTooSmall, w.col_of('R'),
+                   fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm",
+                               std::fabs(r), core::distance(start, stop) / 2));
+    }
+    center = *c;
+  } else {
+    if (!w.has(first) && !w.has(second)) {
+      return error(core::Code::ArcMissingCenter, 0,
+                   fmt::format("{} needs the centre ({} and/or {}) or R", g_name(g).data(), first, second));
+    }
+    const Vec2 off{w.has(first) ? mm(w.get(first)) : 0.0, w.has(second) ? mm(w.get(second)) : 0.0};
+    center = state_.arc_absolute ? off : start + off;
+    const double r1 = core::distance(start, center);
+    const double r2 = core::distance(stop, center);
+    // LinuxCNC accepts a small difference (a spiral); more is an error.
+    const double tol = std::max(state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02, 0.001 * r1);
+    if (std::fabs(r1 - r2) > tol) {
+      return error(core::Code::ArcRadiusMismatch, 0,
+                   fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius {:.4f} about ({:.4f}, {:.4f}); use R, or correct {}/{}",
+                               stop.x, stop.y, std::fabs(r1 - r2), r1, center.x, center.y, first, second));
+    }
+    if (r1 < 1e-9) return error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is at the start point");
+  }
+  Vec3 c3 = core::from_plane(center, start3[ax.axial], plane);
+  machine_.arc_axes(end, c3, ccw ? turns : -turns);
+  return true;
+}
+
+bool Interpreter::probe(BlockWords& w, const Axes& end) {
+  if (!require_feed(w)) return false;
+  if (state_.comp != CompSideState::Off) {
+    return error(core::Code::ProbeBadMove, 0, "probing with cutter compensation on");
+  }
+  if (core::distance(xyz(end), xyz(state_.pos)) < 1e-9) {
+    return error(core::Code::ProbeBadMove, 0, "probe move of zero length");
+  }
+  machine_.probe_axes(end);
+  return true;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,244 @@
+// Work offsets (G54-G59.3, G10 L2/L20), G92/G52 offsets, G28/G30 homes, tool
+// length offsets (G43) and the cutter compensation mode. Offsets are stored in
+// the numbered parameters in machine units, as LinuxCNC stores them.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/interp/block_words.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+namespace {
+
+constexpr int kG92Base = 5211;
+constexpr int kG92Enabled = 5210;
+constexpr int kCoordSystemParam = 5220;
+
+int work_offset_base(int n) { return 5201 + 20 * n; }
+
+bool is_rotary(int axis) { return axis >= 3 && axis <= 5; }
+
+}  // namespace
+
+void Interpreter::apply_work_offsets(int n) {
+  const int base = work_offset_base(n);
+  for (int a = 0; a < kAxisCount; ++a) {
+    const double v = params_.get(base + a);
+    state_.g5x[static_cast<std::size_t>(a)] = is_rotary(a) ? v : v * machine_mm();
+  }
+  state_.rotation_deg = params_.get(base + 9);
+}
+
+bool Interpreter::select_coord_system(int n) {
+  // The tool stays where it is; its program coordinates change.
+  const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
+  const Axes old = state_.g5x;
+  state_.coord_system = n;
+  params_.set(kCoordSystemParam, n);
+  apply_work_offsets(n);
+  set_xyz(state_.pos, machine_.to_program(abs));
+  for (std::size_t a = 3; a < static_cast<std::size_t>(kAxisCount); ++a) {
+    state_.pos[a] += old[a] - state_.g5x[a];
+  }
+  return true;
+}
+
+void Interpreter::write_g92_params() {
+  for (int a = 0; a < kAxisCount; ++a) {
+    const double v = state_.g92[static_cast<std::size_t>(a)];
+    params_.set(kG92Base + a, is_rotary(a) ? v : v / machine_mm());
+  }
+}
+
+bool Interpreter::g92(BlockWords& w) {
+  ModalState& s = state_;
+  const GCode g = w.g[kGroupNonModal];
+  const Axes old = s.g92;
+  if (g == 920 || g == 520) {
+    if (!w.has_axis()) {
+      return error(core::Code::MissingWord, w.gcol[kGroupNonModal],
+                   fmt::format("{} needs at least one axis word", g_name(g).data()));
+    }
+    for (int a = 0; a < kAxisCount; ++a) {
+      const char letter = kAxisLetters[a];
+      if (!w.has(letter)) continue;
+      const auto i = static_cast<std::size_t>(a);
+      const double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
+      // G92: the current point takes the given value. G52: the offset is the value.
+      s.g92[i] = g == 920 ? s.pos[i] + old[i] - v : v;
+    }
+    params_.set(kG92Enabled, 1.0);
+    write_g92_params();
+  } else if (g == 921 || g == 922) {
+    s.g92 = Axes{};
+    if (g == 921) write_g92_params();
+    params_.set(kG92Enabled, 0.0);
+  } else if (g == 923) {
+    for (int a = 0; a < kAxisCount; ++a) {
+      const double v = params_.get(kG92Base + a);
+      s.g92[static_cast<std::size_t>(a)] = is_rotary(a) ? v : v * machine_mm();
+    }
+    params_.set(kG92Enabled, 1.0);
+  }
+  for (std::size_t a = 0; a < static_cast<std::size_t>(kAxisCount); ++a) s.pos[a] += old[a] - s.g92[a];
+  return true;
+}
+
+bool Interpreter::g10(BlockWords& w) {
+  if (!w.has('L')) return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G10 needs L");
+  const int l = static_cast<int>(w.get('L'));
+  if (!w.has('P')) return error(core::Code::MissingWord, w.gcol[kGroupNonModal], fmt::format("G10 L{} needs P", l));
+  const double p = w.get('P');
+  if (l == 2 || l == 20) {
+    if (p < 0 || p > 9 || std::floor(p) != p) {
+      return error(core::Code::BadWordValue, w.col_of('P'), fmt::format("G10 L{} P{}: P must be 0 to 9", l, p));
+    }
+    const int n = p == 0 ? state_.coord_system : static_cast<int>(p);
+    const int base = work_offset_base(n);
+    // L20: offsets that make the current point read the given values.
+    const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
+    for (int a = 0; a < kAxisCount; ++a) {
+      const char letter = kAxisLetters[a];
+      if (!w.has(letter)) continue;
+      const auto i = static_cast<std::size_t>(a);
+      const double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
+      double offset = v;
+      if (l == 20) {
+        offset = a < 3 ? abs[a] - (state_.pos[i] + state_.g92[i]) + state_.g5x[i] - state_.g5x[i] + 0.0 : 0.0;
+        offset = a < 3 ? abs[a] - (v + state_.g92[i]) : state_.pos[i] + state_.g5x[i] - v;
+      }
+      params_.set(base + a, is_rotary(a) ? offset : offset / machine_mm());
+    }
+    if (w.has('R')) params_.set(base + 9, w.get('R'));
+    if (n == state_.coord_system) select_coord_system(n);
+    return true;
+  }
+  if (l == 1 || l == 10 || l == 11) {
+    ToolEntry t;
+    if (const ToolEntry* old = options_.tools.find(static_cast<int>(p))) t = *old;
+    t.number = static_cast<int>(p);
+    if (w.has('R')) t.diameter = 2.0 * mm(w.get('R'));
+    for (int a = 0; a < 3; ++a) {
+      const char letter = kAxisLetters[a];
+      if (!w.has(letter)) continue;
+      const double v = mm(w.get(letter));
+      // L10: the offset that makes the current point read the value.
+      t.offset[a] = l == 1 ? v : state_.pos[static_cast<std::size_t>(a)] + state_.tool_offset[static_cast<std::size_t>(a)] - v;
+    }
+    options_.tools.set(t);
+    return true;
+  }
+  return error(core::Code::BadWordValue, w.col_of('L'), fmt::format("G10 L{} is not supported (L1, L2, L10, L11, L20)", l));
+}
+
+bool Interpreter::home(BlockWords& w, int g) {
+  const int base = g == 280 ? 5161 : 5181;
+  // Through the intermediate point given by the axis words, if any.
+  if (w.has_axis()) machine_.traverse_axes(target(w, false));
+  // Then to the stored position: every axis, or only those named.
+  const Vec3 tool_tip = machine_.to_absolute(xyz(state_.pos));
+  Vec3 abs = tool_tip;
+  Axes end = state_.pos;
+  for (int a = 0; a < kAxisCount; ++a) {
+    if (w.has_axis() && !w.has(kAxisLetters[a])) continue;
+    const double v = params_.get(base + a);
+    if (a < 3) {
+      abs[a] = v * machine_mm() - state_.tool_offset[static_cast<std::size_t>(a)];
+    } else {
+      end[static_cast<std::size_t>(a)] = is_rotary(a) ? v : v * machine_mm();
+    }
+  }
+  set_xyz(end, machine_.to_program(abs));
+  machine_.traverse_axes(end);
+  return true;
+}
+
+bool Interpreter::tool_length(BlockWords& w) {
+  ModalState& s = state_;
+  const GCode g = w.g[kGroupToolLength];
+  Axes next{};
+  if (g == 430 || g == 432) {
+    const int tool = w.has('H') ? static_cast<int>(w.get('H')) : s.tool;
+    const ToolEntry* t = options_.tools.find(tool);
+    if (t == nullptr && tool != 0) {
+      return error(core::Code::UnknownTool, w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength],
+                   fmt::format("tool {} is not in the tool table", tool));
+    }
+    if (g == 432) next = s.tool_offset;
+    if (t != nullptr) {
+      for (int a = 0; a < 3; ++a) next[static_cast<std::size_t>(a)] += t->offset[a];
+    }
+  } else if (g == 431) {
+    for (int a = 0; a < 3; ++a) {
+      if (w.has(kAxisLetters[a])) next[static_cast<std::size_t>(a)] = mm(w.get(kAxisLetters[a]));
+    }
+    w.clear_letter('X');
+    w.clear_letter('Y');
+    w.clear_letter('Z');
+  }
+  for (std::size_t a = 0; a < 3; ++a) s.pos[a] += s.tool_offset[a] - next[a];
+  s.tool_offset = next;
+  return true;
+}
+
+bool Interpreter::cutter_comp_mode(BlockWords& w) {
+  ModalState& s = state_;
+  const GCode g = w.g[kGroupCutterComp];
+  if (g == 400) {
+    s.comp = CompSideState::Off;
+    return true;
+  }
+  if (s.comp != CompSideState::Off) {
+    return error(core::Code::CompNotAllowed, w.gcol[kGroupCutterComp],
+                 "cutter compensation is already on: G40 first");
+  }
+  if (s.plane == core::Plane::YZ) {
+    return error(core::Code::CompNotAllowed, w.gcol[kGroupCutterComp],
+                 "cutter compensation works in the XY (G17) and XZ (G18) planes only");
+  }
+  double radius = 0.0;
+  if (g == 411 || g == 421) {
+    if (!w.has('D')) return error(core::Code::MissingWord, w.gcol[kGroupCutterComp], "G41.1/G42.1 need D (the tool diameter)");
+    radius = mm(w.get('D')) / 2.0;
+  } else {
+    const int tool = w.has('D') ? static_cast<int>(w.get('D')) : s.tool;
+    const ToolEntry* t = options_.tools.find(tool);
+    if (t == nullptr && tool != 0) {
+      return error(core::Code::UnknownTool, w.has('D') ? w.col_of('D') : w.gcol[kGroupCutterComp],
+                   fmt::format("tool {} is not in the tool table", tool));
+    }
+    radius = t != nullptr ? t->diameter / 2.0 : 0.0;
+  }
+  if (radius < 0) return error(core::Code::BadWordValue, w.col_of('D'), "negative cutter diameter");
+  s.comp = (g == 410 || g == 411) ? CompSideState::Left : CompSideState::Right;
+  s.comp_radius = radius;
+  return true;
+}
+
+bool Interpreter::modal_zero(BlockWords& w) {
+  switch (w.g[kGroupNonModal]) {
+    case 100: return g10(w);
+    case 280:
+    case 300: return home(w, w.g[kGroupNonModal]);
+    case 281:
+    case 301: {
+      const int base = w.g[kGroupNonModal] == 281 ? 5161 : 5181;
+      const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
+      for (int a = 0; a < kAxisCount; ++a) {
+        const auto i = static_cast<std::size_t>(a);
+        const double v = a < 3 ? (abs[a] + state_.tool_offset[i]) / machine_mm() : state_.pos[i];
+        params_.set(base + a, v);
+      }
+      return true;
+    }
+    case 520:
+    case 920:
+    case 921:
+    case 922:
+    case 923: return g92(w);
+    default: return true;
+  }
+}
+
+}  // namespace usina::gcode

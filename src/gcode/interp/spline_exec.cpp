@@ -1,0 +1,93 @@
+// G5 cubic, G5.1 quadratic and G5.2/G5.3 NURBS moves (LinuxCNC G-code
+// reference), linearised to spline_tolerance_mm as feed moves.
+#include <fmt/format.h>
+
+#include "core/spline.hpp"
+#include "gcode/interp/block_words.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+
+void Interpreter::emit_polyline(const std::vector<Vec2>& pts) {
+  for (const Vec2& p : pts) {
+    Axes a = state_.pos;
+    a[0] = p.x;
+    a[1] = p.y;
+    machine_.feed_axes(a);
+  }
+}
+
+bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
+  if (state_.plane != core::Plane::XY) {
+    return error(core::Code::NotAllowedInMode, 0, fmt::format("{} works in the XY plane (G17) only", g_name(g).data()));
+  }
+  if (state_.comp != CompSideState::Off) {
+    return error(core::Code::NotAllowedInMode, 0, "splines with cutter compensation on");
+  }
+  if (w.has('Z') || w.has('A') || w.has('B') || w.has('C')) {
+    return error(core::Code::SplineBadValue, 0, fmt::format("{} moves X and Y only", g_name(g).data()));
+  }
+  if (!require_feed(w)) return false;
+  const Vec2 start{state_.pos[0], state_.pos[1]};
+  const Vec2 stop{end[0], end[1]};
+  const double tol = options_.spline_tolerance_mm;
+  if (g == 50) {
+    if (!w.has('P') || !w.has('Q')) return error(core::Code::MissingWord, 0, "G5 needs P and Q (the second control point)");
+    if (w.has('I') != w.has('J')) return error(core::Code::MissingWord, 0, "G5 takes I and J together, or neither");
+    Vec2 ij;
+    if (w.has('I')) {
+      ij = {mm(w.get('I')), mm(w.get('J'))};
+    } else if (last_g5_ctrl_) {
+      ij = *last_g5_ctrl_;  // continues the previous G5's tangent
+    } else {
+      return error(core::Code::MissingWord, 0, "G5 without I and J must follow another G5");
+    }
+    const Vec2 pq{mm(w.get('P')), mm(w.get('Q'))};
+    emit_polyline(core::linearize(core::cubic_from_g5(start, stop, ij, pq), tol));
+    last_g5_ctrl_ = -pq;
+    return true;
+  }
+  last_g5_ctrl_.reset();
+  if (g == 51) {
+    if (!w.has('I') && !w.has('J')) return error(core::Code::MissingWord, 0, "G5.1 needs I and J (the control point)");
+    const Vec2 ij{w.has('I') ? mm(w.get('I')) : 0.0, w.has('J') ? mm(w.get('J')) : 0.0};
+    emit_polyline(core::linearize(core::quad_from_g5_1(start, stop, ij), tol));
+    return true;
+  }
+  if (g == 52) {
+    if (nurbs_points_.empty()) {
+      nurbs_points_.push_back(start);
+      nurbs_weights_.push_back(1.0);
+      // LinuxCNC: order L when above 3, otherwise 3.
+      nurbs_order_ = w.has('L') && w.get('L') > 3 ? static_cast<int>(w.get('L')) : 3;
+    }
+    const double weight = w.has('P') ? w.get('P') : 1.0;
+    if (auto e = core::nurbs_weight_error(weight, nurbs_points_.size())) {
+      return error(core::Code::SplineBadValue, w.col_of('P'), *e);
+    }
+    if (w.has('X') || w.has('Y')) {
+      nurbs_points_.push_back(stop);
+      nurbs_weights_.push_back(weight);
+    } else {
+      nurbs_weights_.back() = weight;
+    }
+    return true;
+  }
+  // G5.3: the NURBS block is complete.
+  if (auto e = core::nurbs_error(nurbs_order_, nurbs_points_, nurbs_weights_)) {
+    return error(core::Code::SplineBadValue, 0, *e);
+  }
+  const core::Nurbs curve = core::make_nurbs(nurbs_order_, nurbs_points_, nurbs_weights_);
+  nurbs_points_.clear();
+  nurbs_weights_.clear();
+  emit_polyline(core::linearize(curve, tol));
+  state_.motion = 800;
+  return true;
+}
+
+bool Interpreter::cycle(BlockWords& w, GCode g) {
+  (void)w;
+  return error(core::Code::Unsupported, 0, fmt::format("{} is not finished yet", g_name(g).data()));
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,46 @@
+// The lexer of RS274NGC text: reads one block's characters from a view into
+// the source (no copies). RS274NGC ignores spaces and tabs everywhere outside
+// comments and is case-insensitive, so every read skips blanks and compares
+// letters in upper case.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace usina::gcode {
+
+class Lexer {
+ public:
+  explicit Lexer(std::string_view text) : text_(text) {}
+
+  // Position of the next non-blank character (0-based), or the end.
+  std::size_t pos();
+  bool at_end() { return pos() >= text_.size(); }
+  // The next non-blank character in upper case, or 0 at the end.
+  char peek();
+  // The character after the next non-blank one (blanks skipped), upper case.
+  char peek_second();
+  void advance() { ++i_; }
+  // Consumes `c` (upper case) if it is next.
+  bool accept(char c);
+  // Consumes `keyword` (upper case letters) if the next letters spell it,
+  // blanks allowed between them.
+  bool accept_keyword(std::string_view keyword);
+  // An unsigned decimal number: digits with at most one point (blanks
+  // allowed inside). Nullopt, consuming nothing, when none is next.
+  std::optional<double> number();
+  // Everything up to (not including) `close`, raw; consumes `close` too.
+  // Nullopt (consuming the rest) if `close` never comes.
+  std::optional<std::string_view> until(char close);
+  // The rest of the text, raw.
+  std::string_view rest();
+  std::string_view text() const { return text_; }
+
+ private:
+  void skip_blanks();
+  std::string_view text_;
+  std::size_t i_ = 0;
+};
+
+}  // namespace usina::gcode

@@ -1,0 +1,44 @@
+// RS274NGC parameters: numbered #1..#5602 and named #<name> (local to a
+// subroutine call) or #<_name> (global). Read-only predefined names
+// (#<_x>, #<_metric>...) are answered by the interpreter, not stored here.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace usina::gcode {
+
+inline constexpr int kMaxParameter = 5602;
+
+// A named parameter's canonical spelling: lower case, blanks removed.
+std::string normalise_name(std::string_view raw);
+
+class Parameters {
+ public:
+  static bool in_range(int index) { return index >= 1 && index <= kMaxParameter; }
+  double get(int index) const { return numbered_[static_cast<std::size_t>(index)]; }
+  void set(int index, double value) { numbered_[static_cast<std::size_t>(index)] = value; }
+
+  // Locals first (innermost call), then globals; nullopt when not defined.
+  std::optional<double> named(std::string_view name) const;
+  void set_named(const std::string& name, double value);
+
+  // A subroutine call: a new scope of local names; #1..#30 saved and restored.
+  void push_scope();
+  void pop_scope();
+  std::size_t depth() const { return locals_.size(); }
+
+ private:
+  using Scope = std::vector<std::pair<std::string, double>>;
+  static Scope* find_scope(Scope& scope, std::string_view name);
+  std::array<double, kMaxParameter + 1> numbered_{};
+  Scope globals_;
+  std::vector<Scope> locals_{Scope{}};
+  std::vector<std::array<double, 30>> saved_locals_;
+};
+
+}  // namespace usina::gcode

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Rewrites known_differences.tsv from a run: program, first difference.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+out=$here/known_differences.tsv
+{
+  echo "# Programs of ../shared/conformance/rs274ngc whose trace differs from LinuxCNC's."
+  echo "# program<TAB>first difference (and why, where known). Regenerate: tests/conformance/update_known.sh"
+  { python3 "$here/run_conformance.py" "$here/../../build/usina" "$here/../../../shared" --verbose || true; } |
+    sed -nE 's/^(NEW )?FAIL ([^:]+): (.*)$/\2\t\3/p' | sort
+} > "$out.tmp"
+mv "$out.tmp" "$out"
+wc -l "$out"
