@@ -30,7 +30,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->capture_default_str();
   app.add_option("--max-iterations", o.max_iterations, "iterations a loop may run before it is an error")
       ->capture_default_str();
-  app.add_flag("--no-block-delete", o.no_block_delete, "run the blocks that start with '/'");
+  app.add_flag("--block-delete", o.block_delete, "skip the blocks that start with '/' (the switch on)");
 }
 
 namespace {
@@ -92,7 +92,7 @@ int run_program(const RunOptions& o, canon::Sink& sink) {
   opts.machine_units = o.machine_units == "inch" ? core::LengthUnit::Inch : core::LengthUnit::Mm;
   opts.peck_clearance_mm = o.peck_clearance;
   opts.max_loop_iterations = o.max_iterations;
-  opts.block_delete = !o.no_block_delete;
+  opts.block_delete = o.block_delete;
   opts.subroutine_path = split_path(o.subroutine_path);
   if (o.file != "-") opts.subroutine_path.push_back(folder_of(o.file));
 

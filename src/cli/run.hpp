@@ -19,7 +19,7 @@ struct RunOptions {
   std::string subroutine_path;
   double peck_clearance = 1.0;
   long max_iterations = 10'000'000;
-  bool no_block_delete = false;
+  bool block_delete = false;
 };
 
 void add_run_options(CLI::App& app, RunOptions& o);

@@ -85,6 +85,7 @@ const char* okind_name(OKind k);
 struct OWord {
   OKind kind = OKind::Sub;
   std::string label;        // "100" or a name, lower case, blanks removed
+  ExprRef label_expr = kNoExpr;  // o#1 / o[..]: the label is this value (calls only)
   ExprRef expr = kNoExpr;   // condition, repeat count or return value
   std::vector<ExprRef> args;  // call arguments
   std::uint32_t col = 0;

@@ -41,7 +41,12 @@ std::optional<double> Evaluator::eval(ExprRef ref) {
   case ExprKind::Number: return n.value;
   case ExprKind::Param:
   case ExprKind::NamedParam: return parameter(n);
-  case ExprKind::Exists: return params_.named(normalise_name(n.name)) ? 1.0 : 0.0;
+  case ExprKind::Exists: {
+    if (n.a == kNoExpr) return params_.named(normalise_name(n.name)) ? 1.0 : 0.0;
+    auto idx = eval(n.a);
+    if (!idx) return std::nullopt;
+    return (std::round(*idx) == *idx && *idx >= 1 && *idx <= kMaxParameter) ? 1.0 : 0.0;
+  }
   case ExprKind::Negate: {
     auto a = eval(n.a);
     if (!a) return std::nullopt;

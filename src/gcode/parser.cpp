@@ -185,9 +185,19 @@ constexpr std::array kFunctions = {
 ExprRef Parser::function(std::size_t pos, int depth) {
   if (lex_.accept_keyword("EXISTS")) {
     const std::size_t open = lex_.pos();
-    if (!lex_.accept('[') || !lex_.accept('#') || lex_.peek() != '<') {
-      fail(core::Code::ExpectedExpression, open, "EXISTS takes [#<name>]");
+    if (!lex_.accept('[') || !lex_.accept('#')) {
+      fail(core::Code::ExpectedExpression, open, "EXISTS takes [#<name>] or [#number]");
       return kNoExpr;
+    }
+    if (lex_.peek() != '<') {
+      // EXISTS[#n]: whether n is a parameter number.
+      const ExprRef index = real_value(depth + 1);
+      if (index == kNoExpr) return kNoExpr;
+      if (!lex_.accept(']')) {
+        fail(core::Code::UnclosedBracket, lex_.pos(), "expected ']' after EXISTS[#number");
+        return kNoExpr;
+      }
+      return node({ExprKind::Exists, 0, index, kNoExpr, 0.0, {}, col(pos)});
     }
     auto name = angle_name();
     if (!name) return kNoExpr;
@@ -312,6 +322,10 @@ void Parser::o_word() {
     o.label = normalise_label(*name);
   } else if (auto n = lex_.number()) {
     o.label = fmt::format("{}", *n);
+  } else if (lex_.peek() == '#' || lex_.peek() == '[') {
+    o.label_expr = real_value(1);
+    if (o.label_expr == kNoExpr) return;
+    o.label.assign(1, '#');
   } else {
     fail(core::Code::BadOWord, at, "O-word needs a number or <name>");
     return;
@@ -340,7 +354,14 @@ void Parser::o_word() {
     o.expr = bracketed(0);
     if (o.expr == kNoExpr) return;
   } else if (o.kind == OKind::Call) {
-    while (lex_.peek() == '[') {
+    // Arguments, with comments allowed between them (LinuxCNC's flowsnake.ngc).
+    for (;;) {
+      if (lex_.peek() == '(') {
+        comment_paren();
+        if (error) return;
+        continue;
+      }
+      if (lex_.peek() != '[') break;
       const ExprRef arg = bracketed(0);
       if (arg == kNoExpr) return;
       o.args.push_back(arg);

@@ -13,6 +13,12 @@ bool Interpreter::place_g(BlockWords& w, GCode g, std::uint32_t col) {
     return error(core::Code::UnknownGCode, col, fmt::format("unknown G code {}", g_name(g).data()));
   }
   const auto gi = static_cast<std::size_t>(group);
+  // LinuxCNC accepts G80 beside another motion code (CAM headers write
+  // "G0 G80"): the cycle is cancelled and the other code is the motion.
+  if (group == kGroupMotion && (w.g[gi] == 800 || g == 800) && w.g[gi] != g) {
+    if (g != 800) w.g[gi] = g;
+    return true;
+  }
   if (w.g[gi] != -1) {
     return error(core::Code::ModalGroupConflict, col,
                  fmt::format("{} and {} are in the same modal group; one per block",

@@ -198,9 +198,18 @@ std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name)
 
 Interpreter::Flow Interpreter::call(const OWord& o, std::uint64_t next) {
   (void)next;
-  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
+  std::string label = o.label;
+  if (o.label_expr != kNoExpr) {
+    EvalError err;
+    auto v = gcode::evaluate(block_, o.label_expr, *this, err);
+    if (!v) {
+      error(err.error, err.col);
+      return Flow::Error;
+    }
+    label = fmt::format("{}", *v);
+  }  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
     error(core::Code::RecursionTooDeep, o.col,
-          fmt::format("o<{}> call nests deeper than {} calls", o.label, options_.max_call_depth));
+          fmt::format("o<{}> call nests deeper than {} calls", label, options_.max_call_depth));
     return Flow::Error;
   }
   std::vector<double> args;
@@ -218,26 +227,26 @@ Interpreter::Flow Interpreter::call(const OWord& o, std::uint64_t next) {
     return Flow::Error;
   }
   std::uint32_t file = cursor_.file;
-  std::uint32_t entry = index_of(file).sub(o.label);
+  std::uint32_t entry = index_of(file).sub(label);
   if (entry == kNoEntry && file != 0) {
     file = 0;  // subroutines of the main program are known everywhere
-    entry = index_of(file).sub(o.label);
+    entry = index_of(file).sub(label);
   }
   bool whole_file = false;
   if (entry == kNoEntry) {
-    auto loaded = load_sub_file(o.label);
+    auto loaded = load_sub_file(label);
     if (!loaded) {
       error(core::Code::UnknownSubroutine, o.col,
             fmt::format("unknown subroutine o<{}>: not in this program nor {}.ngc on the "
                         "subroutine path",
-                        o.label, o.label));
+                        label, label));
       return Flow::Error;
     }
     file = *loaded;
-    entry = index_of(file).sub(o.label);
+    entry = index_of(file).sub(label);
     whole_file = entry == kNoEntry;
   }
-  frames_.push_back({cursor_, o.label, whole_file, false, 0, 0, 0, file});
+  frames_.push_back({cursor_, label, whole_file, false, 0, 0, 0, file, std::nullopt});
   params_.push_scope();
   for (int i = 1; i <= 30; ++i) {
     params_.set(i, i <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(i - 1)] : 0.0);
@@ -269,6 +278,7 @@ Interpreter::Flow Interpreter::leave_sub(const OWord& o) {
   }
   params_.pop_scope();
   cursor_ = frames_.back().ret;
+  if (frames_.back().autorestore) restore_modal(*frames_.back().autorestore);
   frames_.pop_back();
   return Flow::Jumped;
 }
@@ -310,7 +320,7 @@ bool Interpreter::fanuc_call(const BlockWords& w) {
   const long times = w.has('L') ? static_cast<long>(w.get('L')) : 1;
   if (times < 1) return true;
   const OEntry& e = idx.at(entry);
-  frames_.push_back({cursor_, label, false, true, times - 1, e.next_line, e.line + 1, cursor_.file});
+  frames_.push_back({cursor_, label, false, true, times - 1, e.next_line, e.line + 1, cursor_.file, std::nullopt});
   jump_to(cursor_.file, e, true);
   return true;
 }

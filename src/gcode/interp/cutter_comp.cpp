@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "core/tolerance.hpp"
 #include "core/units.hpp"
 
 namespace usina::gcode {
@@ -97,7 +98,7 @@ std::optional<InterpError> CutterComp::entry_straight(Vec2 end, double axial, bo
                                                       const MotionTarget& target) {
   const Vec2 from = core::in_plane(target.position(), plane_);
   const double length = distance(from, end);
-  if (length <= radius_) {
+  if (not_beyond_radius(length)) {
     return error(Code::CompEntryMove,
                  fmt::format("cutter compensation entry move is {:.4g} mm long, not longer than "
                              "the tool radius {:.4g} mm; start farther from the contour",
@@ -232,6 +233,15 @@ CutterComp::Held CutterComp::arc_move(const core::SourceLoc& loc, Vec2 end, doub
   return h;
 }
 
+// LinuxCNC's "not greater than the tool radius" (length <= radius), except
+// that a length equal to the radius within rounding passes: LinuxCNC's own
+// radius comes out a hair smaller then, and the reference trace of
+// nc_files/useful-subroutines.ngc (entry move and arc radius both exactly
+// the tool radius) shows no error.
+bool CutterComp::not_beyond_radius(double length) const {
+  return length <= radius_ && !core::nearly_equal(length, radius_, 1e-9);
+}
+
 bool CutterComp::tool_inside(int turn) const {
   // interp_convert.cc TOOL_INSIDE_ARC: left of a counter-clockwise arc.
   return (side_ == CompSide::Left && turn > 0) || (side_ == CompSide::Right && turn < 0);
@@ -301,16 +311,16 @@ std::optional<InterpError> CutterComp::check_move_end(const Held& h, Vec2 to) co
     const double sweep = core::arc_sweep(from, to, h.center, h.turn > 0, std::abs(h.turn));
     if (h.sweep == 0.0 || std::fabs(sweep) <= std::fabs(h.sweep) + kSweepSlack) return std::nullopt;
     return error(Code::CutterGouge,
-                 fmt::format("cutter gouging: the tool (radius {:.4g} mm) cannot reach the "
-                             "concave corner after this arc; its end would have to move past its "
-                             "start; use a smaller tool or a longer arc",
+                 fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit the "
+                             "concave corner after the previous arc; that arc would have to end "
+                             "before it starts; use a smaller tool or a longer arc",
                              radius_));
   }
   if (dot(h.direction, to - from) >= 0.0) return std::nullopt;
   return error(Code::CutterGouge,
-               fmt::format("cutter gouging: the tool (radius {:.4g} mm) cannot reach the concave "
-                           "corner after this straight move; the move is too short and would "
-                           "run backwards; use a smaller tool or a longer move",
+               fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit the concave "
+                           "corner after the previous straight move; that move would have to run "
+                           "backwards; use a smaller tool or a longer move",
                            radius_));
 }
 
@@ -318,9 +328,9 @@ std::optional<InterpError> CutterComp::trim_concave(std::optional<Vec2> corner, 
                                                     MotionTarget& target) {
   if (!corner) {
     return error(Code::CutterGouge,
-                 fmt::format("cutter gouging: the {} corner is too tight for the tool (radius "
-                             "{:.4g} mm); the offset paths do not meet; use a smaller tool",
-                             what, radius_));
+                 fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit this "
+                             "concave {} corner; the offset paths do not meet; use a smaller tool",
+                             radius_, what));
   }
   return move_end_and_release(*corner, target);
 }

@@ -152,6 +152,7 @@ class CutterComp {
   double side_sign() const { return side_ == CompSide::Left ? 1.0 : -1.0; }
   bool compensating() const { return active() && radius_ > 0.0; }
   bool tool_inside(int turn) const;
+  bool not_beyond_radius(double length) const;
   double corner_turn(double into, double out_of) const;
   Vec3 to_program(Vec2 p, double axial) const;
 

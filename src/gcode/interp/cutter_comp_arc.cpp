@@ -74,7 +74,7 @@ std::optional<InterpError> CutterComp::entry_arc(const ArcIn& in, const core::So
   const Vec2 from = core::in_plane(at, plane_);
   const double from_axial = at[core::axes_of(plane_).axial];
   const double chord = distance(from, in.end);
-  if (chord <= radius_) {
+  if (not_beyond_radius(chord)) {
     return InterpError{Code::CompEntryMove,
                        fmt::format("cutter compensation entry arc ends {:.4g} mm from its start, "
                                    "not farther than the tool radius {:.4g} mm; start farther "
@@ -84,7 +84,7 @@ std::optional<InterpError> CutterComp::entry_arc(const ArcIn& in, const core::So
   const bool inside = tool_inside(in.turn);
   // interp_arc.cc arc_data_comp_ijk measures the radius at the start.
   const double arc_radius = distance(in.center, from);
-  if (inside && arc_radius <= radius_) return tool_too_big(arc_radius, radius_);
+  if (inside && not_beyond_radius(arc_radius)) return tool_too_big(arc_radius, radius_);
   const Vec2 out = inside ? unit(in.center - in.end) : unit(in.end - in.center);
   const Vec2 tool = in.end + out * radius_;
   const Vec2 back = from - tool;
@@ -112,7 +112,7 @@ std::optional<InterpError> CutterComp::next_arc(const ArcIn& in, const core::Sou
                                                 MotionTarget& target) {
   const bool inside = tool_inside(in.turn);
   const double arc_radius = distance(in.center, in.end);
-  if (inside && arc_radius <= radius_) return tool_too_big(arc_radius, radius_);
+  if (inside && not_beyond_radius(arc_radius)) return tool_too_big(arc_radius, radius_);
   const double into = angle_of(tool_ - programmed_) - side_sign() * kPi / 2;
   const double out_of = angle_of(in.center - programmed_) - (in.turn > 0 ? kPi / 2 : -kPi / 2);
   const double beta = corner_turn(into, out_of);

@@ -45,7 +45,7 @@ bool Interpreter::execute(const Block& b, BlockWords& w) {
     }
     machine_.dwell(w.get('P'));
   }
-  if (!modal_settings(w) || !modal_zero(w)) return false;
+  if (!modal_save_restore(w) || !modal_settings(w) || !modal_zero(w)) return false;
   if (w.motion != -1 && !motion(w)) return false;
   return stop(w);
 }
@@ -142,6 +142,53 @@ bool Interpreter::set_units(core::LengthUnit u) {
   // nothing else moves. The feed rate keeps its value in mm/min.
   state_.units = u;
   return true;
+}
+
+// M70 save, M71 invalidate, M72 restore, M73 save and restore at the
+// subroutine's return (LinuxCNC manual, M70-M73): modes, not positions.
+bool Interpreter::modal_save_restore(const BlockWords& w) {
+  switch (w.m[kMGroupModalState]) {
+    case 70: saved_modal_ = state_; break;
+    case 71: saved_modal_.reset(); break;
+    case 72:
+      if (!saved_modal_) {
+        return error(core::Code::NotAllowedInMode, w.mcol[kMGroupModalState], "M72 with no state saved by M70");
+      }
+      restore_modal(*saved_modal_);
+      break;
+    case 73:
+      if (frames_.empty()) {
+        return error(core::Code::NotAllowedInMode, w.mcol[kMGroupModalState], "M73 outside a subroutine");
+      }
+      frames_.back().autorestore = state_;
+      break;
+    default: break;
+  }
+  return true;
+}
+
+void Interpreter::restore_modal(const ModalState& saved) {
+  ModalState& s = state_;
+  s.units = saved.units;
+  s.plane = saved.plane;
+  s.incremental = saved.incremental;
+  s.arc_absolute = saved.arc_absolute;
+  s.feed_mode = saved.feed_mode;
+  s.retract = saved.retract;
+  s.css = saved.css;
+  s.lathe_diameter = saved.lathe_diameter;
+  s.path_mode = saved.path_mode;
+  s.feed = saved.feed;
+  s.speed = saved.speed;
+  s.feed_override = saved.feed_override;
+  s.speed_override = saved.speed_override;
+  if (s.mist != saved.mist || s.flood != saved.flood) {
+    s.mist = saved.mist;
+    s.flood = saved.flood;
+    machine_.emit(canon::Coolant{s.mist, s.flood});
+  }
+  if (s.spindle != saved.spindle) machine_.spindle(saved.spindle);
+  if (s.coord_system != saved.coord_system) select_coord_system(saved.coord_system);
 }
 
 bool Interpreter::stop(const BlockWords& w) {

@@ -17,9 +17,9 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
       diags_(diags),
       machine_(sink, state_),
       words_(std::make_unique<BlockWords>()) {
-  // A LinuxCNC machine starts in its own units (a machine configuration
-  // without G20/G21 in the program reads lengths in the machine's units).
-  state_.units = options_.machine_units;
+  // Programs start in mm whatever the machine's units, as LinuxCNC's
+  // stand-alone interpreter does (the conformance traces depend on it).
+  state_.units = core::LengthUnit::Mm;
 }
 
 Interpreter::~Interpreter() = default;

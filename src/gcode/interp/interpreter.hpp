@@ -28,7 +28,7 @@ struct InterpOptions {
   long max_loop_iterations = 10'000'000;                  // per loop, so a runaway loop ends
   int max_call_depth = 200;
   double spline_tolerance_mm = 0.001;
-  bool block_delete = true;  // '/' blocks skipped
+  bool block_delete = false;  // '/' blocks skipped (the operator's switch; off as in LinuxCNC)
   ToolTable tools;
 };
 
@@ -66,6 +66,7 @@ class Interpreter final : private ParameterSource {
     std::uint64_t body = 0;   // M98: where the subprogram's body starts
     std::uint32_t body_line = 0;
     std::uint32_t file = 0;
+    std::optional<ModalState> autorestore;  // M73: restored on return
   };
   struct LoopCount {
     std::uint32_t file;
@@ -108,6 +109,9 @@ class Interpreter final : private ParameterSource {
   bool modal_settings(BlockWords& w);
   bool modal_zero(BlockWords& w);
   bool stop(const BlockWords& w);
+  bool modal_save_restore(const BlockWords& w);
+  void restore_modal(const ModalState& saved);
+  std::optional<ModalState> saved_modal_;  // M70
   bool set_units(core::LengthUnit u);
   bool select_coord_system(int n);
   bool tool_length(BlockWords& w);

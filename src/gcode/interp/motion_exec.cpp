@@ -81,7 +81,8 @@ bool Interpreter::motion(BlockWords& w) {
 }
 
 bool Interpreter::straight(BlockWords& w, GCode g, const Axes& end) {
-  if (g != 0 && !require_feed(w)) return false;
+  // G33/G33.1 move with the spindle (K per revolution), not at F.
+  if (g == 10 && !require_feed(w)) return false;
   if (state_.comp != CompSideState::Off) {
     return error(core::Code::Unsupported, 0, "cutter radius compensation is not finished yet");
   }
@@ -143,9 +144,11 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
     center = state_.arc_absolute ? off : start + off;
     const double r1 = core::distance(start, center);
     const double r2 = core::distance(stop, center);
-    // LinuxCNC accepts a small difference (a spiral); more is an error.
-    const double tol = std::max(state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02, 0.001 * r1);
-    if (std::fabs(r1 - r2) > tol) {
+    // LinuxCNC accepts a small difference (a spiral): up to 2·0.001·√2 in
+    // (2·0.01·√2 mm), or 0.1 % of the larger radius.
+    const double abs_tol = (state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02) * std::sqrt(2.0);
+    const double diff = std::fabs(r1 - r2);
+    if (diff > abs_tol && diff > 0.001 * std::max(r1, r2)) {
       return error(core::Code::ArcRadiusMismatch, 0,
                    fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius {:.4f} about ({:.4f}, {:.4f}); use R, or correct {}/{}",
                                stop.x, stop.y, std::fabs(r1 - r2), r1, center.x, center.y, first, second));
@@ -162,10 +165,15 @@ bool Interpreter::probe(BlockWords& w, const Axes& end) {
   if (state_.comp != CompSideState::Off) {
     return error(core::Code::ProbeBadMove, 0, "probing with cutter compensation on");
   }
-  if (core::distance(xyz(end), xyz(state_.pos)) < 1e-9) {
-    return error(core::Code::ProbeBadMove, 0, "probe move of zero length");
-  }
   machine_.probe_axes(end);
+  // A trace simulates the probe reaching its target without contact:
+  // #5061-#5069 hold the end point, #5070 = 0 (not tripped), as LinuxCNC's
+  // stand-alone interpreter reports.
+  for (int a = 0; a < kAxisCount; ++a) {
+    const double v = end[static_cast<std::size_t>(a)];
+    params_.set(5061 + a, is_rotary(a) ? v : v / core::mm_per(state_.units));
+  }
+  params_.set(5070, 0.0);
   return true;
 }
 

@@ -96,21 +96,31 @@ bool Interpreter::g10(BlockWords& w) {
     }
     const int n = p == 0 ? state_.coord_system : static_cast<int>(p);
     const int base = work_offset_base(n);
-    // L20: offsets that make the current point read the given values.
+    if (w.has('R')) params_.set(base + 9, w.get('R'));
+    // L20: offsets that make the current point read the given values, in
+    // the system's own (rotated) frame: g5x = m − R(v + g92).
     const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
+    Vec3 v = xyz(state_.pos);
+    bool linear = false;
     for (int a = 0; a < kAxisCount; ++a) {
       const char letter = kAxisLetters[a];
       if (!w.has(letter)) continue;
       const auto i = static_cast<std::size_t>(a);
-      const double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
-      double offset = v;
-      if (l == 20) {
-        offset = a < 3 ? abs[a] - (state_.pos[i] + state_.g92[i]) + state_.g5x[i] - state_.g5x[i] + 0.0 : 0.0;
-        offset = a < 3 ? abs[a] - (v + state_.g92[i]) : state_.pos[i] + state_.g5x[i] - v;
+      const double value = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
+      if (l == 20 && a < 3) {
+        v[a] = value;
+        linear = true;
+        continue;
       }
+      const double offset = l == 20 ? state_.pos[i] + state_.g5x[i] - value : value;
       params_.set(base + a, is_rotary(a) ? offset : offset / machine_mm());
     }
-    if (w.has('R')) params_.set(base + 9, w.get('R'));
+    if (linear) {
+      Vec3 q = v + xyz(state_.g92);
+      const Vec2 r = core::rotate({q.x, q.y}, core::deg_to_rad(params_.get(base + 9)));
+      q = {r.x, r.y, q.z};
+      for (int a = 0; a < 3; ++a) params_.set(base + a, (abs[a] - q[a]) / machine_mm());
+    }
     if (n == state_.coord_system) select_coord_system(n);
     return true;
   }
@@ -135,7 +145,8 @@ bool Interpreter::g10(BlockWords& w) {
 bool Interpreter::home(BlockWords& w, int g) {
   const int base = g == 280 ? 5161 : 5181;
   // Through the intermediate point given by the axis words, if any.
-  if (w.has_axis()) machine_.traverse_axes(target(w, false));
+  // LinuxCNC moves there even without axis words (a move to where it is).
+  machine_.traverse_axes(target(w, false));
   // Then to the stored position: every axis, or only those named.
   const Vec3 tool_tip = machine_.to_absolute(xyz(state_.pos));
   Vec3 abs = tool_tip;
@@ -177,7 +188,8 @@ bool Interpreter::tool_length(BlockWords& w) {
     w.clear_letter('Y');
     w.clear_letter('Z');
   }
-  for (std::size_t a = 0; a < 3; ++a) s.pos[a] += s.tool_offset[a] - next[a];
+  // The program position is the tool tip's: it stays; the spindle moves
+  // (LinuxCNC applies the offset below the interpreter).
   s.tool_offset = next;
   return true;
 }

@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz/ with clang (ASan + UBSan) into
+# build-fuzz/, replays every regression case of tests/fuzz/regressions/, then
+# runs each fuzzer for SECONDS (default 20) from the seed corpus. Exits 1 when
+# a regression case fails or the fuzzers find a crash, a hang (> 5 s), a leak
+# or undefined behaviour; new crashers are written to tests/fuzz/crashers/.
+#
+#   scripts/fuzz.sh [SECONDS]
+#   CXX_FUZZ=clang++-15 scripts/fuzz.sh 60     # another clang
+#   FUZZ_JOBS=1 scripts/fuzz.sh                # run the fuzzers one after the other
+set -euo pipefail
+
+root="$(cd "$(dirname "$0")/.." && pwd)"
+seconds="${1:-20}"
+cxx="${CXX_FUZZ:-clang++-14}"
+jobs="${FUZZ_JOBS:-$(nproc)}"
+out="$root/build-fuzz"
+fuzz="$root/tests/fuzz"
+targets=(parser interpreter)
+
+command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
+command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
+
+# The library sources, excluding what src/CMakeLists.txt excludes from the
+# gcode module (work in progress), so the fuzzers build whenever the project does.
+exclude="$(sed -n 's/.*list(FILTER gcode_src EXCLUDE REGEX "\([^"]*\)").*/\1/p' "$root/src/CMakeLists.txt")"
+mapfile -t sources < <(cd "$root" && {
+  ls src/core/*.cpp src/canon/*.cpp
+  find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; }
+} | sort)
+
+# A generated ninja file: parallel, incremental, header dependencies tracked.
+mkdir -p "$out"
+{
+  echo "cxx = $cxx"
+  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -I$root/src"
+  echo "lflags = -fsanitize=fuzzer,address,undefined"
+  echo "rule cxx"
+  echo "  command = \$cxx \$cflags -MMD -MF \$out.d -c \$in -o \$out"
+  echo "  depfile = \$out.d"
+  echo "  deps = gcc"
+  echo "  description = CXX \$in"
+  echo "rule link"
+  echo "  command = \$cxx \$lflags \$in -o \$out -lfmt"
+  echo "  description = LINK \$out"
+  objs=()
+  for s in "${sources[@]}"; do
+    o="obj/${s%.cpp}.o"
+    objs+=("$o")
+    echo "build $o: cxx $root/$s"
+  done
+  for t in "${targets[@]}"; do
+    echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
+    echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o ${objs[*]}"
+  done
+} > "$out/build.ninja.new"
+# Rewrite only on change, so ninja's incremental state survives.
+cmp -s "$out/build.ninja.new" "$out/build.ninja" 2>/dev/null || mv "$out/build.ninja.new" "$out/build.ninja"
+rm -f "$out/build.ninja.new"
+ninja -C "$out" -j "$jobs"
+
+failed=0
+
+# 1. Every crasher ever found is replayed: a bug found is a test first.
+for t in "${targets[@]}"; do
+  shopt -s nullglob
+  cases=("$fuzz/regressions/$t"/*)
+  shopt -u nullglob
+  for c in "${cases[@]}"; do
+    [[ -f "$c" && "$c" != *.md ]] || continue
+    if "$out/fuzz_$t" -timeout=5 -rss_limit_mb=2048 "$c" > "$out/replay.log" 2>&1; then
+      echo "regression ok   $t ${c#"$root/"}"
+    else
+      echo "regression FAIL $t ${c#"$root/"}"
+      grep -E 'ERROR|SUMMARY|runtime error|#[0-9]+ 0x' "$out/replay.log" | head -15 | sed 's/^/    /'
+      failed=1
+    fi
+  done
+done
+
+# 2. Each fuzzer for $seconds (in parallel unless FUZZ_JOBS=1): new inputs go to
+# build-fuzz/corpus/<target>; the checked-in seeds are only read.
+mkdir -p "$fuzz/crashers"
+declare -A pid rc
+for t in "${targets[@]}"; do
+  mkdir -p "$out/corpus/$t"
+  "$out/fuzz_$t" -max_len=4096 -timeout=5 -rss_limit_mb=2048 -max_total_time="$seconds" \
+    -dict="$fuzz/gcode.dict" -artifact_prefix="$fuzz/crashers/$t-" -print_final_stats=1 \
+    "$out/corpus/$t" "$fuzz/corpus" > "$out/fuzz_$t.log" 2>&1 &
+  pid[$t]=$!
+  if [[ "$jobs" -le 1 ]]; then
+    rc[$t]=0
+    wait "${pid[$t]}" || rc[$t]=$?
+  fi
+done
+for t in "${targets[@]}"; do
+  if [[ -z "${rc[$t]:-}" ]]; then
+    rc[$t]=0
+    wait "${pid[$t]}" || rc[$t]=$?
+  fi
+  if [[ "${rc[$t]}" -eq 0 ]]; then
+    runs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/fuzz_$t.log")"
+    echo "fuzz ok   $t: ${runs:-?} runs in ${seconds}s, nothing found"
+  else
+    echo "fuzz FAIL $t (log: build-fuzz/fuzz_$t.log)"
+    grep -E 'ERROR|SUMMARY|runtime error|Test unit written|#[0-9]+ 0x' "$out/fuzz_$t.log" |
+      head -25 | sed 's/^/    /'
+    failed=1
+  fi
+done
+exit "$failed"
