@@ -7,6 +7,7 @@ struct NameOf {
   const char* operator()(const Traverse&) const { return "traverse"; }
   const char* operator()(const Feed&) const { return "feed"; }
   const char* operator()(const Arc&) const { return "arc"; }
+  const char* operator()(const Spline&) const { return "spline"; }
   const char* operator()(const Probe&) const { return "probe"; }
   const char* operator()(const Dwell&) const { return "dwell"; }
   const char* operator()(const ToolChange&) const { return "tool"; }
@@ -24,7 +25,8 @@ const char* op_name(const OpKind& kind) { return std::visit(NameOf{}, kind); }
 
 bool is_motion(const OpKind& kind) {
   return std::holds_alternative<Traverse>(kind) || std::holds_alternative<Feed>(kind) ||
-         std::holds_alternative<Arc>(kind) || std::holds_alternative<Probe>(kind);
+         std::holds_alternative<Arc>(kind) || std::holds_alternative<Spline>(kind) ||
+         std::holds_alternative<Probe>(kind);
 }
 
 }  // namespace usina::canon

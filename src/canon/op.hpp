@@ -42,6 +42,15 @@ struct Arc {
   Abc abc{};
 };
 
+// A spline move (G5, G5.1, G5.2, G6.2): the curve linearised within the
+// interpreter's tolerance, `points` ending at `to`. Its own op, as LinuxCNC's
+// canon has NURBS_FEED besides STRAIGHT_FEED (whose traces do not record it).
+struct Spline {
+  Vec3 to;
+  std::vector<Vec3> points;
+  std::optional<double> f;
+};
+
 struct Probe {
   Vec3 to;
   Abc abc{};
@@ -98,7 +107,7 @@ struct Comment {
 
 struct ProgramEnd {};
 
-using OpKind = std::variant<Traverse, Feed, Arc, Probe, Dwell, ToolChange, Spindle, Coolant, Hole,
+using OpKind = std::variant<Traverse, Feed, Arc, Spline, Probe, Dwell, ToolChange, Spindle, Coolant, Hole,
                             Pocket, Comment, ProgramEnd>;
 
 struct Op {
@@ -109,7 +118,7 @@ struct Op {
 // The name of an op in the trace ("traverse", "feed", ...).
 const char* op_name(const OpKind& kind);
 
-// True for the ops that move the tool (traverse, feed, arc, probe).
+// True for the ops that move the tool (traverse, feed, arc, spline, probe).
 bool is_motion(const OpKind& kind);
 
 }  // namespace usina::canon

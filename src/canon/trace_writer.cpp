@@ -100,6 +100,17 @@ struct JsonFields {
     vec(out, m.to);
     abc(out, m.abc);
   }
+  void operator()(const Spline& m) const {
+    fmt::format_to(out, ",\"to\":");
+    vec(out, m.to);
+    fmt::format_to(out, ",\"points\":[");
+    for (std::size_t i = 0; i < m.points.size(); ++i) {
+      if (i > 0) fmt::format_to(out, ",");
+      vec(out, m.points[i]);
+    }
+    fmt::format_to(out, "]");
+    feed(out, m.f);
+  }
   void operator()(const Dwell& m) const {
     fmt::format_to(out, ",\"s\":");
     num(out, m.s);
@@ -176,6 +187,11 @@ struct TextFields {
     if (m.f) fmt::format_to(out, " F{:g}", *m.f);
   }
   void operator()(const Probe& m) const { xyz(out, m.to); }
+  void operator()(const Spline& m) const {
+    xyz(out, m.to);
+    fmt::format_to(out, " ({} points)", m.points.size());
+    if (m.f) fmt::format_to(out, " F{:g}", *m.f);
+  }
   void operator()(const Dwell& m) const { fmt::format_to(out, " {:g} s", m.s); }
   void operator()(const ToolChange& m) const {
     fmt::format_to(out, " T{}", m.tool);

@@ -18,6 +18,7 @@ namespace {
 class RenderAndDiscard final : public usina::core::DiagnosticSink {
  public:
   explicit RenderAndDiscard(const usina::core::SourceManager& sources) : sources_(sources) {}
+
   void report(usina::core::Diagnostic d) override {
     const std::string text = usina::core::render(d, sources_);
     (void)text;

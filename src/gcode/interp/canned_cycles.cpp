@@ -453,6 +453,25 @@ void cycle_body(Mover& m, const DrillPlan& p, double a, double b) {
   }
 }
 
+// Rapid up to R if below it, then every repeat: to the hole, the cycle.
+// Returns where LinuxCNC's interpreter then is: over the last hole at the clear level.
+Vec3 drill(Mover& m, const DrillPlan& p) {
+  double current = p.cur_c;
+  if (p.raise) {
+    m.traverse(p.cur_a, p.cur_b, p.r);
+    current = p.r;
+  }
+  double a = p.a;
+  double b = p.b;
+  for (long n = 0; n < p.repeats; ++n) {
+    advance(p, a, b);
+    move_over(m, p, a, b, n == 0, current);
+    m.hole(a, b, p.r, p.bottom);
+    cycle_body(m, p, a, b);
+  }
+  return m.at(a, b, p.clear);
+}
+
 // G76 in program units, named as in LinuxCNC's convert_threading_cycle. The
 // drive line is the X where the cycle starts; I is the thread peak's offset
 // from it (negative: external thread), J the first cut's depth beyond the
@@ -635,15 +654,15 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   if (auto e = resolve_cycle_words(words, modal, sticky_, v)) return e;
   const Units u{modal.length_unit};
   const Vec3 pos = target.position();
+  const int normal = core::axes_of(modal.plane).axial;
+  const double initial_mm = initial_level_.value_or(pos[normal]);
   const Vec2 cur = core::in_plane(pos, modal.plane);
-  const double initial_mm = initial_level_.value_or(pos[core::axes_of(modal.plane).axial]);
   p.motion = modal.motion;
   p.plane = modal.plane;
   p.cur_a = u.in(cur.x);
   p.cur_b = u.in(cur.y);
-  p.cur_c = u.in(pos[core::axes_of(modal.plane).axial]);
-  const double initial = u.in(initial_mm);
-  if (auto e = plan_levels(words, modal, v, u, initial, p)) return e;
+  p.cur_c = u.in(pos[normal]);
+  if (auto e = plan_levels(words, modal, v, u, u.in(initial_mm), p)) return e;
   p.dwell = v.p;
   p.peck = u.in(v.q);
   p.clearance = modal.peck_clearance / u.mm;
@@ -651,23 +670,17 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   if (auto e = check_plan(p)) return e;
 
   Mover m(target, p.plane, u);
-  double current = p.cur_c;
-  if (p.raise) {
-    m.traverse(p.cur_a, p.cur_b, p.r);
-    current = p.r;
-  }
-  double a = p.a;
-  double b = p.b;
-  for (long n = 0; n < p.repeats; ++n) {
-    advance(p, a, b);
-    move_over(m, p, a, b, n == 0, current);
-    m.hole(a, b, p.r, p.bottom);
-    cycle_body(m, p, a, b);
-  }
+  end_point_ = drill(m, p);
   initial_level_ = initial_mm;  // LinuxCNC's cycle_il, kept until another motion
+  keep_sticky(v, modal.motion);
+  return std::nullopt;
+}
+
+// What LinuxCNC keeps for the next block (convert_cycle and convert_cycle_xy).
+void CannedCycles::keep_sticky(const Resolved& v, int motion) {
   sticky_.r = v.r;
   sticky_.bottom = v.bottom;
-  const int g = g_of(modal.motion);
+  const int g = g_of(motion);
   if (g == 74 || g == 82 || g == 84 || g == 86 || g == 88 || g == 89) sticky_.p = v.p;
   if (g == 73 || g == 83) sticky_.q = v.q;
   if (g == 87) {
@@ -675,8 +688,6 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
     sticky_.j = v.ijk[1];
     sticky_.k = v.ijk[2];
   }
-  end_point_ = m.at(a, b, p.clear);
-  return std::nullopt;
 }
 
 // G76 (LinuxCNC convert_straight / convert_threading_cycle). Its moves are in

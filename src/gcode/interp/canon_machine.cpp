@@ -64,6 +64,17 @@ void CanonMachine::arc_axes(const Axes& to, const Vec3& center, int turn) {
   emit(canon::Arc{to_absolute(xyz(to)), to_absolute(c), normal, turn, feed_rate(), abc_of(to)});
 }
 
+void CanonMachine::spline(const std::vector<Vec3>& points) {
+  if (points.empty()) return;
+  canon::Spline op;
+  op.points.reserve(points.size());
+  for (const Vec3& p : points) op.points.push_back(to_absolute(p));
+  op.to = op.points.back();
+  op.f = feed_rate();
+  set_xyz(state_->pos, points.back());
+  emit(std::move(op));
+}
+
 void CanonMachine::traverse(const Vec3& to) {
   Axes a = state_->pos;
   set_xyz(a, to);

@@ -29,6 +29,8 @@ class CanonMachine final : public MotionTarget {
   void traverse_axes(const Axes& to);
   void feed_axes(const Axes& to);
   void probe_axes(const Axes& to);
+  // A spline through `points` (program coordinates, the last one its end).
+  void spline(const std::vector<Vec3>& points);
   void arc_axes(const Axes& to, const Vec3& center, int turn);
   void emit(canon::OpKind kind);
   const core::SourceLoc& source() const { return src_; }

@@ -97,7 +97,7 @@ bool Interpreter::check_unused(const BlockWords& w) {
   const GCode g0 = w.g[kGroupNonModal];
   const bool arc = is_arc(mo);
   const bool cycle = is_cycle(mo);
-  const bool spline = mo == 50 || mo == 51 || mo == 52;
+  const bool spline = mo == 50 || mo == 51 || mo == 52 || mo == 62;
   const int mio = w.m[kMGroupIo];
   auto unused = [&](char letter, const char* who) {
     return error(core::Code::UnusedWord, w.col_of(letter),
@@ -106,10 +106,10 @@ bool Interpreter::check_unused(const BlockWords& w) {
   if ((w.has('I') || w.has('J')) && !(arc || spline || mo == 870 || mo == 760 || g0 == 100)) {
     return unused(w.has('I') ? 'I' : 'J', "G2, G3, G5, G76, G87");
   }
-  if (w.has('K') && !(arc || mo == 870 || mo == 760 || mo == 330 || mo == 331)) {
+  if (w.has('K') && !(arc || mo == 870 || mo == 760 || mo == 330 || mo == 331 || mo == 62)) {
     return unused('K', "G2, G3, G33, G76, G87");
   }
-  if (w.has('R') && !(arc || cycle || g0 == 100 || w.m[kMGroupSpindle] == 19)) {
+  if (w.has('R') && !(arc || cycle || mo == 62 || g0 == 100 || w.m[kMGroupSpindle] == 19)) {
     return unused('R', "G2, G3, canned cycles, G10");
   }
   const bool p_user = w.g[kGroupPathControl] == 640 || g0 == 40 || g0 == 100 || arc || cycle ||
@@ -117,7 +117,7 @@ bool Interpreter::check_unused(const BlockWords& w) {
                       w.user_m_count > 0 || w.m[kMGroupSpindle] == 19 || mo == 760;
   if (w.has('P') && !p_user) return unused('P', "G4, G10, G64, G2/G3 turns, dwell cycles, M62-M68");
   const bool q_user = w.g[kGroupPathControl] == 640 || mo == 730 || mo == 830 || mo == 760 ||
-                      mo == 50 || mio == 66 || w.user_m_count > 0 || w.m[kMGroupSpindle] == 19;
+                      mo == 50 || mo == 62 || mio == 66 || w.user_m_count > 0 || w.m[kMGroupSpindle] == 19;
   if (w.has('Q') && !q_user) return unused('Q', "G64, G73, G83, G5, G76");
   if (w.has('L') && !(g0 == 100 || cycle || mo == 52 || w.m[kMGroupSubprogram] != -1 || mio == 66)) {
     return unused('L', "G10, canned cycles, G5.2, M98");

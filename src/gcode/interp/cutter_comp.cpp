@@ -25,9 +25,13 @@ constexpr double kTangent = 0.05;
 // sweep this much more (radians) before it counts as gouging.
 constexpr double kSweepSlack = 0.001;
 
-double angle_of(Vec2 v) { return std::atan2(v.y, v.x); }
+double angle_of(Vec2 v) {
+  return std::atan2(v.y, v.x);
+}
 
-InterpError error(Code code, std::string message) { return {code, std::move(message)}; }
+InterpError error(Code code, std::string message) {
+  return {code, std::move(message)};
+}
 
 }  // namespace
 
@@ -35,7 +39,8 @@ std::optional<InterpError> CutterComp::start(CompSide side, double radius, core:
                                              int orientation) {
   // interp_convert.cc convert_cutter_compensation_on.
   if (side == CompSide::Off) {
-    return error(Code::CompNotAllowed, "cutter compensation side must be left (G41) or right (G42)");
+    return error(Code::CompNotAllowed,
+                 "cutter compensation side must be left (G41) or right (G42)");
   }
   if (active()) {
     return error(Code::CompNotAllowed,
@@ -47,9 +52,9 @@ std::optional<InterpError> CutterComp::start(CompSide side, double radius, core:
                  "select G17 or G18 first");
   }
   if (plane != core::Plane::ZX && orientation != 0 && orientation != 9) {
-    return error(Code::CompNotAllowed,
-                 fmt::format("a lathe tool (orientation {}) can be compensated only in G18",
-                             orientation));
+    return error(
+        Code::CompNotAllowed,
+        fmt::format("a lathe tool (orientation {}) can be compensated only in G18", orientation));
   }
   // A negative radius swaps the side (same function, "switch side & make
   // radius positive").
@@ -270,12 +275,12 @@ Vec3 CutterComp::to_program(Vec2 p, double axial) const {
 void CutterComp::emit(const Held& h, MotionTarget& target) const {
   target.set_source(h.loc);
   switch (h.kind) {
-    case Kind::Traverse: target.traverse(to_program(h.end, h.axial)); break;
-    case Kind::Feed: target.feed(to_program(h.end, h.axial)); break;
-    case Kind::Arc:
-      target.arc(to_program(h.end, h.axial), to_program(h.center, h.center_axial), h.turn);
-      break;
-    case Kind::Deferred: h.op(target); break;
+  case Kind::Traverse: target.traverse(to_program(h.end, h.axial)); break;
+  case Kind::Feed: target.feed(to_program(h.end, h.axial)); break;
+  case Kind::Arc:
+    target.arc(to_program(h.end, h.axial), to_program(h.center, h.center_axial), h.turn);
+    break;
+  case Kind::Deferred: h.op(target); break;
   }
 }
 
@@ -284,7 +289,8 @@ void CutterComp::emit(const Held& h, MotionTarget& target) const {
 void CutterComp::release(MotionTarget& target) {
   std::vector<Held> out;
   out.swap(queue_);
-  for (const Held& h : out) emit(h, target);
+  for (const Held& h : out)
+    emit(h, target);
   queue_start_.reset();
 }
 

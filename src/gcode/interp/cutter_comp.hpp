@@ -106,11 +106,16 @@ class CutterComp {
   void reset() { *this = CutterComp{}; }
 
   bool active() const { return side_ != CompSide::Off; }
+
   CompSide side() const { return side_; }
+
   double radius() const { return radius_; }
+
   bool holding() const { return !queue_.empty(); }
+
   // False just after G40 until a straight move (LinuxCNC arc_not_allowed).
   bool arc_allowed() const { return !arc_not_allowed_; }
+
   // The programmed point while compensating (after the entry move); empty
   // when the tool position is the programmed point.
   std::optional<Vec3> programmed_position() const;
@@ -150,14 +155,16 @@ class CutterComp {
                        double center_axial, int turn, double sweep);
 
   double side_sign() const { return side_ == CompSide::Left ? 1.0 : -1.0; }
+
   bool compensating() const { return active() && radius_ > 0.0; }
+
   bool tool_inside(int turn) const;
   bool not_beyond_radius(double length) const;
   double corner_turn(double into, double out_of) const;
   Vec3 to_program(Vec2 p, double axial) const;
 
-  std::optional<InterpError> pass_straight(const Vec3& end, bool rapid,
-                                           const core::SourceLoc& loc, MotionTarget& target);
+  std::optional<InterpError> pass_straight(const Vec3& end, bool rapid, const core::SourceLoc& loc,
+                                           MotionTarget& target);
   std::optional<InterpError> entry_straight(Vec2 end, double axial, bool rapid,
                                             const core::SourceLoc& loc, const MotionTarget& target);
   std::optional<InterpError> next_straight(Vec2 end, double axial, bool rapid,
@@ -176,6 +183,7 @@ class CutterComp {
                                           MotionTarget& target);
 
   void hold(Held h) { queue_.push_back(std::move(h)); }
+
   void emit(const Held& h, MotionTarget& target) const;
   void release(MotionTarget& target);
   std::optional<InterpError> move_end_and_release(Vec2 to, MotionTarget& target);

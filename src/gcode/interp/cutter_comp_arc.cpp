@@ -19,9 +19,17 @@ constexpr double kTangent = 0.05;
 // interp_internal.hh TOLERANCE_EQUAL.
 constexpr double kEqual = 1e-6;
 
-double angle_of(Vec2 v) { return std::atan2(v.y, v.x); }
-Vec2 unit_at(double angle) { return {std::cos(angle), std::sin(angle)}; }
-Vec2 unit(Vec2 v) { return v / norm(v); }
+double angle_of(Vec2 v) {
+  return std::atan2(v.y, v.x);
+}
+
+Vec2 unit_at(double angle) {
+  return {std::cos(angle), std::sin(angle)};
+}
+
+Vec2 unit(Vec2 v) {
+  return v / norm(v);
+}
 
 InterpError tool_too_big(double arc_radius, double tool_radius) {
   return {Code::CompToolTooBig,
@@ -32,8 +40,7 @@ InterpError tool_too_big(double arc_radius, double tool_radius) {
 
 // Where the line `from` + λ·`along` (a unit vector) meets the circle about
 // `center` of `radius`: the point with the larger λ when `far`.
-std::optional<Vec2> line_meets_circle(Vec2 from, Vec2 along, Vec2 center, double radius,
-                                      bool far) {
+std::optional<Vec2> line_meets_circle(Vec2 from, Vec2 along, Vec2 center, double radius, bool far) {
   const Vec2 d = from - center;
   const double b = dot(d, along);
   const double disc = b * b - (dot(d, d) - radius * radius);
@@ -122,8 +129,7 @@ std::optional<InterpError> CutterComp::next_arc(const ArcIn& in, const core::Sou
                core::arc_sweep(programmed_, in.end, in.center, in.turn > 0, std::abs(in.turn)));
   // Turning back onto an arc the tool is outside of is taken as concave
   // (the top of an "m" or an "h").
-  if (beta < -kTangent || beta > kPi + kTangent ||
-      (std::fabs(beta - kPi) < kTangent && !inside)) {
+  if (beta < -kTangent || beta > kPi + kTangent || (std::fabs(beta - kPi) < kTangent && !inside)) {
     if (!queue_.empty()) {
       const bool after_arc = queue_.front().kind == Kind::Arc;
       const std::optional<Vec2> corner = after_arc ? arc_arc_corner(in) : line_arc_corner(in, into);
@@ -184,7 +190,8 @@ std::optional<Vec2> CutterComp::arc_arc_corner(const ArcIn& in) const {
   const Vec2 between = in.center - prev.center;
   const double d = norm(between);
   if (old_radius == 0.0 || d == 0.0) return std::nullopt;
-  const double a = (old_radius * old_radius + d * d - new_radius * new_radius) / (2 * old_radius * d);
+  const double a =
+      (old_radius * old_radius + d * d - new_radius * new_radius) / (2 * old_radius * d);
   if (a > 1.0 || a < -1.0) return std::nullopt;
   const double pullback = std::acos(a);
   const bool counter_clockwise = tool_inside(prev.turn) == (in.turn > 0);

@@ -169,6 +169,13 @@ class Interpreter final : private ParameterSource {
   std::vector<double> nurbs_weights_;
   int nurbs_order_ = 0;
   void emit_polyline(const std::vector<Vec2>& pts);
+  bool nurbs_g6(BlockWords& w, const Axes& end);
+  struct G6Curve {
+    int order = 0;
+    std::vector<Vec2> points;
+    std::vector<double> weights;
+    std::vector<double> knots;
+  } g6_;
 };
 
 }  // namespace usina::gcode

@@ -76,7 +76,7 @@ bool Interpreter::motion(BlockWords& w) {
   if (g == 0 || g == 10 || g == 330 || g == 331) return straight(w, g, target(w, g53));
   if (g == 20 || g == 30) return arc(w, g, target(w, false));
   if (g >= 382 && g <= 385) return probe(w, target(w, false));
-  if (g >= 50 && g <= 53) return spline(w, g, target(w, false));
+  if ((g >= 50 && g <= 53) || g == 62) return spline(w, g, target(w, false));
   return cycle(w, g);
 }
 

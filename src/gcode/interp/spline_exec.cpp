@@ -9,15 +9,51 @@
 namespace usina::gcode {
 
 void Interpreter::emit_polyline(const std::vector<Vec2>& pts) {
-  for (const Vec2& p : pts) {
-    Axes a = state_.pos;
-    a[0] = p.x;
-    a[1] = p.y;
-    machine_.feed_axes(a);
+  const double axial = state_.pos[static_cast<std::size_t>(core::axes_of(state_.plane).axial)];
+  std::vector<Vec3> points;
+  points.reserve(pts.size());
+  for (const Vec2& p : pts) points.push_back(core::from_plane(p, axial, state_.plane));
+  machine_.spline(points);
+}
+
+// G6.2 (LinuxCNC 2.10): a NURBS with explicit knots, in the active plane.
+// Each G6.2 block adds a control point (its axis words, R weight) with its K
+// knot, or a knot alone; P is the order, Q the controller's interpolation
+// method (no effect on the path). The curve is complete when it has as many
+// knots as points plus the order.
+bool Interpreter::nurbs_g6(BlockWords& w, const Axes& end) {
+  if (g6_.points.empty() && g6_.knots.empty()) {
+    if (!w.has('P')) return error(core::Code::MissingWord, 0, "the first G6.2 block needs P (the order)");
+    g6_.order = static_cast<int>(w.get('P'));
   }
+  if (w.has_axis()) {
+    const double weight = w.has('R') ? w.get('R') : 1.0;
+    if (auto e = core::nurbs_weight_error(weight, g6_.points.size())) {
+      return error(core::Code::SplineBadValue, w.col_of('R'), *e);
+    }
+    g6_.points.push_back(core::in_plane(xyz(end), state_.plane));
+    g6_.weights.push_back(weight);
+  }
+  if (w.has('K')) g6_.knots.push_back(w.get('K'));
+  if (g6_.knots.size() < g6_.points.size() + static_cast<std::size_t>(g6_.order)) return true;
+  if (auto e = core::nurbs_error(g6_.order, g6_.points, g6_.weights)) {
+    g6_ = {};
+    return error(core::Code::SplineBadValue, 0, *e);
+  }
+  core::Nurbs curve{g6_.order, g6_.points, g6_.weights, g6_.knots};
+  for (std::size_t i = 1; i < curve.knots.size(); ++i) {
+    if (curve.knots[i] < curve.knots[i - 1]) {
+      g6_ = {};
+      return error(core::Code::SplineBadValue, 0, "G6.2 knots must not decrease");
+    }
+  }
+  g6_ = {};
+  emit_polyline(core::linearize(curve, options_.spline_tolerance_mm));
+  return true;
 }
 
 bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
+  if (g == 62) return require_feed(w) && nurbs_g6(w, end);
   if (state_.plane != core::Plane::XY) {
     return error(core::Code::NotAllowedInMode, 0, fmt::format("{} works in the XY plane (G17) only", g_name(g).data()));
   }

@@ -1,0 +1,159 @@
+#include "gcode/lexer.hpp"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace usina::gcode {
+namespace {
+
+TEST(Lexer, PeekSkipsBlanksAndUpperCases) {
+  Lexer lex(" \t g1");
+  EXPECT_EQ(lex.peek(), 'G');
+  EXPECT_EQ(lex.pos(), 3u);
+}
+
+TEST(Lexer, CarriageReturnIsABlank) {
+  Lexer lex("\r\rx");
+  EXPECT_EQ(lex.peek(), 'X');
+}
+
+TEST(Lexer, PeekAtTheEndIsNul) {
+  Lexer lex("   ");
+  EXPECT_EQ(lex.peek(), '\0');
+  EXPECT_TRUE(lex.at_end());
+}
+
+TEST(Lexer, PeekSecondSkipsBlanksBetween) {
+  Lexer lex("o  1");
+  EXPECT_EQ(lex.peek_second(), '1');
+  Lexer one("x");
+  EXPECT_EQ(one.peek_second(), '\0');
+}
+
+TEST(Lexer, AcceptConsumesOnlyTheGivenCharacter) {
+  Lexer lex("  [1]");
+  EXPECT_FALSE(lex.accept(']'));
+  EXPECT_TRUE(lex.accept('['));
+  EXPECT_EQ(lex.peek(), '1');
+}
+
+TEST(Lexer, AcceptUpperCaseMatchesLowerCaseText) {
+  Lexer lex("g");
+  EXPECT_TRUE(lex.accept('G'));
+  EXPECT_TRUE(lex.at_end());
+}
+
+TEST(Lexer, NumberPlainDecimal) {
+  Lexer lex("12.5X");
+  const auto v = lex.number();
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(*v, 12.5);
+  EXPECT_EQ(lex.peek(), 'X');
+}
+
+TEST(Lexer, NumberWithBlanksInsideIsOneNumber) {
+  // RS274NGC ignores blanks everywhere outside comments: "1 . 5" is 1.5.
+  Lexer lex("1 . 5 Y");
+  const auto v = lex.number();
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(*v, 1.5);
+  EXPECT_EQ(lex.peek(), 'Y');
+}
+
+TEST(Lexer, DigitsSeparatedByBlanksJoin) {
+  Lexer lex("1 2 3");
+  const auto v = lex.number();
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(*v, 123.0);
+  EXPECT_TRUE(lex.at_end());
+}
+
+TEST(Lexer, NumberLeadingAndTrailingPoint) {
+  Lexer a(".5");
+  EXPECT_EQ(a.number(), 0.5);
+  Lexer b("5.");
+  EXPECT_EQ(b.number(), 5.0);
+}
+
+TEST(Lexer, NumberStopsAtASecondPoint) {
+  Lexer lex("1.2.3");
+  EXPECT_EQ(lex.number(), 1.2);
+  EXPECT_EQ(lex.peek(), '.');
+}
+
+TEST(Lexer, NumberWithoutDigitsConsumesNothing) {
+  Lexer lex(" . X");
+  EXPECT_FALSE(lex.number().has_value());
+  EXPECT_EQ(lex.peek(), '.');
+}
+
+TEST(Lexer, NumberIsUnsigned) {
+  Lexer lex("-1");
+  EXPECT_FALSE(lex.number().has_value());
+  EXPECT_EQ(lex.peek(), '-');
+}
+
+TEST(Lexer, TrailingBlanksAfterANumberAreLeft) {
+  Lexer lex("12   ");
+  EXPECT_EQ(lex.number(), 12.0);
+  EXPECT_EQ(lex.pos(), 5u);
+  EXPECT_TRUE(lex.at_end());
+}
+
+TEST(Lexer, LongNumberWithoutBlanksIsRead) {
+  Lexer lex("000000000000000000000000000000000000000000000000000000000000000000000001.5");
+  EXPECT_EQ(lex.number(), 1.5);
+}
+
+TEST(Lexer, AcceptKeywordIsCaseInsensitiveAndAllowsBlanks) {
+  Lexer lex("e n d S u B rest");
+  EXPECT_TRUE(lex.accept_keyword("ENDSUB"));
+  EXPECT_EQ(lex.peek(), 'R');
+}
+
+TEST(Lexer, FailedKeywordConsumesNothing) {
+  Lexer lex("ENDWHILE");
+  EXPECT_FALSE(lex.accept_keyword("ENDSUB"));
+  EXPECT_EQ(lex.pos(), 0u);
+  EXPECT_TRUE(lex.accept_keyword("ENDWHILE"));
+}
+
+TEST(Lexer, KeywordLongerThanTheTextFails) {
+  Lexer lex("MO");
+  EXPECT_FALSE(lex.accept_keyword("MOD"));
+  EXPECT_EQ(lex.peek(), 'M');
+}
+
+TEST(Lexer, UntilReturnsRawTextAndConsumesTheClose) {
+  Lexer lex("(  Hello World)G1");
+  lex.advance();
+  const auto t = lex.until(')');
+  ASSERT_TRUE(t.has_value());
+  EXPECT_EQ(*t, "  Hello World");
+  EXPECT_EQ(lex.peek(), 'G');
+}
+
+TEST(Lexer, UntilWithoutCloseConsumesTheRest) {
+  Lexer lex("(open");
+  lex.advance();
+  EXPECT_FALSE(lex.until(')').has_value());
+  EXPECT_TRUE(lex.at_end());
+}
+
+TEST(Lexer, RestIsRawAndEndsTheText) {
+  Lexer lex(";  Keep Case ");
+  lex.advance();
+  EXPECT_EQ(lex.rest(), "  Keep Case ");
+  EXPECT_TRUE(lex.at_end());
+}
+
+TEST(Lexer, TextIsTheWholeInput) {
+  const std::string s = "G1 X2";
+  Lexer lex(s);
+  lex.advance();
+  EXPECT_EQ(lex.text(), s);
+}
+
+}  // namespace
+}  // namespace usina::gcode
