@@ -26,17 +26,23 @@ constexpr long kMaxPecks = 100000;      // G73/G83 pecks in one hole
 constexpr long kMaxPasses = 100000;     // G76 passes
 constexpr double kMaxMoves = 4e6;       // moves one block may make
 
-InterpError error(Code code, std::string message) { return {code, std::move(message)}; }
+InterpError error(Code code, std::string message) {
+  return {code, std::move(message)};
+}
 
-int g_of(int motion) { return motion / 10; }
+int g_of(int motion) {
+  return motion / 10;
+}
 
-char axis_letter(int axis) { return "XYZ"[axis]; }
+char axis_letter(int axis) {
+  return "XYZ"[axis];
+}
 
 const char* plane_name(Plane p) {
   switch (p) {
-    case Plane::XY: return "the XY plane (G17)";
-    case Plane::ZX: return "the ZX plane (G18)";
-    case Plane::YZ: return "the YZ plane (G19)";
+  case Plane::XY: return "the XY plane (G17)";
+  case Plane::ZX: return "the ZX plane (G18)";
+  case Plane::YZ: return "the YZ plane (G19)";
   }
   return "?";
 }
@@ -50,14 +56,15 @@ struct Units {
   double in(double v) const {
     if (mm == 1.0) return v;
     std::array<char, 40> buf{};
-    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v / mm,
-                                   std::chars_format::general, 15);
+    const auto res =
+        std::to_chars(buf.data(), buf.data() + buf.size(), v / mm, std::chars_format::general, 15);
     double u = v / mm;
     std::from_chars(buf.data(), res.ptr, u);
     return u;
   }
 
   double out(double u) const { return u * mm; }
+
   Vec3 out(const Vec3& u) const { return u * mm; }
 };
 
@@ -81,9 +88,13 @@ class Mover {
   }
 
   void traverse(double a, double b, double c) { target_.traverse(at(a, b, c)); }
+
   void feed(double a, double b, double c) { target_.feed(at(a, b, c)); }
+
   void dwell(double s) { target_.dwell(s); }
+
   void spindle(SpindleDir d) { target_.spindle(d); }
+
   void hole(double a, double b, double r, double bottom) {
     target_.hole(at(a, b, r), units_.out(r - bottom));
   }
@@ -98,12 +109,12 @@ class Mover {
 struct DrillPlan {
   int motion = 810;
   Plane plane = Plane::XY;
-  double cur_a = 0, cur_b = 0, cur_c = 0;  // the current point (c on the plane's normal)
-  double a = 0, b = 0;                     // the hole before the first repeat's increment
+  double cur_a = 0, cur_b = 0, cur_c = 0;          // the current point (c on the plane's normal)
+  double a = 0, b = 0;                             // the hole before the first repeat's increment
   double da = 0, db = 0, dradius = 0, dtheta = 0;  // G91 increments per repeat
   double r = 0, bottom = 0, clear = 0;
-  bool raise = false;         // rapid up to R first: the initial level is below it
-  double middle = 0;          // G87: top of the back bore
+  bool raise = false;           // rapid up to R first: the initial level is below it
+  double middle = 0;            // G87: top of the back bore
   double off_a = 0, off_b = 0;  // G87: offsets of the tool's way in
   double dwell = 0, peck = 0, clearance = 0;
   long repeats = 1;
@@ -127,8 +138,8 @@ std::optional<InterpError> read_repeats(const CycleWords& w, int motion, long& r
   }
   if (*w.l > kMaxRepeats) {
     return error(Code::TooManyIterations,
-                 fmt::format("G{} L{:g} repeats the cycle more than {:g} times", g_of(motion),
-                             *w.l, kMaxRepeats));
+                 fmt::format("G{} L{:g} repeats the cycle more than {:g} times", g_of(motion), *w.l,
+                             kMaxRepeats));
   }
   if (!l || *l < 0) {
     return error(Code::BadWordValue,
@@ -145,9 +156,9 @@ std::optional<InterpError> resolve_levels(const CycleWords& w, const CycleModal&
                                           const CannedCycles::Sticky& s, Resolved& out) {
   const int g = g_of(m.motion);
   if (!w.r && m.motion_mode_changed) {
-    return error(Code::MissingWord,
-                 fmt::format("G{} needs R, the retract plane, in the block that starts the cycle",
-                             g));
+    return error(
+        Code::MissingWord,
+        fmt::format("G{} needs R, the retract plane, in the block that starts the cycle", g));
   }
   const int normal = core::axes_of(m.plane).axial;
   const std::array<const std::optional<double>*, 3> axis{&w.x, &w.y, &w.z};
@@ -227,9 +238,8 @@ std::optional<InterpError> check_spindle(int motion, SpindleDir dir) {
 }
 
 // convert_cycle_xy/_zx/_yz: the hole, R, bottom and clear level in program units.
-std::optional<InterpError> plan_levels(const CycleWords& w, const CycleModal& m,
-                                       const Resolved& v, Units u, double initial,
-                                       DrillPlan& p) {
+std::optional<InterpError> plan_levels(const CycleWords& w, const CycleModal& m, const Resolved& v,
+                                       Units u, double initial, DrillPlan& p) {
   const core::PlaneAxes ax = core::axes_of(m.plane);
   const std::array<const std::optional<double>*, 3> axis{&w.x, &w.y, &w.z};
   const auto word = [&](int n) { return *axis[static_cast<std::size_t>(n)]; };
@@ -298,7 +308,8 @@ bool advance(const DrillPlan& p, double& a, double& b) {
 
 long count_pecks(const DrillPlan& p) {
   long n = 0;
-  for (double d = p.r - p.peck; d > p.bottom && n <= kMaxPecks; d -= p.peck) ++n;
+  for (double d = p.r - p.peck; d > p.bottom && n <= kMaxPecks; d -= p.peck)
+    ++n;
   return n;
 }
 
@@ -317,7 +328,8 @@ std::optional<InterpError> check_plan(const DrillPlan& p) {
   }
   const bool pecks = p.motion == 730 || p.motion == 830;
   const long n = pecks ? count_pecks(p) : 0;
-  if (n > kMaxPecks || static_cast<double>(p.repeats) * static_cast<double>(3 * n + 12) > kMaxMoves) {
+  if (n > kMaxPecks ||
+      static_cast<double>(p.repeats) * static_cast<double>(3 * n + 12) > kMaxMoves) {
     return error(Code::TooManyIterations,
                  fmt::format("G{} would make more than {:g} moves (Q{:g} mm is too small for the "
                              "depth, or L too large)",
@@ -376,9 +388,9 @@ void g74_g84(Mover& m, const DrillPlan& p, double a, double b) {
   const bool right = p.motion == 840;
   const auto tap_feed = [&](double c) {
     switch (p.plane) {
-      case Plane::XY: m.feed(a, b, c); break;
-      case Plane::ZX: m.feed(b, c, a); break;
-      case Plane::YZ: m.feed(c, a, b); break;
+    case Plane::XY: m.feed(a, b, c); break;
+    case Plane::ZX: m.feed(b, c, a); break;
+    case Plane::YZ: m.feed(c, a, b); break;
     }
   };
   tap_feed(p.bottom);
@@ -440,16 +452,16 @@ void g88(Mover& m, const DrillPlan& p, double a, double b) {
 
 void cycle_body(Mover& m, const DrillPlan& p, double a, double b) {
   switch (p.motion) {
-    case 730: g73(m, p, a, b); break;
-    case 830: g83(m, p, a, b); break;
-    case 740:
-    case 840: g74_g84(m, p, a, b); break;
-    case 860: g86(m, p, a, b); break;
-    case 870: g87(m, p, a, b); break;
-    case 880: g88(m, p, a, b); break;
-    case 850:
-    case 890: g85_g89(m, p, a, b); break;
-    default: g81_g82(m, p, a, b); break;
+  case 730: g73(m, p, a, b); break;
+  case 830: g83(m, p, a, b); break;
+  case 740:
+  case 840: g74_g84(m, p, a, b); break;
+  case 860: g86(m, p, a, b); break;
+  case 870: g87(m, p, a, b); break;
+  case 880: g88(m, p, a, b); break;
+  case 850:
+  case 890: g85_g89(m, p, a, b); break;
+  default: g81_g82(m, p, a, b); break;
   }
 }
 
@@ -472,6 +484,20 @@ Vec3 drill(Mover& m, const DrillPlan& p) {
   return m.at(a, b, p.clear);
 }
 
+// What LinuxCNC keeps for the next block (convert_cycle and convert_cycle_xy).
+void keep_sticky(CannedCycles::Sticky& sticky, const Resolved& v, int motion) {
+  sticky.r = v.r;
+  sticky.bottom = v.bottom;
+  const int g = g_of(motion);
+  if (g == 74 || g == 82 || g == 84 || g == 86 || g == 88 || g == 89) sticky.p = v.p;
+  if (g == 73 || g == 83) sticky.q = v.q;
+  if (g == 87) {
+    sticky.i = v.ijk[0];
+    sticky.j = v.ijk[1];
+    sticky.k = v.ijk[2];
+  }
+}
+
 // G76 in program units, named as in LinuxCNC's convert_threading_cycle. The
 // drive line is the X where the cycle starts; I is the thread peak's offset
 // from it (negative: external thread), J the first cut's depth beyond the
@@ -481,16 +507,16 @@ struct ThreadPlan {
   double safe_x = 0, start_y = 0, start_z = 0;
   double full_dia_depth = 0, start_depth = 0, cut_increment = 0;
   double full_threadheight = 0, end_depth = 0;
-  double angle = 0;   // compound slide angle, radians, signed by the direction along Z
-  double taper = 0;   // E, signed like the angle
+  double angle = 0;  // compound slide angle, radians, signed by the direction along Z
+  double taper = 0;  // E, signed like the angle
   double target_z = 0, degression = 1;
   long spring_passes = 0;
   bool entry_taper = false, exit_taper = false;
   Vec3 end;
 };
 
-std::optional<InterpError> read_count(const std::optional<double>& w, char letter,
-                                      const char* what, long& out) {
+std::optional<InterpError> read_count(const std::optional<double>& w, char letter, const char* what,
+                                      long& out) {
   out = 0;
   if (!w) return std::nullopt;
   const std::optional<long> n = whole_number(*w);
@@ -529,9 +555,9 @@ std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleMo
                  fmt::format("G76 J{:g}: the first cut depth must be greater than 0 mm", *w.j));
   }
   if (*w.k <= *w.j) {
-    return error(Code::CycleBadValue,
-                 fmt::format("G76 K{:g}: the thread depth must be greater than J{:g} mm", *w.k,
-                             *w.j));
+    return error(
+        Code::CycleBadValue,
+        fmt::format("G76 K{:g}: the thread depth must be greater than J{:g} mm", *w.k, *w.j));
   }
   return std::nullopt;
 }
@@ -598,7 +624,8 @@ void thread_pass(Mover& m, const ThreadPlan& t, double depth, double zoff) {
 // when the degression R is 2 (depth ~ sqrt(n)), the depth step when R is 1.
 double next_depth(const ThreadPlan& t, long& pass) {
   ++pass;
-  return t.full_dia_depth + t.cut_increment * std::pow(static_cast<double>(pass), 1.0 / t.degression);
+  return t.full_dia_depth +
+         t.cut_increment * std::pow(static_cast<double>(pass), 1.0 / t.degression);
 }
 
 long count_thread_passes(const ThreadPlan& t) {
@@ -619,7 +646,8 @@ void cut_thread(Mover& m, const ThreadPlan& t) {
   }
   // The full depth, once and then once per spring pass.
   const double zoff = (t.end_depth - t.full_dia_depth) * tan_angle;
-  for (long n = 0; n <= t.spring_passes; ++n) thread_pass(m, t, t.end_depth, zoff);
+  for (long n = 0; n <= t.spring_passes; ++n)
+    thread_pass(m, t, t.end_depth, zoff);
   m.traverse(t.end.x, t.end.y, t.end.z);
 }
 
@@ -672,22 +700,8 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   Mover m(target, p.plane, u);
   end_point_ = drill(m, p);
   initial_level_ = initial_mm;  // LinuxCNC's cycle_il, kept until another motion
-  keep_sticky(v, modal.motion);
+  keep_sticky(sticky_, v, modal.motion);
   return std::nullopt;
-}
-
-// What LinuxCNC keeps for the next block (convert_cycle and convert_cycle_xy).
-void CannedCycles::keep_sticky(const Resolved& v, int motion) {
-  sticky_.r = v.r;
-  sticky_.bottom = v.bottom;
-  const int g = g_of(motion);
-  if (g == 74 || g == 82 || g == 84 || g == 86 || g == 88 || g == 89) sticky_.p = v.p;
-  if (g == 73 || g == 83) sticky_.q = v.q;
-  if (g == 87) {
-    sticky_.i = v.ijk[0];
-    sticky_.j = v.ijk[1];
-    sticky_.k = v.ijk[2];
-  }
 }
 
 // G76 (LinuxCNC convert_straight / convert_threading_cycle). Its moves are in

@@ -117,7 +117,8 @@ bool Interpreter::check_unused(const BlockWords& w) {
                       w.user_m_count > 0 || w.m[kMGroupSpindle] == 19 || mo == 760;
   if (w.has('P') && !p_user) return unused('P', "G4, G10, G64, G2/G3 turns, dwell cycles, M62-M68");
   const bool q_user = w.g[kGroupPathControl] == 640 || mo == 730 || mo == 830 || mo == 760 ||
-                      mo == 50 || mo == 62 || mio == 66 || w.user_m_count > 0 || w.m[kMGroupSpindle] == 19;
+                      mo == 50 || mo == 62 || mio != -1 || w.user_m_count > 0 ||
+                      w.m[kMGroupSpindle] == 19 || w.m[kMGroupToolChange] == 61;
   if (w.has('Q') && !q_user) return unused('Q', "G64, G73, G83, G5, G76");
   if (w.has('L') && !(g0 == 100 || cycle || mo == 52 || w.m[kMGroupSubprogram] != -1 || mio == 66)) {
     return unused('L', "G10, canned cycles, G5.2, M98");
@@ -128,7 +129,7 @@ bool Interpreter::check_unused(const BlockWords& w) {
   }
   const GCode tlo = w.g[kGroupToolLength];
   if (w.has('H') && !(tlo == 430 || tlo == 432 || mo == 760)) return unused('H', "G43, G43.2");
-  if (w.has('E') && mo != 760) return unused('E', "G76");
+  if (w.has('E') && mo != 760 && mio == -1) return unused('E', "G76, M62-M68");
   return true;
 }
 

@@ -179,7 +179,7 @@ void CutterComp::emit_corner(Vec2 to, Vec2 about, bool rapid, const core::Source
   // has no arc: LinuxCNC goes straight to the next move's start.
   const int turn = side_ == CompSide::Left ? -1 : 1;
   emit(rapid ? straight_move(Kind::Traverse, loc, to, axial_)
-             : arc_move(loc, to, axial_, about, axial_, turn, 0.0),
+             : arc_move(loc, to, axial_, {about, axial_, turn}, 0.0),
        target);
   queue_start_ = to;
 }
@@ -229,11 +229,11 @@ CutterComp::Held CutterComp::straight_move(Kind kind, const core::SourceLoc& loc
 }
 
 CutterComp::Held CutterComp::arc_move(const core::SourceLoc& loc, Vec2 end, double axial,
-                                      Vec2 center, double center_axial, int turn, double sweep) {
+                                      const About& about, double sweep) {
   Held h = straight_move(Kind::Arc, loc, end, axial);
-  h.center = center;
-  h.center_axial = center_axial;
-  h.turn = turn;
+  h.center = about.center;
+  h.center_axial = about.axial;
+  h.turn = about.turn;
   h.sweep = sweep;
   return h;
 }

@@ -151,8 +151,16 @@ class CutterComp {
 
   static Held straight_move(Kind kind, const core::SourceLoc& loc, Vec2 end, double axial,
                             Vec2 direction = {});
-  static Held arc_move(const core::SourceLoc& loc, Vec2 end, double axial, Vec2 center,
-                       double center_axial, int turn, double sweep);
+
+  // An arc's centre, its axial coordinate (the start's) and its turn.
+  struct About {
+    Vec2 center;
+    double axial = 0.0;
+    int turn = 0;
+  };
+
+  static Held arc_move(const core::SourceLoc& loc, Vec2 end, double axial, const About& about,
+                       double sweep);
 
   double side_sign() const { return side_ == CompSide::Left ? 1.0 : -1.0; }
 

@@ -104,7 +104,7 @@ std::optional<InterpError> CutterComp::entry_arc(const ArcIn& in, const core::So
     queue_start_ = from;
     hold(straight_move(Kind::Feed, loc, from, from_axial));
   }
-  hold(arc_move(loc, tool, in.axial, center, from_axial, in.turn,
+  hold(arc_move(loc, tool, in.axial, {center, from_axial, in.turn},
                 core::arc_sweep(from, tool, center, in.turn > 0, std::abs(in.turn))));
   first_move_ = false;
   tool_ = tool;
@@ -125,7 +125,7 @@ std::optional<InterpError> CutterComp::next_arc(const ArcIn& in, const core::Sou
   const double beta = corner_turn(into, out_of);
   const Vec2 out = inside ? unit(in.center - in.end) : unit(in.end - in.center);
   const Held move =
-      arc_move(loc, in.end + out * radius_, in.axial, in.center, axial_, in.turn,
+      arc_move(loc, in.end + out * radius_, in.axial, {in.center, axial_, in.turn},
                core::arc_sweep(programmed_, in.end, in.center, in.turn > 0, std::abs(in.turn)));
   // Turning back onto an arc the tool is outside of is taken as concave
   // (the top of an "m" or an "h").
