@@ -15,10 +15,18 @@ class Lexer {
   explicit Lexer(std::string_view text) : text_(text) {}
 
   // Position of the next non-blank character (0-based), or the end.
-  std::size_t pos();
+  std::size_t pos() {
+    skip_blanks();
+    return i_;
+  }
   bool at_end() { return pos() >= text_.size(); }
   // The next non-blank character in upper case, or 0 at the end.
-  char peek();
+  char peek() {
+    skip_blanks();
+    if (i_ >= text_.size()) return '\0';
+    const char c = text_[i_];
+    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+  }
   // The character after the next non-blank one (blanks skipped), upper case.
   char peek_second();
   void advance() { ++i_; }
@@ -38,7 +46,11 @@ class Lexer {
   std::string_view text() const { return text_; }
 
  private:
-  void skip_blanks();
+  // Hot: called before every token.
+  void skip_blanks() {
+    while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '\r')) ++i_;
+  }
+  std::optional<double> number_slow(std::size_t start);
   std::string_view text_;
   std::size_t i_ = 0;
 };

@@ -9,6 +9,11 @@ namespace usina::gcode {
 
 bool Interpreter::place_g(BlockWords& w, GCode g, std::uint32_t col) {
   const int group = g_group(g);
+  if (g == 700 || g == 710 || g == 711 || g == 720 || g == 721) {
+    return error(core::Code::Unsupported, col,
+                 fmt::format("{} (LinuxCNC's lathe roughing/finishing cycle) is not supported yet",
+                             g_name(g).data()));
+  }
   if (group < 0) {
     return error(core::Code::UnknownGCode, col, fmt::format("unknown G code {}", g_name(g).data()));
   }

@@ -101,7 +101,10 @@ bool Interpreter::evaluate(const Block& b, BlockWords& w) {
   w.reset();
   EvalError err;
   for (const Word& word : b.words) {
-    auto v = gcode::evaluate(b, word.value, *this, err);
+    // Most words are plain numbers: no evaluator needed.
+    const ExprNode& node = b.expr(word.value);
+    auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
+                                           : gcode::evaluate(b, word.value, *this, err);
     if (!v) return error(err.error, err.col);
     if (word.letter == 'G' || word.letter == 'M') {
       // Codes are read in tenths (G38.2 → 382); M codes must be integers.
