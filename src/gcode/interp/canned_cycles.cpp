@@ -65,6 +65,11 @@ struct Units {
 
   double out(double u) const { return u * mm; }
 
+  // A length for a message, in the program's unit: "0.5 in", "12 mm".
+  std::string show(double v) const {
+    return fmt::format("{:g} {}", in(v), mm == 1.0 ? "mm" : "in");
+  }
+
   Vec3 out(const Vec3& u) const { return u * mm; }
 };
 
@@ -130,21 +135,21 @@ struct Resolved {
 std::optional<InterpError> read_repeats(const CycleWords& w, int motion, long& repeats) {
   repeats = 1;
   if (!w.l) return std::nullopt;
-  const std::optional<long> l = whole_number(*w.l);
-  if (*w.l == 0) {
-    return error(Code::BadWordValue,
-                 fmt::format("G{} L0: a cycle cannot run zero times; give L1 or more, or no L",
-                             g_of(motion)));
-  }
   if (*w.l > kMaxRepeats) {
     return error(Code::TooManyIterations,
                  fmt::format("G{} L{:g} repeats the cycle more than {:g} times", g_of(motion), *w.l,
                              kMaxRepeats));
   }
+  const std::optional<long> l = whole_number(*w.l);
   if (!l || *l < 0) {
     return error(Code::BadWordValue,
                  fmt::format("G{} L{:g}: the number of repeats must be a positive whole number",
                              g_of(motion), *w.l));
+  }
+  if (*l == 0) {
+    return error(Code::BadWordValue,
+                 fmt::format("G{} L0: a cycle cannot run zero times; give L1 or more, or no L",
+                             g_of(motion)));
   }
   repeats = *l;
   return std::nullopt;
@@ -178,6 +183,7 @@ std::optional<InterpError> resolve_levels(const CycleWords& w, const CycleModal&
 std::optional<InterpError> resolve_cycle_words(const CycleWords& w, const CycleModal& m,
                                                const CannedCycles::Sticky& s, Resolved& out) {
   const int g = g_of(m.motion);
+  const Units u{m.length_unit};
   const bool dwells = g == 82 || g == 86 || g == 88 || g == 89;
   if (dwells && !w.p && m.motion_mode_changed) {
     return error(Code::MissingWord,
@@ -197,7 +203,7 @@ std::optional<InterpError> resolve_cycle_words(const CycleWords& w, const CycleM
   out.q = w.q.value_or(s.q);
   if ((g == 73 || g == 83) && out.q <= 0) {
     return error(Code::CycleBadValue,
-                 fmt::format("G{} Q{:g}: the peck depth must be greater than 0 mm", g, out.q));
+                 fmt::format("G{} Q{:g}: the peck depth must be greater than 0", g, u.in(out.q)));
   }
   const std::array<const std::optional<double>*, 3> ijk{&w.i, &w.j, &w.k};
   const std::array<double, 3> kept{s.i, s.j, s.k};
@@ -268,9 +274,9 @@ std::optional<InterpError> plan_levels(const CycleWords& w, const CycleModal& m,
   if (p.r < p.bottom) {
     const char n = axis_letter(ax.axial);
     return error(Code::CycleBadValue,
-                 fmt::format("G{}: the retract plane R ({}{:g} mm) is below the bottom of the "
-                             "hole ({}{:g} mm); R must be at or above the bottom{}",
-                             g_of(m.motion), n, u.out(p.r), n, u.out(p.bottom),
+                 fmt::format("G{}: the retract plane R ({}{}) is below the bottom of the hole "
+                             "({}{}); R must be at or above the bottom{}",
+                             g_of(m.motion), n, u.show(u.out(p.r)), n, u.show(u.out(p.bottom)),
                              m.incremental ? " (under G91 R counts from the initial level and "
                                              "the bottom from R)"
                                            : ""));
@@ -331,7 +337,7 @@ std::optional<InterpError> check_plan(const DrillPlan& p) {
   if (n > kMaxPecks ||
       static_cast<double>(p.repeats) * static_cast<double>(3 * n + 12) > kMaxMoves) {
     return error(Code::TooManyIterations,
-                 fmt::format("G{} would make more than {:g} moves (Q{:g} mm is too small for the "
+                 fmt::format("G{} would make more than {:g} moves (Q{:g} is too small for the "
                              "depth, or L too large)",
                              g_of(p.motion), kMaxMoves, p.peck));
   }
@@ -535,6 +541,7 @@ std::optional<InterpError> read_count(const std::optional<double>& w, char lette
 // In LinuxCNC's order: words as read, the block's checks, then the cycle's.
 std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleModal& m,
                                               long& spring, long& tapers) {
+  const Units u{m.length_unit};
   if (auto e = read_count(w.h, 'H', "the number of spring passes", spring)) return e;
   if (auto e = read_count(w.l, 'L', "L (taper ends: 1 entry, 2 exit, 3 both)", tapers)) return e;
   if (!w.p) return error(Code::MissingWord, "G76 needs P, the thread pitch");
@@ -552,12 +559,12 @@ std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleMo
   }
   if (*w.j <= 0) {
     return error(Code::CycleBadValue,
-                 fmt::format("G76 J{:g}: the first cut depth must be greater than 0 mm", *w.j));
+                 fmt::format("G76 J{:g}: the first cut depth must be greater than 0", u.in(*w.j)));
   }
   if (*w.k <= *w.j) {
-    return error(
-        Code::CycleBadValue,
-        fmt::format("G76 K{:g}: the thread depth must be greater than J{:g} mm", *w.k, *w.j));
+    return error(Code::CycleBadValue,
+                 fmt::format("G76 K{:g}: the thread depth must be greater than J{:g}", u.in(*w.k),
+                             u.in(*w.j)));
   }
   return std::nullopt;
 }
@@ -651,6 +658,31 @@ void cut_thread(Mover& m, const ThreadPlan& t) {
   m.traverse(t.end.x, t.end.y, t.end.z);
 }
 
+// NaN or infinity from an expression would make moves to nowhere.
+std::optional<InterpError> check_finite(const CycleWords& w, int motion) {
+  const std::array<std::pair<char, const std::optional<double>*>, 14> all{{{'X', &w.x},
+                                                                           {'Y', &w.y},
+                                                                           {'Z', &w.z},
+                                                                           {'R', &w.r},
+                                                                           {'Q', &w.q},
+                                                                           {'I', &w.i},
+                                                                           {'J', &w.j},
+                                                                           {'K', &w.k},
+                                                                           {'P', &w.p},
+                                                                           {'L', &w.l},
+                                                                           {'H', &w.h},
+                                                                           {'E', &w.e},
+                                                                           {'@', &w.polar_radius},
+                                                                           {'^', &w.polar_angle}}};
+  for (const auto& [letter, v] : all) {
+    if (*v && !std::isfinite(**v)) {
+      return error(Code::BadWordValue,
+                   fmt::format("G{:g}: {} is not a finite number", motion / 10.0, letter));
+    }
+  }
+  return std::nullopt;
+}
+
 bool is_drilling_cycle(int motion) {
   return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890 && motion % 10 == 0);
 }
@@ -659,6 +691,7 @@ bool is_drilling_cycle(int motion) {
 
 std::optional<InterpError> CannedCycles::run(const CycleWords& words, const CycleModal& modal,
                                              MotionTarget& target) {
+  if (auto e = check_finite(words, modal.motion)) return e;
   if (modal.motion == 760) return run_threading(words, modal, target);
   if (!is_drilling_cycle(modal.motion)) {
     return error(Code::Unsupported,

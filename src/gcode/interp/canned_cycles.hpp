@@ -19,16 +19,16 @@ namespace usina::gcode {
 // increments under G91. Every length is in mm (the interpreter multiplies by
 // 25.4 under G20); X is a radius coordinate under G7 as for any move.
 struct CycleWords {
-  std::optional<double> x, y, z;       // hole position and, on the plane's normal, the bottom
-  std::optional<double> r;             // retract plane (G76: depth degression, no unit)
-  std::optional<double> q;             // G73/G83 peck depth (G76: compound angle, degrees)
-  std::optional<double> i, j, k;       // G87 offsets and top of the back bore (G76: depths)
-  std::optional<double> p;             // dwell, seconds (G76: pitch, mm per revolution)
-  std::optional<double> l;             // repeats (G76: taper ends 0-3), a whole number
-  std::optional<double> h;             // G76 spring passes, a whole number
-  std::optional<double> e;             // G76 taper length along Z
-  std::optional<double> polar_radius;  // @ (G17 only)
-  std::optional<double> polar_angle;   // ^ degrees (G17 only)
+  std::optional<double> x{}, y{}, z{};   // hole position and, on the plane's normal, the bottom
+  std::optional<double> r{};             // retract plane (G76: depth degression, no unit)
+  std::optional<double> q{};             // G73/G83 peck depth (G76: compound angle, degrees)
+  std::optional<double> i{}, j{}, k{};   // G87 offsets and top of the back bore (G76: depths)
+  std::optional<double> p{};             // dwell, seconds (G76: pitch, mm per revolution)
+  std::optional<double> l{};             // repeats (G76: taper ends 0-3), a whole number
+  std::optional<double> h{};             // G76 spring passes, a whole number
+  std::optional<double> e{};             // G76 taper length along Z
+  std::optional<double> polar_radius{};  // @ (G17 only)
+  std::optional<double> polar_angle{};   // ^ degrees (G17 only)
 };
 
 // The modal state a cycle needs, read from the interpreter's state before the block.

@@ -29,24 +29,30 @@ Vec3 CanonMachine::to_program(const Vec3& abs) const {
 }
 
 std::optional<double> CanonMachine::feed_rate() const {
-  if (state_->feed_mode != FeedMode::UnitsPerMinute) return std::nullopt;
-  return state_->feed;
+  if (feed_mode_ != FeedMode::UnitsPerMinute) return std::nullopt;
+  return feed_;
 }
 
 void CanonMachine::emit(canon::OpKind kind) { sink_.on(canon::Op{std::move(kind), src_}); }
 
 void CanonMachine::traverse_axes(const Axes& to) {
   state_->pos = to;
+  last_ = to_absolute(xyz(to));
+  moved_ = true;
   emit(canon::Traverse{to_absolute(xyz(to)), abc_of(to)});
 }
 
 void CanonMachine::feed_axes(const Axes& to) {
   state_->pos = to;
+  last_ = to_absolute(xyz(to));
+  moved_ = true;
   emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to)});
 }
 
 void CanonMachine::probe_axes(const Axes& to) {
   state_->pos = to;
+  last_ = to_absolute(xyz(to));
+  moved_ = true;
   emit(canon::Probe{to_absolute(xyz(to)), abc_of(to)});
 }
 
@@ -61,6 +67,8 @@ void CanonMachine::arc_axes(const Axes& to, const Vec3& center, int turn) {
     normal.y = r.y;
   }
   state_->pos = to;
+  last_ = to_absolute(xyz(to));
+  moved_ = true;
   emit(canon::Arc{to_absolute(xyz(to)), to_absolute(c), normal, turn, feed_rate(), abc_of(to)});
 }
 
@@ -72,6 +80,8 @@ void CanonMachine::spline(const std::vector<Vec3>& points) {
   op.to = op.points.back();
   op.f = feed_rate();
   set_xyz(state_->pos, points.back());
+  last_ = op.to;
+  moved_ = true;
   emit(std::move(op));
 }
 

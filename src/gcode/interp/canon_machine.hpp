@@ -24,6 +24,9 @@ class CanonMachine final : public MotionTarget {
   void hole(const Vec3& top, double depth) override;
   Vec3 position() const override { return xyz(state_->pos); }
   void set_source(const core::SourceLoc& loc) override { src_ = loc; }
+  // The end of the last move sent, in today's program coordinates (the
+  // current point if nothing moved yet).
+  Vec3 last_emitted() const { return moved_ ? to_program(last_) : xyz(state_->pos); }
 
   // Moves with every axis (rotary and UVW too).
   void traverse_axes(const Axes& to);
@@ -34,6 +37,12 @@ class CanonMachine final : public MotionTarget {
   void arc_axes(const Axes& to, const Vec3& center, int turn);
   void emit(canon::OpKind kind);
   const core::SourceLoc& source() const { return src_; }
+  // The feed rate in effect for the moves emitted from now on (the
+  // interpreter's F may wait behind a move held by cutter compensation).
+  void set_feed(double feed, FeedMode mode) {
+    feed_ = feed;
+    feed_mode_ = mode;
+  }
   // Diameter of the tool in the spindle, for hole features.
   void set_tool_diameter(double mm) { hole_diameter_ = mm; }
 
@@ -49,6 +58,10 @@ class CanonMachine final : public MotionTarget {
   ModalState* state_;
   core::SourceLoc src_;
   double hole_diameter_ = 0.0;
+  double feed_ = 0.0;
+  Vec3 last_;  // absolute
+  bool moved_ = false;
+  FeedMode feed_mode_ = FeedMode::UnitsPerMinute;
 };
 
 }  // namespace usina::gcode

@@ -94,7 +94,34 @@ bool Interpreter::check(BlockWords& w) {
     return error(core::Code::NotAllowedInMode, w.gcol[kGroupNonModal],
                  "G53 needs G0 or G1 motion");
   }
-  return check_unused(w);
+  return comp_forbids(w) && check_unused(w);
+}
+
+// What LinuxCNC refuses while cutter radius compensation is on.
+bool Interpreter::comp_forbids(const BlockWords& w) {
+  if (!comp_.active()) return true;
+  auto refuse = [&](std::uint32_t col, const char* what) {
+    return error(core::Code::CompNotAllowed, col,
+                 fmt::format("{} with cutter radius compensation on: G40 first", what));
+  };
+  const GCode plane = w.g[kGroupPlane];
+  const GCode current = state_.plane == core::Plane::XY ? 170 : (state_.plane == core::Plane::ZX ? 180 : 190);
+  if (plane != -1 && plane != current) return refuse(w.gcol[kGroupPlane], "a plane change");
+  if (w.m[kMGroupToolChange] == 6) return refuse(w.mcol[kMGroupToolChange], "a tool change");
+  if (w.g[kGroupCoordSystem] != -1) return refuse(w.gcol[kGroupCoordSystem], "a work offset change");
+  if (w.g[kGroupUnits] != -1 && (w.g[kGroupUnits] == 200) != (state_.units == core::LengthUnit::Inch)) {
+    return refuse(w.gcol[kGroupUnits], "a units change");
+  }
+  const GCode g0 = w.g[kGroupNonModal];
+  if (g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520 || g0 == 530) {
+    return refuse(w.gcol[kGroupNonModal], g_name(g0).data());
+  }
+  const GCode mo = w.motion;
+  if (mo == 330 || mo == 331 || mo == 760 || (mo >= 382 && mo <= 385) || mo == 730 ||
+      (mo >= 810 && mo <= 890) || (mo >= 50 && mo <= 53) || mo == 62) {
+    return refuse(w.g[kGroupMotion] != -1 ? w.gcol[kGroupMotion] : 0, g_name(mo).data());
+  }
+  return true;
 }
 
 bool Interpreter::check_unused(const BlockWords& w) {

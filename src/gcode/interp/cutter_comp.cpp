@@ -287,10 +287,11 @@ void CutterComp::emit(const Held& h, MotionTarget& target) const {
 // interp_queue.cc dequeue_canons: everything held goes out as it is, and
 // where the next held move starts is not known until told.
 void CutterComp::release(MotionTarget& target) {
-  std::vector<Held> out;
-  out.swap(queue_);
-  for (const Held& h : out)
+  // emit() does not touch the queue; clear() keeps its storage for the next
+  // block.
+  for (const Held& h : queue_)
     emit(h, target);
+  queue_.clear();
   queue_start_.reset();
 }
 

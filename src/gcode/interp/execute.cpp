@@ -31,9 +31,17 @@ bool Interpreter::comments(const Block& b) {
       loc.col = c.col;
       diags_.report({core::Code::Message, core::Severity::Note, loc, std::string(t)});
     }
-    machine_.emit(canon::Comment{std::string(t)});
+    in_order([this, text = std::string(t)] { machine_.emit(canon::Comment{text}); });
   }
   return true;
+}
+
+void Interpreter::in_order(std::function<void()> effect) {
+  if (!comp_.holding()) {
+    effect();
+    return;
+  }
+  comp_.defer(loc_, [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
 }
 
 bool Interpreter::execute(const Block& b, BlockWords& w) {
@@ -43,10 +51,17 @@ bool Interpreter::execute(const Block& b, BlockWords& w) {
     if (!w.has('P') || w.get('P') < 0) {
       return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G4 needs P (seconds, not negative)");
     }
-    machine_.dwell(w.get('P'));
+    in_order([this, s = w.get('P')] { machine_.dwell(s); });
   }
   if (!modal_save_restore(w) || !modal_settings(w) || !modal_zero(w)) return false;
   if (w.motion != -1 && !motion(w)) return false;
+  if (tool_changed_) {
+    // After a tool change LinuxCNC re-reads the current point from the
+    // machine before the next block: the point last sent, so what the block
+    // did to the program position (G43 beside M6, G40) is undone.
+    tool_changed_ = false;
+    set_xyz(state_.pos, machine_.last_emitted());
+  }
   return stop(w);
 }
 
@@ -61,6 +76,9 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
   if (w.has('F')) {
     if (w.get('F') < 0) return error(core::Code::BadWordValue, w.col_of('F'), "negative feed rate");
     s.feed = s.feed_mode == FeedMode::InverseTime ? w.get('F') : mm(w.get('F'));
+  }
+  if (w.has('F') || w.g[kGroupFeedMode] != -1) {
+    in_order([this, f = s.feed, mode = s.feed_mode] { machine_.set_feed(f, mode); });
   }
   if (w.g[kGroupSpindleMode] != -1) s.css = w.g[kGroupSpindleMode] == 960;
   if (w.has('S')) {
@@ -82,22 +100,23 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
     // LinuxCNC's M6 stops the spindle before the change.
     if (tc == 6 && s.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
     s.tool = tool;
+    tool_changed_ = true;
     const double d = tool_diameter(tool);
     machine_.set_tool_diameter(d);
     machine_.emit(canon::ToolChange{tool, d > 0 ? std::optional<double>(d) : std::nullopt});
   }
-  switch (w.m[kMGroupSpindle]) {
-    case 3: machine_.spindle(canon::SpindleDir::Cw); break;
-    case 4: machine_.spindle(canon::SpindleDir::Ccw); break;
-    case 5: machine_.spindle(canon::SpindleDir::Off); break;
-    default: break;
+  const int spin = w.m[kMGroupSpindle];
+  if (spin == 3 || spin == 4 || spin == 5) {
+    const auto dir = spin == 3 ? canon::SpindleDir::Cw : (spin == 4 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
+    s.spindle = dir;
+    in_order([this, dir] { machine_.spindle(dir); });
   }
   const int cool = w.m[kMGroupCoolant];
   if (cool != -1) {
     if (cool == 7 || w.m7_and_m8) s.mist = true;
     if (cool == 8 || w.m7_and_m8) s.flood = true;
     if (cool == 9) s.mist = s.flood = false;
-    machine_.emit(canon::Coolant{s.mist, s.flood});
+    in_order([this, c = canon::Coolant{s.mist, s.flood}] { machine_.emit(c); });
   }
   switch (w.m[kMGroupOverride]) {
     case 48: s.feed_override = s.speed_override = true; break;
@@ -182,6 +201,7 @@ void Interpreter::restore_modal(const ModalState& saved) {
   s.speed = saved.speed;
   s.feed_override = saved.feed_override;
   s.speed_override = saved.speed_override;
+  machine_.set_feed(s.feed, s.feed_mode);
   if (s.mist != saved.mist || s.flood != saved.flood) {
     s.mist = saved.mist;
     s.flood = saved.flood;
@@ -198,6 +218,9 @@ bool Interpreter::stop(const BlockWords& w) {
   switch (w.m[kMGroupStop]) {
     case 2:
     case 30: {
+      if (auto e = comp_.flush(machine_)) return error(*e);
+      comp_.reset();
+      state_.comp = CompSideState::Off;
       // LinuxCNC's program end: spindle and coolant off, then the end.
       if (state_.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
       machine_.emit(canon::ProgramEnd{});
@@ -206,7 +229,10 @@ bool Interpreter::stop(const BlockWords& w) {
     }
     case 0:
     case 1:
-    case 60: machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])}); break;
+    case 60:
+      if (auto e = comp_.flush(machine_)) return error(*e);
+      machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])});
+      break;
     default: break;
   }
   return true;

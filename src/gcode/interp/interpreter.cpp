@@ -57,6 +57,9 @@ bool Interpreter::run(std::uint32_t file) {
   }
   while (!ended_ && !failed_ && !at_eof_) step();
   if (!failed_ && !ended_) {
+    if (auto e = comp_.flush(machine_)) error(*e);
+  }
+  if (!failed_ && !ended_) {
     loc_ = {file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
     warn(core::Code::NoProgramEnd, 0,
          "the program ends without M2, M30 or '%'; taken as its end (LinuxCNC reports an error)");

@@ -3,6 +3,7 @@
 // them, plan the targets, execute in the standard's order of execution.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@
 #include "gcode/block.hpp"
 #include "gcode/expr.hpp"
 #include "gcode/interp/canon_machine.hpp"
+#include "gcode/interp/cutter_comp.hpp"
 #include "gcode/interp/state.hpp"
 #include "gcode/parameters.hpp"
 #include "gcode/program_index.hpp"
@@ -146,6 +148,10 @@ class Interpreter final : private ParameterSource {
   ModalState state_;
   Parameters params_;
   CanonMachine machine_;
+  CutterComp comp_;
+  // Runs `effect` now, or after the move cutter compensation holds.
+  void in_order(std::function<void()> effect);
+  bool comp_forbids(const BlockWords& w);
   Block block_;
   std::unique_ptr<BlockWords> words_;
   Cursor cursor_;
@@ -155,6 +161,7 @@ class Interpreter final : private ParameterSource {
   std::unordered_map<std::uint64_t, long> iterations_;
   std::uint32_t pending_elseif_ = kNoEntry;
   bool at_eof_ = false;
+  bool tool_changed_ = false;
   std::unordered_map<std::uint32_t, ProgramIndex> indexes_;
   std::unordered_map<std::string, std::uint32_t> sub_files_;
   bool percent_mode_ = false;

@@ -19,7 +19,11 @@ bool is_rotary(int axis) { return axis >= 3 && axis <= 5; }
 
 Axes Interpreter::target(const BlockWords& w, bool machine_coords) const {
   const ModalState& s = state_;
-  Axes end = s.pos;
+  // Under cutter compensation the programmed point, not the tool centre, is
+  // where incremental and omitted words start from (LinuxCNC find_ends).
+  Axes base = s.pos;
+  if (auto programmed = comp_.programmed_position()) set_xyz(base, *programmed);
+  Axes end = base;
   if (machine_coords) {
     // G53: the words are machine coordinates of the controlled point.
     Vec3 abs = machine_.to_absolute(xyz(s.pos)) + xyz(s.tool_offset);
@@ -34,13 +38,13 @@ Axes Interpreter::target(const BlockWords& w, bool machine_coords) const {
     double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
     if (a == 0 && s.lathe_diameter) v /= 2.0;  // G7: X words are diameters
     const auto i = static_cast<std::size_t>(a);
-    end[i] = s.incremental ? s.pos[i] + v : v;
+    end[i] = s.incremental ? base[i] + v : v;
   }
   if (w.has_polar()) {
     // LinuxCNC polar words: @ radius and ^ angle (degrees) about the origin;
     // under G91 both add to the current point's polar coordinates.
-    const double r0 = std::hypot(s.pos[0], s.pos[1]);
-    const double t0 = core::rad_to_deg(std::atan2(s.pos[1], s.pos[0]));
+    const double r0 = std::hypot(base[0], base[1]);
+    const double t0 = core::rad_to_deg(std::atan2(base[1], base[0]));
     const double r = w.has('@') ? (s.incremental ? r0 + mm(w.get('@')) : mm(w.get('@'))) : r0;
     const double t = w.has('^') ? (s.incremental ? t0 + w.get('^') : w.get('^')) : t0;
     end[0] = r * std::cos(core::deg_to_rad(t));
@@ -83,8 +87,9 @@ bool Interpreter::motion(BlockWords& w) {
 bool Interpreter::straight(BlockWords& w, GCode g, const Axes& end) {
   // G33/G33.1 move with the spindle (K per revolution), not at F.
   if (g == 10 && !require_feed(w)) return false;
-  if (state_.comp != CompSideState::Off) {
-    return error(core::Code::Unsupported, 0, "cutter radius compensation is not finished yet");
+  if ((comp_.active() || !comp_.arc_allowed()) && (g == 0 || g == 10)) {
+    if (auto e = comp_.straight(xyz(end), g == 0, loc_, machine_)) return error(*e);
+    return true;
   }
   if (g == 0) {
     machine_.traverse_axes(end);
@@ -103,7 +108,8 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   if (!require_feed(w)) return false;
   const core::Plane plane = state_.plane;
   const core::PlaneAxes ax = core::axes_of(plane);
-  const Vec3 start3 = xyz(state_.pos);
+  Vec3 start3 = xyz(state_.pos);
+  if (auto programmed = comp_.programmed_position()) start3 = *programmed;
   const Vec3 end3 = xyz(end);
   const Vec2 start = core::in_plane(start3, plane);
   const Vec2 stop = core::in_plane(end3, plane);
@@ -156,6 +162,10 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
     if (r1 < 1e-9) return error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is at the start point");
   }
   Vec3 c3 = core::from_plane(center, start3[ax.axial], plane);
+  if (comp_.active() || !comp_.arc_allowed()) {
+    if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, loc_, machine_)) return error(*e);
+    return true;
+  }
   machine_.arc_axes(end, c3, ccw ? turns : -turns);
   return true;
 }
@@ -165,12 +175,21 @@ bool Interpreter::probe(BlockWords& w, const Axes& end) {
   if (state_.comp != CompSideState::Off) {
     return error(core::Code::ProbeBadMove, 0, "probing with cutter compensation on");
   }
+
+  const Vec3 start = xyz(state_.pos);
   machine_.probe_axes(end);
-  // A trace simulates the probe reaching its target without contact:
-  // #5061-#5069 hold the end point, #5070 = 0 (not tripped), as LinuxCNC's
-  // stand-alone interpreter reports.
+  // No probe in a trace: the move is traced to its target and the probe
+  // result is what LinuxCNC's stand-alone interpreter reports, a stop 0.01
+  // program units short of the target, not tripped (#5070 = 0); the current
+  // point is that stop (its conformance traces, smartprobe.ngc, x-trim.ngc).
+  const Vec3 dir = xyz(end) - start;
+  const double length = core::norm(dir);
+  const Vec3 stop = length > 0.0 ? xyz(end) - dir * (0.01 * core::mm_per(state_.units) / length) : xyz(end);
+  Axes result = end;
+  set_xyz(result, stop);
+  set_xyz(state_.pos, stop);
   for (int a = 0; a < kAxisCount; ++a) {
-    const double v = end[static_cast<std::size_t>(a)];
+    const double v = result[static_cast<std::size_t>(a)];
     params_.set(5061 + a, is_rotary(a) ? v : v / core::mm_per(state_.units));
   }
   params_.set(5070, 0.0);

@@ -188,8 +188,9 @@ bool Interpreter::tool_length(BlockWords& w) {
     w.clear_letter('Y');
     w.clear_letter('Z');
   }
-  // The program position is the tool tip's: it stays; the spindle moves
-  // (LinuxCNC applies the offset below the interpreter).
+  // LinuxCNC keeps the machine still: the current point's program
+  // coordinates change by the difference of the offsets.
+  for (std::size_t a = 0; a < 3; ++a) s.pos[a] += s.tool_offset[a] - next[a];
   s.tool_offset = next;
   return true;
 }
@@ -198,6 +199,10 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   ModalState& s = state_;
   const GCode g = w.g[kGroupCutterComp];
   if (g == 400) {
+    // LinuxCNC: the current point becomes the programmed point.
+    const auto programmed = comp_.programmed_position();
+    if (auto e = comp_.stop(machine_)) return error(*e);
+    if (programmed) set_xyz(s.pos, *programmed);
     s.comp = CompSideState::Off;
     return true;
   }
@@ -210,6 +215,7 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
                  "cutter compensation works in the XY (G17) and XZ (G18) planes only");
   }
   double radius = 0.0;
+  int orientation = 0;
   if (g == 411 || g == 421) {
     if (!w.has('D')) return error(core::Code::MissingWord, w.gcol[kGroupCutterComp], "G41.1/G42.1 need D (the tool diameter)");
     radius = mm(w.get('D')) / 2.0;
@@ -221,9 +227,14 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
                    fmt::format("tool {} is not in the tool table", tool));
     }
     radius = t != nullptr ? t->diameter / 2.0 : 0.0;
+    orientation = t != nullptr ? t->orientation : 0;
   }
-  if (radius < 0) return error(core::Code::BadWordValue, w.col_of('D'), "negative cutter diameter");
-  s.comp = (g == 410 || g == 411) ? CompSideState::Left : CompSideState::Right;
+  // A negative radius (G41.1 D-1) puts the tool on the other side, as in LinuxCNC.
+  const CompSide side = (g == 410 || g == 411) ? CompSide::Left : CompSide::Right;
+  if (auto e = comp_.start(side, radius, s.plane, orientation)) {
+    return error(*e, w.gcol[kGroupCutterComp]);
+  }
+  s.comp = side == CompSide::Left ? CompSideState::Left : CompSideState::Right;
   s.comp_radius = radius;
   return true;
 }
