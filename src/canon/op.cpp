@@ -5,23 +5,37 @@ namespace {
 
 struct NameOf {
   const char* operator()(const Traverse&) const { return "traverse"; }
+
   const char* operator()(const Feed&) const { return "feed"; }
+
   const char* operator()(const Arc&) const { return "arc"; }
+
   const char* operator()(const Spline&) const { return "spline"; }
+
   const char* operator()(const Probe&) const { return "probe"; }
+
   const char* operator()(const Dwell&) const { return "dwell"; }
+
   const char* operator()(const ToolChange&) const { return "tool"; }
+
   const char* operator()(const Spindle&) const { return "spindle"; }
+
   const char* operator()(const Coolant&) const { return "coolant"; }
+
   const char* operator()(const Hole&) const { return "hole"; }
+
   const char* operator()(const Pocket&) const { return "pocket"; }
+
   const char* operator()(const Comment&) const { return "comment"; }
+
   const char* operator()(const ProgramEnd&) const { return "end"; }
 };
 
 }  // namespace
 
-const char* op_name(const OpKind& kind) { return std::visit(NameOf{}, kind); }
+const char* op_name(const OpKind& kind) {
+  return std::visit(NameOf{}, kind);
+}
 
 bool is_motion(const OpKind& kind) {
   return std::holds_alternative<Traverse>(kind) || std::holds_alternative<Feed>(kind) ||

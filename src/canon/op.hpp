@@ -107,8 +107,8 @@ struct Comment {
 
 struct ProgramEnd {};
 
-using OpKind = std::variant<Traverse, Feed, Arc, Spline, Probe, Dwell, ToolChange, Spindle, Coolant, Hole,
-                            Pocket, Comment, ProgramEnd>;
+using OpKind = std::variant<Traverse, Feed, Arc, Spline, Probe, Dwell, ToolChange, Spindle, Coolant,
+                            Hole, Pocket, Comment, ProgramEnd>;
 
 struct Op {
   OpKind kind;

@@ -11,6 +11,7 @@ class Sink {
  public:
   virtual ~Sink() = default;
   virtual void on(const Op& op) = 0;
+
   // Called once after the last op (flush files, close drawings).
   virtual void finish() {}
 };
@@ -25,6 +26,7 @@ class NullSink final : public Sink {
 class TeeSink final : public Sink {
  public:
   explicit TeeSink(std::vector<Sink*> sinks) : sinks_(std::move(sinks)) {}
+
   void on(const Op& op) override;
   void finish() override;
 

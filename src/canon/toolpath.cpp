@@ -20,13 +20,20 @@ namespace {
 
 struct EndOf {
   Bounds& b;
+
   void operator()(const Traverse& m) const { b.add(m.to); }
+
   void operator()(const Feed& m) const { b.add(m.to); }
+
   void operator()(const Arc& m) const { b.add(m.to); }
+
   void operator()(const Probe& m) const { b.add(m.to); }
+
   void operator()(const Spline& m) const {
-    for (const Vec3& p : m.points) b.add(p);
+    for (const Vec3& p : m.points)
+      b.add(p);
   }
+
   template <typename T>
   void operator()(const T&) const {}
 };

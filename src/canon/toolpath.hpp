@@ -18,9 +18,12 @@ struct Bounds {
 class Toolpath final : public Sink {
  public:
   void on(const Op& op) override;
+
   const std::vector<Op>& ops() const { return ops_; }
+
   // Bounding box of every motion end point.
   const Bounds& bounds() const { return bounds_; }
+
   std::size_t size() const { return ops_.size(); }
 
  private:

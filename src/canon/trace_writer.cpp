@@ -64,26 +64,29 @@ void json_string(Out out, std::string_view s) {
 
 const char* dir_name(SpindleDir d) {
   switch (d) {
-    case SpindleDir::Cw: return "cw";
-    case SpindleDir::Ccw: return "ccw";
-    case SpindleDir::Off: return "off";
+  case SpindleDir::Cw: return "cw";
+  case SpindleDir::Ccw: return "ccw";
+  case SpindleDir::Off: return "off";
   }
   return "off";
 }
 
 struct JsonFields {
   Out out;
+
   void operator()(const Traverse& m) const {
     fmt::format_to(out, ",\"to\":");
     vec(out, m.to);
     abc(out, m.abc);
   }
+
   void operator()(const Feed& m) const {
     fmt::format_to(out, ",\"to\":");
     vec(out, m.to);
     feed(out, m.f);
     abc(out, m.abc);
   }
+
   void operator()(const Arc& m) const {
     fmt::format_to(out, ",\"to\":");
     vec(out, m.to);
@@ -95,11 +98,13 @@ struct JsonFields {
     feed(out, m.f);
     abc(out, m.abc);
   }
+
   void operator()(const Probe& m) const {
     fmt::format_to(out, ",\"to\":");
     vec(out, m.to);
     abc(out, m.abc);
   }
+
   void operator()(const Spline& m) const {
     fmt::format_to(out, ",\"to\":");
     vec(out, m.to);
@@ -111,10 +116,12 @@ struct JsonFields {
     fmt::format_to(out, "]");
     feed(out, m.f);
   }
+
   void operator()(const Dwell& m) const {
     fmt::format_to(out, ",\"s\":");
     num(out, m.s);
   }
+
   void operator()(const ToolChange& m) const {
     fmt::format_to(out, ",\"tool\":{},\"diameter\":", m.tool);
     if (m.diameter) {
@@ -123,14 +130,17 @@ struct JsonFields {
       fmt::format_to(out, "null");
     }
   }
+
   void operator()(const Spindle& m) const {
     fmt::format_to(out, ",\"rpm\":");
     num(out, m.rpm);
     fmt::format_to(out, ",\"dir\":\"{}\"", dir_name(m.dir));
   }
+
   void operator()(const Coolant& m) const {
     fmt::format_to(out, ",\"mist\":{},\"flood\":{}", m.mist, m.flood);
   }
+
   void operator()(const Hole& m) const {
     fmt::format_to(out, ",\"at\":");
     vec(out, m.at);
@@ -139,6 +149,7 @@ struct JsonFields {
     fmt::format_to(out, ",\"depth\":");
     num(out, m.depth);
   }
+
   void operator()(const Pocket& m) const {
     fmt::format_to(out, ",\"outline\":{{\"start\":");
     vec2(out, m.outline.start);
@@ -158,10 +169,12 @@ struct JsonFields {
     fmt::format_to(out, "]}},\"depth\":");
     num(out, m.depth);
   }
+
   void operator()(const Comment& m) const {
     fmt::format_to(out, ",\"text\":");
     json_string(out, m.text);
   }
+
   void operator()(const ProgramEnd&) const {}
 };
 
@@ -171,46 +184,61 @@ void write_json(Out out, const Op& op) {
   fmt::format_to(out, "}}");
 }
 
-void xyz(Out out, const Vec3& v) { fmt::format_to(out, " X{:.4f} Y{:.4f} Z{:.4f}", v.x, v.y, v.z); }
+void xyz(Out out, const Vec3& v) {
+  fmt::format_to(out, " X{:.4f} Y{:.4f} Z{:.4f}", v.x, v.y, v.z);
+}
 
 struct TextFields {
   Out out;
+
   void operator()(const Traverse& m) const { xyz(out, m.to); }
+
   void operator()(const Feed& m) const {
     xyz(out, m.to);
     if (m.f) fmt::format_to(out, " F{:g}", *m.f);
   }
+
   void operator()(const Arc& m) const {
     xyz(out, m.to);
     fmt::format_to(out, " about ({:.4f}, {:.4f}, {:.4f}) turn {}", m.center.x, m.center.y,
                    m.center.z, m.turn);
     if (m.f) fmt::format_to(out, " F{:g}", *m.f);
   }
+
   void operator()(const Probe& m) const { xyz(out, m.to); }
+
   void operator()(const Spline& m) const {
     xyz(out, m.to);
     fmt::format_to(out, " ({} points)", m.points.size());
     if (m.f) fmt::format_to(out, " F{:g}", *m.f);
   }
+
   void operator()(const Dwell& m) const { fmt::format_to(out, " {:g} s", m.s); }
+
   void operator()(const ToolChange& m) const {
     fmt::format_to(out, " T{}", m.tool);
     if (m.diameter) fmt::format_to(out, " diameter {:g} mm", *m.diameter);
   }
+
   void operator()(const Spindle& m) const {
     fmt::format_to(out, " {} {:g} rpm", dir_name(m.dir), m.rpm);
   }
+
   void operator()(const Coolant& m) const {
     fmt::format_to(out, " mist {} flood {}", m.mist ? "on" : "off", m.flood ? "on" : "off");
   }
+
   void operator()(const Hole& m) const {
     fmt::format_to(out, " at ({:.4f}, {:.4f}, {:.4f}) diameter {:g} depth {:g}", m.at.x, m.at.y,
                    m.at.z, m.diameter, m.depth);
   }
+
   void operator()(const Pocket& m) const {
     fmt::format_to(out, " {} segments, depth {:g}", m.outline.segs.size(), m.depth);
   }
+
   void operator()(const Comment& m) const { fmt::format_to(out, " {}", m.text); }
+
   void operator()(const ProgramEnd&) const {}
 };
 
@@ -222,7 +250,9 @@ std::string to_jsonl(const Op& op) {
   return fmt::to_string(buf);
 }
 
-TraceWriter::~TraceWriter() { finish(); }
+TraceWriter::~TraceWriter() {
+  finish();
+}
 
 void TraceWriter::on(const Op& op) {
   auto out = std::back_inserter(buf_);

@@ -14,6 +14,7 @@ enum class TraceFormat { Jsonl, Text };
 class TraceWriter final : public Sink {
  public:
   TraceWriter(std::FILE* out, TraceFormat format) : out_(out), format_(format) {}
+
   TraceWriter(const TraceWriter&) = delete;
   TraceWriter& operator=(const TraceWriter&) = delete;
   ~TraceWriter() override;

@@ -24,13 +24,16 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::IsMember({"mm", "inch"}))
       ->capture_default_str();
   app.add_option("--var-file", o.var_file, "LinuxCNC parameter file to start from");
-  app.add_option("--subroutine-path", o.subroutine_path,
-                 "folders searched for o<name> call files, separated by ':' (then the program's own)");
+  app.add_option(
+      "--subroutine-path", o.subroutine_path,
+      "folders searched for o<name> call files, separated by ':' (then the program's own)");
   app.add_option("--peck-clearance", o.peck_clearance, "G73/G83 retract above the last peck, mm")
       ->capture_default_str();
-  app.add_option("--max-iterations", o.max_iterations, "iterations a loop may run before it is an error")
+  app.add_option("--max-iterations", o.max_iterations,
+                 "iterations a loop may run before it is an error")
       ->capture_default_str();
-  app.add_flag("--block-delete", o.block_delete, "skip the blocks that start with '/' (the switch on)");
+  app.add_flag("--block-delete", o.block_delete,
+               "skip the blocks that start with '/' (the switch on)");
 }
 
 namespace {
@@ -38,11 +41,13 @@ namespace {
 class StderrDiagnostics final : public core::DiagnosticSink {
  public:
   explicit StderrDiagnostics(const core::SourceManager& sources) : sources_(sources) {}
+
   void report(core::Diagnostic d) override {
     if (d.severity == core::Severity::Error) ++errors_;
     const std::string text = core::render(d, sources_);
     std::fwrite(text.data(), 1, text.size(), stderr);
   }
+
   int errors() const { return errors_; }
 
  private:
@@ -100,7 +105,8 @@ int run_program(const RunOptions& o, canon::Sink& sink) {
     auto f = open_input(o.tool_table);
     if (!f) return 2;
     const std::uint32_t id = sources.add(std::move(f));
-    auto table = gcode::read_tool_table(*sources.get(id), id, core::mm_per(opts.machine_units), diags);
+    auto table =
+        gcode::read_tool_table(*sources.get(id), id, core::mm_per(opts.machine_units), diags);
     if (!table) return 2;
     opts.tools = std::move(*table);
   }
@@ -114,7 +120,8 @@ int run_program(const RunOptions& o, canon::Sink& sink) {
     vars = std::move(*read);
   }
   gcode::Interpreter interp(sources, std::move(opts), sink, diags);
-  for (const auto& v : vars) interp.set_parameter(v.number, v.value);
+  for (const auto& v : vars)
+    interp.set_parameter(v.number, v.value);
   const bool ok = interp.run(main_id);
   return ok && diags.errors() == 0 ? 0 : 1;
 }

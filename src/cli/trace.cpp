@@ -18,9 +18,13 @@ struct TraceOptions {
 
 }  // namespace
 
-int exit_status() { return status; }
+int exit_status() {
+  return status;
+}
 
-void set_exit_status(int s) { status = s; }
+void set_exit_status(int s) {
+  status = s;
+}
 
 void add_trace(CLI::App& app) {
   auto opts = std::make_shared<TraceOptions>();
@@ -30,8 +34,8 @@ void add_trace(CLI::App& app) {
       ->check(CLI::IsMember({"jsonl", "text"}))
       ->capture_default_str();
   cmd->callback([opts] {
-    canon::TraceWriter writer(stdout, opts->format == "text" ? canon::TraceFormat::Text
-                                                             : canon::TraceFormat::Jsonl);
+    canon::TraceWriter writer(
+        stdout, opts->format == "text" ? canon::TraceFormat::Text : canon::TraceFormat::Jsonl);
     set_exit_status(run_program(opts->run, writer));
   });
 }

@@ -15,9 +15,11 @@ double arc_sweep(Vec2 start, Vec2 end, Vec2 center, bool ccw, int turns) {
   // an arc whose end equals its start into a full turn).
   constexpr double kFullTolerance = 1e-12;
   if (ccw) {
-    while (sweep <= kFullTolerance) sweep += 2.0 * kPi;
+    while (sweep <= kFullTolerance)
+      sweep += 2.0 * kPi;
   } else {
-    while (sweep >= -kFullTolerance) sweep -= 2.0 * kPi;
+    while (sweep >= -kFullTolerance)
+      sweep -= 2.0 * kPi;
   }
   const double extra = 2.0 * kPi * static_cast<double>(std::max(turns, 1) - 1);
   return ccw ? sweep + extra : sweep - extra;

@@ -20,9 +20,9 @@ struct PlaneAxes {
 
 constexpr PlaneAxes axes_of(Plane p) {
   switch (p) {
-    case Plane::XY: return {0, 1, 2};
-    case Plane::ZX: return {2, 0, 1};
-    case Plane::YZ: return {1, 2, 0};
+  case Plane::XY: return {0, 1, 2};
+  case Plane::ZX: return {2, 0, 1};
+  case Plane::YZ: return {1, 2, 0};
   }
   return {0, 1, 2};
 }

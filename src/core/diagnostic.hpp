@@ -52,9 +52,13 @@ class DiagnosticSink {
 class DiagnosticList final : public DiagnosticSink {
  public:
   void report(Diagnostic d) override;
+
   const std::vector<Diagnostic>& all() const { return items_; }
+
   int error_count() const { return errors_; }
+
   bool has_errors() const { return errors_ > 0; }
+
   void clear();
 
  private:

@@ -2,67 +2,67 @@
 // X(Enumerator, STABLE_NAME). Append only: the names are a contract.
 #pragma once
 
-#define USINA_DIAGNOSTIC_CODES(X)                                                     \
-  /* input and limits */                                                             \
-  X(FileNotFound, E_FILE_NOT_FOUND)                                                  \
-  X(FileTooLarge, E_FILE_TOO_LARGE)                                                  \
-  X(NoProgramEnd, W_NO_PROGRAM_END)                                                  \
-  X(ByteOrderMark, W_BYTE_ORDER_MARK)                                                \
-  X(TextAfterProgramEnd, W_TEXT_AFTER_END)                                           \
-  /* lexer and parser */                                                             \
-  X(UnexpectedCharacter, E_UNEXPECTED_CHARACTER)                                     \
-  X(BadNumber, E_BAD_NUMBER)                                                         \
-  X(UnclosedComment, E_UNCLOSED_COMMENT)                                             \
-  X(UnclosedBracket, E_UNCLOSED_BRACKET)                                             \
-  X(ExpectedExpression, E_EXPECTED_EXPRESSION)                                       \
-  X(UnknownFunction, E_UNKNOWN_FUNCTION)                                             \
-  X(BadParameterName, E_BAD_PARAMETER_NAME)                                          \
-  X(BadOWord, E_BAD_O_WORD)                                                          \
-  X(MisplacedOWord, E_MISPLACED_O_WORD)                                              \
-  X(UnknownWord, E_UNKNOWN_WORD)                                                     \
-  /* expressions and parameters */                                                   \
-  X(DivisionByZero, E_DIVISION_BY_ZERO)                                              \
-  X(DomainError, E_DOMAIN_ERROR)                                                     \
-  X(ParameterOutOfRange, E_PARAMETER_OUT_OF_RANGE)                                   \
-  X(ReadOnlyParameter, E_READ_ONLY_PARAMETER)                                        \
-  X(UndefinedParameter, E_UNDEFINED_PARAMETER)                                       \
-  X(NumberOutOfRange, E_NUMBER_OUT_OF_RANGE)                                         \
-  X(BadVarFile, E_BAD_VAR_FILE)                                                      \
-  /* control flow */                                                                 \
-  X(UnknownSubroutine, E_UNKNOWN_SUBROUTINE)                                         \
-  X(UnclosedBlock, E_UNCLOSED_CONTROL_BLOCK)                                         \
-  X(UnmatchedControl, E_UNMATCHED_CONTROL)                                           \
-  X(RecursionTooDeep, E_RECURSION_TOO_DEEP)                                          \
-  X(TooManyIterations, E_TOO_MANY_ITERATIONS)                                        \
-  X(BadSubroutineName, E_BAD_SUBROUTINE_NAME)                                        \
-  X(DuplicateSubroutine, E_DUPLICATE_SUBROUTINE)                                     \
-  /* block checks */                                                                 \
-  X(ModalGroupConflict, E_MODAL_GROUP_CONFLICT)                                      \
-  X(RepeatedWord, E_REPEATED_WORD)                                                   \
-  X(UnknownGCode, E_UNKNOWN_G_CODE)                                                  \
-  X(UnknownMCode, E_UNKNOWN_M_CODE)                                                  \
-  X(UnusedWord, E_UNUSED_WORD)                                                       \
-  X(MissingWord, E_MISSING_WORD)                                                     \
-  X(BadWordValue, E_BAD_WORD_VALUE)                                                  \
-  X(AxisWordsConflict, E_AXIS_WORDS_CONFLICT)                                        \
-  X(NoFeedRate, E_NO_FEED_RATE)                                                      \
-  X(NotAllowedInMode, E_NOT_ALLOWED_IN_MODE)                                         \
-  /* arcs */                                                                         \
-  X(ArcRadiusMismatch, E_ARC_RADIUS_MISMATCH)                                        \
-  X(ArcRadiusTooSmall, E_ARC_RADIUS_TOO_SMALL)                                       \
-  X(ArcMissingCenter, E_ARC_MISSING_CENTER)                                          \
-  X(ArcZeroLength, E_ARC_ZERO_LENGTH)                                                \
-  /* cutter compensation and tools */                                                \
-  X(CutterGouge, E_CUTTER_GOUGE)                                                     \
-  X(CompEntryMove, E_COMP_ENTRY_MOVE)                                                \
-  X(CompToolTooBig, E_COMP_TOOL_TOO_BIG)                                             \
-  X(CompNotAllowed, E_COMP_NOT_ALLOWED)                                              \
-  X(UnknownTool, E_UNKNOWN_TOOL)                                                     \
-  X(BadToolTable, E_BAD_TOOL_TABLE)                                                  \
-  /* canned cycles and probing */                                                    \
-  X(CycleBadValue, E_CYCLE_BAD_VALUE)                                                \
-  X(ProbeBadMove, E_PROBE_BAD_MOVE)                                                  \
-  X(SplineBadValue, E_SPLINE_BAD_VALUE)                                              \
-  /* operator messages */                                                            \
-  X(Message, N_MESSAGE)                                                              \
+#define USINA_DIAGNOSTIC_CODES(X)                  \
+  /* input and limits */                           \
+  X(FileNotFound, E_FILE_NOT_FOUND)                \
+  X(FileTooLarge, E_FILE_TOO_LARGE)                \
+  X(NoProgramEnd, W_NO_PROGRAM_END)                \
+  X(ByteOrderMark, W_BYTE_ORDER_MARK)              \
+  X(TextAfterProgramEnd, W_TEXT_AFTER_END)         \
+  /* lexer and parser */                           \
+  X(UnexpectedCharacter, E_UNEXPECTED_CHARACTER)   \
+  X(BadNumber, E_BAD_NUMBER)                       \
+  X(UnclosedComment, E_UNCLOSED_COMMENT)           \
+  X(UnclosedBracket, E_UNCLOSED_BRACKET)           \
+  X(ExpectedExpression, E_EXPECTED_EXPRESSION)     \
+  X(UnknownFunction, E_UNKNOWN_FUNCTION)           \
+  X(BadParameterName, E_BAD_PARAMETER_NAME)        \
+  X(BadOWord, E_BAD_O_WORD)                        \
+  X(MisplacedOWord, E_MISPLACED_O_WORD)            \
+  X(UnknownWord, E_UNKNOWN_WORD)                   \
+  /* expressions and parameters */                 \
+  X(DivisionByZero, E_DIVISION_BY_ZERO)            \
+  X(DomainError, E_DOMAIN_ERROR)                   \
+  X(ParameterOutOfRange, E_PARAMETER_OUT_OF_RANGE) \
+  X(ReadOnlyParameter, E_READ_ONLY_PARAMETER)      \
+  X(UndefinedParameter, E_UNDEFINED_PARAMETER)     \
+  X(NumberOutOfRange, E_NUMBER_OUT_OF_RANGE)       \
+  X(BadVarFile, E_BAD_VAR_FILE)                    \
+  /* control flow */                               \
+  X(UnknownSubroutine, E_UNKNOWN_SUBROUTINE)       \
+  X(UnclosedBlock, E_UNCLOSED_CONTROL_BLOCK)       \
+  X(UnmatchedControl, E_UNMATCHED_CONTROL)         \
+  X(RecursionTooDeep, E_RECURSION_TOO_DEEP)        \
+  X(TooManyIterations, E_TOO_MANY_ITERATIONS)      \
+  X(BadSubroutineName, E_BAD_SUBROUTINE_NAME)      \
+  X(DuplicateSubroutine, E_DUPLICATE_SUBROUTINE)   \
+  /* block checks */                               \
+  X(ModalGroupConflict, E_MODAL_GROUP_CONFLICT)    \
+  X(RepeatedWord, E_REPEATED_WORD)                 \
+  X(UnknownGCode, E_UNKNOWN_G_CODE)                \
+  X(UnknownMCode, E_UNKNOWN_M_CODE)                \
+  X(UnusedWord, E_UNUSED_WORD)                     \
+  X(MissingWord, E_MISSING_WORD)                   \
+  X(BadWordValue, E_BAD_WORD_VALUE)                \
+  X(AxisWordsConflict, E_AXIS_WORDS_CONFLICT)      \
+  X(NoFeedRate, E_NO_FEED_RATE)                    \
+  X(NotAllowedInMode, E_NOT_ALLOWED_IN_MODE)       \
+  /* arcs */                                       \
+  X(ArcRadiusMismatch, E_ARC_RADIUS_MISMATCH)      \
+  X(ArcRadiusTooSmall, E_ARC_RADIUS_TOO_SMALL)     \
+  X(ArcMissingCenter, E_ARC_MISSING_CENTER)        \
+  X(ArcZeroLength, E_ARC_ZERO_LENGTH)              \
+  /* cutter compensation and tools */              \
+  X(CutterGouge, E_CUTTER_GOUGE)                   \
+  X(CompEntryMove, E_COMP_ENTRY_MOVE)              \
+  X(CompToolTooBig, E_COMP_TOOL_TOO_BIG)           \
+  X(CompNotAllowed, E_COMP_NOT_ALLOWED)            \
+  X(UnknownTool, E_UNKNOWN_TOOL)                   \
+  X(BadToolTable, E_BAD_TOOL_TABLE)                \
+  /* canned cycles and probing */                  \
+  X(CycleBadValue, E_CYCLE_BAD_VALUE)              \
+  X(ProbeBadMove, E_PROBE_BAD_MOVE)                \
+  X(SplineBadValue, E_SPLINE_BAD_VALUE)            \
+  /* operator messages */                          \
+  X(Message, N_MESSAGE)                            \
   X(Unsupported, E_UNSUPPORTED)

@@ -1,12 +1,13 @@
 #include "core/source.hpp"
 
 #include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+
+#include <sys/mman.h>
+#include <sys/stat.h>
 
 namespace usina::core {
 namespace {
@@ -26,7 +27,9 @@ std::unique_ptr<SourceFile> SourceFile::open(const std::string& path, std::strin
     error = std::strerror(errno);
     return nullptr;
   }
+
   struct stat st {};
+
   if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     error = S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file";
     ::close(fd);
@@ -69,7 +72,8 @@ std::string_view SourceFile::line_at(std::uint64_t offset) const {
   std::size_t end = rest.find('\n');
   if (end == std::string_view::npos) end = rest.size();
   std::string_view line = rest.substr(0, end);
-  while (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  while (!line.empty() && line.back() == '\r')
+    line.remove_suffix(1);
   return line;
 }
 
@@ -120,7 +124,8 @@ std::string render(const Diagnostic& d, const SourceManager& sources) {
       out += line[i - 1] == '\t' ? '\t' : ' ';
     }
     out += '^';
-    for (std::uint32_t i = 1; i < d.loc.length; ++i) out += '~';
+    for (std::uint32_t i = 1; i < d.loc.length; ++i)
+      out += '~';
     out += '\n';
   }
   return out;

@@ -24,7 +24,9 @@ class SourceFile {
   ~SourceFile();
 
   std::string_view text() const { return text_; }
+
   const std::string& name() const { return name_; }
+
   // The line that starts at `offset`, without its end-of-line characters.
   std::string_view line_at(std::uint64_t offset) const;
   // Tells the OS it may drop the mapped pages before `offset`; the text stays
@@ -47,6 +49,7 @@ class SourceManager {
   std::uint32_t add(std::unique_ptr<SourceFile> file);
   const SourceFile* get(std::uint32_t id) const;
   SourceFile* get(std::uint32_t id);
+
   std::size_t size() const { return files_.size(); }
 
  private:

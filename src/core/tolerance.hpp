@@ -12,7 +12,8 @@ inline constexpr double kGeometryTolerance = 1e-6;
 inline constexpr double kRelativeTolerance = 1e-9;
 
 inline bool nearly_equal(double a, double b, double abs_tol = kGeometryTolerance) {
-  return std::fabs(a - b) <= std::max(abs_tol, kRelativeTolerance * std::max(std::fabs(a), std::fabs(b)));
+  return std::fabs(a - b) <=
+         std::max(abs_tol, kRelativeTolerance * std::max(std::fabs(a), std::fabs(b)));
 }
 
 }  // namespace usina::core

@@ -29,9 +29,39 @@ enum class ExprKind : std::uint8_t {
 };
 
 // Binary operators, by RS274NGC precedence groups (LinuxCNC interp_read.cc).
-enum class BinOp : std::uint8_t { Pow, Mul, Div, Mod, Add, Sub, Eq, Ne, Gt, Ge, Lt, Le, And, Or, Xor };
+enum class BinOp : std::uint8_t {
+  Pow,
+  Mul,
+  Div,
+  Mod,
+  Add,
+  Sub,
+  Eq,
+  Ne,
+  Gt,
+  Ge,
+  Lt,
+  Le,
+  And,
+  Or,
+  Xor
+};
 
-enum class Func : std::uint8_t { Abs, Acos, Asin, Atan, Cos, Exp, Fix, Fup, Ln, Round, Sin, Sqrt, Tan };
+enum class Func : std::uint8_t {
+  Abs,
+  Acos,
+  Asin,
+  Atan,
+  Cos,
+  Exp,
+  Fix,
+  Fup,
+  Ln,
+  Round,
+  Sin,
+  Sqrt,
+  Tan
+};
 
 struct ExprNode {
   ExprKind kind = ExprKind::Number;
@@ -84,15 +114,15 @@ const char* okind_name(OKind k);
 
 struct OWord {
   OKind kind = OKind::Sub;
-  std::string label;        // "100" or a name, lower case, blanks removed
+  std::string label;             // "100" or a name, lower case, blanks removed
   ExprRef label_expr = kNoExpr;  // o#1 / o[..]: the label is this value (calls only)
-  ExprRef expr = kNoExpr;   // condition, repeat count or return value
-  std::vector<ExprRef> args;  // call arguments
+  ExprRef expr = kNoExpr;        // condition, repeat count or return value
+  std::vector<ExprRef> args;     // call arguments
   std::uint32_t col = 0;
 };
 
 struct Block {
-  core::SourceLoc loc;  // line, column of the block's first character
+  core::SourceLoc loc;   // line, column of the block's first character
   bool deleted = false;  // block delete '/'
   bool percent = false;  // a '%' line
   std::optional<double> line_number;
@@ -103,7 +133,9 @@ struct Block {
   std::vector<ExprNode> exprs;
 
   void clear();
+
   bool empty() const { return words.empty() && assigns.empty() && !o && comments.empty(); }
+
   const ExprNode& expr(ExprRef r) const { return exprs[r]; }
 };
 

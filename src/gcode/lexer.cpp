@@ -74,7 +74,8 @@ std::optional<double> Lexer::number() {
   // Blanks inside a number ("1 . 5") are legal RS274NGC: the slow path.
   if (j < text_.size() && is_blank(text_[j])) {
     std::size_t k = j;
-    while (k < text_.size() && is_blank(text_[k])) ++k;
+    while (k < text_.size() && is_blank(text_[k]))
+      ++k;
     if (k < text_.size() && (is_digit(text_[k]) || (text_[k] == '.' && !point))) {
       return number_slow(start);
     }
@@ -108,7 +109,8 @@ std::optional<double> Lexer::number_slow(std::size_t start) {
   }
   if (!digits) return std::nullopt;
   // Trailing blanks belong to nobody; leave them to be skipped.
-  while (j > start && is_blank(text_[j - 1])) --j;
+  while (j > start && is_blank(text_[j - 1]))
+    --j;
   double v = 0.0;
   const auto res = std::from_chars(buf.data(), buf.data() + n, v);
   if (res.ec != std::errc()) return std::nullopt;

@@ -19,7 +19,9 @@ class Lexer {
     skip_blanks();
     return i_;
   }
+
   bool at_end() { return pos() >= text_.size(); }
+
   // The next non-blank character in upper case, or 0 at the end.
   char peek() {
     skip_blanks();
@@ -27,9 +29,12 @@ class Lexer {
     const char c = text_[i_];
     return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
   }
+
   // The character after the next non-blank one (blanks skipped), upper case.
   char peek_second();
+
   void advance() { ++i_; }
+
   // Consumes `c` (upper case) if it is next.
   bool accept(char c);
   // Consumes `keyword` (upper case letters) if the next letters spell it,
@@ -43,13 +48,16 @@ class Lexer {
   std::optional<std::string_view> until(char close);
   // The rest of the text, raw.
   std::string_view rest();
+
   std::string_view text() const { return text_; }
 
  private:
   // Hot: called before every token.
   void skip_blanks() {
-    while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '\r')) ++i_;
+    while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '\r'))
+      ++i_;
   }
+
   std::optional<double> number_slow(std::size_t start);
   std::string_view text_;
   std::size_t i_ = 0;

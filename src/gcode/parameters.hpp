@@ -20,7 +20,9 @@ std::string normalise_name(std::string_view raw);
 class Parameters {
  public:
   static bool in_range(int index) { return index >= 1 && index <= kMaxParameter; }
+
   double get(int index) const { return numbered_[static_cast<std::size_t>(index)]; }
+
   void set(int index, double value) { numbered_[static_cast<std::size_t>(index)] = value; }
 
   // Locals first (innermost call), then globals; nullopt when not defined.
@@ -30,6 +32,7 @@ class Parameters {
   // A subroutine call: a new scope of local names; #1..#30 saved and restored.
   void push_scope();
   void pop_scope();
+
   std::size_t depth() const { return locals_.size(); }
 
  private:

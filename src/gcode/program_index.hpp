@@ -20,8 +20,8 @@ inline constexpr std::uint32_t kNoEntry = 0xffffffffu;
 struct OEntry {
   OKind kind = OKind::Sub;
   std::string label;
-  std::uint64_t offset = 0;      // the line's first byte
-  std::uint64_t next_line = 0;   // the first byte after the line
+  std::uint64_t offset = 0;     // the line's first byte
+  std::uint64_t next_line = 0;  // the first byte after the line
   std::uint32_t line = 0;
   std::uint32_t next_same = kNoEntry;
   std::uint32_t prev_same = kNoEntry;
@@ -34,7 +34,9 @@ class ProgramIndex {
   static ProgramIndex build(core::SourceFile& file, std::uint32_t file_id);
 
   const std::vector<OEntry>& entries() const { return entries_; }
+
   const OEntry& at(std::uint32_t i) const { return entries_[i]; }
+
   // The entry at a line's offset, or kNoEntry.
   std::uint32_t find(std::uint64_t offset) const;
   // The `sub` entry of a subroutine, or kNoEntry.

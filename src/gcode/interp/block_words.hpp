@@ -18,21 +18,27 @@ struct BlockWords {
   }
 
   bool has(char letter) const { return (present >> slot(letter)) & 1u; }
+
   double get(char letter) const { return value[static_cast<std::size_t>(slot(letter))]; }
+
   std::uint32_t col_of(char letter) const { return col[static_cast<std::size_t>(slot(letter))]; }
+
   void set(char letter, double v, std::uint32_t c) {
     const auto i = static_cast<std::size_t>(slot(letter));
     value[i] = v;
     col[i] = c;
     present |= 1u << slot(letter);
   }
+
   void clear_letter(char letter) { present &= ~(1u << slot(letter)); }
+
   bool has_axis() const {
     for (const char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'}) {
       if (has(c)) return true;
     }
     return false;
   }
+
   bool has_polar() const { return has('@') || has('^'); }
 
   std::array<double, kSlots> value{};
@@ -44,7 +50,7 @@ struct BlockWords {
   std::array<std::uint32_t, kGGroups> gcol{};
   std::array<int, kMGroups> m{};
   std::array<std::uint32_t, kMGroups> mcol{};
-  bool m7_and_m8 = false;  // LinuxCNC allows both coolants in one block
+  bool m7_and_m8 = false;       // LinuxCNC allows both coolants in one block
   std::array<int, 4> user_m{};  // M100..M199, in order
   int user_m_count = 0;
 

@@ -33,7 +33,9 @@ std::optional<double> CanonMachine::feed_rate() const {
   return feed_;
 }
 
-void CanonMachine::emit(canon::OpKind kind) { sink_.on(canon::Op{std::move(kind), src_}); }
+void CanonMachine::emit(canon::OpKind kind) {
+  sink_.on(canon::Op{std::move(kind), src_});
+}
 
 void CanonMachine::traverse_axes(const Axes& to) {
   state_->pos = to;
@@ -76,7 +78,8 @@ void CanonMachine::spline(const std::vector<Vec3>& points) {
   if (points.empty()) return;
   canon::Spline op;
   op.points.reserve(points.size());
-  for (const Vec3& p : points) op.points.push_back(to_absolute(p));
+  for (const Vec3& p : points)
+    op.points.push_back(to_absolute(p));
   op.to = op.points.back();
   op.f = feed_rate();
   set_xyz(state_->pos, points.back());
@@ -103,7 +106,9 @@ void CanonMachine::arc(const Vec3& to, const Vec3& center, int turn) {
   arc_axes(a, center, turn);
 }
 
-void CanonMachine::dwell(double seconds) { emit(canon::Dwell{seconds}); }
+void CanonMachine::dwell(double seconds) {
+  emit(canon::Dwell{seconds});
+}
 
 void CanonMachine::spindle(canon::SpindleDir dir) {
   state_->spindle = dir;

@@ -22,8 +22,11 @@ class CanonMachine final : public MotionTarget {
   void dwell(double seconds) override;
   void spindle(canon::SpindleDir dir) override;
   void hole(const Vec3& top, double depth) override;
+
   Vec3 position() const override { return xyz(state_->pos); }
+
   void set_source(const core::SourceLoc& loc) override { src_ = loc; }
+
   // The end of the last move sent, in today's program coordinates (the
   // current point if nothing moved yet).
   Vec3 last_emitted() const { return moved_ ? to_program(last_) : xyz(state_->pos); }
@@ -36,13 +39,16 @@ class CanonMachine final : public MotionTarget {
   void spline(const std::vector<Vec3>& points);
   void arc_axes(const Axes& to, const Vec3& center, int turn);
   void emit(canon::OpKind kind);
+
   const core::SourceLoc& source() const { return src_; }
+
   // The feed rate in effect for the moves emitted from now on (the
   // interpreter's F may wait behind a move held by cutter compensation).
   void set_feed(double feed, FeedMode mode) {
     feed_ = feed;
     feed_mode_ = mode;
   }
+
   // Diameter of the tool in the spindle, for hole features.
   void set_tool_diameter(double mm) { hole_diameter_ = mm; }
 
@@ -53,7 +59,9 @@ class CanonMachine final : public MotionTarget {
 
  private:
   std::optional<double> feed_rate() const;
+
   canon::Abc abc_of(const Axes& a) const { return {a[3], a[4], a[5]}; }
+
   canon::Sink& sink_;
   ModalState* state_;
   core::SourceLoc src_;

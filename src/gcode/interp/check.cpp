@@ -47,10 +47,12 @@ bool Interpreter::place_m(BlockWords& w, int m, std::uint32_t col) {
   }
   if (w.m[gi] != -1) {
     // LinuxCNC lets mist and flood be turned on in one block.
-    const bool coolants = group == kMGroupCoolant && ((w.m[gi] == 7 && m == 8) || (w.m[gi] == 8 && m == 7));
+    const bool coolants =
+        group == kMGroupCoolant && ((w.m[gi] == 7 && m == 8) || (w.m[gi] == 8 && m == 7));
     if (!coolants) {
-      return error(core::Code::ModalGroupConflict, col,
-                   fmt::format("M{} and M{} are in the same modal group; one per block", w.m[gi], m));
+      return error(
+          core::Code::ModalGroupConflict, col,
+          fmt::format("M{} and M{} are in the same modal group; one per block", w.m[gi], m));
     }
     w.m7_and_m8 = true;
     return true;
@@ -66,9 +68,13 @@ bool uses_axes(GCode g0) {
   return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520 || g0 == 920;
 }
 
-bool is_arc(GCode g) { return g == 20 || g == 30; }
+bool is_arc(GCode g) {
+  return g == 20 || g == 30;
+}
 
-bool is_cycle(GCode g) { return g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890); }
+bool is_cycle(GCode g) {
+  return g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890);
+}
 
 }  // namespace
 
@@ -86,13 +92,12 @@ bool Interpreter::check(BlockWords& w) {
                  "axis words with G80 (motion off): give G0, G1, G2 or G3, or remove them");
   }
   if (g1 != -1 && g1 != 800 && uses_axes(g0) && axes) {
-    return error(core::Code::AxisWordsConflict, w.gcol[kGroupNonModal],
-                 fmt::format("{} and {} both use the axis words", g_name(g0).data(),
-                             g_name(g1).data()));
+    return error(
+        core::Code::AxisWordsConflict, w.gcol[kGroupNonModal],
+        fmt::format("{} and {} both use the axis words", g_name(g0).data(), g_name(g1).data()));
   }
   if (g0 == 530 && w.motion != 0 && w.motion != 10) {
-    return error(core::Code::NotAllowedInMode, w.gcol[kGroupNonModal],
-                 "G53 needs G0 or G1 motion");
+    return error(core::Code::NotAllowedInMode, w.gcol[kGroupNonModal], "G53 needs G0 or G1 motion");
   }
   return comp_forbids(w) && check_unused(w);
 }
@@ -105,11 +110,14 @@ bool Interpreter::comp_forbids(const BlockWords& w) {
                  fmt::format("{} with cutter radius compensation on: G40 first", what));
   };
   const GCode plane = w.g[kGroupPlane];
-  const GCode current = state_.plane == core::Plane::XY ? 170 : (state_.plane == core::Plane::ZX ? 180 : 190);
+  const GCode current =
+      state_.plane == core::Plane::XY ? 170 : (state_.plane == core::Plane::ZX ? 180 : 190);
   if (plane != -1 && plane != current) return refuse(w.gcol[kGroupPlane], "a plane change");
   if (w.m[kMGroupToolChange] == 6) return refuse(w.mcol[kMGroupToolChange], "a tool change");
-  if (w.g[kGroupCoordSystem] != -1) return refuse(w.gcol[kGroupCoordSystem], "a work offset change");
-  if (w.g[kGroupUnits] != -1 && (w.g[kGroupUnits] == 200) != (state_.units == core::LengthUnit::Inch)) {
+  if (w.g[kGroupCoordSystem] != -1)
+    return refuse(w.gcol[kGroupCoordSystem], "a work offset change");
+  if (w.g[kGroupUnits] != -1 &&
+      (w.g[kGroupUnits] == 200) != (state_.units == core::LengthUnit::Inch)) {
     return refuse(w.gcol[kGroupUnits], "a units change");
   }
   const GCode g0 = w.g[kGroupNonModal];
@@ -145,14 +153,15 @@ bool Interpreter::check_unused(const BlockWords& w) {
     return unused('R', "G2, G3, canned cycles, G10");
   }
   const bool p_user = w.g[kGroupPathControl] == 640 || g0 == 40 || g0 == 100 || arc || cycle ||
-                      spline || mio != -1 || w.m[kMGroupSubprogram] != -1 ||
-                      w.user_m_count > 0 || w.m[kMGroupSpindle] == 19 || mo == 760;
+                      spline || mio != -1 || w.m[kMGroupSubprogram] != -1 || w.user_m_count > 0 ||
+                      w.m[kMGroupSpindle] == 19 || mo == 760;
   if (w.has('P') && !p_user) return unused('P', "G4, G10, G64, G2/G3 turns, dwell cycles, M62-M68");
   const bool q_user = w.g[kGroupPathControl] == 640 || mo == 730 || mo == 830 || mo == 760 ||
                       mo == 50 || mo == 62 || mio != -1 || w.user_m_count > 0 ||
                       w.m[kMGroupSpindle] == 19 || w.m[kMGroupToolChange] == 61;
   if (w.has('Q') && !q_user) return unused('Q', "G64, G73, G83, G5, G76");
-  if (w.has('L') && !(g0 == 100 || cycle || mo == 52 || w.m[kMGroupSubprogram] != -1 || mio == 66)) {
+  if (w.has('L') &&
+      !(g0 == 100 || cycle || mo == 52 || w.m[kMGroupSubprogram] != -1 || mio == 66)) {
     return unused('L', "G10, canned cycles, G5.2, M98");
   }
   const GCode comp = w.g[kGroupCutterComp];

@@ -1,9 +1,8 @@
 // O-word control flow: subroutines, branches and loops (LinuxCNC manual,
 // "O Codes"), and Fanuc-style M98/M99 subprograms. Jumps go through the
 // program index; a loop that runs more than max_loop_iterations is an error.
-#include <sys/stat.h>
-
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include "gcode/interp/block_words.hpp"
 #include "gcode/interp/interpreter.hpp"
@@ -43,24 +42,24 @@ Interpreter::Flow Interpreter::control(const OWord& o, std::uint64_t line_offset
     return Flow::Error;
   }
   switch (o.kind) {
-    case OKind::Sub: {
-      const std::uint32_t end = idx.next_of(e, {OKind::EndSub});
-      if (end == kNoEntry) {
-        error(core::Code::UnclosedBlock, o.col, fmt::format("o<{}> sub has no endsub", o.label));
-        return Flow::Error;
-      }
-      jump_to(cursor_.file, idx.at(end), true);
-      return Flow::Jumped;
+  case OKind::Sub: {
+    const std::uint32_t end = idx.next_of(e, {OKind::EndSub});
+    if (end == kNoEntry) {
+      error(core::Code::UnclosedBlock, o.col, fmt::format("o<{}> sub has no endsub", o.label));
+      return Flow::Error;
     }
-    case OKind::EndSub:
-    case OKind::Return: return leave_sub(o);
-    case OKind::Call: return call(o, next);
-    case OKind::If:
-    case OKind::ElseIf:
-    case OKind::Else:
-    case OKind::EndIf: return branch(idx, e, o);
-    case OKind::Program: return Flow::Next;
-    default: return loop(idx, e, o);
+    jump_to(cursor_.file, idx.at(end), true);
+    return Flow::Jumped;
+  }
+  case OKind::EndSub:
+  case OKind::Return: return leave_sub(o);
+  case OKind::Call: return call(o, next);
+  case OKind::If:
+  case OKind::ElseIf:
+  case OKind::Else:
+  case OKind::EndIf: return branch(idx, e, o);
+  case OKind::Program: return Flow::Next;
+  default: return loop(idx, e, o);
   }
 }
 
@@ -85,7 +84,8 @@ Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, 
   // An elseif or else reached from a branch that ran: skip to the endif.
   const std::uint32_t end = idx.next_of(e, {OKind::EndIf});
   if (end == kNoEntry) {
-    error(core::Code::UnclosedBlock, o.col, fmt::format("o{} {} has no endif", o.label, okind_name(o.kind)));
+    error(core::Code::UnclosedBlock, o.col,
+          fmt::format("o{} {} has no endif", o.label, okind_name(o.kind)));
     return Flow::Error;
   }
   jump_to(cursor_.file, idx.at(end), true);
@@ -106,7 +106,8 @@ Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, 
 
 Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o) {
   auto missing = [&](const char* what) {
-    error(core::Code::UnclosedBlock, o.col, fmt::format("o{} {} has no {}", o.label, okind_name(o.kind), what));
+    error(core::Code::UnclosedBlock, o.col,
+          fmt::format("o{} {} has no {}", o.label, okind_name(o.kind), what));
     return Flow::Error;
   };
   auto leave = [&](std::uint32_t end) {
@@ -116,60 +117,62 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
   };
   const OEntry& me = idx.at(e);
   switch (o.kind) {
-    case OKind::Do: return Flow::Next;
-    case OKind::While: {
-      auto c = condition(o);
-      if (!c) return Flow::Error;
-      if (me.ends_do) {
-        const std::uint32_t start = idx.prev_of(e, {OKind::Do});
-        if (start == kNoEntry) return missing("do");
-        return *c ? loop_back(start, idx.at(start), true) : Flow::Next;
-      }
-      if (*c) return Flow::Next;
-      const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
-      return end == kNoEntry ? missing("endwhile") : leave(end);
+  case OKind::Do: return Flow::Next;
+  case OKind::While: {
+    auto c = condition(o);
+    if (!c) return Flow::Error;
+    if (me.ends_do) {
+      const std::uint32_t start = idx.prev_of(e, {OKind::Do});
+      if (start == kNoEntry) return missing("do");
+      return *c ? loop_back(start, idx.at(start), true) : Flow::Next;
     }
-    case OKind::EndWhile: {
-      const std::uint32_t start = idx.prev_of(e, {OKind::While});
-      return start == kNoEntry ? missing("while") : loop_back(start, idx.at(start), false);
-    }
-    case OKind::Repeat: {
-      EvalError err;
-      auto n = gcode::evaluate(block_, o.expr, *this, err);
-      if (!n) {
-        error(err.error, err.col);
-        return Flow::Error;
-      }
-      const std::uint32_t end = idx.next_of(e, {OKind::EndRepeat});
-      if (end == kNoEntry) return missing("endrepeat");
-      if (*n < 1.0) return leave(end);
-      loops_.push_back({cursor_.file, e, static_cast<long>(*n)});
-      return Flow::Next;
-    }
-    case OKind::EndRepeat: {
-      const std::uint32_t start = idx.prev_of(e, {OKind::Repeat});
-      if (start == kNoEntry || loops_.empty() || loops_.back().entry != start) return missing("repeat");
-      if (--loops_.back().count > 0) return loop_back(start, idx.at(start), true);
-      loops_.pop_back();
-      return Flow::Next;
-    }
-    case OKind::Break: {
-      const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
-      if (end == kNoEntry) return missing("loop end");
-      if (idx.at(end).kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
-      return leave(end);
-    }
-    case OKind::Continue: {
-      const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
-      if (end == kNoEntry) return missing("loop end");
-      // The loop's end decides: endwhile goes back to its while, endrepeat
-      // counts down, a do-while's while tests its condition.
-      jump_to(cursor_.file, idx.at(end), false);
-      return Flow::Jumped;
-    }
-    default: break;
+    if (*c) return Flow::Next;
+    const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
+    return end == kNoEntry ? missing("endwhile") : leave(end);
   }
-  error(core::Code::UnmatchedControl, o.col, fmt::format("unexpected o{} {}", o.label, okind_name(o.kind)));
+  case OKind::EndWhile: {
+    const std::uint32_t start = idx.prev_of(e, {OKind::While});
+    return start == kNoEntry ? missing("while") : loop_back(start, idx.at(start), false);
+  }
+  case OKind::Repeat: {
+    EvalError err;
+    auto n = gcode::evaluate(block_, o.expr, *this, err);
+    if (!n) {
+      error(err.error, err.col);
+      return Flow::Error;
+    }
+    const std::uint32_t end = idx.next_of(e, {OKind::EndRepeat});
+    if (end == kNoEntry) return missing("endrepeat");
+    if (*n < 1.0) return leave(end);
+    loops_.push_back({cursor_.file, e, static_cast<long>(*n)});
+    return Flow::Next;
+  }
+  case OKind::EndRepeat: {
+    const std::uint32_t start = idx.prev_of(e, {OKind::Repeat});
+    if (start == kNoEntry || loops_.empty() || loops_.back().entry != start)
+      return missing("repeat");
+    if (--loops_.back().count > 0) return loop_back(start, idx.at(start), true);
+    loops_.pop_back();
+    return Flow::Next;
+  }
+  case OKind::Break: {
+    const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
+    if (end == kNoEntry) return missing("loop end");
+    if (idx.at(end).kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
+    return leave(end);
+  }
+  case OKind::Continue: {
+    const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
+    if (end == kNoEntry) return missing("loop end");
+    // The loop's end decides: endwhile goes back to its while, endrepeat
+    // counts down, a do-while's while tests its condition.
+    jump_to(cursor_.file, idx.at(end), false);
+    return Flow::Jumped;
+  }
+  default: break;
+  }
+  error(core::Code::UnmatchedControl, o.col,
+        fmt::format("unexpected o{} {}", o.label, okind_name(o.kind)));
   return Flow::Error;
 }
 
@@ -184,7 +187,9 @@ std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name)
   }
   for (const std::string& dir : options_.subroutine_path) {
     const std::string path = (dir.empty() ? std::string(".") : dir) + "/" + name + ".ngc";
+
     struct stat st {};
+
     if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
     std::string err;
     auto file = core::SourceFile::open(path, err);
@@ -207,7 +212,8 @@ Interpreter::Flow Interpreter::call(const OWord& o, std::uint64_t next) {
       return Flow::Error;
     }
     label = fmt::format("{}", *v);
-  }  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
+  }
+  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
     error(core::Code::RecursionTooDeep, o.col,
           fmt::format("o<{}> call nests deeper than {} calls", label, options_.max_call_depth));
     return Flow::Error;
@@ -249,7 +255,8 @@ Interpreter::Flow Interpreter::call(const OWord& o, std::uint64_t next) {
   frames_.push_back({cursor_, label, whole_file, false, 0, 0, 0, file, std::nullopt});
   params_.push_scope();
   for (int i = 1; i <= 30; ++i) {
-    params_.set(i, i <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(i - 1)] : 0.0);
+    params_.set(i,
+                i <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(i - 1)] : 0.0);
   }
   if (whole_file) {
     cursor_ = {file, 0, 1};
@@ -304,7 +311,9 @@ bool Interpreter::end_of_file() {
 // M98 P<program> [L<times>]: run the Fanuc-style subprogram O<program>,
 // which returns at M99.
 bool Interpreter::fanuc_call(const BlockWords& w) {
-  if (!w.has('P')) return error(core::Code::MissingWord, w.mcol[kMGroupSubprogram], "M98 needs P (the program number)");
+  if (!w.has('P'))
+    return error(core::Code::MissingWord, w.mcol[kMGroupSubprogram],
+                 "M98 needs P (the program number)");
   const std::string label = fmt::format("{}", w.get('P'));
   const ProgramIndex& idx = index_of(cursor_.file);
   std::uint32_t entry = kNoEntry;
@@ -312,7 +321,8 @@ bool Interpreter::fanuc_call(const BlockWords& w) {
     if (idx.at(i).kind == OKind::Program && idx.at(i).label == label) entry = i;
   }
   if (entry == kNoEntry) {
-    return error(core::Code::UnknownSubroutine, w.col_of('P'), fmt::format("no subprogram O{} in this file", label));
+    return error(core::Code::UnknownSubroutine, w.col_of('P'),
+                 fmt::format("no subprogram O{} in this file", label));
   }
   if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
     return error(core::Code::RecursionTooDeep, w.col_of('P'), "M98 calls nest too deep");
@@ -320,7 +330,8 @@ bool Interpreter::fanuc_call(const BlockWords& w) {
   const long times = w.has('L') ? static_cast<long>(w.get('L')) : 1;
   if (times < 1) return true;
   const OEntry& e = idx.at(entry);
-  frames_.push_back({cursor_, label, false, true, times - 1, e.next_line, e.line + 1, cursor_.file, std::nullopt});
+  frames_.push_back({cursor_, label, false, true, times - 1, e.next_line, e.line + 1, cursor_.file,
+                     std::nullopt});
   jump_to(cursor_.file, e, true);
   return true;
 }

@@ -20,11 +20,12 @@ double Interpreter::tool_diameter(int tool) const {
 bool Interpreter::comments(const Block& b) {
   for (const CommentText& c : b.comments) {
     std::string_view t = c.text;
-    while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+    while (!t.empty() && (t.front() == ' ' || t.front() == '\t'))
+      t.remove_prefix(1);
     // (MSG, text) is an operator message; other comments are kept too, so a
     // drawing or a post-processor can show them.
-    const bool msg = t.size() >= 4 && (t[0] == 'M' || t[0] == 'm') && (t[1] == 'S' || t[1] == 's') &&
-                     (t[2] == 'G' || t[2] == 'g') && t[3] == ',';
+    const bool msg = t.size() >= 4 && (t[0] == 'M' || t[0] == 'm') &&
+                     (t[1] == 'S' || t[1] == 's') && (t[2] == 'G' || t[2] == 'g') && t[3] == ',';
     if (msg) {
       t.remove_prefix(4);
       core::SourceLoc loc = loc_;
@@ -41,7 +42,8 @@ void Interpreter::in_order(std::function<void()> effect) {
     effect();
     return;
   }
-  comp_.defer(loc_, [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
+  comp_.defer(
+      loc_, [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
 }
 
 bool Interpreter::execute(const Block& b, BlockWords& w) {
@@ -49,7 +51,8 @@ bool Interpreter::execute(const Block& b, BlockWords& w) {
   if (!tool_and_spindle(w)) return false;
   if (w.g[kGroupNonModal] == 40) {
     if (!w.has('P') || w.get('P') < 0) {
-      return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G4 needs P (seconds, not negative)");
+      return error(core::Code::MissingWord, w.gcol[kGroupNonModal],
+                   "G4 needs P (seconds, not negative)");
     }
     in_order([this, s = w.get('P')] { machine_.dwell(s); });
   }
@@ -69,7 +72,8 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
   ModalState& s = state_;
   if (w.g[kGroupFeedMode] != -1) {
     const GCode g = w.g[kGroupFeedMode];
-    s.feed_mode = g == 930 ? FeedMode::InverseTime : (g == 950 ? FeedMode::UnitsPerRev : FeedMode::UnitsPerMinute);
+    s.feed_mode = g == 930 ? FeedMode::InverseTime
+                           : (g == 950 ? FeedMode::UnitsPerRev : FeedMode::UnitsPerMinute);
     // LinuxCNC: entering inverse time clears the feed rate.
     if (g == 930) s.feed = 0.0;
   }
@@ -82,21 +86,27 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
   }
   if (w.g[kGroupSpindleMode] != -1) s.css = w.g[kGroupSpindleMode] == 960;
   if (w.has('S')) {
-    if (w.get('S') < 0) return error(core::Code::BadWordValue, w.col_of('S'), "negative spindle speed");
+    if (w.get('S') < 0)
+      return error(core::Code::BadWordValue, w.col_of('S'), "negative spindle speed");
     s.speed = w.get('S');
   }
   if (w.has('T')) {
     const double t = w.get('T');
     if (t < 0 || std::floor(t) != t) {
-      return error(core::Code::BadWordValue, w.col_of('T'), fmt::format("T{} is not a tool number", t));
+      return error(core::Code::BadWordValue, w.col_of('T'),
+                   fmt::format("T{} is not a tool number", t));
     }
     s.selected_tool = static_cast<int>(t);
   }
   const int tc = w.m[kMGroupToolChange];
   if (tc == 6 || tc == 61) {
-    if (tc == 61 && !w.has('Q')) return error(core::Code::MissingWord, w.mcol[kMGroupToolChange], "M61 needs Q (the tool number)");
+    if (tc == 61 && !w.has('Q'))
+      return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
+                   "M61 needs Q (the tool number)");
     const int tool = tc == 61 ? static_cast<int>(w.get('Q')) : s.selected_tool;
-    if (tool < 0) return error(core::Code::MissingWord, w.mcol[kMGroupToolChange], "M6 with no tool selected: give T first");
+    if (tool < 0)
+      return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
+                   "M6 with no tool selected: give T first");
     // LinuxCNC's M6 stops the spindle before the change.
     if (tc == 6 && s.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
     s.tool = tool;
@@ -107,7 +117,8 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
   }
   const int spin = w.m[kMGroupSpindle];
   if (spin == 3 || spin == 4 || spin == 5) {
-    const auto dir = spin == 3 ? canon::SpindleDir::Cw : (spin == 4 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
+    const auto dir = spin == 3 ? canon::SpindleDir::Cw
+                               : (spin == 4 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
     s.spindle = dir;
     in_order([this, dir] { machine_.spindle(dir); });
   }
@@ -119,14 +130,15 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
     in_order([this, c = canon::Coolant{s.mist, s.flood}] { machine_.emit(c); });
   }
   switch (w.m[kMGroupOverride]) {
-    case 48: s.feed_override = s.speed_override = true; break;
-    case 49: s.feed_override = s.speed_override = false; break;
-    case 50: s.feed_override = !w.has('P') || w.get('P') != 0; break;
-    case 51: s.speed_override = !w.has('P') || w.get('P') != 0; break;
-    default: break;
+  case 48: s.feed_override = s.speed_override = true; break;
+  case 49: s.feed_override = s.speed_override = false; break;
+  case 50: s.feed_override = !w.has('P') || w.get('P') != 0; break;
+  case 51: s.speed_override = !w.has('P') || w.get('P') != 0; break;
+  default: break;
   }
   for (int i = 0; i < w.user_m_count; ++i) {
-    machine_.emit(canon::Comment{fmt::format("M{} (user M code)", w.user_m[static_cast<std::size_t>(i)])});
+    machine_.emit(
+        canon::Comment{fmt::format("M{} (user M code)", w.user_m[static_cast<std::size_t>(i)])});
   }
   return true;
 }
@@ -134,12 +146,13 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
 bool Interpreter::modal_settings(BlockWords& w) {
   ModalState& s = state_;
   switch (w.g[kGroupPlane]) {
-    case 170: s.plane = core::Plane::XY; break;
-    case 180: s.plane = core::Plane::ZX; break;
-    case 190: s.plane = core::Plane::YZ; break;
-    default: break;
+  case 170: s.plane = core::Plane::XY; break;
+  case 180: s.plane = core::Plane::ZX; break;
+  case 190: s.plane = core::Plane::YZ; break;
+  default: break;
   }
-  if (w.g[kGroupUnits] != -1 && !set_units(w.g[kGroupUnits] == 200 ? core::LengthUnit::Inch : core::LengthUnit::Mm)) {
+  if (w.g[kGroupUnits] != -1 &&
+      !set_units(w.g[kGroupUnits] == 200 ? core::LengthUnit::Inch : core::LengthUnit::Mm)) {
     return false;
   }
   if (w.g[kGroupLathe] != -1) s.lathe_diameter = w.g[kGroupLathe] == 70;
@@ -152,7 +165,8 @@ bool Interpreter::modal_settings(BlockWords& w) {
   if (w.g[kGroupPathControl] != -1) s.path_mode = w.g[kGroupPathControl];
   if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;
   if (w.g[kGroupArcDistance] != -1) s.arc_absolute = w.g[kGroupArcDistance] == 901;
-  if (w.g[kGroupRetract] != -1) s.retract = w.g[kGroupRetract] == 990 ? RetractMode::RPlane : RetractMode::OldZ;
+  if (w.g[kGroupRetract] != -1)
+    s.retract = w.g[kGroupRetract] == 990 ? RetractMode::RPlane : RetractMode::OldZ;
   return true;
 }
 
@@ -167,21 +181,23 @@ bool Interpreter::set_units(core::LengthUnit u) {
 // subroutine's return (LinuxCNC manual, M70-M73): modes, not positions.
 bool Interpreter::modal_save_restore(const BlockWords& w) {
   switch (w.m[kMGroupModalState]) {
-    case 70: saved_modal_ = state_; break;
-    case 71: saved_modal_.reset(); break;
-    case 72:
-      if (!saved_modal_) {
-        return error(core::Code::NotAllowedInMode, w.mcol[kMGroupModalState], "M72 with no state saved by M70");
-      }
-      restore_modal(*saved_modal_);
-      break;
-    case 73:
-      if (frames_.empty()) {
-        return error(core::Code::NotAllowedInMode, w.mcol[kMGroupModalState], "M73 outside a subroutine");
-      }
-      frames_.back().autorestore = state_;
-      break;
-    default: break;
+  case 70: saved_modal_ = state_; break;
+  case 71: saved_modal_.reset(); break;
+  case 72:
+    if (!saved_modal_) {
+      return error(core::Code::NotAllowedInMode, w.mcol[kMGroupModalState],
+                   "M72 with no state saved by M70");
+    }
+    restore_modal(*saved_modal_);
+    break;
+  case 73:
+    if (frames_.empty()) {
+      return error(core::Code::NotAllowedInMode, w.mcol[kMGroupModalState],
+                   "M73 outside a subroutine");
+    }
+    frames_.back().autorestore = state_;
+    break;
+  default: break;
   }
   return true;
 }
@@ -216,24 +232,24 @@ bool Interpreter::stop(const BlockWords& w) {
   if (m == 98 && !fanuc_call(w)) return false;
   if (m == 99 && !fanuc_return()) return false;
   switch (w.m[kMGroupStop]) {
-    case 2:
-    case 30: {
-      if (auto e = comp_.flush(machine_)) return error(*e);
-      comp_.reset();
-      state_.comp = CompSideState::Off;
-      // LinuxCNC's program end: spindle and coolant off, then the end.
-      if (state_.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
-      machine_.emit(canon::ProgramEnd{});
-      ended_ = true;
-      break;
-    }
-    case 0:
-    case 1:
-    case 60:
-      if (auto e = comp_.flush(machine_)) return error(*e);
-      machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])});
-      break;
-    default: break;
+  case 2:
+  case 30: {
+    if (auto e = comp_.flush(machine_)) return error(*e);
+    comp_.reset();
+    state_.comp = CompSideState::Off;
+    // LinuxCNC's program end: spindle and coolant off, then the end.
+    if (state_.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
+    machine_.emit(canon::ProgramEnd{});
+    ended_ = true;
+    break;
+  }
+  case 0:
+  case 1:
+  case 60:
+    if (auto e = comp_.flush(machine_)) return error(*e);
+    machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])});
+    break;
+  default: break;
   }
   return true;
 }

@@ -55,7 +55,8 @@ bool Interpreter::run(std::uint32_t file) {
     warn(core::Code::ByteOrderMark, 1, "UTF-8 byte-order mark at the start of the file ignored");
     cursor_.offset = 3;
   }
-  while (!ended_ && !failed_ && !at_eof_) step();
+  while (!ended_ && !failed_ && !at_eof_)
+    step();
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);
   }
@@ -141,6 +142,7 @@ bool Interpreter::assign_parameters(const Block& b) {
     double value;
     std::uint32_t col;
   };
+
   std::vector<Pending> pending;
   EvalError err;
   for (const ParamAssign& a : b.assigns) {

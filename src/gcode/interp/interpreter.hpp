@@ -46,11 +46,13 @@ class Interpreter final : private ParameterSource {
 
   // Sets a numbered parameter before the run (a parameter file).
   void set_parameter(int index, double value) { params_.set(index, value); }
+
   // Runs the program in `file` to its end (M2/M30, '%' or end of file) or to
   // the first error. True when no error was reported.
   bool run(std::uint32_t file);
 
   const ModalState& state() const { return state_; }
+
   const Parameters& parameters() const { return params_; }
 
  private:
@@ -59,6 +61,7 @@ class Interpreter final : private ParameterSource {
     std::uint64_t offset = 0;
     std::uint32_t line = 1;
   };
+
   struct Frame {
     Cursor ret;
     std::string name;
@@ -70,6 +73,7 @@ class Interpreter final : private ParameterSource {
     std::uint32_t file = 0;
     std::optional<ModalState> autorestore;  // M73: restored on return
   };
+
   struct LoopCount {
     std::uint32_t file;
     std::uint32_t entry;
@@ -137,8 +141,11 @@ class Interpreter final : private ParameterSource {
   bool error(core::Code code, std::uint32_t col, std::string message);
   bool error(const InterpError& e, std::uint32_t col = 0);
   void warn(core::Code code, std::uint32_t col, std::string message);
+
   double mm(double program_value) const { return program_value * core::mm_per(state_.units); }
+
   double machine_mm() const { return core::mm_per(options_.machine_units); }
+
   double tool_diameter(int tool) const;
 
   core::SourceManager& sources_;
@@ -177,6 +184,7 @@ class Interpreter final : private ParameterSource {
   int nurbs_order_ = 0;
   void emit_polyline(const std::vector<Vec2>& pts);
   bool nurbs_g6(BlockWords& w, const Axes& end);
+
   struct G6Curve {
     int order = 0;
     std::vector<Vec2> points;

@@ -13,7 +13,9 @@
 namespace usina::gcode {
 namespace {
 
-bool is_rotary(int axis) { return axis >= 3 && axis <= 5; }
+bool is_rotary(int axis) {
+  return axis >= 3 && axis <= 5;
+}
 
 }  // namespace
 
@@ -120,7 +122,8 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   if (w.has('P')) {
     const double p = w.get('P');
     if (p < 1 || std::floor(p) != p) {
-      return error(core::Code::BadWordValue, w.col_of('P'), fmt::format("P{} turns: must be a positive integer", p));
+      return error(core::Code::BadWordValue, w.col_of('P'),
+                   fmt::format("P{} turns: must be a positive integer", p));
     }
     turns = static_cast<int>(p);
   }
@@ -128,11 +131,13 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   const double unit_tol = state_.units == core::LengthUnit::Inch ? 0.0005 * 25.4 : 0.001;
   if (w.has('R')) {
     if (w.has(first) || w.has(second)) {
-      return error(core::Code::ArcMissingCenter, w.col_of('R'), "an arc takes R or I/J/K, not both");
+      return error(core::Code::ArcMissingCenter, w.col_of('R'),
+                   "an arc takes R or I/J/K, not both");
     }
     const double r = mm(w.get('R'));
     if (core::distance(start, stop) < 1e-12) {
-      return error(core::Code::ArcZeroLength, w.col_of('R'), "R-format arc with its end at its start: use I/J/K for a full circle");
+      return error(core::Code::ArcZeroLength, w.col_of('R'),
+                   "R-format arc with its end at its start: use I/J/K for a full circle");
     }
     auto c = core::arc_center_from_radius(start, stop, r, ccw, unit_tol);
     if (!c) {
@@ -143,8 +148,9 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
     center = *c;
   } else {
     if (!w.has(first) && !w.has(second)) {
-      return error(core::Code::ArcMissingCenter, 0,
-                   fmt::format("{} needs the centre ({} and/or {}) or R", g_name(g).data(), first, second));
+      return error(
+          core::Code::ArcMissingCenter, 0,
+          fmt::format("{} needs the centre ({} and/or {}) or R", g_name(g).data(), first, second));
     }
     const Vec2 off{w.has(first) ? mm(w.get(first)) : 0.0, w.has(second) ? mm(w.get(second)) : 0.0};
     center = state_.arc_absolute ? off : start + off;
@@ -152,14 +158,19 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
     const double r2 = core::distance(stop, center);
     // LinuxCNC accepts a small difference (a spiral): up to 2·0.001·√2 in
     // (2·0.01·√2 mm), or 0.1 % of the larger radius.
-    const double abs_tol = (state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02) * std::sqrt(2.0);
+    const double abs_tol =
+        (state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02) * std::sqrt(2.0);
     const double diff = std::fabs(r1 - r2);
     if (diff > abs_tol && diff > 0.001 * std::max(r1, r2)) {
-      return error(core::Code::ArcRadiusMismatch, 0,
-                   fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius {:.4f} about ({:.4f}, {:.4f}); use R, or correct {}/{}",
-                               stop.x, stop.y, std::fabs(r1 - r2), r1, center.x, center.y, first, second));
+      return error(
+          core::Code::ArcRadiusMismatch, 0,
+          fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius {:.4f} about "
+                      "({:.4f}, {:.4f}); use R, or correct {}/{}",
+                      stop.x, stop.y, std::fabs(r1 - r2), r1, center.x, center.y, first, second));
     }
-    if (r1 < 1e-9) return error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is at the start point");
+    if (r1 < 1e-9)
+      return error(core::Code::ArcZeroLength, 0,
+                   "arc of zero radius: the centre is at the start point");
   }
   Vec3 c3 = core::from_plane(center, start3[ax.axial], plane);
   if (comp_.active() || !comp_.arc_allowed()) {
@@ -184,7 +195,8 @@ bool Interpreter::probe(BlockWords& w, const Axes& end) {
   // point is that stop (its conformance traces, smartprobe.ngc, x-trim.ngc).
   const Vec3 dir = xyz(end) - start;
   const double length = core::norm(dir);
-  const Vec3 stop = length > 0.0 ? xyz(end) - dir * (0.01 * core::mm_per(state_.units) / length) : xyz(end);
+  const Vec3 stop =
+      length > 0.0 ? xyz(end) - dir * (0.01 * core::mm_per(state_.units) / length) : xyz(end);
   Axes result = end;
   set_xyz(result, stop);
   set_xyz(state_.pos, stop);

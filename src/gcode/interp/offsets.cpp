@@ -15,9 +15,13 @@ constexpr int kG92Base = 5211;
 constexpr int kG92Enabled = 5210;
 constexpr int kCoordSystemParam = 5220;
 
-int work_offset_base(int n) { return 5201 + 20 * n; }
+int work_offset_base(int n) {
+  return 5201 + 20 * n;
+}
 
-bool is_rotary(int axis) { return axis >= 3 && axis <= 5; }
+bool is_rotary(int axis) {
+  return axis >= 3 && axis <= 5;
+}
 
 }  // namespace
 
@@ -81,18 +85,22 @@ bool Interpreter::g92(BlockWords& w) {
     }
     params_.set(kG92Enabled, 1.0);
   }
-  for (std::size_t a = 0; a < static_cast<std::size_t>(kAxisCount); ++a) s.pos[a] += old[a] - s.g92[a];
+  for (std::size_t a = 0; a < static_cast<std::size_t>(kAxisCount); ++a)
+    s.pos[a] += old[a] - s.g92[a];
   return true;
 }
 
 bool Interpreter::g10(BlockWords& w) {
   if (!w.has('L')) return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G10 needs L");
   const int l = static_cast<int>(w.get('L'));
-  if (!w.has('P')) return error(core::Code::MissingWord, w.gcol[kGroupNonModal], fmt::format("G10 L{} needs P", l));
+  if (!w.has('P'))
+    return error(core::Code::MissingWord, w.gcol[kGroupNonModal],
+                 fmt::format("G10 L{} needs P", l));
   const double p = w.get('P');
   if (l == 2 || l == 20) {
     if (p < 0 || p > 9 || std::floor(p) != p) {
-      return error(core::Code::BadWordValue, w.col_of('P'), fmt::format("G10 L{} P{}: P must be 0 to 9", l, p));
+      return error(core::Code::BadWordValue, w.col_of('P'),
+                   fmt::format("G10 L{} P{}: P must be 0 to 9", l, p));
     }
     const int n = p == 0 ? state_.coord_system : static_cast<int>(p);
     const int base = work_offset_base(n);
@@ -119,7 +127,8 @@ bool Interpreter::g10(BlockWords& w) {
       Vec3 q = v + xyz(state_.g92);
       const Vec2 r = core::rotate({q.x, q.y}, core::deg_to_rad(params_.get(base + 9)));
       q = {r.x, r.y, q.z};
-      for (int a = 0; a < 3; ++a) params_.set(base + a, (abs[a] - q[a]) / machine_mm());
+      for (int a = 0; a < 3; ++a)
+        params_.set(base + a, (abs[a] - q[a]) / machine_mm());
     }
     if (n == state_.coord_system) select_coord_system(n);
     return true;
@@ -134,12 +143,15 @@ bool Interpreter::g10(BlockWords& w) {
       if (!w.has(letter)) continue;
       const double v = mm(w.get(letter));
       // L10: the offset that makes the current point read the value.
-      t.offset[a] = l == 1 ? v : state_.pos[static_cast<std::size_t>(a)] + state_.tool_offset[static_cast<std::size_t>(a)] - v;
+      t.offset[a] = l == 1 ? v
+                           : state_.pos[static_cast<std::size_t>(a)] +
+                                 state_.tool_offset[static_cast<std::size_t>(a)] - v;
     }
     options_.tools.set(t);
     return true;
   }
-  return error(core::Code::BadWordValue, w.col_of('L'), fmt::format("G10 L{} is not supported (L1, L2, L10, L11, L20)", l));
+  return error(core::Code::BadWordValue, w.col_of('L'),
+               fmt::format("G10 L{} is not supported (L1, L2, L10, L11, L20)", l));
 }
 
 bool Interpreter::home(BlockWords& w, int g) {
@@ -178,7 +190,8 @@ bool Interpreter::tool_length(BlockWords& w) {
     }
     if (g == 432) next = s.tool_offset;
     if (t != nullptr) {
-      for (int a = 0; a < 3; ++a) next[static_cast<std::size_t>(a)] += t->offset[a];
+      for (int a = 0; a < 3; ++a)
+        next[static_cast<std::size_t>(a)] += t->offset[a];
     }
   } else if (g == 431) {
     for (int a = 0; a < 3; ++a) {
@@ -190,7 +203,8 @@ bool Interpreter::tool_length(BlockWords& w) {
   }
   // LinuxCNC keeps the machine still: the current point's program
   // coordinates change by the difference of the offsets.
-  for (std::size_t a = 0; a < 3; ++a) s.pos[a] += s.tool_offset[a] - next[a];
+  for (std::size_t a = 0; a < 3; ++a)
+    s.pos[a] += s.tool_offset[a] - next[a];
   s.tool_offset = next;
   return true;
 }
@@ -217,7 +231,9 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   double radius = 0.0;
   int orientation = 0;
   if (g == 411 || g == 421) {
-    if (!w.has('D')) return error(core::Code::MissingWord, w.gcol[kGroupCutterComp], "G41.1/G42.1 need D (the tool diameter)");
+    if (!w.has('D'))
+      return error(core::Code::MissingWord, w.gcol[kGroupCutterComp],
+                   "G41.1/G42.1 need D (the tool diameter)");
     radius = mm(w.get('D')) / 2.0;
   } else {
     const int tool = w.has('D') ? static_cast<int>(w.get('D')) : s.tool;
@@ -241,26 +257,26 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
 
 bool Interpreter::modal_zero(BlockWords& w) {
   switch (w.g[kGroupNonModal]) {
-    case 100: return g10(w);
-    case 280:
-    case 300: return home(w, w.g[kGroupNonModal]);
-    case 281:
-    case 301: {
-      const int base = w.g[kGroupNonModal] == 281 ? 5161 : 5181;
-      const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
-      for (int a = 0; a < kAxisCount; ++a) {
-        const auto i = static_cast<std::size_t>(a);
-        const double v = a < 3 ? (abs[a] + state_.tool_offset[i]) / machine_mm() : state_.pos[i];
-        params_.set(base + a, v);
-      }
-      return true;
+  case 100: return g10(w);
+  case 280:
+  case 300: return home(w, w.g[kGroupNonModal]);
+  case 281:
+  case 301: {
+    const int base = w.g[kGroupNonModal] == 281 ? 5161 : 5181;
+    const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
+    for (int a = 0; a < kAxisCount; ++a) {
+      const auto i = static_cast<std::size_t>(a);
+      const double v = a < 3 ? (abs[a] + state_.tool_offset[i]) / machine_mm() : state_.pos[i];
+      params_.set(base + a, v);
     }
-    case 520:
-    case 920:
-    case 921:
-    case 922:
-    case 923: return g92(w);
-    default: return true;
+    return true;
+  }
+  case 520:
+  case 920:
+  case 921:
+  case 922:
+  case 923: return g92(w);
+  default: return true;
   }
 }
 

@@ -54,8 +54,10 @@ std::optional<double> Interpreter::predefined(std::string_view name) const {
   auto flag = [](bool b) { return b ? 1.0 : 0.0; };
   if (name == "_line") return loc_.line;
   if (name == "_motion_mode") return s.motion;
-  if (name == "_plane") return s.plane == core::Plane::XY ? 170 : (s.plane == core::Plane::ZX ? 180 : 190);
-  if (name == "_ccomp") return s.comp == CompSideState::Off ? 400 : (s.comp == CompSideState::Left ? 410 : 420);
+  if (name == "_plane")
+    return s.plane == core::Plane::XY ? 170 : (s.plane == core::Plane::ZX ? 180 : 190);
+  if (name == "_ccomp")
+    return s.comp == CompSideState::Off ? 400 : (s.comp == CompSideState::Left ? 410 : 420);
   if (name == "_metric") return flag(s.units == core::LengthUnit::Mm);
   if (name == "_imperial") return flag(s.units == core::LengthUnit::Inch);
   if (name == "_absolute") return flag(!s.incremental);
@@ -63,7 +65,8 @@ std::optional<double> Interpreter::predefined(std::string_view name) const {
   if (name == "_inverse_time") return flag(s.feed_mode == FeedMode::InverseTime);
   if (name == "_units_per_minute") return flag(s.feed_mode == FeedMode::UnitsPerMinute);
   if (name == "_units_per_rev") return flag(s.feed_mode == FeedMode::UnitsPerRev);
-  if (name == "_coord_system") return s.coord_system <= 6 ? 530 + 10 * s.coord_system : 590 + s.coord_system - 6;
+  if (name == "_coord_system")
+    return s.coord_system <= 6 ? 530 + 10 * s.coord_system : 590 + s.coord_system - 6;
   if (name == "_tool_offset") return flag(s.tool_offset != Axes{});
   if (name == "_retract_r_plane") return flag(s.retract == RetractMode::RPlane);
   if (name == "_retract_old_z") return flag(s.retract == RetractMode::OldZ);

@@ -12,7 +12,8 @@ void Interpreter::emit_polyline(const std::vector<Vec2>& pts) {
   const double axial = state_.pos[static_cast<std::size_t>(core::axes_of(state_.plane).axial)];
   std::vector<Vec3> points;
   points.reserve(pts.size());
-  for (const Vec2& p : pts) points.push_back(core::from_plane(p, axial, state_.plane));
+  for (const Vec2& p : pts)
+    points.push_back(core::from_plane(p, axial, state_.plane));
   machine_.spline(points);
 }
 
@@ -23,7 +24,8 @@ void Interpreter::emit_polyline(const std::vector<Vec2>& pts) {
 // knots as points plus the order.
 bool Interpreter::nurbs_g6(BlockWords& w, const Axes& end) {
   if (g6_.points.empty() && g6_.knots.empty()) {
-    if (!w.has('P')) return error(core::Code::MissingWord, 0, "the first G6.2 block needs P (the order)");
+    if (!w.has('P'))
+      return error(core::Code::MissingWord, 0, "the first G6.2 block needs P (the order)");
     g6_.order = static_cast<int>(w.get('P'));
   }
   if (w.has_axis()) {
@@ -55,21 +57,25 @@ bool Interpreter::nurbs_g6(BlockWords& w, const Axes& end) {
 bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
   if (g == 62) return require_feed(w) && nurbs_g6(w, end);
   if (state_.plane != core::Plane::XY) {
-    return error(core::Code::NotAllowedInMode, 0, fmt::format("{} works in the XY plane (G17) only", g_name(g).data()));
+    return error(core::Code::NotAllowedInMode, 0,
+                 fmt::format("{} works in the XY plane (G17) only", g_name(g).data()));
   }
   if (state_.comp != CompSideState::Off) {
     return error(core::Code::NotAllowedInMode, 0, "splines with cutter compensation on");
   }
   if (w.has('Z') || w.has('A') || w.has('B') || w.has('C')) {
-    return error(core::Code::SplineBadValue, 0, fmt::format("{} moves X and Y only", g_name(g).data()));
+    return error(core::Code::SplineBadValue, 0,
+                 fmt::format("{} moves X and Y only", g_name(g).data()));
   }
   if (!require_feed(w)) return false;
   const Vec2 start{state_.pos[0], state_.pos[1]};
   const Vec2 stop{end[0], end[1]};
   const double tol = options_.spline_tolerance_mm;
   if (g == 50) {
-    if (!w.has('P') || !w.has('Q')) return error(core::Code::MissingWord, 0, "G5 needs P and Q (the second control point)");
-    if (w.has('I') != w.has('J')) return error(core::Code::MissingWord, 0, "G5 takes I and J together, or neither");
+    if (!w.has('P') || !w.has('Q'))
+      return error(core::Code::MissingWord, 0, "G5 needs P and Q (the second control point)");
+    if (w.has('I') != w.has('J'))
+      return error(core::Code::MissingWord, 0, "G5 takes I and J together, or neither");
     Vec2 ij;
     if (w.has('I')) {
       ij = {mm(w.get('I')), mm(w.get('J'))};
@@ -85,7 +91,8 @@ bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
   }
   last_g5_ctrl_.reset();
   if (g == 51) {
-    if (!w.has('I') && !w.has('J')) return error(core::Code::MissingWord, 0, "G5.1 needs I and J (the control point)");
+    if (!w.has('I') && !w.has('J'))
+      return error(core::Code::MissingWord, 0, "G5.1 needs I and J (the control point)");
     const Vec2 ij{w.has('I') ? mm(w.get('I')) : 0.0, w.has('J') ? mm(w.get('J')) : 0.0};
     emit_polyline(core::linearize(core::quad_from_g5_1(start, stop, ij), tol));
     return true;

@@ -19,7 +19,9 @@ using Axes = std::array<double, 9>;
 inline constexpr int kAxisCount = 9;
 inline constexpr const char* kAxisLetters = "XYZABCUVW";
 
-inline Vec3 xyz(const Axes& a) { return {a[0], a[1], a[2]}; }
+inline Vec3 xyz(const Axes& a) {
+  return {a[0], a[1], a[2]};
+}
 
 inline void set_xyz(Axes& a, const Vec3& v) {
   a[0] = v.x;
@@ -37,31 +39,31 @@ enum class RetractMode { OldZ, RPlane };
 struct ModalState {
   GCode motion = 800;  // LinuxCNC starts in G80
   core::Plane plane = core::Plane::XY;
-  bool incremental = false;      // G91
-  bool arc_absolute = false;     // G90.1
+  bool incremental = false;   // G91
+  bool arc_absolute = false;  // G90.1
   FeedMode feed_mode = FeedMode::UnitsPerMinute;
   core::LengthUnit units = core::LengthUnit::Mm;
-  GCode path_mode = 640;         // G64
+  GCode path_mode = 640;  // G64
   RetractMode retract = RetractMode::OldZ;
-  bool css = false;              // G96
-  bool lathe_diameter = false;   // G7
-  int coord_system = 1;          // 1 = G54 ... 9 = G59.3
+  bool css = false;             // G96
+  bool lathe_diameter = false;  // G7
+  int coord_system = 1;         // 1 = G54 ... 9 = G59.3
 
-  double feed = 0.0;             // mm/min (G94), mm/rev (G95) or 1/min (G93)
-  double speed = 0.0;            // rpm, or surface speed under G96
+  double feed = 0.0;   // mm/min (G94), mm/rev (G95) or 1/min (G93)
+  double speed = 0.0;  // rpm, or surface speed under G96
   canon::SpindleDir spindle = canon::SpindleDir::Off;
   bool mist = false;
   bool flood = false;
-  int tool = 0;                  // in the spindle
-  int selected_tool = -1;        // T word
-  Axes tool_offset{};            // active tool length offset (G43), mm
-  double comp_radius = 0.0;      // G41/G42 radius, mm
+  int tool = 0;              // in the spindle
+  int selected_tool = -1;    // T word
+  Axes tool_offset{};        // active tool length offset (G43), mm
+  double comp_radius = 0.0;  // G41/G42 radius, mm
   CompSideState comp = CompSideState::Off;
 
-  Axes pos{};                    // current point, program coordinates
-  Axes g92{};                    // G92 / G52 offsets
-  Axes g5x{};                    // active work offset
-  double rotation_deg = 0.0;     // active work offset's XY rotation (G10 L2 R)
+  Axes pos{};                 // current point, program coordinates
+  Axes g92{};                 // G92 / G52 offsets
+  Axes g5x{};                 // active work offset
+  double rotation_deg = 0.0;  // active work offset's XY rotation (G10 L2 R)
   bool feed_override = true;
   bool speed_override = true;
 };
