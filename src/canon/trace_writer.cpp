@@ -3,63 +3,95 @@
 #include <cmath>
 #include <iterator>
 
+#include <fmt/compile.h>
+
 namespace usina::canon {
 namespace {
 
-using Out = std::back_insert_iterator<fmt::memory_buffer>;
+// fmt's own appender and compiled formats: no format string parsed per op.
+using Out = fmt::appender;
 
-// Shortest representation that round-trips; -0 written as 0.
+// Writes `v` so that reading it back gives the same double; -0 as 0.
+// Most coordinates are short decimals (12.345): when v is exactly the
+// double nearest to n / 10^6 for an integer n, "n / 10^6" in decimal reads
+// back as v, and writing it takes a few integer divisions instead of the
+// shortest-representation search (the hot path of `usina trace`).
 void num(Out out, double v) {
   if (v == 0.0) v = 0.0;
-  fmt::format_to(out, "{}", v);
+  constexpr double kScale = 1e6;
+  if (std::fabs(v) < 1e9) {
+    const long long n = std::llround(v * kScale);
+    if (static_cast<double>(n) / kScale == v) {
+      unsigned long long u =
+          n < 0 ? static_cast<unsigned long long>(-n) : static_cast<unsigned long long>(n);
+      if (n < 0) *out++ = '-';
+      out = fmt::format_to(out, FMT_COMPILE("{}"), u / 1000000ULL);
+      unsigned long long frac = u % 1000000ULL;
+      if (frac != 0) {
+        char digits[7] = {};
+        for (int i = 5; i >= 0; --i) {
+          digits[i] = static_cast<char>('0' + frac % 10);
+          frac /= 10;
+        }
+        int len = 6;
+        while (digits[len - 1] == '0')
+          --len;
+        *out++ = '.';
+        for (int i = 0; i < len; ++i)
+          *out++ = digits[i];
+      }
+      return;
+    }
+  }
+  fmt::format_to(out, FMT_COMPILE("{}"), v);
 }
 
 void vec(Out out, const Vec3& v) {
-  fmt::format_to(out, "[");
+  fmt::format_to(out, FMT_COMPILE("["));
   num(out, v.x);
-  fmt::format_to(out, ",");
+  fmt::format_to(out, FMT_COMPILE(","));
   num(out, v.y);
-  fmt::format_to(out, ",");
+  fmt::format_to(out, FMT_COMPILE(","));
   num(out, v.z);
-  fmt::format_to(out, "]");
+  fmt::format_to(out, FMT_COMPILE("]"));
 }
 
 void vec2(Out out, const Vec2& v) {
-  fmt::format_to(out, "[");
+  fmt::format_to(out, FMT_COMPILE("["));
   num(out, v.x);
-  fmt::format_to(out, ",");
+  fmt::format_to(out, FMT_COMPILE(","));
   num(out, v.y);
-  fmt::format_to(out, "]");
+  fmt::format_to(out, FMT_COMPILE("]"));
 }
 
 void abc(Out out, const Abc& a) {
   if (a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0) return;
-  fmt::format_to(out, ",\"abc\":");
+  fmt::format_to(out, FMT_COMPILE(",\"abc\":"));
   vec(out, {a[0], a[1], a[2]});
 }
 
 void feed(Out out, const std::optional<double>& f) {
-  fmt::format_to(out, ",\"f\":");
+  fmt::format_to(out, FMT_COMPILE(",\"f\":"));
   if (f) {
     num(out, *f);
   } else {
-    fmt::format_to(out, "null");
+    fmt::format_to(out, FMT_COMPILE("null"));
   }
 }
 
 void json_string(Out out, std::string_view s) {
-  fmt::format_to(out, "\"");
+  fmt::format_to(out, FMT_COMPILE("\""));
   for (const char c : s) {
     const auto u = static_cast<unsigned char>(c);
     if (c == '"' || c == '\\') {
-      fmt::format_to(out, "\\{}", c);
+      fmt::format_to(out, FMT_COMPILE("\\{}"), c);
     } else if (u < 0x20) {
-      fmt::format_to(out, "\\u{:04x}", u);
+      fmt::format_to(out, FMT_COMPILE("\\u{:04x}"), u);
     } else {
       *out++ = c;
     }
   }
-  fmt::format_to(out, "\"");
+  fmt::format_to(out, FMT_COMPILE("\""));
 }
 
 const char* dir_name(SpindleDir d) {
@@ -75,103 +107,103 @@ struct JsonFields {
   Out out;
 
   void operator()(const Traverse& m) const {
-    fmt::format_to(out, ",\"to\":");
+    fmt::format_to(out, FMT_COMPILE(",\"to\":"));
     vec(out, m.to);
     abc(out, m.abc);
   }
 
   void operator()(const Feed& m) const {
-    fmt::format_to(out, ",\"to\":");
+    fmt::format_to(out, FMT_COMPILE(",\"to\":"));
     vec(out, m.to);
     feed(out, m.f);
     abc(out, m.abc);
   }
 
   void operator()(const Arc& m) const {
-    fmt::format_to(out, ",\"to\":");
+    fmt::format_to(out, FMT_COMPILE(",\"to\":"));
     vec(out, m.to);
-    fmt::format_to(out, ",\"center\":");
+    fmt::format_to(out, FMT_COMPILE(",\"center\":"));
     vec(out, m.center);
-    fmt::format_to(out, ",\"normal\":");
+    fmt::format_to(out, FMT_COMPILE(",\"normal\":"));
     vec(out, m.normal);
-    fmt::format_to(out, ",\"turn\":{}", m.turn);
+    fmt::format_to(out, FMT_COMPILE(",\"turn\":{}"), m.turn);
     feed(out, m.f);
     abc(out, m.abc);
   }
 
   void operator()(const Probe& m) const {
-    fmt::format_to(out, ",\"to\":");
+    fmt::format_to(out, FMT_COMPILE(",\"to\":"));
     vec(out, m.to);
     abc(out, m.abc);
   }
 
   void operator()(const Spline& m) const {
-    fmt::format_to(out, ",\"to\":");
+    fmt::format_to(out, FMT_COMPILE(",\"to\":"));
     vec(out, m.to);
-    fmt::format_to(out, ",\"points\":[");
+    fmt::format_to(out, FMT_COMPILE(",\"points\":["));
     for (std::size_t i = 0; i < m.points.size(); ++i) {
-      if (i > 0) fmt::format_to(out, ",");
+      if (i > 0) fmt::format_to(out, FMT_COMPILE(","));
       vec(out, m.points[i]);
     }
-    fmt::format_to(out, "]");
+    fmt::format_to(out, FMT_COMPILE("]"));
     feed(out, m.f);
   }
 
   void operator()(const Dwell& m) const {
-    fmt::format_to(out, ",\"s\":");
+    fmt::format_to(out, FMT_COMPILE(",\"s\":"));
     num(out, m.s);
   }
 
   void operator()(const ToolChange& m) const {
-    fmt::format_to(out, ",\"tool\":{},\"diameter\":", m.tool);
+    fmt::format_to(out, FMT_COMPILE(",\"tool\":{},\"diameter\":"), m.tool);
     if (m.diameter) {
       num(out, *m.diameter);
     } else {
-      fmt::format_to(out, "null");
+      fmt::format_to(out, FMT_COMPILE("null"));
     }
   }
 
   void operator()(const Spindle& m) const {
-    fmt::format_to(out, ",\"rpm\":");
+    fmt::format_to(out, FMT_COMPILE(",\"rpm\":"));
     num(out, m.rpm);
-    fmt::format_to(out, ",\"dir\":\"{}\"", dir_name(m.dir));
+    fmt::format_to(out, FMT_COMPILE(",\"dir\":\"{}\""), dir_name(m.dir));
   }
 
   void operator()(const Coolant& m) const {
-    fmt::format_to(out, ",\"mist\":{},\"flood\":{}", m.mist, m.flood);
+    fmt::format_to(out, FMT_COMPILE(",\"mist\":{},\"flood\":{}"), m.mist, m.flood);
   }
 
   void operator()(const Hole& m) const {
-    fmt::format_to(out, ",\"at\":");
+    fmt::format_to(out, FMT_COMPILE(",\"at\":"));
     vec(out, m.at);
-    fmt::format_to(out, ",\"diameter\":");
+    fmt::format_to(out, FMT_COMPILE(",\"diameter\":"));
     num(out, m.diameter);
-    fmt::format_to(out, ",\"depth\":");
+    fmt::format_to(out, FMT_COMPILE(",\"depth\":"));
     num(out, m.depth);
   }
 
   void operator()(const Pocket& m) const {
-    fmt::format_to(out, ",\"outline\":{{\"start\":");
+    fmt::format_to(out, FMT_COMPILE(",\"outline\":{{\"start\":"));
     vec2(out, m.outline.start);
-    fmt::format_to(out, ",\"segs\":[");
+    fmt::format_to(out, FMT_COMPILE(",\"segs\":["));
     bool first = true;
     for (const OutlineSegment& s : m.outline.segs) {
-      fmt::format_to(out, "{}{{\"to\":", first ? "" : ",");
+      fmt::format_to(out, FMT_COMPILE("{}{{\"to\":"), first ? "" : ",");
       first = false;
       vec2(out, s.to);
       if (s.center) {
-        fmt::format_to(out, ",\"center\":");
+        fmt::format_to(out, FMT_COMPILE(",\"center\":"));
         vec2(out, *s.center);
-        fmt::format_to(out, ",\"turn\":{}", s.turn);
+        fmt::format_to(out, FMT_COMPILE(",\"turn\":{}"), s.turn);
       }
-      fmt::format_to(out, "}}");
+      fmt::format_to(out, FMT_COMPILE("}}"));
     }
-    fmt::format_to(out, "]}},\"depth\":");
+    fmt::format_to(out, FMT_COMPILE("]}},\"depth\":"));
     num(out, m.depth);
   }
 
   void operator()(const Comment& m) const {
-    fmt::format_to(out, ",\"text\":");
+    fmt::format_to(out, FMT_COMPILE(",\"text\":"));
     json_string(out, m.text);
   }
 
@@ -179,13 +211,14 @@ struct JsonFields {
 };
 
 void write_json(Out out, const Op& op) {
-  fmt::format_to(out, "{{\"op\":\"{}\",\"src\":[{},{}]", op_name(op.kind), op.src.line, op.src.col);
+  fmt::format_to(out, FMT_COMPILE("{{\"op\":\"{}\",\"src\":[{},{}]"), op_name(op.kind), op.src.line,
+                 op.src.col);
   std::visit(JsonFields{out}, op.kind);
-  fmt::format_to(out, "}}");
+  fmt::format_to(out, FMT_COMPILE("}}"));
 }
 
 void xyz(Out out, const Vec3& v) {
-  fmt::format_to(out, " X{:.4f} Y{:.4f} Z{:.4f}", v.x, v.y, v.z);
+  fmt::format_to(out, FMT_COMPILE(" X{:.4f} Y{:.4f} Z{:.4f}"), v.x, v.y, v.z);
 }
 
 struct TextFields {
@@ -195,49 +228,50 @@ struct TextFields {
 
   void operator()(const Feed& m) const {
     xyz(out, m.to);
-    if (m.f) fmt::format_to(out, " F{:g}", *m.f);
+    if (m.f) fmt::format_to(out, FMT_COMPILE(" F{:g}"), *m.f);
   }
 
   void operator()(const Arc& m) const {
     xyz(out, m.to);
-    fmt::format_to(out, " about ({:.4f}, {:.4f}, {:.4f}) turn {}", m.center.x, m.center.y,
-                   m.center.z, m.turn);
-    if (m.f) fmt::format_to(out, " F{:g}", *m.f);
+    fmt::format_to(out, FMT_COMPILE(" about ({:.4f}, {:.4f}, {:.4f}) turn {}"), m.center.x,
+                   m.center.y, m.center.z, m.turn);
+    if (m.f) fmt::format_to(out, FMT_COMPILE(" F{:g}"), *m.f);
   }
 
   void operator()(const Probe& m) const { xyz(out, m.to); }
 
   void operator()(const Spline& m) const {
     xyz(out, m.to);
-    fmt::format_to(out, " ({} points)", m.points.size());
-    if (m.f) fmt::format_to(out, " F{:g}", *m.f);
+    fmt::format_to(out, FMT_COMPILE(" ({} points)"), m.points.size());
+    if (m.f) fmt::format_to(out, FMT_COMPILE(" F{:g}"), *m.f);
   }
 
-  void operator()(const Dwell& m) const { fmt::format_to(out, " {:g} s", m.s); }
+  void operator()(const Dwell& m) const { fmt::format_to(out, FMT_COMPILE(" {:g} s"), m.s); }
 
   void operator()(const ToolChange& m) const {
-    fmt::format_to(out, " T{}", m.tool);
-    if (m.diameter) fmt::format_to(out, " diameter {:g} mm", *m.diameter);
+    fmt::format_to(out, FMT_COMPILE(" T{}"), m.tool);
+    if (m.diameter) fmt::format_to(out, FMT_COMPILE(" diameter {:g} mm"), *m.diameter);
   }
 
   void operator()(const Spindle& m) const {
-    fmt::format_to(out, " {} {:g} rpm", dir_name(m.dir), m.rpm);
+    fmt::format_to(out, FMT_COMPILE(" {} {:g} rpm"), dir_name(m.dir), m.rpm);
   }
 
   void operator()(const Coolant& m) const {
-    fmt::format_to(out, " mist {} flood {}", m.mist ? "on" : "off", m.flood ? "on" : "off");
+    fmt::format_to(out, FMT_COMPILE(" mist {} flood {}"), m.mist ? "on" : "off",
+                   m.flood ? "on" : "off");
   }
 
   void operator()(const Hole& m) const {
-    fmt::format_to(out, " at ({:.4f}, {:.4f}, {:.4f}) diameter {:g} depth {:g}", m.at.x, m.at.y,
-                   m.at.z, m.diameter, m.depth);
+    fmt::format_to(out, FMT_COMPILE(" at ({:.4f}, {:.4f}, {:.4f}) diameter {:g} depth {:g}"),
+                   m.at.x, m.at.y, m.at.z, m.diameter, m.depth);
   }
 
   void operator()(const Pocket& m) const {
-    fmt::format_to(out, " {} segments, depth {:g}", m.outline.segs.size(), m.depth);
+    fmt::format_to(out, FMT_COMPILE(" {} segments, depth {:g}"), m.outline.segs.size(), m.depth);
   }
 
-  void operator()(const Comment& m) const { fmt::format_to(out, " {}", m.text); }
+  void operator()(const Comment& m) const { fmt::format_to(out, FMT_COMPILE(" {}"), m.text); }
 
   void operator()(const ProgramEnd&) const {}
 };
@@ -246,7 +280,7 @@ struct TextFields {
 
 std::string to_jsonl(const Op& op) {
   fmt::memory_buffer buf;
-  write_json(std::back_inserter(buf), op);
+  write_json(fmt::appender(buf), op);
   return fmt::to_string(buf);
 }
 
@@ -255,11 +289,12 @@ TraceWriter::~TraceWriter() {
 }
 
 void TraceWriter::on(const Op& op) {
-  auto out = std::back_inserter(buf_);
+  auto out = fmt::appender(buf_);
   if (format_ == TraceFormat::Jsonl) {
     write_json(out, op);
   } else {
-    fmt::format_to(out, "{:>5}:{:<3} {:<8}", op.src.line, op.src.col, op_name(op.kind));
+    fmt::format_to(out, FMT_COMPILE("{:>5}:{:<3} {:<8}"), op.src.line, op.src.col,
+                   op_name(op.kind));
     std::visit(TextFields{out}, op.kind);
   }
   buf_.push_back('\n');
