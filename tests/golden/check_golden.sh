@@ -4,7 +4,7 @@
 #   check_golden.sh USINA            compare (exit 1 on a difference)
 #   check_golden.sh USINA --update   rewrite the goldens (then check by hand!)
 set -euo pipefail
-usina=$1; mode=${2:-check}
+usina=$(realpath "$1"); mode=${2:-check}
 here=$(cd "$(dirname "$0")" && pwd)
 status=0
 for golden in "$here"/*.jsonl; do
