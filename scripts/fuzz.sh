@@ -6,15 +6,23 @@
 # or undefined behaviour; new crashers are written to tests/fuzz/crashers/.
 #
 #   scripts/fuzz.sh [SECONDS]
+#   scripts/fuzz.sh --build-only               # build build-fuzz/fuzz_* and stop
 #   CXX_FUZZ=clang++-15 scripts/fuzz.sh 60     # another clang
 #   FUZZ_JOBS=1 scripts/fuzz.sh                # run the fuzzers one after the other
+#   FUZZ_OUT=/tmp/f FUZZ_EXTRA_FLAGS=-fsanitize-recover=undefined scripts/fuzz.sh --build-only
+#                                              # a variant that goes on after known UB
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
+build_only=0
+if [[ "${1:-}" == "--build-only" ]]; then
+  build_only=1
+  shift
+fi
 seconds="${1:-20}"
 cxx="${CXX_FUZZ:-clang++-14}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
-out="$root/build-fuzz"
+out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
 targets=(parser interpreter)
 
@@ -33,7 +41,7 @@ mapfile -t sources < <(cd "$root" && {
 mkdir -p "$out"
 {
   echo "cxx = $cxx"
-  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -I$root/src"
+  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined ${FUZZ_EXTRA_FLAGS:-} -I$root/src"
   echo "lflags = -fsanitize=fuzzer,address,undefined"
   echo "rule cxx"
   echo "  command = \$cxx \$cflags -MMD -MF \$out.d -c \$in -o \$out"
@@ -58,6 +66,7 @@ mkdir -p "$out"
 cmp -s "$out/build.ninja.new" "$out/build.ninja" 2>/dev/null || mv "$out/build.ninja.new" "$out/build.ninja"
 rm -f "$out/build.ninja.new"
 ninja -C "$out" -j "$jobs"
+[[ "$build_only" -eq 1 ]] && exit 0
 
 failed=0
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what usina needs to build and test, from Debian 12's packages.
 # Run as root (or with sudo) on a fresh Debian 12 machine.
+#   setup.sh                 what building needs
+#   setup.sh --with-linuxcnc also LinuxCNC's rs274 (large), for the differential tests
 set -euo pipefail
 pkgs=(
   build-essential cmake ninja-build pkg-config git python3
@@ -8,6 +10,7 @@ pkgs=(
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev clang-format
 )
+[ "${1:-}" = "--with-linuxcnc" ] && pkgs+=(linuxcnc-uspace)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -2,7 +2,7 @@
 # The README's test command: installs what is needed, builds, runs every test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --with-linuxcnc
 bash scripts/build.sh
 cd build
 ctest --output-on-failure --parallel "$(nproc)"

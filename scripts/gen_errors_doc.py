@@ -1,0 +1,444 @@
+#!/usr/bin/env python3
+"""Writes docs/errors.md, the catalogue of usina's diagnostic codes, from
+src/core/diagnostic_codes.hpp (the X-macro list: the stable names and their
+order) and the explanations below (what a code means, what to do). Where a
+code is reported, and the messages it is reported with, are read from src/.
+
+    scripts/gen_errors_doc.py [--root ROOT]     writes ROOT/docs/errors.md
+    scripts/gen_errors_doc.py --check           exit 1 when docs/errors.md is out
+                                                of date or a code has no explanation
+
+A new code in diagnostic_codes.hpp needs an entry in EXPLAIN here; --check
+says which.
+"""
+import argparse
+import pathlib
+import re
+import sys
+
+# Stable name -> (what it means, what to do). Written from where each code is
+# reported in src/ (grep the enumerator).
+EXPLAIN = {
+    # input and limits
+    "E_FILE_NOT_FOUND": (
+        "A file usina was asked to read (the program, a tool table, a parameter file or a "
+        "subroutine file) does not exist or cannot be read.",
+        "Check the path and the file's permissions; a subroutine file must be `<name>.ngc` "
+        "in a folder of `--subroutine-path` or the program's own folder."),
+    "E_FILE_TOO_LARGE": (
+        "A file is larger than usina accepts, a limit that keeps hostile input finite.",
+        "Split the program into a main program and subroutine files."),
+    "W_NO_PROGRAM_END": (
+        "The program ends without `M2`, `M30` or a closing `%`. usina takes the end of the "
+        "file as the end of the program (most CAM and Grbl files do this); LinuxCNC reports "
+        "an error instead.",
+        "Add `M2` or `M30` as the last block if the program is to run on LinuxCNC."),
+    "W_BYTE_ORDER_MARK": (
+        "The file starts with a UTF-8 byte-order mark (written by some Windows editors). "
+        "usina skips it; LinuxCNC rejects the file.",
+        "Save the file as plain ASCII or UTF-8 without a byte-order mark."),
+    "W_TEXT_AFTER_END": (
+        "There is text after the end of the program (`M2`, `M30` or the closing `%`); it is "
+        "never run.",
+        "Delete it, or move it before the program's end if it was meant to run."),
+    # lexer and parser
+    "E_UNEXPECTED_CHARACTER": (
+        "A character that cannot stand where it is: a letter that is not a word of the "
+        "dialect, punctuation outside a comment, or a byte that is not printable ASCII "
+        "(often a typographic quote, a degree sign or a tab pasted from a word processor).",
+        "Correct the typo, or put the text inside a `( )` comment."),
+    "E_BAD_NUMBER": (
+        "A number without digits (`X.`, `X-`), or an `N` word with no line number after it.",
+        "Write the digits: `X0.`, `X-1`, `N10`."),
+    "E_UNCLOSED_COMMENT": (
+        "A `(` comment is not closed with `)` on the same line; an RS274NGC comment cannot "
+        "span lines and cannot nest.",
+        "Close the comment before the end of the line, or use `;` for a comment that runs to "
+        "the end of the line."),
+    "E_UNCLOSED_BRACKET": (
+        "An expression's `[` has no matching `]`, or something other than an operator "
+        "follows a value inside the brackets (`[1 2]`).",
+        "Balance the brackets and put a binary operator (`+ - * / ** MOD AND OR XOR EQ NE "
+        "GT GE LT LE`) between values."),
+    "E_EXPECTED_EXPRESSION": (
+        "A value is missing where one is needed: a word letter at the end of the block, an "
+        "operator with nothing after it, `EXISTS` without a parameter; or expressions nest "
+        "more than 64 deep.",
+        "Give the value (`X10`, `[#1 + 2]`); simplify an expression nested too deep by "
+        "assigning parts to parameters."),
+    "E_UNKNOWN_FUNCTION": (
+        "Letters before `[` (or where a value should be) that are not one of RS274NGC's "
+        "functions: `ABS ACOS ASIN ATAN COS EXISTS EXP FIX FUP LN ROUND SIN SQRT TAN`.",
+        "Correct the spelling; `ATAN` takes two arguments, `ATAN[y]/[x]`; a value needs "
+        "digits or `#`."),
+    "E_BAD_PARAMETER_NAME": (
+        "A named parameter `#<...>` is empty, not closed with `>`, or holds a character "
+        "names may not contain.",
+        "Write it as `#<name>` with letters, digits and `_` (a leading `_` makes it global)."),
+    "E_BAD_O_WORD": (
+        "An O-word statement that cannot be read: `o` with neither a number nor `<name>`, "
+        "a missing or unknown keyword, a call with more than 30 arguments, or an O-word "
+        "statement after other text on the line.",
+        "Write one statement a line, e.g. `o100 if [#1 GT 0]`, `o<pocket> call [10] [2]`; "
+        "the keywords are sub, endsub, call, return, if, elseif, else, endif, while, "
+        "endwhile, do, repeat, endrepeat, break, continue."),
+    "E_MISPLACED_O_WORD": (
+        "An O-word statement that does not start its block, or that has other words "
+        "(G, M, axes) in the same block.",
+        "Put the O-word statement at the start of its own line, with only its expression "
+        "or arguments and comments."),
+    "E_UNKNOWN_WORD": (
+        "A word the dialect does not have, or one in a place it may not be: a line number "
+        "`N` must start the block.",
+        "Move `N` to the start of the block, or remove the word."),
+    # expressions and parameters
+    "E_DIVISION_BY_ZERO": (
+        "An expression divides by zero, with `/` or `MOD`.",
+        "Check the divisor; an unset numbered parameter reads as 0, so a typo in its number "
+        "is the usual cause."),
+    "E_DOMAIN_ERROR": (
+        "A function's argument is outside its domain: `ASIN`/`ACOS` of a value beyond -1..1, "
+        "`LN` of a value that is not positive, `SQRT` of a negative value, or a negative "
+        "base raised to a non-integer power with `**`.",
+        "Check the computed argument (the message gives it); a value just beyond 1 from "
+        "rounding can be clamped with a comparison first."),
+    "E_PARAMETER_OUT_OF_RANGE": (
+        "A numbered parameter `#n` whose number is not an integer from 1 to 5602.",
+        "Use a number within 1..5602, or a named parameter `#<name>`."),
+    "E_READ_ONLY_PARAMETER": (
+        "An assignment to a predefined parameter the interpreter maintains, such as "
+        "`#<_x>` (the current position) or the other read-only `#<_...>` names.",
+        "Assign to a parameter of your own instead (`#<x_saved> = #<_x>`)."),
+    "E_UNDEFINED_PARAMETER": (
+        "A named parameter is read before any value was assigned to it (named parameters, "
+        "unlike numbered ones, have no default).",
+        "Assign it first, or test it with `EXISTS[#<name>]`; a local name set in one "
+        "subroutine is not visible in another: use a global `#<_name>`."),
+    "E_NUMBER_OUT_OF_RANGE": (
+        "A value is infinite or not a number (overflow in an expression, `EXP` of a large "
+        "value, a number too long to represent).",
+        "Check the arithmetic that produced it; the message gives the value."),
+    "E_BAD_VAR_FILE": (
+        "A line of the parameter file given with `--var-file` cannot be used: the number is "
+        "not an integer or out of range, the value is not a finite number, a parameter "
+        "appears twice, or the numbers do not ascend as LinuxCNC requires. Some defects are "
+        "warnings only.",
+        "Correct the line shown; each line is `<number> <value>`, in ascending order of "
+        "number."),
+    # control flow
+    "E_UNKNOWN_SUBROUTINE": (
+        "`o<name> call` names a subroutine that is neither defined in the program (`o<name> "
+        "sub`) nor found as `<name>.ngc` on the subroutine path; or `M98 P` names a program "
+        "number with no `O` block in the file.",
+        "Define the subroutine, or give its folder with `--subroutine-path DIR:DIR`; a "
+        "subroutine name is only a file name: no `/`, no leading `.`."),
+    "E_UNCLOSED_CONTROL_BLOCK": (
+        "A control block is not closed: `sub` without `endsub`, `if` without `endif`, "
+        "`while` without `endwhile`, `repeat` without `endrepeat`, `do` without its "
+        "`while`, `break`/`continue` outside a loop, or the end of the file inside a called "
+        "subroutine.",
+        "Add the closing statement with the same O-number or name (`o100 endif` closes "
+        "`o100 if`)."),
+    "E_UNMATCHED_CONTROL": (
+        "A closing or middle statement (`endwhile`, `endrepeat`, `else`, `endsub`, "
+        "`return`) with no matching opening statement, or `return`/`endsub` reached "
+        "outside a subroutine call.",
+        "Check that the O-numbers of the opening and closing statements agree, and that "
+        "the main program does not run into a subroutine's body."),
+    "E_RECURSION_TOO_DEEP": (
+        "Subroutine calls (`o<name> call` or `M98`) nest deeper than the limit (200), "
+        "almost always a recursion that never stops.",
+        "Give the recursion a condition that ends it."),
+    "E_TOO_MANY_ITERATIONS": (
+        "A loop ran more times than `--max-iterations` allows (10,000,000 by default), or a "
+        "canned cycle would repeat (`L`) or peck (`Q`) more times than usina accepts, or "
+        "`G76` would make too many passes: the limits that keep a runaway program finite.",
+        "Check that the loop's condition changes inside the loop; if the program really "
+        "needs more, raise the limit with `--max-iterations N`; for a cycle, increase the "
+        "peck depth or lower `L`."),
+    "E_BAD_SUBROUTINE_NAME": (
+        "A subroutine name that cannot be a file name (it contains `/`, starts with `.` or "
+        "holds a NUL). usina never expands names through a shell, as LinuxCNC's `wordexp` "
+        "does.",
+        "Use a plain name of letters, digits and `_`."),
+    "E_DUPLICATE_SUBROUTINE": (
+        "Two subroutines of one program have the same name.",
+        "Rename one of them; names are compared in lower case without blanks."),
+    # block checks
+    "E_MODAL_GROUP_CONFLICT": (
+        "Two codes of the same modal group in one block, e.g. `G0 G1`, `G90 G91` or `M3 M4` "
+        "(RS274NGC allows one code a group a block), or too many user M codes in one block.",
+        "Keep one of them, or split the block in two in the order you meant."),
+    "E_REPEATED_WORD": (
+        "The same word letter twice in one block, e.g. `X1 X2`.",
+        "Keep one of them."),
+    "E_UNKNOWN_G_CODE": (
+        "A G number that is not a code of the dialect, is negative, or is not a multiple of "
+        "0.1.",
+        "Check the number against the dialect's G codes (for rs274ngc, LinuxCNC's "
+        "G-code reference)."),
+    "E_UNKNOWN_M_CODE": (
+        "An M number that is not a code of the dialect, or is not an integer.",
+        "Check the number; user M codes M100-M199 are accepted and traced as comments."),
+    "E_UNUSED_WORD": (
+        "A word that no code of the block uses, e.g. `R` with `G1` or `P` with `G0`. "
+        "LinuxCNC refuses such a block rather than ignoring the word, and so does usina.",
+        "Remove the word, or add the code that was meant to use it (the message lists "
+        "which codes use it)."),
+    "E_MISSING_WORD": (
+        "A code lacks a word it needs: `G4` without `P`, `G10` without `L` or `P`, `G92` "
+        "without an axis word, `M61` without `Q`, `M6` with no tool selected by `T`, "
+        "`M98` without `P`.",
+        "Add the word the message names."),
+    "E_BAD_WORD_VALUE": (
+        "A word's value is not allowed: a negative feed `F` or speed `S`, a `T` that is not "
+        "a tool number, arc turns `P` that are not a positive integer, a `G10` `L`/`P` out "
+        "of range.",
+        "Correct the value; the message gives it."),
+    "E_AXIS_WORDS_CONFLICT": (
+        "Axis words that two codes of the block both want (e.g. `G0` with `G92`, `G10` or "
+        "`G28`), axis words with `G80` and no motion, or polar words `@ ^` with `X`/`Y`.",
+        "Split the block so each code has its own axis words, or give a motion code."),
+    "E_NO_FEED_RATE": (
+        "A feed move (`G1`, `G2`, `G3`, a canned cycle, a spline, a probe) with no feed rate "
+        "set; or, in inverse-time mode `G93`, a feed move without its own `F`.",
+        "Give `F` in the block or before it; in `G93` every feed move needs `F`."),
+    "E_NOT_ALLOWED_IN_MODE": (
+        "A code that the current modal state forbids: polar words or splines outside the "
+        "XY plane `G17`, a spline with cutter compensation on, `M72` with no state saved by "
+        "`M70`, `M73` outside a subroutine.",
+        "Change the mode first (`G17`, `G40`), or move the code where it is allowed."),
+    # arcs
+    "E_ARC_RADIUS_MISMATCH": (
+        "An arc given by its centre (`I J K`) whose end point is not on the circle: the "
+        "distances from the centre to the start and to the end differ by more than "
+        "LinuxCNC's tolerance (about 0.028 mm, or 0.1 % of the radius).",
+        "Correct `I`/`J`/`K` or the end point (remember `I J K` are incremental from the "
+        "start unless `G90.1`), or give the arc by its radius `R`."),
+    "E_ARC_RADIUS_TOO_SMALL": (
+        "An `R` arc whose radius is smaller than half the distance from its start to its "
+        "end, so no such circle exists.",
+        "Increase `R` or correct the end point; the message gives the half chord."),
+    "E_ARC_MISSING_CENTER": (
+        "`G2`/`G3` with neither `R` nor a centre word of the plane (`I J` in G17, `I K` in "
+        "G18, `J K` in G19), or with both `R` and centre words.",
+        "Give either `R` or the centre words of the active plane."),
+    "E_ARC_ZERO_LENGTH": (
+        "An `R` arc that ends where it starts (a full circle cannot be given by `R`), or "
+        "an arc whose centre is at its start point (zero radius).",
+        "Give a full circle with `I`/`J`/`K`; check the centre words."),
+    # cutter compensation and tools
+    "E_CUTTER_GOUGE": (
+        "With cutter radius compensation (`G41`/`G42`) the tool does not fit a concave "
+        "corner or a move of the contour: following it would cut into the part.",
+        "Use a smaller tool (or tool radius `D`), or change the contour so the tool fits."),
+    "E_COMP_ENTRY_MOVE": (
+        "The first move after `G41`/`G42` (the entry move) is not longer than the tool "
+        "radius, so the compensated path cannot be built.",
+        "Start the entry move farther from the contour than the tool radius."),
+    "E_COMP_TOOL_TOO_BIG": (
+        "Under cutter compensation, an arc whose radius is not larger than the tool radius "
+        "with the tool on its inside.",
+        "Use a smaller tool or a larger arc."),
+    "E_COMP_NOT_ALLOWED": (
+        "`G41`/`G42` while compensation is already on, in the YZ plane `G19`, or with a "
+        "side that is neither left nor right.",
+        "Program `G40` before changing the side; use `G17` or `G18`."),
+    "E_UNKNOWN_TOOL": (
+        "A tool number (`H` for `G43`, `D` for `G41`/`G42`, or the loaded tool) is not in "
+        "the tool table.",
+        "Add the tool to the table given with `--tool-table`, or correct `H`/`D`."),
+    "E_BAD_TOOL_TABLE": (
+        "A line of the tool table given with `--tool-table` cannot be used (no `T` word, a "
+        "value that is not a number or too large, an unknown letter). Some defects are "
+        "warnings only.",
+        "Correct the line shown; the format is LinuxCNC's, e.g. `T1 P1 D6.0 Z+10.0 ;end "
+        "mill`."),
+    # canned cycles and probing
+    "E_CYCLE_BAD_VALUE": (
+        "A canned cycle value that cannot work: a peck depth `Q` of 0 or less, a retract "
+        "plane `R` below the bottom of the hole, `G76` with `I0`, an incremental polar step "
+        "from the origin.",
+        "Correct the value the message names."),
+    "E_PROBE_BAD_MOVE": (
+        "A probing move `G38.2`-`G38.5` that is not allowed, e.g. with cutter compensation "
+        "on.",
+        "Turn compensation off (`G40`) before probing."),
+    "E_SPLINE_BAD_VALUE": (
+        "A spline block `G5`, `G5.1` or `G5.2` with values that do not define a curve: "
+        "control points or weights missing or out of range, an order `L` the points do not "
+        "support, knots that decrease, or axis words other than X and Y.",
+        "Correct the words the message names (see LinuxCNC's G5 reference)."),
+    # operator messages
+    "N_MESSAGE": (
+        "An operator message from a `(MSG, ...)` comment, shown as a note. Not a problem.",
+        "Nothing; it is what the program tells the operator."),
+    "E_UNSUPPORTED": (
+        "The program uses a feature usina does not implement yet (e.g. LinuxCNC's lathe "
+        "roughing cycles `G71`/`G72`).",
+        "Rewrite the part without it, or report the program so the feature gets priority."),
+}
+
+SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")
+ENTRY = re.compile(r"X\((\w+),\s*(\w+)\)")
+LITERAL = re.compile(r'"((?:[^"\\]|\\.)*)"')
+
+
+def read_codes(header):
+    """[(section, enumerator, stable name)] in the header's order."""
+    codes, section, inside = [], "", False
+    for line in header.read_text(encoding="utf-8").splitlines():
+        if "#define" in line:
+            inside = True
+            continue
+        if not inside or line.lstrip().startswith("//"):
+            continue
+        m = SECTION.search(line)
+        if m and "X(" not in line:
+            section = m.group(1)
+        m = ENTRY.search(line)
+        if m:
+            codes.append((section, m.group(1), m.group(2)))
+    return codes
+
+
+def usages(src, enumerator):
+    """Files reporting `Code::<enumerator>` and the messages they report it with."""
+    pattern = re.compile(r"Code::" + enumerator + r"\b")
+    files, messages = [], []
+    for path in sorted(src.rglob("*.cpp")):
+        text = path.read_text(encoding="utf-8", errors="replace")
+        hits = list(pattern.finditer(text))
+        if not hits:
+            continue
+        files.append(path.relative_to(src.parent).as_posix())
+        for hit in hits:
+            for message in literal_groups(rest_of_call(text, hit.end())):
+                message = re.sub(r"\{[^{}]*\}", "…", message).replace('\\"', '"')
+                message = re.sub("…+", "…", message)
+                if message not in messages:
+                    messages.append(message)
+    return files, messages
+
+
+def literal_groups(code):
+    """The messages in a call's text: runs of adjacent string literals (C++
+    joins them), each run one message; short words (format arguments) dropped."""
+    groups, last_end = [], None
+    for m in LITERAL.finditer(code):
+        if last_end is not None and code[last_end:m.start()].strip() == "":
+            groups[-1] += m.group(1)
+        else:
+            groups.append(m.group(1))
+        last_end = m.end()
+    return [g for g in groups if " " in g and len(g.strip()) >= 3]
+
+
+def rest_of_call(text, start):
+    """The text from `start` to the end of the call (or braced initializer) it is in."""
+    depth, i, quote = 0, start, None
+    while i < len(text):
+        c = text[i]
+        if quote:
+            if c == "\\":
+                i += 1
+            elif c == quote:
+                quote = None
+        elif c in "\"'":
+            quote = c
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+            if depth < 0:
+                return text[start:i]
+        elif c == ";" and depth <= 0:
+            return text[start:i]
+        i += 1
+    return text[start:]
+
+
+def severity(name):
+    return {"E": "error", "W": "warning", "N": "note"}.get(name[0], "error")
+
+
+def render(root):
+    src = root / "src"
+    codes = read_codes(src / "core" / "diagnostic_codes.hpp")
+    out = [
+        "# Diagnostic codes",
+        "",
+        "<!-- Generated by scripts/gen_errors_doc.py from src/core/diagnostic_codes.hpp;",
+        "     edit the explanations in the script, not this file. -->",
+        "",
+        "Every diagnostic usina prints ends with a stable code in brackets:",
+        "",
+        "```",
+        "part.ngc:2:13: error: arc radius 10.0000 mm is smaller than half the chord 12.6500 mm "
+        "[E_ARC_RADIUS_TOO_SMALL]",
+        "  G2 X25.3 Y0 R10 F100",
+        "              ^",
+        "```",
+        "",
+        "The names never change meaning, so scripts may match on them. `E_` codes are errors "
+        "(the run stops at the first one; all syntax errors are reported), `W_` codes are "
+        "warnings (the run goes on), `N_` codes are notes.",
+        "",
+    ]
+    missing = []
+    current = None
+    index = []
+    body = []
+    for section, enumerator, name in codes:
+        if section != current:
+            current = section
+            body += [f"## {section.capitalize() if section else 'Other'}", ""]
+            index.append(f"- {section or 'other'}: " + ", ".join(
+                f"[`{n}`](#{n.lower()})" for s, _, n in codes if s == section))
+        meaning, todo = EXPLAIN.get(name, (None, None))
+        if meaning is None:
+            missing.append(name)
+            meaning, todo = "*Not documented yet.*", "*Not documented yet.*"
+        files, messages = usages(src, enumerator)
+        body += [f"### {name}", "", f"*{severity(name)}* · {meaning}", "", f"**What to do:** {todo}", ""]
+        if messages:
+            body.append("Reported as: " + "; ".join(f"“{m}”" for m in messages[:5]) + ".")
+            body.append("")
+        if files:
+            body.append("Reported by: " + ", ".join(f"`{f}`" for f in files) + ".")
+        else:
+            body.append("Not reported by this version: the code is reserved.")
+        body.append("")
+    return "\n".join(out + index + [""] + body), missing
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--root", default=pathlib.Path(__file__).resolve().parent.parent, type=pathlib.Path)
+    ap.add_argument("--check", action="store_true",
+                    help="fail if docs/errors.md is out of date or a code is undocumented")
+    args = ap.parse_args()
+    text, missing = render(args.root)
+    target = args.root / "docs" / "errors.md"
+    for name in missing:
+        print(f"gen_errors_doc: {name} has no explanation; add it to EXPLAIN in "
+              f"scripts/gen_errors_doc.py", file=sys.stderr)
+    unknown = sorted(set(EXPLAIN) - {n for _, _, n in read_codes(args.root / "src/core/diagnostic_codes.hpp")})
+    for name in unknown:
+        print(f"gen_errors_doc: {name} is explained but no longer in diagnostic_codes.hpp",
+              file=sys.stderr)
+    if args.check:
+        current = target.read_text(encoding="utf-8") if target.exists() else ""
+        if current != text:
+            print("gen_errors_doc: docs/errors.md is out of date; run scripts/gen_errors_doc.py",
+                  file=sys.stderr)
+            return 1
+        return 1 if missing else 0
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text(text, encoding="utf-8")
+    print(f"wrote {target} ({len(text.splitlines())} lines)")
+    return 1 if missing else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Differential test against LinuxCNC's own interpreter (Debian's
+# linuxcnc-uspace, through ../shared/conformance/lcnc-trace.sh): every
+# program in tests/programs/rs274ngc/ must give the same motion as rs274.
+# Skipped (exit 0, says so) when rs274 or the shared folder is missing.
+#   run_differential.sh USINA SHARED_DIR
+set -uo pipefail
+usina=$(realpath "$1"); shared=$(realpath "$2" 2>/dev/null || echo "$2")
+lcnc=$shared/conformance/lcnc-trace.sh
+if ! command -v rs274 >/dev/null || [ ! -x "$lcnc" ] && [ ! -f "$lcnc" ]; then
+  echo "differential: rs274 (apt-get install linuxcnc-uspace) or $lcnc missing: skipped"
+  exit 0
+fi
+here=$(cd "$(dirname "$0")" && pwd)
+progs=$here/../programs/rs274ngc
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+pass=0; fail=0
+for p in "$progs"/*.ngc; do
+  name=$(basename "$p" .ngc)
+  (cd "$progs" && bash "$lcnc" "$name.ngc" > "$tmp/$name.lcnc" 2>/dev/null)
+  (cd "$progs" && "$usina" trace --machine-units inch --tool-table "$shared/conformance/rs274ngc/tools/generic.tbl" "$name.ngc" > "$tmp/$name.usina" 2>/dev/null)
+  if python3 "$shared/conformance/compare_traces.py" "$tmp/$name.lcnc" "$tmp/$name.usina" > "$tmp/$name.diff"; then
+    pass=$((pass + 1))
+  else
+    fail=$((fail + 1)); echo "FAIL $name: $(head -3 "$tmp/$name.diff")"
+  fi
+done
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
