@@ -12,6 +12,12 @@ if ! command -v rs274 >/dev/null || [ ! -x "$lcnc" ] && [ ! -f "$lcnc" ]; then
   exit 0
 fi
 here=$(cd "$(dirname "$0")" && pwd)
+# rs274 must work at all (a broken install is an environment problem, said so).
+probe=$(mktemp -d); printf 'G0 X1\nM2\n' > "$probe/p.ngc"
+if ! bash "$lcnc" "$probe/p.ngc" 2>/dev/null | grep -q traverse; then
+  echo "differential: rs274 is installed but does not run here: skipped"; rm -rf "$probe"; exit 0
+fi
+rm -rf "$probe"
 progs=$here/../programs/rs274ngc
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 pass=0; fail=0
