@@ -14,7 +14,8 @@ fi
 here=$(cd "$(dirname "$0")" && pwd)
 # rs274 must work at all (a broken install is an environment problem, said so).
 probe=$(mktemp -d); printf 'G0 X1\nM2\n' > "$probe/p.ngc"
-if ! bash "$lcnc" "$probe/p.ngc" 2>/dev/null | grep -q traverse; then
+out=$(bash "$lcnc" "$probe/p.ngc" 2>/dev/null || true)
+if [[ "$out" != *traverse* ]]; then
   echo "differential: rs274 is installed but does not run here: skipped"; rm -rf "$probe"; exit 0
 fi
 rm -rf "$probe"
