@@ -243,34 +243,40 @@ std::optional<InterpError> check_spindle(int motion, SpindleDir dir) {
   return std::nullopt;
 }
 
-// convert_cycle_xy/_zx/_yz: the hole, R, bottom and clear level in program units.
-std::optional<InterpError> plan_levels(const CycleWords& w, const CycleModal& m, const Resolved& v,
-                                       Units u, double initial, DrillPlan& p) {
+// The hole position: G91 steps it each repeat (CYCLE_MACRO's increments, NCMS
+// p. 98); G90 places it, from X Y or from @ (radius) and ^ (angle) in G17.
+void plan_position(const CycleWords& w, const CycleModal& m, Units u, DrillPlan& p) {
   const core::PlaneAxes ax = core::axes_of(m.plane);
   const std::array<const std::optional<double>*, 3> axis{&w.x, &w.y, &w.z};
-  const auto word = [&](int n) { return *axis[static_cast<std::size_t>(n)]; };
+  const std::optional<double>& first = *axis[static_cast<std::size_t>(ax.first)];
+  const std::optional<double>& second = *axis[static_cast<std::size_t>(ax.second)];
+  constexpr double kRadPerDeg = std::numbers::pi / 180.0;  // LinuxCNC's D2R
   p.a = p.cur_a;
   p.b = p.cur_b;
-  if (m.incremental) {  // NCMS p. 98: R from the initial level, the bottom from R
-    p.da = word(ax.first) ? u.in(*word(ax.first)) : 0.0;
-    p.db = word(ax.second) ? u.in(*word(ax.second)) : 0.0;
+  if (m.incremental) {
+    p.da = first ? u.in(*first) : 0.0;
+    p.db = second ? u.in(*second) : 0.0;
     p.dradius = w.polar_radius ? u.in(*w.polar_radius) : 0.0;
-    p.dtheta = w.polar_angle ? *w.polar_angle * (std::numbers::pi / 180.0) : 0.0;
-    p.r = u.in(v.r) + initial;
-    p.bottom = p.r + u.in(v.bottom);
-  } else {
-    if (word(ax.first)) p.a = u.in(*word(ax.first));
-    if (word(ax.second)) p.b = u.in(*word(ax.second));
-    if (w.polar_radius || w.polar_angle) {
-      const double radius = w.polar_radius ? u.in(*w.polar_radius) : std::hypot(p.b, p.a);
-      const double theta =
-          w.polar_angle ? *w.polar_angle * (std::numbers::pi / 180.0) : std::atan2(p.b, p.a);
-      p.a = radius * std::cos(theta);
-      p.b = radius * std::sin(theta);
-    }
-    p.r = u.in(v.r);
-    p.bottom = u.in(v.bottom);
+    p.dtheta = w.polar_angle ? *w.polar_angle * kRadPerDeg : 0.0;
+    return;
   }
+  if (first) p.a = u.in(*first);
+  if (second) p.b = u.in(*second);
+  if (w.polar_radius || w.polar_angle) {
+    const double radius = w.polar_radius ? u.in(*w.polar_radius) : std::hypot(p.b, p.a);
+    const double theta = w.polar_angle ? *w.polar_angle * kRadPerDeg : std::atan2(p.b, p.a);
+    p.a = radius * std::cos(theta);
+    p.b = radius * std::sin(theta);
+  }
+}
+
+// convert_cycle_xy/_zx/_yz: R, the bottom and the clear level in program
+// units. Under G91 R counts from the initial level and the bottom from R.
+std::optional<InterpError> plan_levels(const CycleModal& m, const Resolved& v, Units u,
+                                       double initial, DrillPlan& p) {
+  const core::PlaneAxes ax = core::axes_of(m.plane);
+  p.r = m.incremental ? u.in(v.r) + initial : u.in(v.r);
+  p.bottom = m.incremental ? p.r + u.in(v.bottom) : u.in(v.bottom);
   if (p.r < p.bottom) {
     const char n = axis_letter(ax.axial);
     return error(Code::CycleBadValue,
@@ -312,10 +318,15 @@ bool advance(const DrillPlan& p, double& a, double& b) {
   return true;
 }
 
+// LinuxCNC's peck loop: from R down by Q while above the bottom. The
+// repeated subtraction (not R - n Q) is what decides the last peck.
 long count_pecks(const DrillPlan& p) {
   long n = 0;
-  for (double d = p.r - p.peck; d > p.bottom && n <= kMaxPecks; d -= p.peck)
+  double d = p.r - p.peck;
+  while (d > p.bottom && n <= kMaxPecks) {
     ++n;
+    d -= p.peck;
+  }
   return n;
 }
 
@@ -366,9 +377,11 @@ void g81_g82(Mover& m, const DrillPlan& p, double a, double b) {
 
 // G73 chip breaking: back off by the peck clearance after each peck (_g73).
 void g73(Mover& m, const DrillPlan& p, double a, double b) {
-  for (double d = p.r - p.peck; d > p.bottom; d -= p.peck) {
+  double d = p.r - p.peck;
+  while (d > p.bottom) {
     m.feed(a, b, d);
     m.traverse(a, b, d + p.clearance);
+    d -= p.peck;
   }
   m.feed(a, b, p.bottom);
   m.traverse(a, b, p.clear);
@@ -377,10 +390,12 @@ void g73(Mover& m, const DrillPlan& p, double a, double b) {
 // G83 peck drilling: out to R after each peck, then rapid back down to the
 // peck clearance above the last depth (_g83).
 void g83(Mover& m, const DrillPlan& p, double a, double b) {
-  for (double d = p.r - p.peck; d > p.bottom; d -= p.peck) {
+  double d = p.r - p.peck;
+  while (d > p.bottom) {
     m.feed(a, b, d);
     m.traverse(a, b, p.r);
     m.traverse(a, b, d + p.clearance);
+    d -= p.peck;
   }
   m.feed(a, b, p.bottom);
   m.traverse(a, b, p.clear);
@@ -638,9 +653,10 @@ double next_depth(const ThreadPlan& t, long& pass) {
 long count_thread_passes(const ThreadPlan& t) {
   long pass = 1;
   long n = 0;
-  for (double depth = t.start_depth; depth < t.end_depth && n <= kMaxPasses;
-       depth = next_depth(t, pass)) {
+  double depth = t.start_depth;
+  while (depth < t.end_depth && n <= kMaxPasses) {
     ++n;
+    depth = next_depth(t, pass);
   }
   return n + t.spring_passes + 1;
 }
@@ -648,8 +664,10 @@ long count_thread_passes(const ThreadPlan& t) {
 void cut_thread(Mover& m, const ThreadPlan& t) {
   const double tan_angle = std::tan(t.angle);
   long pass = 1;
-  for (double depth = t.start_depth; depth < t.end_depth; depth = next_depth(t, pass)) {
+  double depth = t.start_depth;
+  while (depth < t.end_depth) {
     thread_pass(m, t, depth, (depth - t.full_dia_depth) * tan_angle);
+    depth = next_depth(t, pass);
   }
   // The full depth, once and then once per spring pass.
   const double zoff = (t.end_depth - t.full_dia_depth) * tan_angle;
@@ -723,7 +741,8 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   p.cur_a = u.in(cur.x);
   p.cur_b = u.in(cur.y);
   p.cur_c = u.in(pos[normal]);
-  if (auto e = plan_levels(words, modal, v, u, u.in(initial_mm), p)) return e;
+  plan_position(words, modal, u, p);
+  if (auto e = plan_levels(modal, v, u, u.in(initial_mm), p)) return e;
   p.dwell = v.p;
   p.peck = u.in(v.q);
   p.clearance = modal.peck_clearance / u.mm;

@@ -14,6 +14,7 @@
 #include "core/source.hpp"
 #include "gcode/block.hpp"
 #include "gcode/expr.hpp"
+#include "gcode/interp/canned_cycles.hpp"
 #include "gcode/interp/canon_machine.hpp"
 #include "gcode/interp/cutter_comp.hpp"
 #include "gcode/interp/state.hpp"
@@ -134,7 +135,7 @@ class Interpreter final : private ParameterSource {
   bool straight(BlockWords& w, GCode g, const Axes& end);
   bool arc(BlockWords& w, GCode g, const Axes& end);
   bool probe(BlockWords& w, const Axes& end);
-  bool cycle(BlockWords& w, GCode g);
+  bool cycle(BlockWords& w, GCode g, GCode previous);
   bool spline(BlockWords& w, GCode g, const Axes& end);
   bool require_feed(const BlockWords& w);
 
@@ -156,6 +157,7 @@ class Interpreter final : private ParameterSource {
   Parameters params_;
   CanonMachine machine_;
   CutterComp comp_;
+  CannedCycles cycles_;
   // Runs `effect` now, or after the move cutter compensation holds.
   void in_order(std::function<void()> effect);
   bool comp_forbids(const BlockWords& w);

@@ -76,14 +76,17 @@ bool Interpreter::motion(BlockWords& w) {
   if (w.has_polar() && state_.plane != core::Plane::XY) {
     return error(core::Code::NotAllowedInMode, 0, "polar words need the XY plane (G17)");
   }
+  const GCode previous = state_.motion;
   state_.motion = g;
+  const bool drilling = g == 730 || g == 740 || (g >= 810 && g <= 890);
+  if (!drilling) cycles_.note_other_motion();
   if (g == 800) return true;
   const bool g53 = w.g[kGroupNonModal] == 530;
   if (g == 0 || g == 10 || g == 330 || g == 331) return straight(w, g, target(w, g53));
   if (g == 20 || g == 30) return arc(w, g, target(w, false));
   if (g >= 382 && g <= 385) return probe(w, target(w, false));
   if ((g >= 50 && g <= 53) || g == 62) return spline(w, g, target(w, false));
-  return cycle(w, g);
+  return cycle(w, g, previous);
 }
 
 bool Interpreter::straight(BlockWords& w, GCode g, const Axes& end) {
