@@ -156,7 +156,8 @@ std::optional<double> Evaluator::function(const ExprNode& n, double a) {
 
 std::optional<int> parameter_index(double value, std::uint32_t col, EvalError& err) {
   const double rounded = std::round(value);
-  if (std::fabs(value - rounded) > 1e-4 || rounded < 1.0 || rounded > kMaxParameter) {
+  // Written so that NaN fails every test.
+  if (!(std::fabs(value - rounded) <= 1e-4 && rounded >= 1.0 && rounded <= kMaxParameter)) {
     err = {{core::Code::ParameterOutOfRange,
             fmt::format("parameter number {} is not an integer within 1 and {}", value,
                         kMaxParameter)},

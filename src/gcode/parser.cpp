@@ -75,6 +75,7 @@ ExprRef Parser::expression(int depth) {
   struct Pending {
     ExprRef lhs;
     OpInfo op;
+    std::size_t at;  // the operator's position, for its diagnostics
   };
 
   std::array<Pending, 8> stack{};
@@ -100,14 +101,14 @@ ExprRef Parser::expression(int depth) {
                   rhs,
                   0.0,
                   {},
-                  col(at)});
+                  col(stack[n].at)});
     }
     if (found == nullptr) return rhs;
     if (n == stack.size()) {
       fail(core::Code::ExpectedExpression, at, "expression too deeply nested");
       return kNoExpr;
     }
-    stack[n++] = {rhs, *found};
+    stack[n++] = {rhs, *found, at};
     rhs = real_value(depth);
     if (rhs == kNoExpr) return kNoExpr;
   }
@@ -248,6 +249,10 @@ ExprRef Parser::real_value(int depth) {
   }
   if (auto v = lex_.number()) return node({ExprKind::Number, 0, kNoExpr, kNoExpr, *v, {}, col(at)});
   if (c >= 'A' && c <= 'Z') return function(at, depth + 1);
+  if (c >= '0' && c <= '9') {
+    fail(core::Code::BadNumber, at, "number with more than 64 characters");
+    return kNoExpr;
+  }
   if (c == '.') {
     fail(core::Code::BadNumber, at, "a number needs at least one digit");
   } else if (c == '\0') {

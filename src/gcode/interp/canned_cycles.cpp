@@ -70,6 +70,8 @@ struct Units {
     return fmt::format("{:g} {}", in(v), mm == 1.0 ? "mm" : "in");
   }
 
+  Vec3 in(const Vec3& v) const { return {in(v.x), in(v.y), in(v.z)}; }
+
   Vec3 out(const Vec3& u) const { return u * mm; }
 };
 
@@ -487,7 +489,8 @@ void cycle_body(Mover& m, const DrillPlan& p, double a, double b) {
 }
 
 // Rapid up to R if below it, then every repeat: to the hole, the cycle.
-// Returns where LinuxCNC's interpreter then is: over the last hole at the clear level.
+// Returns where LinuxCNC's interpreter then is (program units): over the
+// last hole at the clear level.
 Vec3 drill(Mover& m, const DrillPlan& p) {
   double current = p.cur_c;
   if (p.raise) {
@@ -502,7 +505,7 @@ Vec3 drill(Mover& m, const DrillPlan& p) {
     m.hole(a, b, p.r, p.bottom);
     cycle_body(m, p, a, b);
   }
-  return m.at(a, b, p.clear);
+  return core::from_plane({a, b}, p.clear, p.plane);
 }
 
 // What LinuxCNC keeps for the next block (convert_cycle and convert_cycle_xy).
@@ -584,9 +587,8 @@ std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleMo
   return std::nullopt;
 }
 
-ThreadPlan plan_thread(const CycleWords& w, const CycleModal& m, Units u, const Vec3& pos) {
+ThreadPlan plan_thread(const CycleWords& w, const CycleModal& m, Units u, const Vec3& start) {
   ThreadPlan t;
-  const Vec3 start{u.in(pos.x), u.in(pos.y), u.in(pos.z)};
   const auto end_of = [&](const std::optional<double>& word, double from) {
     if (!word) return from;
     return m.incremental ? from + u.in(*word) : u.in(*word);
@@ -732,17 +734,23 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   if (auto e = read_repeats(words, modal.motion, p.repeats)) return e;
   if (auto e = resolve_cycle_words(words, modal, sticky_, v)) return e;
   const Units u{modal.length_unit};
+  // LinuxCNC's numbers for the current point and the initial level: kept
+  // from the last block when they are still the same, as 0.345 - 0.095 and
+  // 0.25 differ in the last bit and decide "above R or at R".
+  const bool same_unit = unit_ == u.mm;
   const Vec3 pos = target.position();
+  const Vec3 pos_u = same_unit && pos == end_point_ ? end_point_u_ : u.in(pos);
   const int normal = core::axes_of(modal.plane).axial;
-  const double initial_mm = initial_level_.value_or(pos[normal]);
-  const Vec2 cur = core::in_plane(pos, modal.plane);
+  const double initial =
+      !initial_level_ ? pos_u[normal] : (same_unit ? initial_level_u_ : u.in(*initial_level_));
+  const Vec2 cur = core::in_plane(pos_u, modal.plane);
   p.motion = modal.motion;
   p.plane = modal.plane;
-  p.cur_a = u.in(cur.x);
-  p.cur_b = u.in(cur.y);
-  p.cur_c = u.in(pos[normal]);
+  p.cur_a = cur.x;
+  p.cur_b = cur.y;
+  p.cur_c = pos_u[normal];
   plan_position(words, modal, u, p);
-  if (auto e = plan_levels(modal, v, u, u.in(initial_mm), p)) return e;
+  if (auto e = plan_levels(modal, v, u, initial, p)) return e;
   p.dwell = v.p;
   p.peck = u.in(v.q);
   p.clearance = modal.peck_clearance / u.mm;
@@ -750,8 +758,11 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   if (auto e = check_plan(p)) return e;
 
   Mover m(target, p.plane, u);
-  end_point_ = drill(m, p);
-  initial_level_ = initial_mm;  // LinuxCNC's cycle_il, kept until another motion
+  end_point_u_ = drill(m, p);
+  end_point_ = u.out(end_point_u_);
+  initial_level_u_ = initial;  // LinuxCNC's cycle_il, kept until another motion
+  initial_level_ = u.out(initial);
+  unit_ = u.mm;
   keep_sticky(sticky_, v, modal.motion);
   return std::nullopt;
 }
@@ -765,7 +776,9 @@ std::optional<InterpError> CannedCycles::run_threading(const CycleWords& words,
   long tapers = 0;
   if (auto e = check_thread_words(words, modal, spring, tapers)) return e;
   const Units u{modal.length_unit};
-  ThreadPlan t = plan_thread(words, modal, u, target.position());
+  const Vec3 pos = target.position();
+  const Vec3 pos_u = unit_ == u.mm && pos == end_point_ ? end_point_u_ : u.in(pos);
+  ThreadPlan t = plan_thread(words, modal, u, pos_u);
   t.spring_passes = spring;
   t.entry_taper = (tapers & 1) != 0;
   t.exit_taper = (tapers & 2) != 0;
@@ -778,7 +791,9 @@ std::optional<InterpError> CannedCycles::run_threading(const CycleWords& words,
   Mover m(target, Plane::XY, u);  // XY: (a, b, c) are (x, y, z)
   cut_thread(m, t);
   note_other_motion();  // G76 is not a canned cycle to LinuxCNC's convert_motion
+  end_point_u_ = t.end;
   end_point_ = u.out(t.end);
+  unit_ = u.mm;
   return std::nullopt;
 }
 

@@ -70,7 +70,8 @@ class CannedCycles {
   // The interpreter's current point after the last run(). It is where the
   // last move went, except after G74/G84 in G18/G19, whose retract LinuxCNC
   // sends elsewhere (see canned_cycles.cpp) while its interpreter carries on
-  // from here.
+  // from here. Keep it unchanged as the current point: the next run() then
+  // starts from LinuxCNC's own numbers for it.
   Vec3 end_point() const { return end_point_; }
 
   // Sticky values (LinuxCNC's cycle_r, cycle_cc, cycle_p, ...), in mm as written.
@@ -89,8 +90,13 @@ class CannedCycles {
                                            MotionTarget& target);
 
   Sticky sticky_;
-  std::optional<double> initial_level_;  // mm, on the plane's normal (LinuxCNC's cycle_il)
+  // LinuxCNC's cycle_il, on the plane's normal, in mm and as LinuxCNC holds
+  // it (program units of `unit_` mm); likewise the end point.
+  std::optional<double> initial_level_;
+  double initial_level_u_ = 0.0;
   Vec3 end_point_;
+  Vec3 end_point_u_;
+  double unit_ = 1.0;
 };
 
 }  // namespace usina::gcode

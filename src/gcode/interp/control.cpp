@@ -66,6 +66,11 @@ Interpreter::Flow Interpreter::control(const OWord& o, std::uint64_t line_offset
 Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o) {
   const bool evaluate_elseif = o.kind == OKind::ElseIf && pending_elseif_ == e;
   pending_elseif_ = kNoEntry;
+  if (o.kind != OKind::If && idx.prev_of(e, {OKind::If}) == kNoEntry) {
+    error(core::Code::UnmatchedControl, o.col,
+          fmt::format("o{} {} with no if before it", o.label, okind_name(o.kind)));
+    return Flow::Error;
+  }
   if (o.kind == OKind::EndIf) return Flow::Next;
   if (o.kind == OKind::If || evaluate_elseif) {
     auto c = condition(o);
@@ -110,8 +115,18 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
           fmt::format("o{} {} has no {}", o.label, okind_name(o.kind), what));
     return Flow::Error;
   };
+  auto unmatched = [&](const char* what) {
+    error(core::Code::UnmatchedControl, o.col,
+          fmt::format("o{} {} with no {} before it", o.label, okind_name(o.kind), what));
+    return Flow::Error;
+  };
+  // A loop's iteration count is kept under its opening entry and starts
+  // again from zero each time the loop is entered anew.
+  auto forget = [&](std::uint32_t start) {
+    iterations_.erase((static_cast<std::uint64_t>(cursor_.file) << 32) | start);
+  };
   auto leave = [&](std::uint32_t end) {
-    iterations_.erase((static_cast<std::uint64_t>(cursor_.file) << 32) | e);
+    forget(e);
     jump_to(cursor_.file, idx.at(end), true);
     return Flow::Jumped;
   };
@@ -123,8 +138,10 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
     if (!c) return Flow::Error;
     if (me.ends_do) {
       const std::uint32_t start = idx.prev_of(e, {OKind::Do});
-      if (start == kNoEntry) return missing("do");
-      return *c ? loop_back(start, idx.at(start), true) : Flow::Next;
+      if (start == kNoEntry) return unmatched("do");
+      if (*c) return loop_back(start, idx.at(start), true);
+      forget(start);
+      return Flow::Next;
     }
     if (*c) return Flow::Next;
     const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
@@ -132,7 +149,7 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
   }
   case OKind::EndWhile: {
     const std::uint32_t start = idx.prev_of(e, {OKind::While});
-    return start == kNoEntry ? missing("while") : loop_back(start, idx.at(start), false);
+    return start == kNoEntry ? unmatched("while") : loop_back(start, idx.at(start), false);
   }
   case OKind::Repeat: {
     EvalError err;
@@ -149,17 +166,25 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
   }
   case OKind::EndRepeat: {
     const std::uint32_t start = idx.prev_of(e, {OKind::Repeat});
-    if (start == kNoEntry || loops_.empty() || loops_.back().entry != start)
-      return missing("repeat");
+    if (start == kNoEntry || loops_.empty() || loops_.back().entry != start) {
+      return unmatched("repeat");
+    }
     if (--loops_.back().count > 0) return loop_back(start, idx.at(start), true);
     loops_.pop_back();
+    forget(start);
     return Flow::Next;
   }
   case OKind::Break: {
     const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
     if (end == kNoEntry) return missing("loop end");
-    if (idx.at(end).kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
-    return leave(end);
+    const OEntry& close = idx.at(end);
+    if (close.kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
+    const std::uint32_t start = close.kind == OKind::EndWhile ? idx.prev_of(end, {OKind::While})
+                                : close.kind == OKind::EndRepeat ? idx.prev_of(end, {OKind::Repeat})
+                                                                 : idx.prev_of(end, {OKind::Do});
+    if (start != kNoEntry) forget(start);
+    jump_to(cursor_.file, close, true);
+    return Flow::Jumped;
   }
   case OKind::Continue: {
     const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});

@@ -47,6 +47,17 @@ void Interpreter::warn(core::Code code, std::uint32_t col, std::string message) 
 
 bool Interpreter::run(std::uint32_t file) {
   cursor_ = {file, 0, 1};
+  // The offsets a parameter file holds are in force from the start, as
+  // LinuxCNC restores them when its interpreter starts.
+  const double system = params_.get(5220);
+  state_.coord_system = (system >= 1 && system <= 9) ? static_cast<int>(system) : 1;
+  apply_work_offsets(state_.coord_system);
+  if (params_.get(5210) != 0.0) {
+    for (int a = 0; a < kAxisCount; ++a) {
+      const double v = params_.get(5211 + a);
+      state_.g92[static_cast<std::size_t>(a)] = (a >= 3 && a <= 5) ? v : v * machine_mm();
+    }
+  }
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr) return false;
   // UTF-8 byte-order mark: LinuxCNC rejects it; editors on Windows write it.
@@ -97,7 +108,12 @@ Interpreter::Flow Interpreter::step() {
   if (block_.empty()) return Flow::Next;
   BlockWords& w = *words_;
   if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return Flow::Error;
-  if (!execute(block_, w)) return Flow::Error;
+  // The block works on a copy of the modal state: a failed block changes nothing.
+  const ModalState before = state_;
+  if (!execute(block_, w)) {
+    state_ = before;
+    return Flow::Error;
+  }
   return ended_ ? Flow::End : Flow::Next;
 }
 

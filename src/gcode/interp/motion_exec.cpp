@@ -121,6 +121,14 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   const bool ccw = g == 30;
   const char first = "IJK"[ax.first];
   const char second = "IJK"[ax.second];
+  // LinuxCNC convert_arc: a centre word of the plane's axis is an error.
+  const char axial = "IJK"[ax.axial];
+  if (w.has(axial)) {
+    return error(core::Code::UnusedWord, w.col_of(axial),
+                 fmt::format("{} word in a {} arc: its plane's centre words are {} and {}", axial,
+                             plane == core::Plane::XY ? "G17" : (plane == core::Plane::ZX ? "G18" : "G19"),
+                             first, second));
+  }
   int turns = 1;
   if (w.has('P')) {
     const double p = w.get('P');
