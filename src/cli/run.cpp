@@ -32,6 +32,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--max-iterations", o.max_iterations,
                  "iterations a loop may run before it is an error")
       ->capture_default_str();
+  app.add_option("--max-total-iterations", o.max_total_iterations,
+                 "loop iterations all loops together may run before it is an error")
+      ->capture_default_str();
   app.add_flag("--block-delete", o.block_delete,
                "skip the blocks that start with '/' (the switch on)");
 }
@@ -97,6 +100,7 @@ int run_program(const RunOptions& o, canon::Sink& sink) {
   opts.machine_units = o.machine_units == "inch" ? core::LengthUnit::Inch : core::LengthUnit::Mm;
   opts.peck_clearance_mm = o.peck_clearance;
   opts.max_loop_iterations = o.max_iterations;
+  opts.max_total_iterations = o.max_total_iterations;
   opts.block_delete = o.block_delete;
   opts.subroutine_path = split_path(o.subroutine_path);
   if (o.file != "-") opts.subroutine_path.push_back(folder_of(o.file));

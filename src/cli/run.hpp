@@ -19,6 +19,7 @@ struct RunOptions {
   std::string subroutine_path;
   double peck_clearance = 1.0;
   long max_iterations = 10'000'000;
+  long max_total_iterations = 10'000'000;
   bool block_delete = false;
 };
 

@@ -15,36 +15,22 @@ std::string normalise_name(std::string_view raw) {
   return out;
 }
 
-namespace {
-
-template <typename Scope>
-auto find_in(Scope& scope, std::string_view name) {
-  return std::find_if(scope.begin(), scope.end(), [&](const auto& kv) { return kv.first == name; });
-}
-
-}  // namespace
-
 std::optional<double> Parameters::named(std::string_view name) const {
   // RS274NGC: a name starting with '_' is global, any other is local.
   if (!name.empty() && name.front() == '_') {
-    auto it = find_in(globals_, name);
+    auto it = globals_.find(std::string(name));
     if (it != globals_.end()) return it->second;
     return std::nullopt;
   }
   const Scope& local = locals_.back();
-  auto it = find_in(local, name);
+  auto it = local.find(std::string(name));
   if (it != local.end()) return it->second;
   return std::nullopt;
 }
 
 void Parameters::set_named(const std::string& name, double value) {
   Scope& scope = (!name.empty() && name.front() == '_') ? globals_ : locals_.back();
-  auto it = find_in(scope, name);
-  if (it != scope.end()) {
-    it->second = value;
-  } else {
-    scope.emplace_back(name, value);
-  }
+  scope[name] = value;
 }
 
 void Parameters::push_scope() {

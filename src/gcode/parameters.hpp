@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -36,8 +37,7 @@ class Parameters {
   std::size_t depth() const { return locals_.size(); }
 
  private:
-  using Scope = std::vector<std::pair<std::string, double>>;
-  static Scope* find_scope(Scope& scope, std::string_view name);
+  using Scope = std::unordered_map<std::string, double>;
   std::array<double, kMaxParameter + 1> numbered_{};
   Scope globals_;
   std::vector<Scope> locals_{Scope{}};

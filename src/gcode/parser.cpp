@@ -13,6 +13,7 @@ namespace {
 
 // Nested brackets beyond this are an error, not a stack overflow.
 constexpr int kMaxDepth = 64;
+constexpr std::size_t kMaxExprNodes = 4096;
 
 struct SyntaxError {
   core::Code code;
@@ -52,6 +53,13 @@ bool Parser::fail(core::Code code, std::size_t pos, std::string message) {
 }
 
 ExprRef Parser::node(ExprNode n) {
+  // The evaluator recurses once per operator: a limit keeps a hostile line
+  // from exhausting the stack (LinuxCNC's whole line is 255 characters).
+  if (block_.exprs.size() >= kMaxExprNodes) {
+    fail(core::Code::ExpectedExpression, n.col > 0 ? n.col - 1 : 0,
+         fmt::format("a block with more than {} values and operators", kMaxExprNodes));
+    return kNoExpr;
+  }
   block_.exprs.push_back(n);
   return static_cast<ExprRef>(block_.exprs.size() - 1);
 }

@@ -97,6 +97,17 @@ Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, 
   return Flow::Jumped;
 }
 
+// Every backward jump of the run counts against one budget, so nested loops
+// each under their own limit still end.
+bool Interpreter::count_iteration() {
+  if (++total_iterations_ <= options_.max_total_iterations) return true;
+  error(core::Code::TooManyIterations, 0,
+        fmt::format("the program's loops ran more than {} times in all; raise the limit with "
+                    "--max-total-iterations",
+                    options_.max_total_iterations));
+  return false;
+}
+
 Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, bool after) {
   const std::uint64_t key = (static_cast<std::uint64_t>(cursor_.file) << 32) | e;
   if (++iterations_[key] > options_.max_loop_iterations) {
@@ -105,6 +116,7 @@ Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, 
                       target.label, options_.max_loop_iterations));
     return Flow::Error;
   }
+  if (!count_iteration()) return Flow::Error;
   jump_to(cursor_.file, target, after);
   return Flow::Jumped;
 }
@@ -131,25 +143,36 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
     return Flow::Jumped;
   };
   const OEntry& me = idx.at(e);
+  // A loop is open from its opening statement until it is left; a closing
+  // statement of a loop that is not open is unmatched (no jump back to it).
+  auto key_of = [&](std::uint32_t start) {
+    return (static_cast<std::uint64_t>(cursor_.file) << 32) | start;
+  };
+  auto open = [&](std::uint32_t start) { iterations_.try_emplace(key_of(start), 0); };
+  auto is_open = [&](std::uint32_t start) { return iterations_.count(key_of(start)) > 0; };
   switch (o.kind) {
-  case OKind::Do: return Flow::Next;
+  case OKind::Do: open(e); return Flow::Next;
   case OKind::While: {
     auto c = condition(o);
     if (!c) return Flow::Error;
     if (me.ends_do) {
       const std::uint32_t start = idx.prev_of(e, {OKind::Do});
-      if (start == kNoEntry) return unmatched("do");
+      if (start == kNoEntry || !is_open(start)) return unmatched("do");
       if (*c) return loop_back(start, idx.at(start), true);
       forget(start);
       return Flow::Next;
     }
-    if (*c) return Flow::Next;
+    if (*c) {
+      open(e);
+      return Flow::Next;
+    }
     const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
     return end == kNoEntry ? missing("endwhile") : leave(end);
   }
   case OKind::EndWhile: {
     const std::uint32_t start = idx.prev_of(e, {OKind::While});
-    return start == kNoEntry ? unmatched("while") : loop_back(start, idx.at(start), false);
+    if (start == kNoEntry || !is_open(start)) return unmatched("while");
+    return loop_back(start, idx.at(start), false);
   }
   case OKind::Repeat: {
     EvalError err;
@@ -160,6 +183,10 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
     }
     const std::uint32_t end = idx.next_of(e, {OKind::EndRepeat});
     if (end == kNoEntry) return missing("endrepeat");
+    if (!(*n < 1e15)) {
+      error(core::Code::BadWordValue, o.col, fmt::format("repeat [{}]: too many repeats", *n));
+      return Flow::Error;
+    }
     if (*n < 1.0) return leave(end);
     loops_.push_back({cursor_.file, e, static_cast<long>(*n)});
     return Flow::Next;
@@ -179,7 +206,7 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
     if (end == kNoEntry) return missing("loop end");
     const OEntry& close = idx.at(end);
     if (close.kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
-    const std::uint32_t start = close.kind == OKind::EndWhile ? idx.prev_of(end, {OKind::While})
+    const std::uint32_t start = close.kind == OKind::EndWhile    ? idx.prev_of(end, {OKind::While})
                                 : close.kind == OKind::EndRepeat ? idx.prev_of(end, {OKind::Repeat})
                                                                  : idx.prev_of(end, {OKind::Do});
     if (start != kNoEntry) forget(start);
@@ -352,7 +379,9 @@ bool Interpreter::fanuc_call(const BlockWords& w) {
   if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
     return error(core::Code::RecursionTooDeep, w.col_of('P'), "M98 calls nest too deep");
   }
-  const long times = w.has('L') ? static_cast<long>(w.get('L')) : 1;
+  std::optional<int> l;
+  if (w.has('L') && !(l = whole(w, 'L', 0, kMaxToolNumber))) return false;
+  const long times = l ? *l : 1;
   if (times < 1) return true;
   const OEntry& e = idx.at(entry);
   frames_.push_back({cursor_, label, false, true, times - 1, e.next_line, e.line + 1, cursor_.file,
@@ -369,6 +398,7 @@ bool Interpreter::fanuc_return() {
   }
   Frame& f = frames_.back();
   if (f.repeats_left > 0) {
+    if (!count_iteration()) return false;
     --f.repeats_left;
     cursor_ = {f.file, f.body, f.body_line};
     return true;

@@ -91,19 +91,18 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
     s.speed = w.get('S');
   }
   if (w.has('T')) {
-    const double t = w.get('T');
-    if (t < 0 || std::floor(t) != t) {
-      return error(core::Code::BadWordValue, w.col_of('T'),
-                   fmt::format("T{} is not a tool number", t));
-    }
-    s.selected_tool = static_cast<int>(t);
+    auto t = whole(w, 'T', 0, kMaxToolNumber);
+    if (!t) return false;
+    s.selected_tool = *t;
   }
   const int tc = w.m[kMGroupToolChange];
   if (tc == 6 || tc == 61) {
     if (tc == 61 && !w.has('Q'))
       return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
                    "M61 needs Q (the tool number)");
-    const int tool = tc == 61 ? static_cast<int>(w.get('Q')) : s.selected_tool;
+    std::optional<int> q;
+    if (tc == 61 && !(q = whole(w, 'Q', 0, kMaxToolNumber))) return false;
+    const int tool = tc == 61 ? *q : s.selected_tool;
     if (tool < 0)
       return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
                    "M6 with no tool selected: give T first");

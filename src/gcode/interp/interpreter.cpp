@@ -35,6 +35,18 @@ bool Interpreter::error(core::Code code, std::uint32_t col, std::string message)
   return false;
 }
 
+std::optional<int> Interpreter::whole(const BlockWords& w, char letter, int lo, int hi) {
+  const double v = w.get(letter);
+  const double r = std::round(v);
+  // Written so that NaN fails: every comparison with it is false.
+  if (!(std::fabs(v - r) <= 1e-4 && r >= lo && r <= hi)) {
+    error(core::Code::BadWordValue, w.col_of(letter),
+          fmt::format("{}{} must be a whole number from {} to {}", letter, v, lo, hi));
+    return std::nullopt;
+  }
+  return static_cast<int>(r);
+}
+
 bool Interpreter::error(const InterpError& e, std::uint32_t col) {
   return error(e.code, col, e.message);
 }
@@ -129,8 +141,8 @@ bool Interpreter::evaluate(const Block& b, BlockWords& w) {
     if (word.letter == 'G' || word.letter == 'M') {
       // Codes are read in tenths (G38.2 → 382); M codes must be integers.
       const double tenths = std::round(*v * 10.0);
-      if (std::fabs(*v * 10.0 - tenths) > 1e-6 || *v < 0 ||
-          (word.letter == 'M' && static_cast<long>(tenths) % 10 != 0) || tenths > 99990) {
+      if (!(*v >= 0 && tenths <= 99990) || std::fabs(*v * 10.0 - tenths) > 1e-6 ||
+          (word.letter == 'M' && static_cast<long>(tenths) % 10 != 0)) {
         return error(word.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode,
                      word.col, fmt::format("{}{} is not a code", word.letter, *v));
       }

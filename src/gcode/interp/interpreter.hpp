@@ -28,7 +28,8 @@ struct InterpOptions {
   core::LengthUnit machine_units = core::LengthUnit::Mm;  // of the tool table and parameters
   double peck_clearance_mm = 1.0;                         // G73/G83 retract above the last peck
   std::vector<std::string> subroutine_path;               // folders searched for o<name> call
-  long max_loop_iterations = 10'000'000;                  // per loop, so a runaway loop ends
+  long max_loop_iterations = 10'000'000;   // per run of a loop, so a runaway loop ends
+  long max_total_iterations = 10'000'000;  // all loops of the program together
   int max_call_depth = 200;
   double spline_tolerance_mm = 0.001;
   bool block_delete = false;  // '/' blocks skipped (the operator's switch; off as in LinuxCNC)
@@ -95,6 +96,8 @@ class Interpreter final : private ParameterSource {
   Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop_back(std::uint32_t e, const OEntry& target, bool after);
+  bool count_iteration();
+  long total_iterations_ = 0;
   std::optional<bool> condition(const OWord& o);
   bool fanuc_call(const BlockWords& w);
   bool fanuc_return();
@@ -139,6 +142,9 @@ class Interpreter final : private ParameterSource {
   bool spline(BlockWords& w, GCode g, const Axes& end);
   bool require_feed(const BlockWords& w);
 
+  // A word's value as a whole number within [lo, hi] (within 1e-4 of one,
+  // as LinuxCNC reads integers); reports E_BAD_WORD_VALUE otherwise.
+  std::optional<int> whole(const BlockWords& w, char letter, int lo, int hi);
   bool error(core::Code code, std::uint32_t col, std::string message);
   bool error(const InterpError& e, std::uint32_t col = 0);
   void warn(core::Code code, std::uint32_t col, std::string message);

@@ -124,19 +124,17 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   // LinuxCNC convert_arc: a centre word of the plane's axis is an error.
   const char axial = "IJK"[ax.axial];
   if (w.has(axial)) {
-    return error(core::Code::UnusedWord, w.col_of(axial),
-                 fmt::format("{} word in a {} arc: its plane's centre words are {} and {}", axial,
-                             plane == core::Plane::XY ? "G17" : (plane == core::Plane::ZX ? "G18" : "G19"),
-                             first, second));
+    return error(
+        core::Code::UnusedWord, w.col_of(axial),
+        fmt::format("{} word in a {} arc: its plane's centre words are {} and {}", axial,
+                    plane == core::Plane::XY ? "G17" : (plane == core::Plane::ZX ? "G18" : "G19"),
+                    first, second));
   }
   int turns = 1;
   if (w.has('P')) {
-    const double p = w.get('P');
-    if (p < 1 || std::floor(p) != p) {
-      return error(core::Code::BadWordValue, w.col_of('P'),
-                   fmt::format("P{} turns: must be a positive integer", p));
-    }
-    turns = static_cast<int>(p);
+    auto p = whole(w, 'P', 1, 1000000);
+    if (!p) return false;
+    turns = *p;
   }
   Vec2 center;
   const double unit_tol = state_.units == core::LengthUnit::Inch ? 0.0005 * 25.4 : 0.001;

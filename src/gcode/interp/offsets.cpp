@@ -92,7 +92,9 @@ bool Interpreter::g92(BlockWords& w) {
 
 bool Interpreter::g10(BlockWords& w) {
   if (!w.has('L')) return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G10 needs L");
-  const int l = static_cast<int>(w.get('L'));
+  const auto lw = whole(w, 'L', 0, 100);
+  if (!lw) return false;
+  const int l = *lw;
   if (!w.has('P'))
     return error(core::Code::MissingWord, w.gcol[kGroupNonModal],
                  fmt::format("G10 L{} needs P", l));
@@ -134,9 +136,11 @@ bool Interpreter::g10(BlockWords& w) {
     return true;
   }
   if (l == 1 || l == 10 || l == 11) {
+    const auto number = whole(w, 'P', 0, kMaxToolNumber);
+    if (!number) return false;
     ToolEntry t;
-    if (const ToolEntry* old = options_.tools.find(static_cast<int>(p))) t = *old;
-    t.number = static_cast<int>(p);
+    if (const ToolEntry* old = options_.tools.find(*number)) t = *old;
+    t.number = *number;
     if (w.has('R')) t.diameter = 2.0 * mm(w.get('R'));
     for (int a = 0; a < 3; ++a) {
       const char letter = kAxisLetters[a];
@@ -182,7 +186,9 @@ bool Interpreter::tool_length(BlockWords& w) {
   const GCode g = w.g[kGroupToolLength];
   Axes next{};
   if (g == 430 || g == 432) {
-    const int tool = w.has('H') ? static_cast<int>(w.get('H')) : s.tool;
+    std::optional<int> h;
+    if (w.has('H') && !(h = whole(w, 'H', 0, kMaxToolNumber))) return false;
+    const int tool = h ? *h : s.tool;
     const ToolEntry* t = options_.tools.find(tool);
     if (t == nullptr && tool != 0) {
       return error(core::Code::UnknownTool, w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength],
@@ -236,7 +242,9 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
                    "G41.1/G42.1 need D (the tool diameter)");
     radius = mm(w.get('D')) / 2.0;
   } else {
-    const int tool = w.has('D') ? static_cast<int>(w.get('D')) : s.tool;
+    std::optional<int> d;
+    if (w.has('D') && !(d = whole(w, 'D', 0, kMaxToolNumber))) return false;
+    const int tool = d ? *d : s.tool;
     const ToolEntry* t = options_.tools.find(tool);
     if (t == nullptr && tool != 0) {
       return error(core::Code::UnknownTool, w.has('D') ? w.col_of('D') : w.gcol[kGroupCutterComp],

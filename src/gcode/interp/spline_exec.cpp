@@ -26,7 +26,9 @@ bool Interpreter::nurbs_g6(BlockWords& w, const Axes& end) {
   if (g6_.points.empty() && g6_.knots.empty()) {
     if (!w.has('P'))
       return error(core::Code::MissingWord, 0, "the first G6.2 block needs P (the order)");
-    g6_.order = static_cast<int>(w.get('P'));
+    const auto order = whole(w, 'P', 2, 64);
+    if (!order) return false;
+    g6_.order = *order;
   }
   if (w.has_axis()) {
     const double weight = w.has('R') ? w.get('R') : 1.0;
@@ -102,7 +104,9 @@ bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
       nurbs_points_.push_back(start);
       nurbs_weights_.push_back(1.0);
       // LinuxCNC: order L when above 3, otherwise 3.
-      nurbs_order_ = w.has('L') && w.get('L') > 3 ? static_cast<int>(w.get('L')) : 3;
+      std::optional<int> order;
+      if (w.has('L') && !(order = whole(w, 'L', 0, 64))) return false;
+      nurbs_order_ = order && *order > 3 ? *order : 3;
     }
     const double weight = w.has('P') ? w.get('P') : 1.0;
     if (auto e = core::nurbs_weight_error(weight, nurbs_points_.size())) {

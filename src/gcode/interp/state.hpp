@@ -29,6 +29,9 @@ inline void set_xyz(Axes& a, const Vec3& v) {
   a[2] = v.z;
 }
 
+// Tool numbers: LinuxCNC's are ints.
+inline constexpr int kMaxToolNumber = 2147483646;
+
 // G codes are kept as integers in tenths: G38.2 is 382, G1 is 10, G59.3 is 593.
 using GCode = int;
 
