@@ -6,3 +6,6 @@ bash scripts/setup.sh --with-linuxcnc
 bash scripts/build.sh
 cd build
 ctest --output-on-failure --parallel "$(nproc)"
+cd ..
+# The fuzzers of the parser and interpreter, a short fixed time each.
+bash scripts/fuzz.sh 30

@@ -39,6 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   usina::gcode::InterpOptions opts;
   opts.max_loop_iterations = 10'000;
+  opts.max_total_iterations = 100'000;  // all loops together: nested loops end too
   opts.max_call_depth = 20;
   // No subroutine path: a fuzzed `o<name> call` must never touch the file system.
   opts.subroutine_path.clear();
