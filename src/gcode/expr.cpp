@@ -10,7 +10,8 @@
 namespace usina::gcode {
 namespace {
 
-// LinuxCNC interp_internal.hh TOLERANCE_EQUAL: EQ and NE compare within it.
+// LinuxCNC interp_internal.hh TOLERANCE_EQUAL: EQ, NE, LE and GE compare
+// within it (interp_execute.cc execute_binary2); LT and GT do not.
 constexpr double kEqualTolerance = 1e-4;
 
 class Evaluator {
@@ -107,9 +108,9 @@ std::optional<double> Evaluator::binary(const ExprNode& n, double a, double b) {
   case BinOp::Eq: return std::fabs(a - b) < kEqualTolerance ? 1.0 : 0.0;
   case BinOp::Ne: return std::fabs(a - b) >= kEqualTolerance ? 1.0 : 0.0;
   case BinOp::Gt: return a > b ? 1.0 : 0.0;
-  case BinOp::Ge: return a >= b ? 1.0 : 0.0;
+  case BinOp::Ge: return (std::fabs(a - b) < kEqualTolerance || a >= b) ? 1.0 : 0.0;
   case BinOp::Lt: return a < b ? 1.0 : 0.0;
-  case BinOp::Le: return a <= b ? 1.0 : 0.0;
+  case BinOp::Le: return (std::fabs(a - b) < kEqualTolerance || a <= b) ? 1.0 : 0.0;
   case BinOp::And: return (a != 0.0 && b != 0.0) ? 1.0 : 0.0;
   case BinOp::Or: return (a != 0.0 || b != 0.0) ? 1.0 : 0.0;
   case BinOp::Xor: return ((a != 0.0) != (b != 0.0)) ? 1.0 : 0.0;

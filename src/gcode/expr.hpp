@@ -1,5 +1,5 @@
 // Evaluation of RS274NGC expressions with LinuxCNC's semantics: angles in
-// degrees, EQ and NE within 1e-4, MOD with the sign of the divisor.
+// degrees, EQ, NE, LE and GE within 1e-4, MOD never negative.
 #pragma once
 
 #include <optional>

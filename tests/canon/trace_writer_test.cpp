@@ -14,7 +14,9 @@
 namespace usina::canon {
 namespace {
 
-core::SourceLoc at(std::uint32_t line, std::uint32_t col) { return {0, line, col, 0, 0}; }
+core::SourceLoc at(std::uint32_t line, std::uint32_t col) {
+  return {0, line, col, 0, 0};
+}
 
 // --- to_jsonl: one op kind each, field names of spec/trace.md ---------------
 
@@ -44,6 +46,13 @@ TEST(TraceJsonl, ArcWithoutRateWritesNull) {
   EXPECT_EQ(to_jsonl({Arc{{1, 0, 0}, {0, 0, 0}, {0, 1, 0}, 1, std::nullopt}, at(1, 1)}),
             R"({"op":"arc","src":[1,1],"to":[1,0,0],"center":[0,0,0],"normal":[0,1,0],)"
             R"("turn":1,"f":null})");
+}
+
+TEST(TraceJsonl, SplineListsItsPointsEndingAtTo) {
+  EXPECT_EQ(to_jsonl({Spline{{2, 0, 0}, {{1, 0.5, 0}, {2, 0, 0}}, 60}, at(4, 1)}),
+            R"({"op":"spline","src":[4,1],"to":[2,0,0],"points":[[1,0.5,0],[2,0,0]],"f":60})");
+  EXPECT_EQ(to_jsonl({Spline{{2, 0, 0}, {{2, 0, 0}}, std::nullopt}, at(4, 1)}),
+            R"({"op":"spline","src":[4,1],"to":[2,0,0],"points":[[2,0,0]],"f":null})");
 }
 
 TEST(TraceJsonl, Probe) {
@@ -108,7 +117,9 @@ TEST(TraceJsonl, Comment) {
             R"({"op":"comment","src":[1,4],"text":"rough pass"})");
 }
 
-TEST(TraceJsonl, End) { EXPECT_EQ(to_jsonl({ProgramEnd{}, at(12, 1)}), R"({"op":"end","src":[12,1]})"); }
+TEST(TraceJsonl, End) {
+  EXPECT_EQ(to_jsonl({ProgramEnd{}, at(12, 1)}), R"({"op":"end","src":[12,1]})");
+}
 
 // --- optional fields and number forms --------------------------------------
 
@@ -184,7 +195,8 @@ std::string written(TraceFormat format, const std::vector<Op>& ops) {
   if (f == nullptr) return {};
   {
     TraceWriter w(f, format);
-    for (const Op& op : ops) w.on(op);
+    for (const Op& op : ops)
+      w.on(op);
     w.finish();
   }
   std::fclose(f);
@@ -196,7 +208,8 @@ std::string written(TraceFormat format, const std::vector<Op>& ops) {
 TEST(TraceWriter, JsonlIsOneLinePerOp) {
   const std::string out =
       written(TraceFormat::Jsonl, {{Traverse{{1, 0, 0}}, at(1, 1)}, {ProgramEnd{}, at(2, 1)}});
-  EXPECT_EQ(out, "{\"op\":\"traverse\",\"src\":[1,1],\"to\":[1,0,0]}\n{\"op\":\"end\",\"src\":[2,1]}\n");
+  EXPECT_EQ(out,
+            "{\"op\":\"traverse\",\"src\":[1,1],\"to\":[1,0,0]}\n{\"op\":\"end\",\"src\":[2,1]}\n");
 }
 
 TEST(TraceWriter, TextFormIsLineColumnNameAndFourDecimals) {
@@ -205,32 +218,35 @@ TEST(TraceWriter, TextFormIsLineColumnNameAndFourDecimals) {
 }
 
 TEST(TraceWriter, TextFormOfEachKindNamesIt) {
-  const std::string out = written(
-      TraceFormat::Text, {{Arc{{1, 0, 0}, {0, 0, 0}, {0, 0, 1}, -1, 50}, at(1, 1)},
-                          {Dwell{2}, at(2, 1)},
-                          {ToolChange{4, 10}, at(3, 1)},
-                          {Spindle{900, SpindleDir::Ccw}, at(4, 1)},
-                          {Coolant{true, false}, at(5, 1)},
-                          {Comment{"hello"}, at(6, 1)},
-                          {ProgramEnd{}, at(7, 1)}});
-  EXPECT_EQ(out,
-            "    1:1   arc      X1.0000 Y0.0000 Z0.0000 about (0.0000, 0.0000, 0.0000) turn -1 F50\n"
-            "    2:1   dwell    2 s\n"
-            "    3:1   tool     T4 diameter 10 mm\n"
-            "    4:1   spindle  ccw 900 rpm\n"
-            "    5:1   coolant  mist on flood off\n"
-            "    6:1   comment  hello\n"
-            "    7:1   end     \n");
+  const std::string out =
+      written(TraceFormat::Text, {{Arc{{1, 0, 0}, {0, 0, 0}, {0, 0, 1}, -1, 50}, at(1, 1)},
+                                  {Dwell{2}, at(2, 1)},
+                                  {ToolChange{4, 10}, at(3, 1)},
+                                  {Spindle{900, SpindleDir::Ccw}, at(4, 1)},
+                                  {Coolant{true, false}, at(5, 1)},
+                                  {Comment{"hello"}, at(6, 1)},
+                                  {ProgramEnd{}, at(7, 1)}});
+  EXPECT_EQ(
+      out,
+      "    1:1   arc      X1.0000 Y0.0000 Z0.0000 about (0.0000, 0.0000, 0.0000) turn -1 F50\n"
+      "    2:1   dwell    2 s\n"
+      "    3:1   tool     T4 diameter 10 mm\n"
+      "    4:1   spindle  ccw 900 rpm\n"
+      "    5:1   coolant  mist on flood off\n"
+      "    6:1   comment  hello\n"
+      "    7:1   end     \n");
 }
 
 TEST(TraceWriter, LargeOutputIsWrittenCompletelyAndInOrder) {
   std::vector<Op> ops;
   for (int i = 0; i < 5000; ++i) {
-    ops.push_back({Feed{{static_cast<double>(i), 0, 0}, 100}, at(static_cast<std::uint32_t>(i + 1), 1)});
+    ops.push_back(
+        {Feed{{static_cast<double>(i), 0, 0}, 100}, at(static_cast<std::uint32_t>(i + 1), 1)});
   }
   const std::string out = written(TraceFormat::Jsonl, ops);
   std::size_t lines = 0;
-  for (const char c : out) lines += c == '\n' ? 1 : 0;
+  for (const char c : out)
+    lines += c == '\n' ? 1 : 0;
   EXPECT_EQ(lines, 5000u);
   EXPECT_NE(out.find("{\"op\":\"feed\",\"src\":[5000,1],\"to\":[4999,0,0],\"f\":100}\n"),
             std::string::npos);
@@ -243,6 +259,7 @@ TEST(OpName, TraceNamesOfEveryKind) {
   EXPECT_STREQ(op_name(Traverse{}), "traverse");
   EXPECT_STREQ(op_name(Feed{}), "feed");
   EXPECT_STREQ(op_name(Arc{}), "arc");
+  EXPECT_STREQ(op_name(Spline{}), "spline");
   EXPECT_STREQ(op_name(Probe{}), "probe");
   EXPECT_STREQ(op_name(Dwell{}), "dwell");
   EXPECT_STREQ(op_name(ToolChange{}), "tool");
@@ -258,6 +275,7 @@ TEST(OpName, OnlyMovesAreMotion) {
   EXPECT_TRUE(is_motion(Traverse{}));
   EXPECT_TRUE(is_motion(Feed{}));
   EXPECT_TRUE(is_motion(Arc{}));
+  EXPECT_TRUE(is_motion(Spline{}));
   EXPECT_TRUE(is_motion(Probe{}));
   EXPECT_FALSE(is_motion(Dwell{}));
   EXPECT_FALSE(is_motion(Hole{}));

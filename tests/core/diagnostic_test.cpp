@@ -40,13 +40,13 @@ TEST(CodeName, EnumeratorsKeepTheirOrderSoAppendedCodesDoNotRenumber) {
 TEST(CodeName, EveryCodeHasAUniquePrefixedName) {
   std::set<std::string_view> seen;
   int count = 0;
-#define USINA_X(name, id)                                                      \
-  {                                                                            \
-    const std::string_view n = code_name(Code::name);                         \
-    EXPECT_EQ(n, #id);                                                         \
+#define USINA_X(name, id)                                                                \
+  {                                                                                      \
+    const std::string_view n = code_name(Code::name);                                    \
+    EXPECT_EQ(n, #id);                                                                   \
     EXPECT_TRUE(n.starts_with("E_") || n.starts_with("W_") || n.starts_with("N_")) << n; \
-    EXPECT_TRUE(seen.insert(n).second) << "duplicate " << n;                   \
-    ++count;                                                                   \
+    EXPECT_TRUE(seen.insert(n).second) << "duplicate " << n;                             \
+    ++count;                                                                             \
   }
   USINA_DIAGNOSTIC_CODES(USINA_X)
 #undef USINA_X
@@ -99,7 +99,9 @@ std::unique_ptr<Rendered> with_file(std::string name, std::string text) {
 
 TEST(Render, FileLineColSeverityMessageCodeThenLineAndCaret) {
   auto r = with_file("part.ngc", "G0 X1\nG2 X5 R1\n");
-  const Diagnostic d{Code::ArcRadiusTooSmall, Severity::Error, {r->id, 2, 7, 1, 6},
+  const Diagnostic d{Code::ArcRadiusTooSmall,
+                     Severity::Error,
+                     {r->id, 2, 7, 1, 6},
                      "arc radius 1 is smaller than half the chord 2.5"};
   EXPECT_EQ(render(d, r->sources),
             "part.ngc:2:7: error: arc radius 1 is smaller than half the chord 2.5 "
@@ -162,7 +164,8 @@ TEST(Render, CarriageReturnOfTheLineIsNotShown) {
 TEST(Render, CaretPastTheEndOfLineStopsJustAfterIt) {
   auto r = with_file("p.ngc", "G1 X[\n");
   const Diagnostic d{Code::UnclosedBracket, Severity::Error, {r->id, 1, 40, 1, 0}, "m"};
-  EXPECT_EQ(render(d, r->sources), "p.ngc:1:40: error: m [E_UNCLOSED_BRACKET]\n  G1 X[\n       ^\n");
+  EXPECT_EQ(render(d, r->sources),
+            "p.ngc:1:40: error: m [E_UNCLOSED_BRACKET]\n  G1 X[\n       ^\n");
 }
 
 TEST(Render, SecondFileOfTheManagerIsNamed) {

@@ -24,10 +24,13 @@ class TempDir {
     EXPECT_NE(d, nullptr);
     path_ = d != nullptr ? d : "/tmp";
   }
+
   ~TempDir() {
-    for (const std::string& f : files_) ::unlink(f.c_str());
+    for (const std::string& f : files_)
+      ::unlink(f.c_str());
     ::rmdir(path_.c_str());
   }
+
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
 
@@ -37,6 +40,7 @@ class TempDir {
     files_.push_back(p);
     return p;
   }
+
   const std::string& path() const { return path_; }
 
  private:
@@ -127,7 +131,8 @@ TEST(SourceFile, TextStaysReadableAfterReleasingPages) {
   // 9 MiB: more than one release chunk.
   std::string text;
   const std::string line = "G1 X1.2345 Y6.7890 Z-0.5 F100\n";
-  while (text.size() < (9u << 20)) text += line;
+  while (text.size() < (9u << 20))
+    text += line;
   text += "M2\n";
   const std::string p = dir.write("big.ngc", text);
   std::string error;

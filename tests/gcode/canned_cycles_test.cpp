@@ -460,6 +460,24 @@ TEST(G81, IncrementalRepeatsStepFromHoleToHole) {
                   rapid_to(15, 3, 10)}));
 }
 
+// rs274: G20 G17 G90 G99 / G0 X0 Y0 Z0.345 / G91 G81 X0.1 R-0.095 Z-0.065 / X0.1
+// R is 0.345 - 0.095 = 0.24999999999999997 in, and the first block ends
+// there; the second starts "at R", not above it (0.25), so it makes no
+// second move down to R. usina carries LinuxCNC's own numbers over.
+TEST(G81, CarriesLinuxCncsOwnNumbersToTheNextBlock) {
+  Machine m(kInch);
+  m.modal.retract_to_r = true;
+  m.rapid(inches(0, 0, 0.345));
+  m.modal.incremental = true;
+  EXPECT_TRUE(ok(m.cycle(810, inches({.x = 0.1, .z = -0.065, .r = -0.095}))));
+  EXPECT_TRUE(ok(m.cycle(810, inches({.x = 0.1}))));
+  EXPECT_TRUE(same_ops(m.rec.ops,
+                       {rapid_to(0, 0, 8.763), rapid_to(2.54, 0, 8.763), rapid_to(2.54, 0, 6.35),
+                        feed_to(2.54, 0, 4.699), rapid_to(2.54, 0, 6.35), rapid_to(5.08, 0, 6.35),
+                        feed_to(5.08, 0, 4.699), rapid_to(5.08, 0, 6.35)},
+                       2e-3));
+}
+
 // interp_cycles.cc: L > 1 in G90 means "do the same thing in the same place".
 TEST(G81, AbsoluteRepeatsDrillTheSameHoleAgain) {
   Machine m;

@@ -1,5 +1,6 @@
 #include "gcode/lexer.hpp"
 
+#include <charconv>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -101,9 +102,43 @@ TEST(Lexer, TrailingBlanksAfterANumberAreLeft) {
   EXPECT_TRUE(lex.at_end());
 }
 
-TEST(Lexer, LongNumberWithoutBlanksIsRead) {
-  Lexer lex("000000000000000000000000000000000000000000000000000000000000000000000001.5");
-  EXPECT_EQ(lex.number(), 1.5);
+// Whatever path the lexer takes, a number is the double nearest its decimal
+// text, as std::from_chars gives it.
+double nearest(const std::string& text) {
+  double v = 0.0;
+  std::from_chars(text.data(), text.data() + text.size(), v);
+  return v;
+}
+
+TEST(Lexer, NumbersAreCorrectlyRounded) {
+  for (const std::string t : {"0.1", "0.3", "25.4", "3.14159265358979", "123456789012345",
+                              "1234567890123456.7", "0.000000000000000001", "9007199254740993",
+                              "99999.999999999999", "1.0000000000000002220446"}) {
+    Lexer lex(t);
+    const auto v = lex.number();
+    ASSERT_TRUE(v.has_value()) << t;
+    EXPECT_EQ(*v, nearest(t)) << t;
+    EXPECT_TRUE(lex.at_end()) << t;
+  }
+}
+
+TEST(Lexer, NumberWithBlanksIsCorrectlyRounded) {
+  Lexer lex("0 . 1 2 3 4 5 6 7 8 9 0 1 2 3 4 5 6 7");
+  EXPECT_EQ(lex.number(), nearest("0.12345678901234567"));
+}
+
+TEST(Lexer, NumberOfSixtyFourCharactersIsRead) {
+  const std::string t = std::string(62, '0') + "15";
+  Lexer lex(t);
+  EXPECT_EQ(lex.number(), 15.0);
+}
+
+TEST(Lexer, NumberLongerThanSixtyFourCharactersIsRefusedNotTruncated) {
+  // A longer number is no real program's; it must not be read as a prefix.
+  const std::string t = std::string(70, '0') + "15";
+  Lexer lex(t);
+  EXPECT_FALSE(lex.number().has_value());
+  EXPECT_EQ(lex.pos(), 0u);
 }
 
 TEST(Lexer, AcceptKeywordIsCaseInsensitiveAndAllowsBlanks) {

@@ -47,7 +47,7 @@ struct ModalState {
   FeedMode feed_mode = FeedMode::UnitsPerMinute;
   core::LengthUnit units = core::LengthUnit::Mm;
   GCode path_mode = 640;  // G64
-  RetractMode retract = RetractMode::OldZ;
+  RetractMode retract = RetractMode::RPlane;  // LinuxCNC starts in G99
   bool css = false;             // G96
   bool lathe_diameter = false;  // G7
   int coord_system = 1;         // 1 = G54 ... 9 = G59.3

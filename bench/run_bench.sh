@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# Whole-command timing of the issue's speed and memory targets (a benchmark,
+# not a test: it reports, it never fails on a time).
+#
+#   bench/run_bench.sh [--blocks N] [--runs R] [--no-micro]
+#   BUILD_DIR=/tmp/build-bench bench/run_bench.sh
+#
+# 1. builds usina Release in $BUILD_DIR (default build-release/, not build/);
+# 2. generates a 3D surfacing program of N blocks (default 1,000,000, ~30 MB)
+#    in /tmp with bench/gen_surfacing.py;
+# 3. times `usina check` and `usina trace --format jsonl > /dev/null` on it:
+#    wall time with hyperfine (mean of R runs after a warm-up) when it is
+#    installed (apt-get install hyperfine), otherwise the best of R runs of
+#    /usr/bin/time; CPU time (user+sys) and peak memory (max RSS) with
+#    /usr/bin/time -v;
+# 4. prints MB/s (10^6 bytes of G-code a second) by wall and by CPU time, and
+#    peak MiB, against the targets (check >= 100 MB/s, trace >= 30 MB/s,
+#    peak < 32 MB);
+# 5. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
+set -euo pipefail
+
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${BUILD_DIR:-$root/build-release}"
+blocks=1000000
+runs=5
+micro=1
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --blocks) blocks="$2"; shift 2 ;;
+    --runs) runs="$2"; shift 2 ;;
+    --no-micro) micro=0; shift ;;
+    -h | --help) sed -n "2,19p" "$0"; exit 0 ;;
+    *) echo "run_bench.sh: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+
+# GCC 12 at -O3 reports a false -Wrestrict inside std::string (parser.cpp,
+# o_word); it must not stop a benchmark build.
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS="${BENCH_CXXFLAGS:--Wno-error=restrict}" > /dev/null
+cmake --build "$build" --target usina usina_bench > /dev/null
+usina="$build/usina"
+
+program="/tmp/usina-bench-surfacing-$blocks.ngc"
+if [[ ! -s "$program" || "$root/bench/gen_surfacing.py" -nt "$program" ]]; then
+  python3 "$root/bench/gen_surfacing.py" "$blocks" "$program"
+fi
+bytes="$(stat -c %s "$program")"
+echo "program: $program, $blocks blocks, $bytes bytes"
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
+echo "usina:   $usina ($(cd "$build" && grep -m1 CMAKE_BUILD_TYPE:STRING CMakeCache.txt | cut -d= -f2))"
+"$usina" check "$program" || { echo "run_bench.sh: usina check fails on the generated program" >&2; exit 1; }
+
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+
+# Wall seconds per run of the command line "$1" (run through sh, output discarded):
+# hyperfine's mean when installed, else the best of $runs runs.
+wall_seconds() {
+  if command -v hyperfine > /dev/null; then
+    hyperfine --style none --warmup 1 --runs "$runs" --export-json "$tmp/h.json" "$1" > /dev/null
+    python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["results"][0]["mean"])' "$tmp/h.json"
+  else
+    python3 -c 'import sys; print(min(map(float, sys.argv[1:])))' $(for _ in $(seq "$runs"); do
+      /usr/bin/time -f %e -o "$tmp/t" sh -c "$1"; cat "$tmp/t"; done)
+  fi
+}
+
+# "cpu_seconds peak_mib" of the command line "$1": the least user+sys time and
+# the largest max RSS of $runs runs under /usr/bin/time -v. CPU time is what
+# the program itself costs, so it holds on a machine shared with other work.
+cpu_and_peak() {
+  local cpu=() rss=()
+  for _ in $(seq "$runs"); do
+    /usr/bin/time -v -o "$tmp/v" sh -c "$1" > /dev/null
+    cpu+=("$(awk -F': ' '/User time|System time/ { s += $2 } END { print s }' "$tmp/v")")
+    rss+=("$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$tmp/v")")
+  done
+  python3 -c 'import sys; n = len(sys.argv) // 2; c = sys.argv[1:n + 1]; r = sys.argv[n + 1:]
+print(min(map(float, c)), max(map(int, r)) / 1024)' "${cpu[@]}" "${rss[@]}"
+}
+
+report() {  # name, command line, target MB/s
+  local wall cpu mib
+  wall="$(wall_seconds "$2")"
+  read -r cpu mib < <(cpu_and_peak "$2")
+  python3 - "$1" "$bytes" "$wall" "$cpu" "$mib" "$3" << 'PY'
+import sys
+name, size, wall, cpu, mib, target = sys.argv[1], int(sys.argv[2]), *map(float, sys.argv[3:])
+mb = size / 1e6
+ok = lambda good: "ok" if good else "MISSED"
+print(f"{name:6} wall {wall:6.3f} s = {mb / wall:6.1f} MB/s   cpu {cpu:6.3f} s = {mb / cpu:6.1f} MB/s"
+      f"   (target >= {target:g} MB/s: wall {ok(mb / wall >= target)}, cpu {ok(mb / cpu >= target)})"
+      f"   peak {mib:5.1f} MiB (target < 32: {ok(mib < 32)})")
+PY
+}
+
+echo "load before timing: $(cut -d' ' -f1-3 /proc/loadavg) (wall figures need a quiet machine; cpu figures do not)"
+echo "timing: wall $(command -v hyperfine > /dev/null && echo "= hyperfine mean of $runs runs" || echo "= best of $runs runs of /usr/bin/time"); cpu = least user+sys of $runs runs"
+report check "'$usina' check '$program'" 100
+report trace "'$usina' trace --format jsonl '$program' > /dev/null" 30
+
+if [[ "$micro" -eq 1 ]]; then
+  echo
+  "$build/bench/usina_bench" --benchmark_min_time=0.5
+fi
