@@ -165,8 +165,10 @@ bool Interpreter::check_unused(const BlockWords& w) {
     return unused('L', "G10, canned cycles, G5.2, M98");
   }
   const GCode comp = w.g[kGroupCutterComp];
-  if (w.has('D') && !(comp == 410 || comp == 420 || comp == 411 || comp == 421)) {
-    return unused('D', "G41, G42, G41.1, G42.1");
+  // D: the tool of G41/G42, the diameter of G41.1/G42.1, the top speed of G96.
+  if (w.has('D') && !(comp == 410 || comp == 420 || comp == 411 || comp == 421 ||
+                      w.g[kGroupSpindleMode] == 960)) {
+    return unused('D', "G41, G42, G41.1, G42.1, G96");
   }
   const GCode tlo = w.g[kGroupToolLength];
   if (w.has('H') && !(tlo == 430 || tlo == 432 || mo == 760)) return unused('H', "G43, G43.2");
