@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   usina::cli::add_trace(app);
   usina::cli::add_check(app);
+  usina::cli::add_calc(app);
   CLI11_PARSE(app, argc, argv);
   return usina::cli::exit_status();
 }
