@@ -46,11 +46,11 @@ struct ModalState {
   bool arc_absolute = false;  // G90.1
   FeedMode feed_mode = FeedMode::UnitsPerMinute;
   core::LengthUnit units = core::LengthUnit::Mm;
-  GCode path_mode = 640;  // G64
+  GCode path_mode = 640;                      // G64
   RetractMode retract = RetractMode::RPlane;  // LinuxCNC starts in G99
-  bool css = false;             // G96
-  bool lathe_diameter = false;  // G7
-  int coord_system = 1;         // 1 = G54 ... 9 = G59.3
+  bool css = false;                           // G96
+  bool lathe_diameter = false;                // G7
+  int coord_system = 1;                       // 1 = G54 ... 9 = G59.3
 
   double feed = 0.0;   // mm/min (G94), mm/rev (G95) or 1/min (G93)
   double speed = 0.0;  // rpm, or surface speed under G96
