@@ -248,6 +248,12 @@ EXPLAIN = {
         "A tool number (`H` for `G43`, `D` for `G41`/`G42`, or the loaded tool) is not in "
         "the tool table.",
         "Add the tool to the table given with `--tool-table`, or correct `H`/`D`."),
+    "E_BAD_MACHINE_PROFILE": (
+        "The machine profile given with `--machine` cannot be used: it is not valid TOML, a "
+        "required key is missing, a value has the wrong type, or a number is out of range "
+        "(a negative rapid rate, min above max, units other than mm or inch).",
+        "Correct the key named in the message; `examples/machines/` has complete profiles to "
+        "start from."),
     "E_BAD_TOOL_TABLE": (
         "A line of the tool table given with `--tool-table` cannot be used (no `T` word, a "
         "value that is not a number or too large, an unknown letter). Some defects are "

@@ -1,0 +1,41 @@
+// A machine profile (issue 6): axes, limits, rates and times of one machine,
+// read from TOML. Every length is kept in mm, every rate in mm/min, every
+// acceleration in mm/s² (rotary axes: degrees), whatever units the file uses.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "core/diagnostic.hpp"
+
+namespace usina::sim {
+
+struct AxisLimits {
+  bool present = false;
+  double min = 0.0;
+  double max = 0.0;
+  double rapid = 0.0;     // per minute
+  double max_feed = 0.0;  // per minute
+  double accel = 0.0;     // per second squared
+  double jerk = 0.0;      // per second cubed; 0 = trapezoidal profile
+};
+
+struct MachineProfile {
+  std::string name;
+  bool file_in_inch = false;         // the units the file was written in
+  std::array<AxisLimits, 6> axes{};  // X Y Z A B C
+  double spindle_max_rpm = 0.0;
+  double spindle_accel_time = 0.0;  // s, from stop to full speed
+  double tool_change_time = 0.0;    // s
+  double block_time = 0.0;          // s of processing per block
+  double cost_per_hour = 0.0;
+};
+
+// Reads a profile; every problem is a diagnostic (E_BAD_MACHINE_PROFILE)
+// at the line and column of the key. Nullopt when the profile is unusable.
+std::optional<MachineProfile> read_machine_profile(std::string_view toml_text,
+                                                   std::uint32_t file_id,
+                                                   core::DiagnosticSink& diags);
+
+}  // namespace usina::sim
