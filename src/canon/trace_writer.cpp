@@ -210,9 +210,13 @@ struct JsonFields {
   void operator()(const ProgramEnd&) const {}
 };
 
-void write_json(Out out, const Op& op) {
+void write_json(Out out, const Op& op, std::string_view file = {}) {
   fmt::format_to(out, FMT_COMPILE("{{\"op\":\"{}\",\"src\":[{},{}]"), op_name(op.kind), op.src.line,
                  op.src.col);
+  if (!file.empty()) {
+    fmt::format_to(out, FMT_COMPILE(",\"file\":"));
+    json_string(out, file);
+  }
   std::visit(JsonFields{out}, op.kind);
   fmt::format_to(out, FMT_COMPILE("}}"));
 }
@@ -288,11 +292,19 @@ TraceWriter::~TraceWriter() {
   finish();
 }
 
+std::string_view TraceWriter::file_of(const Op& op) const {
+  if (sources_ == nullptr || op.src.file == 0) return {};
+  const core::SourceFile* f = sources_->get(op.src.file);
+  return f != nullptr ? std::string_view(f->name()) : std::string_view();
+}
+
 void TraceWriter::on(const Op& op) {
   auto out = fmt::appender(buf_);
+  const std::string_view file = file_of(op);
   if (format_ == TraceFormat::Jsonl) {
-    write_json(out, op);
+    write_json(out, op, file);
   } else {
+    if (!file.empty()) fmt::format_to(out, FMT_COMPILE("{}:"), file);
     fmt::format_to(out, FMT_COMPILE("{:>5}:{:<3} {:<8}"), op.src.line, op.src.col,
                    op_name(op.kind));
     std::visit(TextFields{out}, op.kind);

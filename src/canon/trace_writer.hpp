@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "canon/sink.hpp"
+#include "core/source.hpp"
 
 namespace usina::canon {
 
@@ -22,10 +23,16 @@ class TraceWriter final : public Sink {
   void on(const Op& op) override;
   void finish() override;
 
+  // Names the file of ops that come from another file than the program's
+  // (subroutine files): JSONL adds "file", text prefixes the name.
+  void set_sources(const core::SourceManager* sources) { sources_ = sources; }
+
  private:
+  std::string_view file_of(const Op& op) const;
   void flush_if_full();
   std::FILE* out_;
   TraceFormat format_;
+  const core::SourceManager* sources_ = nullptr;
   fmt::memory_buffer buf_;
 };
 

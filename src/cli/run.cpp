@@ -89,8 +89,10 @@ std::string folder_of(const std::string& path) {
 
 }  // namespace
 
-int run_program(const RunOptions& o, canon::Sink& sink) {
+int run_program(const RunOptions& o, canon::Sink& sink,
+                const std::function<void(const core::SourceManager&)>& on_sources) {
   core::SourceManager sources;
+  if (on_sources) on_sources(sources);
   StderrDiagnostics diags(sources);
   auto program = open_input(o.file);
   if (!program) return 2;

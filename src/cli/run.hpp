@@ -2,11 +2,13 @@
 // tool table, units, parameter file, subroutine path) and one run.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "canon/sink.hpp"
+#include "core/source.hpp"
 
 namespace usina::cli {
 
@@ -28,6 +30,9 @@ void add_run_options(CLI::App& app, RunOptions& o);
 // Interprets the program into `sink`, printing diagnostics to stderr.
 // Returns the exit status: 0, 1 when the program has an error, 2 when the
 // input cannot be read.
-int run_program(const RunOptions& o, canon::Sink& sink);
+// `on_sources` is told the run's sources before the program runs (a trace
+// writer names subroutine files with them).
+int run_program(const RunOptions& o, canon::Sink& sink,
+                const std::function<void(const core::SourceManager&)>& on_sources = {});
 
 }  // namespace usina::cli

@@ -36,7 +36,9 @@ void add_trace(CLI::App& app) {
   cmd->callback([opts] {
     canon::TraceWriter writer(
         stdout, opts->format == "text" ? canon::TraceFormat::Text : canon::TraceFormat::Jsonl);
-    set_exit_status(run_program(opts->run, writer));
+    set_exit_status(run_program(opts->run, writer, [&writer](const core::SourceManager& sources) {
+      writer.set_sources(&sources);
+    }));
   });
 }
 

@@ -285,3 +285,39 @@ TEST(OpName, OnlyMovesAreMotion) {
 
 }  // namespace
 }  // namespace usina::canon
+
+namespace usina::canon {
+namespace {
+
+std::string write_with_sources(const Op& op, TraceFormat format) {
+  core::SourceManager sources;
+  sources.add(core::SourceFile::from_string("main.ngc", "G0 X1\n"));
+  sources.add(core::SourceFile::from_string("subs/corner.ngc", "G1 X2\n"));
+  std::FILE* f = std::tmpfile();
+  {
+    TraceWriter w(f, format);
+    w.set_sources(&sources);
+    w.on(op);
+  }
+  std::rewind(f);
+  std::string out(256, '\0');
+  out.resize(std::fread(out.data(), 1, out.size(), f));
+  std::fclose(f);
+  return out;
+}
+
+TEST(TraceWriterFile, OpsOfASubroutineFileNameTheFile) {
+  Op op{Traverse{{1, 2, 3}, {}}, core::SourceLoc{1, 7, 3, 0, 0}};
+  EXPECT_EQ(write_with_sources(op, TraceFormat::Jsonl),
+            "{\"op\":\"traverse\",\"src\":[7,3],\"file\":\"subs/corner.ngc\",\"to\":[1,2,3]}\n");
+  EXPECT_EQ(write_with_sources(op, TraceFormat::Text).rfind("subs/corner.ngc:", 0), 0u);
+}
+
+TEST(TraceWriterFile, OpsOfTheProgramItselfHaveNoFileField) {
+  Op op{Traverse{{1, 2, 3}, {}}, core::SourceLoc{0, 7, 3, 0, 0}};
+  EXPECT_EQ(write_with_sources(op, TraceFormat::Jsonl),
+            "{\"op\":\"traverse\",\"src\":[7,3],\"to\":[1,2,3]}\n");
+}
+
+}  // namespace
+}  // namespace usina::canon
