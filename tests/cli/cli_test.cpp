@@ -279,8 +279,9 @@ TEST(CliTrace, SameProgramSameBytes) {
 TEST(CliTrace, SubroutineFileInTheProgramsFolderIsFound) {
   const Result r = usina("trace " + quote(kPrograms + "/uses_sub.ngc"));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(
-      contains(r.out, "{\"op\":\"arc\",\"src\":[6,3],\"to\":[50,5,-1],\"center\":[45,5,-1],"))
+  // The arc is made in corner_round.ngc, which the op names.
+  EXPECT_TRUE(contains(r.out, "{\"op\":\"arc\",\"src\":[6,3],\"file\":\"" + kPrograms +
+                                  "/corner_round.ngc\",\"to\":[50,5,-1],\"center\":[45,5,-1],"))
       << r.out;
 }
 
@@ -371,9 +372,9 @@ TEST(CliTrace, HostileInputEndsWithADiagnosticNotACrash) {
   }
 }
 
-// Regression (a bug the tests found, fixed): `#1=#[[10**400]-[10**400]]` reads parameter number NaN: the index
-// check lets NaN through and the read is out of bounds. Expected: exit 1 and
-// an error diagnostic. Actual: the process dies with SIGSEGV (status 139).
+// Regression (a bug the tests found, fixed): `#1=#[[10**400]-[10**400]]` reads parameter number
+// NaN: the index check lets NaN through and the read is out of bounds. Expected: exit 1 and an
+// error diagnostic. Actual: the process dies with SIGSEGV (status 139).
 TEST(CliTrace, NotANumberParameterIndexIsADiagnostic) {
   const Result r = usina("trace -", "#1=#[[10**400]-[10**400]]\nM2\n");
   EXPECT_EQ(r.status, 1) << r.err;
