@@ -65,6 +65,6 @@
   X(SplineBadValue, E_SPLINE_BAD_VALUE)            \
   /* operator messages */                          \
   X(Message, N_MESSAGE)                            \
-  X(Unsupported, E_UNSUPPORTED)                                                      \
-  /* machine profiles (sim) */                                                       \
+  X(Unsupported, E_UNSUPPORTED)                    \
+  /* machine profiles (sim) */                     \
   X(BadMachineProfile, E_BAD_MACHINE_PROFILE)
