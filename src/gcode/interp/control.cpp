@@ -33,8 +33,7 @@ std::optional<bool> Interpreter::condition(const OWord& o) {
   return *v != 0.0;
 }
 
-Interpreter::Flow Interpreter::control(const OWord& o, std::uint64_t line_offset,
-                                       std::uint64_t next) {
+Interpreter::Flow Interpreter::control(const OWord& o, std::uint64_t line_offset) {
   const ProgramIndex& idx = index_of(cursor_.file);
   const std::uint32_t e = idx.find(line_offset);
   if (e == kNoEntry) {
@@ -53,7 +52,7 @@ Interpreter::Flow Interpreter::control(const OWord& o, std::uint64_t line_offset
   }
   case OKind::EndSub:
   case OKind::Return: return leave_sub(o);
-  case OKind::Call: return call(o, next);
+  case OKind::Call: return call(o);
   case OKind::If:
   case OKind::ElseIf:
   case OKind::Else:
@@ -253,8 +252,7 @@ std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name)
   return std::nullopt;
 }
 
-Interpreter::Flow Interpreter::call(const OWord& o, std::uint64_t next) {
-  (void)next;
+Interpreter::Flow Interpreter::call(const OWord& o) {
   std::string label = o.label;
   if (o.label_expr != kNoExpr) {
     EvalError err;

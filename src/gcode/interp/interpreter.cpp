@@ -116,7 +116,7 @@ Interpreter::Flow Interpreter::step() {
     return Flow::Next;
   }
   if (block_.deleted && options_.block_delete) return Flow::Next;
-  if (block_.o) return control(*block_.o, where.offset, lv.next);
+  if (block_.o) return control(*block_.o, where.offset);
   if (block_.empty()) return Flow::Next;
   BlockWords& w = *words_;
   if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return Flow::Error;

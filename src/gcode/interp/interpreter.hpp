@@ -90,8 +90,8 @@ class Interpreter final : private ParameterSource {
 
   // The main loop and control flow (control.cpp).
   Flow step();
-  Flow control(const OWord& o, std::uint64_t line_offset, std::uint64_t next);
-  Flow call(const OWord& o, std::uint64_t next);
+  Flow control(const OWord& o, std::uint64_t line_offset);
+  Flow call(const OWord& o);
   Flow leave_sub(const OWord& o);
   Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o);

@@ -259,7 +259,6 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
     return error(*e, w.gcol[kGroupCutterComp]);
   }
   s.comp = side == CompSide::Left ? CompSideState::Left : CompSideState::Right;
-  s.comp_radius = radius;
   return true;
 }
 

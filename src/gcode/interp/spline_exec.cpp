@@ -132,46 +132,4 @@ bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
   return true;
 }
 
-bool Interpreter::cycle(BlockWords& w, GCode g, GCode previous) {
-  if (g != 760 && !require_feed(w)) return false;
-  auto length = [&](char c) -> std::optional<double> {
-    if (!w.has(c)) return std::nullopt;
-    return mm(w.get(c));
-  };
-  auto raw = [&](char c) -> std::optional<double> {
-    if (!w.has(c)) return std::nullopt;
-    return w.get(c);
-  };
-  const bool threading = g == 760;
-  CycleWords cw;
-  cw.x = length('X');
-  if (cw.x && state_.lathe_diameter) *cw.x /= 2.0;  // G7: X is a diameter
-  cw.y = length('Y');
-  cw.z = length('Z');
-  cw.r = threading ? raw('R') : length('R');
-  cw.q = threading ? raw('Q') : length('Q');
-  cw.i = length('I');
-  cw.j = length('J');
-  cw.k = length('K');
-  cw.p = threading ? length('P') : raw('P');
-  cw.l = raw('L');
-  cw.h = raw('H');
-  cw.e = length('E');
-  cw.polar_radius = length('@');
-  cw.polar_angle = raw('^');
-  CycleModal cm;
-  cm.motion = g;
-  cm.plane = state_.plane;
-  cm.incremental = state_.incremental;
-  cm.retract_to_r = state_.retract == RetractMode::RPlane;
-  cm.motion_mode_changed = previous != g;
-  cm.spindle = state_.spindle;
-  cm.peck_clearance = options_.peck_clearance_mm;
-  cm.length_unit = core::mm_per(state_.units);
-  cm.diameter_mode = state_.lathe_diameter;
-  if (auto e = cycles_.run(cw, cm, machine_)) return error(*e);
-  set_xyz(state_.pos, cycles_.end_point());
-  return true;
-}
-
 }  // namespace usina::gcode

@@ -57,10 +57,9 @@ struct ModalState {
   canon::SpindleDir spindle = canon::SpindleDir::Off;
   bool mist = false;
   bool flood = false;
-  int tool = 0;              // in the spindle
-  int selected_tool = -1;    // T word
-  Axes tool_offset{};        // active tool length offset (G43), mm
-  double comp_radius = 0.0;  // G41/G42 radius, mm
+  int tool = 0;            // in the spindle
+  int selected_tool = -1;  // T word
+  Axes tool_offset{};      // active tool length offset (G43), mm
   CompSideState comp = CompSideState::Off;
 
   Axes pos{};                 // current point, program coordinates
