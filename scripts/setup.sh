@@ -8,6 +8,7 @@ pkgs=(
   build-essential cmake ninja-build pkg-config git python3
   libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libexpected-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libdxflib-dev libcairo2-dev libpolyclipping-dev hershey-fonts-data
   clang-14 libclang-rt-14-dev clang-format
 )
 [ "${1:-}" = "--with-linuxcnc" ] && pkgs+=(linuxcnc-uspace)

@@ -110,9 +110,15 @@ struct ProgramEnd {};
 using OpKind = std::variant<Traverse, Feed, Arc, Spline, Probe, Dwell, ToolChange, Spindle, Coolant,
                             Hole, Pocket, Comment, ProgramEnd>;
 
+// Why a move was made: the program's own contour, or the expansion of a
+// canned cycle, pattern or pocket (a part drawing leaves those out and draws
+// their `Hole`/`Pocket` feature), or a tool-change excursion.
+enum class Origin : unsigned char { Program, Cycle, ToolChange };
+
 struct Op {
   OpKind kind;
   core::SourceLoc src;  // the block that made it
+  Origin origin = Origin::Program;
 };
 
 // The name of an op in the trace ("traverse", "feed", ...).

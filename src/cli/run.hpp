@@ -23,6 +23,7 @@ struct RunOptions {
   long max_iterations = 10'000'000;
   long max_total_iterations = 10'000'000;
   bool block_delete = false;
+  bool ignore_cutter_comp = false;  // set by a verb (draw --view part), not a flag
 };
 
 void add_run_options(CLI::App& app, RunOptions& o);

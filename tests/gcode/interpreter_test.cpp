@@ -652,7 +652,8 @@ TEST(InterpOffsets, G30GoesToThePositionStoredByG301) {
   EXPECT_DOUBLE_EQ(r->param(5183), 3.0);
 }
 
-// Regression (a bug the tests found, fixed): the work offset and G92 offset held by the parameters at the start
+// Regression (a bug the tests found, fixed): the work offset and G92 offset held by the parameters
+// at the start
 // (#5220 and #5221.., #5210 and #5211.., as a var file gives them) are not
 // applied until the program selects a system or runs G92.3. LinuxCNC restores
 // both when the interpreter starts (rs274ngc_pre.cc, Interp::init: origin
@@ -1042,10 +1043,10 @@ TEST(InterpParams, DivisionByZeroInAWord) {
   EXPECT_EQ(errors[0].loc.line, 2u);
 }
 
-// Regression (a bug the tests found, fixed): a parameter index that evaluates to NaN (inf - inf) passes
-// parameter_index() and is read out of bounds. Expected: an error
-// (E_PARAMETER_OUT_OF_RANGE) on line 1. Actual: undefined behaviour; the
-// `usina trace` binary dies with SIGSEGV on this program.
+// Regression (a bug the tests found, fixed): a parameter index that evaluates to NaN (inf - inf)
+// passes parameter_index() and is read out of bounds. Expected: an error (E_PARAMETER_OUT_OF_RANGE)
+// on line 1. Actual: undefined behaviour; the `usina trace` binary dies with SIGSEGV on this
+// program.
 TEST(InterpParams, NotANumberParameterIndexIsAnError) {
   auto r = run("#1=#[[10**400]-[10**400]]\nM2\n");
   EXPECT_FALSE(r->ok);
@@ -1206,12 +1207,11 @@ TEST(InterpControl, LoopLimitCountsOneRunOfAWhileLoop) {
          std::move(o));
 }
 
-// Regression (a bug the tests found, fixed): the loop counter of `repeat` is never reset when the loop finishes
-// normally (EndRepeat pops loops_ but does not erase iterations_), so an
-// inner repeat counts its iterations over every run of the outer loop.
-// Expected: 10 x 10 nested repeats with max_loop_iterations = 50 run
-// (no single run exceeds 10). Actual: E_TOO_MANY_ITERATIONS on the inner
-// endrepeat once the total passes 50. `while` loops reset correctly.
+// Regression (a bug the tests found, fixed): the loop counter of `repeat` is never reset when the
+// loop finishes normally (EndRepeat pops loops_ but does not erase iterations_), so an inner repeat
+// counts its iterations over every run of the outer loop. Expected: 10 x 10 nested repeats with
+// max_loop_iterations = 50 run (no single run exceeds 10). Actual: E_TOO_MANY_ITERATIONS on the
+// inner endrepeat once the total passes 50. `while` loops reset correctly.
 TEST(InterpControl, LoopLimitCountsOneRunOfARepeat) {
   InterpOptions o;
   o.max_loop_iterations = 50;
@@ -1220,8 +1220,8 @@ TEST(InterpControl, LoopLimitCountsOneRunOfARepeat) {
   EXPECT_EQ(r->ends().size(), 100u);
 }
 
-// Regression (a bug the tests found, fixed): as for repeat: a do-while's counter (keyed by its `do`) is not reset
-// when its closing `while` is false. Expected: an inner do-while of 10 runs
+// Regression (a bug the tests found, fixed): as for repeat: a do-while's counter (keyed by its
+// `do`) is not reset when its closing `while` is false. Expected: an inner do-while of 10 runs
 // inside an outer loop of 10 with max_loop_iterations = 50 runs. Actual:
 // E_TOO_MANY_ITERATIONS.
 TEST(InterpControl, LoopLimitCountsOneRunOfADoWhile) {
@@ -1240,11 +1240,10 @@ TEST(InterpControl, LoopLimitCountsOneRunOfADoWhile) {
          std::move(o));
 }
 
-// Regression (a bug the tests found, fixed): `break` erases the counter of the break statement's own index entry,
-// not the loop's, so a while loop left by break keeps its count for its next
-// run. Expected: an inner while left by break after 9 runs, inside an outer
-// loop of 10, with max_loop_iterations = 50, runs. Actual:
-// E_TOO_MANY_ITERATIONS.
+// Regression (a bug the tests found, fixed): `break` erases the counter of the break statement's
+// own index entry, not the loop's, so a while loop left by break keeps its count for its next run.
+// Expected: an inner while left by break after 9 runs, inside an outer loop of 10, with
+// max_loop_iterations = 50, runs. Actual: E_TOO_MANY_ITERATIONS.
 TEST(InterpControl, LoopLimitCountsOneRunOfAWhileLeftByBreak) {
   InterpOptions o;
   o.max_loop_iterations = 50;
@@ -1544,8 +1543,8 @@ TEST(InterpControl, BreakOutsideALoop) {
   expect_error(*r, Code::UnclosedBlock, 2, 1);
 }
 
-// Regression (a bug the tests found, fixed): a closing statement with no opening one is not E_UNMATCHED_CONTROL:
-// `o1 endwhile` alone is reported as E_UNCLOSED_CONTROL_BLOCK ("o1 endwhile
+// Regression (a bug the tests found, fixed): a closing statement with no opening one is not
+// E_UNMATCHED_CONTROL: `o1 endwhile` alone is reported as E_UNCLOSED_CONTROL_BLOCK ("o1 endwhile
 // has no while"), and `o1 else` / `o1 endif` without an `o1 if` are accepted
 // silently (else jumps to the endif; endif does nothing). Expected:
 // E_UNMATCHED_CONTROL at the stray statement in each case.
@@ -1812,8 +1811,8 @@ TEST(InterpCheck, ErrorStopsTheRunAndNothingAfterItIsEmitted) {
   EXPECT_EQ(r->interp->state().pos[0], 1.0);
 }
 
-// Regression (a bug the tests found, fixed): DESIGN.md and state.hpp: "the block works on a copy that replaces the
-// state only when the block succeeded, so a failed block changes nothing".
+// Regression (a bug the tests found, fixed): DESIGN.md and state.hpp: "the block works on a copy
+// that replaces the state only when the block succeeded, so a failed block changes nothing".
 // Execute writes state_ directly, so the G20 of a block whose motion then
 // fails stays in effect. Expected: units still mm after the failed block.
 // Actual: inch.
@@ -1957,6 +1956,37 @@ TEST(InterpPrograms, BadArcIsReportedAtItsBlock) {
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(core::code_name(errors[0].code), core::code_name(Code::ArcRadiusTooSmall));
   EXPECT_EQ(errors[0].loc.line, 7u);
+}
+
+// A part drawing leaves out what a canned cycle expands: its ops say so.
+TEST(Origin, CycleMovesAreMarkedAndTheirBlockIsNot) {
+  auto r = run("G0 X0 Y0 Z5\nG81 X10 Y0 Z-3 R1 F100\nG80\nG1 X20 F100\nM2\n");
+  ASSERT_TRUE(r->ok);
+  int cycle = 0;
+  for (const canon::Op& op : r->ops()) {
+    if (!canon::is_motion(op.kind)) continue;
+    const bool in_cycle = op.src.line == 2;
+    EXPECT_EQ(op.origin == canon::Origin::Cycle, in_cycle) << canon::op_name(op.kind);
+    cycle += in_cycle ? 1 : 0;
+  }
+  EXPECT_GE(cycle, 3);
+}
+
+// With compensation ignored the moves are the programmed contour.
+TEST(Origin, IgnoredCutterCompGivesTheProgrammedPath) {
+  InterpOptions opts;
+  ToolEntry t;
+  t.number = 1;
+  t.diameter = 10.0;
+  opts.tools.set(t);
+  opts.ignore_cutter_comp = true;
+  auto r = run("T1 M6\nG0 X0 Y0\nG41 G1 X10 Y0 F100\nX10 Y10\nG40 X0 Y10\nM2\n", opts);
+  ASSERT_TRUE(r->ok);
+  const auto ends = r->ends();
+  ASSERT_GE(ends.size(), 4U);
+  EXPECT_EQ(show(ends[ends.size() - 3]), show({10, 0, 0}));
+  EXPECT_EQ(show(ends[ends.size() - 2]), show({10, 10, 0}));
+  EXPECT_EQ(show(ends.back()), show({0, 10, 0}));
 }
 
 }  // namespace

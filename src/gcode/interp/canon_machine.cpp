@@ -34,7 +34,7 @@ std::optional<double> CanonMachine::feed_rate() const {
 }
 
 void CanonMachine::emit(canon::OpKind kind) {
-  sink_.on(canon::Op{std::move(kind), src_});
+  sink_.on(canon::Op{std::move(kind), src_, origin_});
 }
 
 void CanonMachine::traverse_axes(const Axes& to) {

@@ -42,6 +42,9 @@ class CanonMachine final : public MotionTarget {
 
   const core::SourceLoc& source() const { return src_; }
 
+  // What the ops emitted from now on are for (Origin::Cycle inside a cycle).
+  void set_origin(canon::Origin origin) { origin_ = origin; }
+
   // The feed rate in effect for the moves emitted from now on (the
   // interpreter's F may wait behind a move held by cutter compensation).
   void set_feed(double feed, FeedMode mode) {
@@ -65,6 +68,7 @@ class CanonMachine final : public MotionTarget {
   canon::Sink& sink_;
   ModalState* state_;
   core::SourceLoc src_;
+  canon::Origin origin_ = canon::Origin::Program;
   double hole_diameter_ = 0.0;
   double feed_ = 0.0;
   Vec3 last_;  // absolute

@@ -41,7 +41,10 @@ bool Interpreter::cycle(BlockWords& w, GCode g, GCode previous) {
   cm.peck_clearance = options_.peck_clearance_mm;
   cm.length_unit = core::mm_per(state_.units);
   cm.diameter_mode = state_.lathe_diameter;
-  if (auto e = cycles_.run(cw, cm, machine_)) return error(*e);
+  machine_.set_origin(canon::Origin::Cycle);
+  auto e = cycles_.run(cw, cm, machine_);
+  machine_.set_origin(canon::Origin::Program);
+  if (e) return error(*e);
   set_xyz(state_.pos, cycles_.end_point());
   return true;
 }

@@ -33,6 +33,9 @@ struct InterpOptions {
   int max_call_depth = 200;
   double spline_tolerance_mm = 0.001;
   bool block_delete = false;  // '/' blocks skipped (the operator's switch; off as in LinuxCNC)
+  // G41/G42 are checked but offset nothing: the moves are the programmed
+  // contour (what a part drawing shows), not the tool centre.
+  bool ignore_cutter_comp = false;
   ToolTable tools;
 };
 
