@@ -283,6 +283,42 @@ EXPLAIN = {
         "The program uses a feature usina does not implement yet (e.g. LinuxCNC's lathe "
         "roughing cycles `G71`/`G72`).",
         "Rewrite the part without it, or report the program so the feature gets priority."),
+    # program checks (usina stats)
+    "W_OVERTRAVEL": (
+        "`usina stats`: a move takes an axis beyond the travel limits of the machine profile "
+        "(`min`/`max` of `[axes.x]` ...), by the amount the message gives. Arcs are checked "
+        "by their true extent, not only their end points. Positions are those of the trace: "
+        "absolute, after work offsets, so a program whose offsets are not set is checked as "
+        "if its zero were the machine's zero. Reported at the first move of each excursion.",
+        "Check the work offsets (`--var-file`), the machine profile, or move the part."),
+    "W_FEED_WITHOUT_RATE": (
+        "`usina stats`: a feed move has no feed rate in mm/min (inverse time `G93` or feed "
+        "per revolution `G95`), so its time cannot be known from the move alone. It is timed "
+        "at the axes' max feed, which makes the cycle time a lower bound.",
+        "Nothing, when the program is meant so; the time reported is the least it can take."),
+    "W_FEED_SPINDLE_STOPPED": (
+        "`usina stats`: a feed move (`G1`, `G2`, `G3`, a spline or a cycle's feed) runs with "
+        "the spindle stopped: no `M3`/`M4` since the start, or after `M5` or `M6` (which "
+        "stops the spindle). A cutter would rub or break.",
+        "Start the spindle (`S... M3`) before cutting; ignore for a plotter, laser or drag "
+        "knife."),
+    "W_RAPID_INTO_STOCK": (
+        "`usina stats --stock-top Z`: a rapid move (`G0`) ends below the top of the stock, "
+        "or moves across X/Y while below it, so it would cut material at rapid speed. A "
+        "retract straight up from inside the cut is not reported.",
+        "Feed (`G1`) into the material, or rapid to a clearance height first; check "
+        "`--stock-top`."),
+    "W_ARC_FEED_REDUCED": (
+        "`usina stats`: an arc is too tight for its feed: at the profile's acceleration `a` "
+        "the centripetal acceleration v²/r allows at most v = sqrt(a r), so the control runs "
+        "the arc slower than programmed, by the percentage the message gives.",
+        "Nothing, if the slower feed suits the cut; otherwise a larger radius or a lower "
+        "feed keeps the chip load the programmer meant."),
+    "W_FEED_CLAMPED": (
+        "`usina stats`: the programmed feed is above what the axes allow along the move "
+        "(each axis's `max_feed` of the machine profile, projected on the move's direction). "
+        "The control clamps it; the time is computed at the clamped feed.",
+        "Lower the feed, or check the profile's `max_feed`."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -67,4 +67,11 @@
   X(Message, N_MESSAGE)                            \
   X(Unsupported, E_UNSUPPORTED)                    \
   /* machine profiles (sim) */                     \
-  X(BadMachineProfile, E_BAD_MACHINE_PROFILE)
+  X(BadMachineProfile, E_BAD_MACHINE_PROFILE)      \
+  /* program checks (usina stats) */               \
+  X(OverTravel, W_OVERTRAVEL)                      \
+  X(FeedWithoutRate, W_FEED_WITHOUT_RATE)          \
+  X(FeedSpindleStopped, W_FEED_SPINDLE_STOPPED)    \
+  X(RapidIntoStock, W_RAPID_INTO_STOCK)            \
+  X(ArcFeedReduced, W_ARC_FEED_REDUCED)            \
+  X(FeedClamped, W_FEED_CLAMPED)

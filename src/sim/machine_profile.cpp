@@ -135,6 +135,10 @@ std::optional<MachineProfile> read_machine_profile(std::string_view toml_text,
   if (const toml::table* c = r.section(root, "cost", false)) {
     p.cost_per_hour = r.number(*c, "cost", "per_hour", 0.0);
   }
+  if (const toml::table* pl = r.section(root, "planner", false)) {
+    const double scale = p.file_in_inch ? core::kMmPerInch : 1.0;
+    p.junction_deviation = r.number(*pl, "planner", "junction_deviation", 0.01 / scale) * scale;
+  }
   if (!r.ok()) return std::nullopt;
   return p;
 }

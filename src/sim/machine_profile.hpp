@@ -30,6 +30,9 @@ struct MachineProfile {
   double tool_change_time = 0.0;    // s
   double block_time = 0.0;          // s of processing per block
   double cost_per_hour = 0.0;
+  // [planner] junction_deviation: how far inside a sharp corner the path may
+  // round it (grbl's junction deviation), setting the speed through corners.
+  double junction_deviation = 0.01;  // mm
 };
 
 // Reads a profile; every problem is a diagnostic (E_BAD_MACHINE_PROFILE)

@@ -1,0 +1,84 @@
+#include "sim/planner.hpp"
+
+#include <algorithm>
+
+#include "sim/planner_geometry.hpp"
+
+namespace usina::sim {
+
+Planner::Planner(PlannerSettings settings) : settings_(settings) {
+  ring_.resize(std::max<std::size_t>(settings_.lookahead, 2));
+}
+
+AccountTime& Planner::account(std::uint32_t id) {
+  if (id >= accounts_.size()) accounts_.resize(id + 1);
+  return accounts_[id];
+}
+
+void Planner::add(const PlannedMove& move) {
+  if (move.length <= 0.0 || move.cruise <= 0.0) return;
+  account(move.account).exact_stop_s += move_time(move.length, 0.0, 0.0, move.cruise, move.kin);
+  if (count_ == ring_.size()) run_oldest();
+  double max_entry = 0.0;
+  if (moving_) {
+    const double corner =
+        junction_speed(last_.end_dir, move.start_dir, settings_.junction_deviation,
+                       std::min(last_.kin.accel, move.kin.accel));
+    max_entry = std::min({corner, last_.cruise, move.cruise});
+  }
+  Block& b = at(count_++);
+  b.move = move;
+  b.max_entry = max_entry;
+  b.backward = std::min(max_entry, reachable_speed(0.0, move.length, move.kin));
+  // The forward pass plans the entry; a block alone in the buffer comes
+  // after a stop (the buffer never runs empty while moving) and enters at rest.
+  b.entry = 0.0;
+  last_ = move;
+  moving_ = true;
+  plan_backward_forward();
+}
+
+void Planner::plan_backward_forward() {
+  // Backward: raise the entries the new block's length allows, up to the
+  // first block whose entry does not change (index 0's entry is fixed).
+  std::size_t first_changed = count_ - 1;
+  for (std::size_t k = count_ - 1; k-- > 1;) {
+    Block& b = at(k);
+    const double raised =
+        std::min(b.max_entry, reachable_speed(at(k + 1).backward, b.move.length, b.move.kin));
+    if (raised == b.backward) break;
+    b.backward = raised;
+    first_changed = k;
+  }
+  // Forward: what each block can reach from the one before it.
+  for (std::size_t k = std::max<std::size_t>(first_changed, 1); k < count_; ++k) {
+    const Block& prev = at(k - 1);
+    at(k).entry =
+        std::min(at(k).backward, reachable_speed(prev.entry, prev.move.length, prev.move.kin));
+  }
+}
+
+void Planner::run_oldest() {
+  const Block& b = at(0);
+  const double exit = count_ > 1 ? at(1).entry : 0.0;
+  account(b.move.account).lookahead_s +=
+      move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin);
+  head_ = (head_ + 1) % ring_.size();
+  --count_;
+}
+
+void Planner::stop() {
+  while (count_ > 0)
+    run_oldest();
+  moving_ = false;
+}
+
+void Planner::wait(double seconds, std::uint32_t id) {
+  stop();
+  if (seconds <= 0.0) return;
+  AccountTime& a = account(id);
+  a.lookahead_s += seconds;
+  a.exact_stop_s += seconds;
+}
+
+}  // namespace usina::sim

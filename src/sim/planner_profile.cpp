@@ -1,0 +1,98 @@
+#include "sim/planner_profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace usina::sim {
+
+double change_time(double dv, const Kinematics& k) {
+  dv = std::abs(dv);
+  if (k.jerk <= 0.0) return dv / k.accel;
+  if (dv * k.jerk <= k.accel * k.accel) return 2.0 * std::sqrt(dv / k.jerk);
+  return dv / k.accel + k.accel / k.jerk;
+}
+
+double change_distance(double v_a, double v_b, const Kinematics& k) {
+  return 0.5 * (v_a + v_b) * change_time(v_b - v_a, k);
+}
+
+namespace {
+
+// S-curve, acceleration below its limit: with s = sqrt(dv), the distance
+// d = (2 v + s²) s / sqrt(j), i.e. s³ + 2 v s − d sqrt(j) = 0, whose one
+// real root Cardano's formula gives (then one Newton step for rounding).
+double jerk_limited_rise(double v_end, double length, double jerk) {
+  const double p = 2.0 * v_end;
+  const double q = length * std::sqrt(jerk);
+  const double disc = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
+  double s = std::cbrt(q / 2.0 + disc) + std::cbrt(q / 2.0 - disc);
+  const double f = s * s * s + p * s - q;
+  const double df = 3.0 * s * s + p;
+  if (df > 0.0) s -= f / df;
+  return std::max(0.0, s * s);
+}
+
+// S-curve reaching the acceleration limit: d = (v + dv/2)(dv/a + a/j), a
+// quadratic in dv: dv²/(2a) + dv (v/a + a/(2j)) + (v a/j − d) = 0.
+double accel_limited_rise(double v_end, double length, const Kinematics& k) {
+  const double a2 = 1.0 / (2.0 * k.accel);
+  const double b = v_end / k.accel + k.accel / (2.0 * k.jerk);
+  const double c = v_end * k.accel / k.jerk - length;
+  return (-b + std::sqrt(std::max(0.0, b * b - 4.0 * a2 * c))) / (2.0 * a2);
+}
+
+}  // namespace
+
+double reachable_speed(double v_end, double length, const Kinematics& k) {
+  if (length <= 0.0) return v_end;
+  if (k.jerk <= 0.0) return std::sqrt(v_end * v_end + 2.0 * k.accel * length);
+  const double dv = jerk_limited_rise(v_end, length, k.jerk);
+  if (dv * k.jerk <= k.accel * k.accel) return v_end + dv;
+  return v_end + accel_limited_rise(v_end, length, k);
+}
+
+namespace {
+
+// Distance to rise from both ends to `peak` and back.
+double up_and_down(double v_entry, double v_exit, double peak, const Kinematics& k) {
+  return change_distance(v_entry, peak, k) + change_distance(peak, v_exit, k);
+}
+
+// The peak speed of a move too short to cruise: the closed form for a
+// trapezoid, bisection for an S-curve (the distance rises with the peak).
+double peak_speed(double length, double v_entry, double v_exit, double v_cruise,
+                  const Kinematics& k) {
+  if (k.jerk <= 0.0) {
+    const double peak2 = (2.0 * k.accel * length + v_entry * v_entry + v_exit * v_exit) / 2.0;
+    return std::clamp(std::sqrt(peak2), std::max(v_entry, v_exit), v_cruise);
+  }
+  double lo = std::max(v_entry, v_exit);
+  double hi = v_cruise;
+  for (int i = 0; i < 60 && hi - lo > 1e-9 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (up_and_down(v_entry, v_exit, mid, k) > length ? hi : lo) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+double move_time(double length, double v_entry, double v_exit, double v_cruise,
+                 const Kinematics& k) {
+  if (length <= 0.0) return 0.0;
+  v_cruise = std::max({v_cruise, v_entry, v_exit});
+  const double ramps = up_and_down(v_entry, v_exit, v_cruise, k);
+  if (ramps <= length) {
+    return change_time(v_cruise - v_entry, k) + change_time(v_cruise - v_exit, k) +
+           (length - ramps) / v_cruise;
+  }
+  const double low = std::max(v_entry, v_exit);
+  if (up_and_down(v_entry, v_exit, low, k) >= length) {
+    // Only the speed change fits (entry and exit planned at the limit).
+    return v_entry + v_exit > 0.0 ? 2.0 * length / (v_entry + v_exit) : 0.0;
+  }
+  const double peak = peak_speed(length, v_entry, v_exit, v_cruise, k);
+  return change_time(peak - v_entry, k) + change_time(peak - v_exit, k);
+}
+
+}  // namespace usina::sim

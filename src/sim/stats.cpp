@@ -1,0 +1,375 @@
+#include "sim/stats.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace usina::sim {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Axes6 axes_of(const Vec3& p, const canon::Abc& abc) {
+  return {p.x, p.y, p.z, abc[0], abc[1], abc[2]};
+}
+
+Vec3 xyz(const Axes6& a) {
+  return {a[0], a[1], a[2]};
+}
+
+// Path length: the X Y Z distance, or for a move of rotary axes only their
+// distance in degrees (LinuxCNC's rule for the feed of such moves).
+double path_length(const Axes6& from, const Axes6& to) {
+  const double linear = distance(xyz(from), xyz(to));
+  if (linear > 0.0) return linear;
+  return std::hypot(to[3] - from[3], to[4] - from[4], to[5] - from[5]);
+}
+
+Vec3 direction(const Axes6& from, const Axes6& to) {
+  const Vec3 d = xyz(to) - xyz(from);
+  const double n = norm(d);
+  return n > 0.0 ? d / n : Vec3{};
+}
+
+}  // namespace
+
+MachineProfile default_machine_profile() {
+  MachineProfile m;
+  m.name = "default (generic 3-axis mill, no travel limits)";
+  for (std::size_t i = 0; i < 3; ++i) {
+    AxisLimits& a = m.axes[i];
+    a.present = true;
+    a.min = -kInf;
+    a.max = kInf;
+    a.rapid = 10000.0;
+    a.max_feed = 5000.0;
+    a.accel = 500.0;
+  }
+  m.spindle_max_rpm = 24000.0;
+  m.spindle_accel_time = 2.0;
+  m.tool_change_time = 10.0;
+  return m;
+}
+
+void Box::add(const Vec3& p) {
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = std::min(lo[i], p[i]);
+    hi[i] = std::max(hi[i], p[i]);
+  }
+}
+
+void Box::add(const Box& b) {
+  if (b.empty()) return;
+  add(b.lo);
+  add(b.hi);
+}
+
+void Counts::add(const Counts& c) {
+  rapids += c.rapids;
+  feeds += c.feeds;
+  arcs += c.arcs;
+  splines += c.splines;
+  probes += c.probes;
+  holes += c.holes;
+  tool_changes += c.tool_changes;
+  dwells += c.dwells;
+}
+
+StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
+                     core::DiagnosticSink& diags)
+    : machine_(machine),
+      options_(options),
+      checks_(machine_, options.stock_top, options.max_reports_per_check, diags),
+      planner_(PlannerSettings{machine.junction_deviation, options.lookahead}) {
+  tools_.emplace_back();
+  slot_of_tool_[0] = 0;
+}
+
+void StatsSink::on(const canon::Op& op) {
+  std::visit(
+      [&](const auto& k) {
+        using T = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<T, canon::Traverse>) {
+          traverse(op, k);
+        } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          feed(op, k.to, k.abc, k.f);
+        } else if constexpr (std::is_same_v<T, canon::Arc>) {
+          arc(op, k);
+        } else if constexpr (std::is_same_v<T, canon::Spline>) {
+          spline(op, k);
+        } else if constexpr (std::is_same_v<T, canon::Probe>) {
+          probe(op, k);
+        } else if constexpr (std::is_same_v<T, canon::Dwell>) {
+          ++tool().counts.dwells;
+          planner_.wait(k.s, account(Other));
+        } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
+          tool_change(k);
+        } else if constexpr (std::is_same_v<T, canon::Spindle>) {
+          spindle(k);
+        } else if constexpr (std::is_same_v<T, canon::Hole>) {
+          ++tool().counts.holes;
+        } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
+          planner_.stop();
+        }
+      },
+      op.kind);
+}
+
+void StatsSink::finish() {
+  planner_.stop();
+}
+
+// [times] block: a control that processes a block in t s cannot run blocks
+// shorter than t, so a block's speed is at most its length / t.
+double StatsSink::block_limit(double length, double cruise) const {
+  if (machine_.block_time <= 0.0) return cruise;
+  return std::min(cruise, length / machine_.block_time);
+}
+
+void StatsSink::moved_to(const Axes6& to) {
+  pos_ = to;
+}
+
+double StatsSink::straight(const Axes6& to, double cruise, Kind kind) {
+  const double length = path_length(pos_, to);
+  const AxisShare share = straight_share(pos_, to, length);
+  PlannedMove m;
+  m.length = length;
+  m.start_dir = m.end_dir = direction(pos_, to);
+  m.cruise = block_limit(length, cruise);
+  m.kin = {along_path(machine_, share, AxisRate::Accel),
+           along_path(machine_, share, AxisRate::Jerk)};
+  m.account = account(kind);
+  planner_.add(m);
+  return length;
+}
+
+void StatsSink::traverse(const canon::Op& op, const canon::Traverse& t) {
+  const Axes6 to = axes_of(t.to, t.abc);
+  const Vec3 from = xyz(pos_);
+  Box box;
+  box.add(from);
+  box.add(t.to);
+  checks_.travel(op, box.lo, box.hi, to);
+  checks_.rapid(op, from, t.to);
+  const double length = path_length(pos_, to);
+  const double cruise = along_path(machine_, straight_share(pos_, to, length), AxisRate::Rapid);
+  ToolStats& ts = tool();
+  ts.rapid_mm += straight(to, cruise, Rapid);
+  ++ts.counts.rapids;
+  ts.bounds.add(box);
+  moved_to(to);
+}
+
+double StatsSink::feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f) {
+  int axis = -1;
+  const double limit = along_path(machine_, share, AxisRate::MaxFeed, &axis);  // mm/s
+  const bool has_rate = f.has_value() && *f > 0.0;
+  checks_.feed(op, has_rate, spindle_dir_ != canon::SpindleDir::Off);
+  if (!has_rate) return limit;
+  tool().feed.add(*f);
+  last_feed_ = *f;
+  const double wanted = *f / 60.0;
+  if (wanted > limit * (1.0 + 1e-9)) {
+    checks_.feed_clamped(op, *f, limit * 60.0, axis);
+    return limit;
+  }
+  return wanted;
+}
+
+void StatsSink::feed(const canon::Op& op, const Vec3& to_xyz, const canon::Abc& abc,
+                     std::optional<double> f) {
+  const Axes6 to = axes_of(to_xyz, abc);
+  Box box;
+  box.add(xyz(pos_));
+  box.add(to_xyz);
+  checks_.travel(op, box.lo, box.hi, to);
+  const double length = path_length(pos_, to);
+  const double cruise = feed_speed(op, straight_share(pos_, to, length), f);
+  ToolStats& ts = tool();
+  ts.cutting_mm += straight(to, cruise, Cutting);
+  ++ts.counts.feeds;
+  ts.bounds.add(box);
+  moved_to(to);
+}
+
+void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
+  const std::optional<ArcPath> path = arc_path(xyz(pos_), a);
+  if (!path) {
+    // No radius: the control moves straight to the end.
+    feed(op, a.to, a.abc, a.f);
+    --tool().counts.feeds;
+    ++tool().counts.arcs;
+    return;
+  }
+  const Axes6 to = axes_of(a.to, a.abc);
+  Box box;
+  arc_extent(*path, box.lo, box.hi);
+  checks_.travel(op, box.lo, box.hi, to);
+  // Per-axis share: an in-plane axis moves at most as fast as the tangent.
+  AxisShare share;
+  const double turning = path->radius * std::abs(path->sweep) / path->length;
+  double centripetal = kInf;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const int ax = static_cast<int>(i);
+    const double in_plane = std::hypot(path->u[ax], path->v[ax]);
+    share.share[i] =
+        in_plane * turning + std::abs(path->normal[ax]) * std::abs(path->axial) / path->length;
+    if (in_plane > 1e-9 && machine_.axes[i].present) {
+      centripetal = std::min(centripetal, machine_.axes[i].accel / in_plane);
+    }
+  }
+  double cruise = feed_speed(op, share, a.f);
+  const double arc_limit = std::sqrt(centripetal * path->radius);  // v²/r ≤ a
+  if (cruise > arc_limit) {
+    if (a.f && *a.f > 0.0) {
+      checks_.arc_feed_reduced(op, path->radius, cruise * 60.0, arc_limit * 60.0, centripetal);
+    }
+    cruise = arc_limit;
+  }
+  PlannedMove m;
+  m.length = path->length;
+  m.start_dir = path->start_tangent;
+  m.end_dir = path->end_tangent;
+  m.cruise = block_limit(path->length, cruise);
+  m.kin = {along_path(machine_, share, AxisRate::Accel),
+           along_path(machine_, share, AxisRate::Jerk)};
+  m.account = account(Cutting);
+  planner_.add(m);
+  ToolStats& ts = tool();
+  ts.cutting_mm += path->length;
+  ++ts.counts.arcs;
+  ts.bounds.add(box);
+  moved_to(to);
+}
+
+void StatsSink::spline(const canon::Op& op, const canon::Spline& s) {
+  Box box;
+  box.add(xyz(pos_));
+  double length = 0.0;
+  Vec3 prev = xyz(pos_);
+  for (const Vec3& p : s.points) {
+    box.add(p);
+    length += distance(prev, p);
+    prev = p;
+  }
+  const Axes6 to{s.to.x, s.to.y, s.to.z, pos_[3], pos_[4], pos_[5]};
+  checks_.travel(op, box.lo, box.hi, to);
+  // The spline's feed is checked once, along its chord.
+  const double cruise = feed_speed(op, straight_share(pos_, to, path_length(pos_, to)), s.f);
+  // A spline is one block: the block time limits the whole curve's speed.
+  const double spline_cruise = block_limit(length, cruise);
+  for (const Vec3& p : s.points) {
+    const Axes6 next{p.x, p.y, p.z, pos_[3], pos_[4], pos_[5]};
+    const double seg = path_length(pos_, next);
+    const double seg_cruise = std::min(
+        spline_cruise, along_path(machine_, straight_share(pos_, next, seg), AxisRate::MaxFeed));
+    PlannedMove m;
+    const AxisShare share = straight_share(pos_, next, seg);
+    m.length = seg;
+    m.start_dir = m.end_dir = direction(pos_, next);
+    m.cruise = seg_cruise;
+    m.kin = {along_path(machine_, share, AxisRate::Accel),
+             along_path(machine_, share, AxisRate::Jerk)};
+    m.account = account(Cutting);
+    planner_.add(m);
+    pos_ = next;
+  }
+  ToolStats& ts = tool();
+  ts.cutting_mm += length;
+  ++ts.counts.splines;
+  ts.bounds.add(box);
+  moved_to(to);
+}
+
+// A probe move runs at the feed last programmed (G38 uses F) and stops where
+// the probe trips; taken as reaching its end. Its time counts as "other".
+void StatsSink::probe(const canon::Op& op, const canon::Probe& p) {
+  const Axes6 to = axes_of(p.to, p.abc);
+  Box box;
+  box.add(xyz(pos_));
+  box.add(p.to);
+  checks_.travel(op, box.lo, box.hi, to);
+  const double length = path_length(pos_, to);
+  const double limit = along_path(machine_, straight_share(pos_, to, length), AxisRate::MaxFeed);
+  const double cruise = last_feed_ ? std::min(*last_feed_ / 60.0, limit) : limit;
+  straight(to, cruise, Other);
+  planner_.stop();
+  ToolStats& ts = tool();
+  ++ts.counts.probes;
+  ts.bounds.add(box);
+  moved_to(to);
+}
+
+// Spindle start-up: the profile's accel_time takes the spindle from stop to
+// max_rpm, so a change of speed takes accel_time × |Δrpm| / max_rpm (a
+// reversal: down to 0 and up again). The motion waits for it (M3/M4 are
+// synchronised with motion); M5 does not wait for the spindle to stop.
+void StatsSink::spindle(const canon::Spindle& s) {
+  const bool running = spindle_dir_ != canon::SpindleDir::Off;
+  const bool starts = s.dir != canon::SpindleDir::Off;
+  double change = 0.0;
+  if (starts) {
+    const double from = !running ? 0.0 : spindle_rpm_;
+    change = (running && s.dir != spindle_dir_) ? from + s.rpm : std::abs(s.rpm - from);
+    if (s.rpm > 0.0) tool().rpm.add(s.rpm);
+  }
+  const double full = machine_.spindle_max_rpm > 0.0 ? machine_.spindle_max_rpm : s.rpm;
+  const double seconds =
+      full > 0.0 ? machine_.spindle_accel_time * std::min(change / full, 2.0) : 0.0;
+  planner_.wait(seconds, account(Other));
+  spindle_dir_ = s.dir;
+  spindle_rpm_ = starts ? s.rpm : 0.0;
+}
+
+void StatsSink::tool_change(const canon::ToolChange& t) {
+  auto [it, added] = slot_of_tool_.try_emplace(t.tool, tools_.size());
+  if (added) {
+    tools_.emplace_back();
+    tools_.back().tool = t.tool;
+  }
+  planner_.stop();  // the times so far belong to the tool before
+  tool_slot_ = it->second;
+  ++tool().counts.tool_changes;
+  planner_.wait(machine_.tool_change_time, account(Other));
+}
+
+StatsReport StatsSink::report() const {
+  StatsReport r;
+  const auto& times = planner_.accounts();
+  for (std::size_t slot = 0; slot < tools_.size(); ++slot) {
+    ToolStats t = tools_[slot];
+    const auto take = [&](Kind k, double& into) {
+      const std::size_t id = slot * 3 + k;
+      if (id >= times.size()) return;
+      into = times[id].lookahead_s;
+      t.exact_stop_s += times[id].exact_stop_s;
+    };
+    take(Cutting, t.cutting_s);
+    take(Rapid, t.rapid_s);
+    take(Other, t.other_s);
+    const bool idle = t.total_s() == 0.0 && t.counts.moves() == 0 && t.counts.tool_changes == 0 &&
+                      t.counts.holes == 0;
+    if (!idle) r.tools.push_back(t);
+  }
+  ToolStats& all = r.total;
+  all.tool = -1;
+  for (const ToolStats& t : r.tools) {
+    all.cutting_s += t.cutting_s;
+    all.rapid_s += t.rapid_s;
+    all.other_s += t.other_s;
+    all.exact_stop_s += t.exact_stop_s;
+    all.cutting_mm += t.cutting_mm;
+    all.rapid_mm += t.rapid_mm;
+    all.counts.add(t.counts);
+    all.bounds.add(t.bounds);
+    all.feed.add(t.feed);
+    all.rpm.add(t.rpm);
+  }
+  r.cost = all.total_s() / 3600.0 * machine_.cost_per_hour;
+  r.checks = checks_.counts();
+  return r;
+}
+
+}  // namespace usina::sim

@@ -1,0 +1,104 @@
+#include "sim/stats_checks.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace usina::sim {
+
+namespace {
+
+constexpr double kTolerance = 1e-6;  // mm (DESIGN.md: geometry checks)
+
+}  // namespace
+
+char axis_letter(int axis) {
+  return "XYZABC"[axis >= 0 && axis < 6 ? axis : 0];
+}
+
+StatsChecks::StatsChecks(const MachineProfile& machine, std::optional<double> stock_top,
+                         std::size_t cap, core::DiagnosticSink& diags)
+    : machine_(machine), stock_top_(stock_top), cap_(cap), diags_(diags) {}
+
+void StatsChecks::flag(core::Code code, const canon::Op& op, bool first_of_run,
+                       const std::string& message) {
+  ++counts_[code];
+  if (!first_of_run) return;
+  std::size_t& shown = shown_[code];
+  if (shown >= cap_) return;
+  ++shown;
+  diags_.report({code, core::Severity::Warning, op.src, message});
+}
+
+void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, const Axes6& end) {
+  for (int i = 0; i < 6; ++i) {
+    const AxisLimits& a = machine_.axes[static_cast<std::size_t>(i)];
+    if (!a.present) continue;
+    const double low = i < 3 ? lo[i] : end[static_cast<std::size_t>(i)];
+    const double high = i < 3 ? hi[i] : end[static_cast<std::size_t>(i)];
+    const char* unit = i < 3 ? "mm" : "deg";
+    auto& out = outside_[static_cast<std::size_t>(i)];
+    const bool below = low < a.min - kTolerance;
+    const bool above = high > a.max + kTolerance;
+    if (below) {
+      flag(core::Code::OverTravel, op, !out[0],
+           fmt::format("{} goes to {:.3f} {}, {:.3f} {} below its travel limit {:.3f}",
+                       axis_letter(i), low, unit, a.min - low, unit, a.min));
+    }
+    if (above) {
+      flag(core::Code::OverTravel, op, !out[1],
+           fmt::format("{} goes to {:.3f} {}, {:.3f} {} above its travel limit {:.3f}",
+                       axis_letter(i), high, unit, high - a.max, unit, a.max));
+    }
+    out = {below, above};
+  }
+}
+
+void StatsChecks::feed(const canon::Op& op, bool has_rate, bool spindle_running) {
+  if (!has_rate) {
+    flag(core::Code::FeedWithoutRate, op, !in_no_rate_run_,
+         "feed move without a feed rate in mm/min (inverse time or per revolution): "
+         "timed at the axes' max feed, so the time is a lower bound");
+  }
+  in_no_rate_run_ = !has_rate;
+  if (!spindle_running) {
+    flag(core::Code::FeedSpindleStopped, op, !in_stopped_run_,
+         "feed move with the spindle stopped (no M3/M4 since the start, M5 or M6)");
+  }
+  in_stopped_run_ = !spindle_running;
+}
+
+void StatsChecks::rapid(const canon::Op& op, const Vec3& from, const Vec3& to) {
+  if (!stock_top_) return;
+  const double top = *stock_top_;
+  const bool ends_in = to.z < top - kTolerance;
+  const bool across =
+      from.z < top - kTolerance && std::hypot(to.x - from.x, to.y - from.y) > kTolerance;
+  const bool into = ends_in || across;
+  if (into) {
+    flag(core::Code::RapidIntoStock, op, !in_stock_run_,
+         ends_in ? fmt::format("rapid move down to Z{:.3f}, {:.3f} mm below the stock top "
+                               "Z{:.3f}: it would cut at rapid speed",
+                               to.z, top - to.z, top)
+                 : fmt::format("rapid move across X/Y at Z{:.3f}, {:.3f} mm below the stock "
+                               "top Z{:.3f}: it would cut at rapid speed",
+                               from.z, top - from.z, top));
+  }
+  in_stock_run_ = into;
+}
+
+void StatsChecks::arc_feed_reduced(const canon::Op& op, double radius, double feed, double allowed,
+                                   double accel) {
+  flag(core::Code::ArcFeedReduced, op, true,
+       fmt::format("arc of radius {:.3f} mm too tight for F{:g}: at {:g} mm/s² the centripetal "
+                   "acceleration v²/r allows {:.1f} mm/min, so the feed is reduced by {:.1f} %",
+                   radius, feed, accel, allowed, 100.0 * (1.0 - allowed / feed)));
+}
+
+void StatsChecks::feed_clamped(const canon::Op& op, double feed, double allowed, int axis) {
+  flag(core::Code::FeedClamped, op, true,
+       fmt::format("F{:g} is above the max feed of axis {} along this move: runs at {:.1f} mm/min",
+                   feed, axis_letter(axis), allowed));
+}
+
+}  // namespace usina::sim
