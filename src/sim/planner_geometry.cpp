@@ -43,6 +43,13 @@ double along_path(const MachineProfile& m, const AxisShare& s, AxisRate rate, in
       axis = static_cast<int>(i);
     }
   }
+  // Axes the profile lacks (a rotary axis of a three-axis profile) move at
+  // the rate of the slowest linear axis rather than without limit.
+  if (best == kInf && rate != AxisRate::Jerk) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (m.axes[i].present) best = std::min(best, figure(m.axes[i], rate));
+    }
+  }
   if (limiting != nullptr) *limiting = axis;
   // One axis without jerk limit makes the move trapezoidal: the S-curve
   // needs every moving axis to ramp its acceleration.

@@ -26,9 +26,9 @@ struct AxisShare {
 enum class AxisRate { Rapid, MaxFeed, Accel, Jerk };
 
 // The most the path may have of `rate` given every present axis's limit
-// (infinity when no axis limits it; for Jerk, 0 when every moving axis has
-// jerk 0 — a trapezoidal profile). `limiting` gets the index of the axis
-// that sets it (or -1).
+// (a move of axes the profile lacks only: the slowest linear axis's figure;
+// for Jerk, 0 when a moving axis has jerk 0 — a trapezoidal profile). `limiting` gets the index of
+// the axis that sets it (or -1).
 double along_path(const MachineProfile& m, const AxisShare& s, AxisRate rate,
                   int* limiting = nullptr);
 

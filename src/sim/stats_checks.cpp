@@ -50,7 +50,9 @@ void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, co
            fmt::format("{} goes to {:.3f} {}, {:.3f} {} above its travel limit {:.3f}",
                        axis_letter(i), high, unit, high - a.max, unit, a.max));
     }
-    out = {below, above};
+    // The excursion lasts until a move ends back inside the limits.
+    const double at = end[static_cast<std::size_t>(i)];
+    out = {at<a.min - kTolerance, at> a.max + kTolerance};
   }
 }
 

@@ -1,7 +1,8 @@
 // The checks of `usina stats`, each a warning at the op's source location.
 // A check counts every op it flags, but reports only the first op of each
 // run of flagged ops (a program that stays outside a travel limit for a
-// thousand moves gets one warning there), and at most `cap` per check.
+// thousand moves gets one warning there: an excursion ends with a move that
+// ends inside the limits), and at most `cap` per check.
 #pragma once
 
 #include <array>
