@@ -170,12 +170,8 @@ double StatsSink::feed_speed(const canon::Op& op, const AxisShare& share, std::o
   if (!has_rate) return limit;
   tool().feed.add(*f);
   last_feed_ = *f;
-  const double wanted = *f / 60.0;
-  if (wanted > limit * (1.0 + 1e-9)) {
-    checks_.feed_clamped(op, *f, limit * 60.0, axis);
-    return limit;
-  }
-  return wanted;
+  checks_.feed_limit(op, *f, limit * 60.0, axis);
+  return std::min(*f / 60.0, limit);
 }
 
 void StatsSink::feed(const canon::Op& op, const Vec3& to_xyz, const canon::Abc& abc,
@@ -222,12 +218,10 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   }
   double cruise = feed_speed(op, share, a.f);
   const double arc_limit = std::sqrt(centripetal * path->radius);  // v²/r ≤ a
-  if (cruise > arc_limit) {
-    if (a.f && *a.f > 0.0) {
-      checks_.arc_feed_reduced(op, path->radius, cruise * 60.0, arc_limit * 60.0, centripetal);
-    }
-    cruise = arc_limit;
+  if (a.f && *a.f > 0.0) {
+    checks_.arc_feed(op, path->radius, cruise * 60.0, arc_limit * 60.0, centripetal);
   }
+  cruise = std::min(cruise, arc_limit);
   PlannedMove m;
   m.length = path->length;
   m.start_dir = path->start_tangent;

@@ -89,18 +89,27 @@ void StatsChecks::rapid(const canon::Op& op, const Vec3& from, const Vec3& to) {
   in_stock_run_ = into;
 }
 
-void StatsChecks::arc_feed_reduced(const canon::Op& op, double radius, double feed, double allowed,
-                                   double accel) {
-  flag(core::Code::ArcFeedReduced, op, true,
-       fmt::format("arc of radius {:.3f} mm too tight for F{:g}: at {:g} mm/s² the centripetal "
-                   "acceleration v²/r allows {:.1f} mm/min, so the feed is reduced by {:.1f} %",
-                   radius, feed, accel, allowed, 100.0 * (1.0 - allowed / feed)));
+void StatsChecks::arc_feed(const canon::Op& op, double radius, double feed, double allowed,
+                           double accel) {
+  const bool reduced = allowed < feed * (1.0 - 1e-9);
+  if (reduced) {
+    flag(core::Code::ArcFeedReduced, op, !in_arc_run_,
+         fmt::format("arc of radius {:.3f} mm too tight for F{:g}: at {:g} mm/s² the centripetal "
+                     "acceleration v²/r allows {:.1f} mm/min, so the feed is reduced by {:.1f} %",
+                     radius, feed, accel, allowed, 100.0 * (1.0 - allowed / feed)));
+  }
+  in_arc_run_ = reduced;
 }
 
-void StatsChecks::feed_clamped(const canon::Op& op, double feed, double allowed, int axis) {
-  flag(core::Code::FeedClamped, op, true,
-       fmt::format("F{:g} is above the max feed of axis {} along this move: runs at {:.1f} mm/min",
-                   feed, axis_letter(axis), allowed));
+void StatsChecks::feed_limit(const canon::Op& op, double feed, double allowed, int axis) {
+  const bool clamped = allowed < feed * (1.0 - 1e-9);
+  if (clamped) {
+    flag(core::Code::FeedClamped, op, !in_clamp_run_,
+         fmt::format("F{:g} is above the max feed of axis {} along this move: runs at {:.1f} "
+                     "mm/min",
+                     feed, axis_letter(axis), allowed));
+  }
+  in_clamp_run_ = clamped;
 }
 
 }  // namespace usina::sim

@@ -32,12 +32,12 @@ class StatsChecks {
   // A rapid from `from` to `to`.
   void rapid(const canon::Op& op, const Vec3& from, const Vec3& to);
 
-  // An arc of `radius` whose feed (mm/min) centripetal acceleration `accel` lowers to `allowed`.
-  void arc_feed_reduced(const canon::Op& op, double radius, double feed, double allowed,
-                        double accel);
+  // An arc of `radius` at `feed` (mm/min): when `allowed` is below it, the
+  // centripetal acceleration `accel` lowers the feed to `allowed`.
+  void arc_feed(const canon::Op& op, double radius, double feed, double allowed, double accel);
 
-  // A feed (mm/min) above what axis `axis` allows along the move, `allowed`.
-  void feed_clamped(const canon::Op& op, double feed, double allowed, int axis);
+  // A feed move at `feed` (mm/min): when `allowed` is below it, axis `axis` clamps it.
+  void feed_limit(const canon::Op& op, double feed, double allowed, int axis);
 
   // Ops flagged per check.
   const std::map<core::Code, std::uint64_t>& counts() const { return counts_; }
@@ -56,6 +56,8 @@ class StatsChecks {
   bool in_no_rate_run_ = false;
   bool in_stopped_run_ = false;
   bool in_stock_run_ = false;
+  bool in_clamp_run_ = false;
+  bool in_arc_run_ = false;
 };
 
 // "X", "Y", ... for axis index 0..5.

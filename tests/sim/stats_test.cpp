@@ -360,6 +360,36 @@ TEST(StatsChecks, FeedAboveTheAxisLimitIsClamped) {
   EXPECT_EQ(r.total.feed.max, 9000.0);  // as programmed
 }
 
+// A run of clamped moves is reported at its first move.
+TEST(StatsChecks, ClampedFeedsReportedOncePerRun) {
+  Machine run;
+  spindle_on(run);
+  run(feed_to({10, 0, 0}, 9000), 2);
+  run(feed_to({20, 0, 0}, 9000), 3);
+  run(feed_to({30, 0, 0}, 3000), 4);
+  run(feed_to({40, 0, 0}, 9000), 5);
+  const StatsReport r = run.done();
+  const auto d = run.with(core::Code::FeedClamped);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0]->loc.line, 2u);
+  EXPECT_EQ(d[1]->loc.line, 5u);
+  EXPECT_EQ(r.checks.at(core::Code::FeedClamped), 3u);
+}
+
+TEST(StatsChecks, TightArcsReportedOncePerRun) {
+  Machine run;
+  spindle_on(run);
+  run(half_circle({0, 0, 0}, 1, 1, 6000), 2);
+  run(half_circle({2, 0, 0}, 1, -1, 6000), 3);
+  run(half_circle({4, 0, 0}, 50, 1, 6000), 4);
+  run(half_circle({104, 0, 0}, 1, 1, 6000), 5);
+  const StatsReport r = run.done();
+  const auto d = run.with(core::Code::ArcFeedReduced);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[1]->loc.line, 5u);
+  EXPECT_EQ(r.checks.at(core::Code::ArcFeedReduced), 3u);
+}
+
 // Along the diagonal X = Y each axis moves 0.707 mm per mm: F8000 is fine
 // for the path (5657 mm/min per axis).
 TEST(StatsChecks, FeedLimitIsPerAxis) {
