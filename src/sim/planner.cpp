@@ -29,7 +29,7 @@ void Planner::add(const PlannedMove& move) {
   Block& b = at(count_++);
   b.move = move;
   b.max_entry = max_entry;
-  b.backward = std::min(max_entry, reachable_speed(0.0, move.length, move.kin));
+  b.backward = reachable_speed(0.0, move.length, move.kin, max_entry);
   // The forward pass plans the entry; a block alone in the buffer comes
   // after a stop (the buffer never runs empty while moving) and enters at rest.
   b.entry = 0.0;
@@ -45,7 +45,7 @@ void Planner::plan_backward_forward() {
   for (std::size_t k = count_ - 1; k-- > 1;) {
     Block& b = at(k);
     const double raised =
-        std::min(b.max_entry, reachable_speed(at(k + 1).backward, b.move.length, b.move.kin));
+        reachable_speed(at(k + 1).backward, b.move.length, b.move.kin, b.max_entry);
     if (raised == b.backward) break;
     b.backward = raised;
     first_changed = k;
@@ -53,8 +53,7 @@ void Planner::plan_backward_forward() {
   // Forward: what each block can reach from the one before it.
   for (std::size_t k = std::max<std::size_t>(first_changed, 1); k < count_; ++k) {
     const Block& prev = at(k - 1);
-    at(k).entry =
-        std::min(at(k).backward, reachable_speed(prev.entry, prev.move.length, prev.move.kin));
+    at(k).entry = reachable_speed(prev.entry, prev.move.length, prev.move.kin, at(k).backward);
   }
 }
 

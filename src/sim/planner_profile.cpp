@@ -43,12 +43,17 @@ double accel_limited_rise(double v_end, double length, const Kinematics& k) {
 
 }  // namespace
 
-double reachable_speed(double v_end, double length, const Kinematics& k) {
-  if (length <= 0.0) return v_end;
-  if (k.jerk <= 0.0) return std::sqrt(v_end * v_end + 2.0 * k.accel * length);
-  const double dv = jerk_limited_rise(v_end, length, k.jerk);
-  if (dv * k.jerk <= k.accel * k.accel) return v_end + dv;
-  return v_end + accel_limited_rise(v_end, length, k);
+double reachable_speed(double v_end, double length, const Kinematics& k, double cap) {
+  if (length <= 0.0) return std::min(v_end, cap);
+  if (k.jerk <= 0.0) return std::min(cap, std::sqrt(v_end * v_end + 2.0 * k.accel * length));
+  if (cap <= v_end) return cap;
+  if (cap < std::numeric_limits<double>::infinity() && change_distance(v_end, cap, k) <= length) {
+    return cap;
+  }
+  // The quadratic holds where its root reaches the acceleration limit.
+  const double rise = accel_limited_rise(v_end, length, k);
+  if (rise * k.jerk >= k.accel * k.accel) return std::min(cap, v_end + rise);
+  return std::min(cap, v_end + jerk_limited_rise(v_end, length, k.jerk));
 }
 
 namespace {

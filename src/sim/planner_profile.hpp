@@ -8,6 +8,8 @@
 // acceleration never reaches its limit (dv ≤ a² / j), else dv / a + a / j.
 #pragma once
 
+#include <limits>
+
 namespace usina::sim {
 
 struct Kinematics {
@@ -22,8 +24,11 @@ double change_time(double dv, const Kinematics& k);
 double change_distance(double v_a, double v_b, const Kinematics& k);
 
 // The highest speed from which the move can change to `v_end` within `length`
-// (by symmetry also the highest speed reachable from `v_end`).
-double reachable_speed(double v_end, double length, const Kinematics& k);
+// (by symmetry also the highest speed reachable from `v_end`), at most `cap`:
+// a cap the move can reach is returned at the cost of one distance, without
+// solving for the speed (the planner's usual case, and the S-curve's costly one).
+double reachable_speed(double v_end, double length, const Kinematics& k,
+                       double cap = std::numeric_limits<double>::infinity());
 
 // Time of a move of `length` entering at `v_entry`, leaving at `v_exit`,
 // cruising at most at `v_cruise`: accelerate, cruise, decelerate, the
