@@ -8,14 +8,15 @@
 # 1. builds usina Release in $BUILD_DIR (default build-release/, not build/);
 # 2. generates a 3D surfacing program of N blocks (default 1,000,000, ~30 MB)
 #    in /tmp with bench/gen_surfacing.py;
-# 3. times `usina check` and `usina trace --format jsonl > /dev/null` on it:
+# 3. times `usina check`, `usina trace --format jsonl > /dev/null` and
+#    `usina stats` (default profile, then small_vmc with an S-curve) on it:
 #    wall time with hyperfine (mean of R runs after a warm-up) when it is
 #    installed (apt-get install hyperfine), otherwise the best of R runs of
 #    /usr/bin/time; CPU time (user+sys) and peak memory (max RSS) with
 #    /usr/bin/time -v;
 # 4. prints MB/s (10^6 bytes of G-code a second) by wall and by CPU time, and
 #    peak MiB, against the targets (check >= 100 MB/s, trace >= 30 MB/s,
-#    peak < 32 MB);
+#    peak < 32 MB), and for stats the seconds against its target (< 3 s);
 # 5. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
 set -euo pipefail
 
@@ -29,7 +30,7 @@ while [[ $# -gt 0 ]]; do
     --blocks) blocks="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
     --no-micro) micro=0; shift ;;
-    -h | --help) sed -n "2,19p" "$0"; exit 0 ;;
+    -h | --help) sed -n "2,21p" "$0"; exit 0 ;;
     *) echo "run_bench.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -99,6 +100,28 @@ echo "load before timing: $(cut -d' ' -f1-3 /proc/loadavg) (wall figures need a 
 echo "timing: wall $(command -v hyperfine > /dev/null && echo "= hyperfine mean of $runs runs" || echo "= best of $runs runs of /usr/bin/time"); cpu = least user+sys of $runs runs"
 report check "'$usina' check '$program'" 100
 report trace "'$usina' trace --format jsonl '$program' > /dev/null" 30
+
+# usina stats: the whole command (interpreter, planner, checks, report)
+# against the issue's target of 3 s for 1,000,000 blocks; once with the
+# default profile (trapezoidal), once with an S-curve profile (small_vmc
+# with jerk 20000 mm/s³ on every axis), the planner's costlier case.
+jerk_profile="$tmp/small_vmc_jerk.toml"
+sed 's/^jerk = 0.0.*$//; s/^accel = \(.*\)$/accel = \1\njerk = 20000.0/' \
+  "$root/examples/machines/small_vmc.toml" > "$jerk_profile"
+report_seconds() {  # name, command line, target seconds
+  local wall cpu mib
+  wall="$(wall_seconds "$2")"
+  read -r cpu mib < <(cpu_and_peak "$2")
+  python3 - "$1" "$wall" "$cpu" "$mib" "$3" << 'PY'
+import sys
+name, wall, cpu, mib, target = sys.argv[1], *map(float, sys.argv[2:])
+ok = lambda good: "ok" if good else "MISSED"
+print(f"{name:14} wall {wall:6.3f} s   cpu {cpu:6.3f} s   (target < {target:g} s: wall {ok(wall < target)}, "
+      f"cpu {ok(cpu < target)})   peak {mib:5.1f} MiB")
+PY
+}
+report_seconds "stats" "'$usina' stats '$program' > /dev/null 2>&1" 3
+report_seconds "stats s-curve" "'$usina' stats --machine '$jerk_profile' '$program' > /dev/null 2>&1" 3
 
 if [[ "$micro" -eq 1 ]]; then
   echo
