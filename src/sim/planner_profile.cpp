@@ -63,8 +63,19 @@ double up_and_down(double v_entry, double v_exit, double peak, const Kinematics&
   return change_distance(v_entry, peak, k) + change_distance(peak, v_exit, k);
 }
 
+// d/dpeak of change_distance(v_low, peak): T/2 + (v_low + peak)/2 · dT/ddv.
+double change_distance_slope(double v_low, double peak, const Kinematics& k) {
+  const double dv = peak - v_low;
+  const double slope_t = dv * k.jerk <= k.accel * k.accel
+                             ? 1.0 / std::sqrt(std::max(dv, 1e-300) * k.jerk)
+                             : 1.0 / k.accel;
+  return 0.5 * change_time(dv, k) + 0.5 * (v_low + peak) * slope_t;
+}
+
 // The peak speed of a move too short to cruise: the closed form for a
-// trapezoid, bisection for an S-curve (the distance rises with the peak).
+// trapezoid; for an S-curve Newton's method on the distance (which rises
+// with the peak), kept inside a bracket that bisection narrows when a step
+// leaves it.
 double peak_speed(double length, double v_entry, double v_exit, double v_cruise,
                   const Kinematics& k) {
   if (k.jerk <= 0.0) {
@@ -73,9 +84,14 @@ double peak_speed(double length, double v_entry, double v_exit, double v_cruise,
   }
   double lo = std::max(v_entry, v_exit);
   double hi = v_cruise;
-  for (int i = 0; i < 60 && hi - lo > 1e-9 * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (up_and_down(v_entry, v_exit, mid, k) > length ? hi : lo) = mid;
+  double x = 0.5 * (lo + hi);
+  for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
+    const double g = up_and_down(v_entry, v_exit, x, k) - length;
+    if (std::abs(g) <= 1e-12 * length) return x;
+    (g > 0.0 ? hi : lo) = x;
+    const double slope = change_distance_slope(v_entry, x, k) + change_distance_slope(v_exit, x, k);
+    const double next = x - g / slope;
+    x = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
   }
   return lo;
 }
