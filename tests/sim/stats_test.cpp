@@ -131,6 +131,20 @@ TEST(Stats, BoundsHoldTheArcsTrueExtent) {
   EXPECT_NEAR(r.tools[0].bounds.lo.x, 0.0, 1e-12);
 }
 
+// G0 X100 Y100 with Y's rapid 6000 mm/min (100 mm/s), X's 12000: along the
+// diagonal Y allows 100 × √2 = 141.42 mm/s and 1000 × √2 mm/s², so the move
+// takes L/v + v/a = 141.42/141.42 + 141.42/1414.2 = 1.1 s: Y's own 100 mm
+// at 100 mm/s from rest to rest.
+TEST(Stats, RapidLimitedByTheSlowestAxis) {
+  MachineProfile m = test_profile();
+  m.axes[1].rapid = 6000;
+  Machine run(m);
+  run(canon::Traverse{{100, 100, 0}, {}});
+  const StatsReport r = run.done();
+  EXPECT_NEAR(r.total.rapid_s, 1.1, 1e-9);
+  EXPECT_NEAR(r.total.rapid_mm, 100 * std::sqrt(2.0), 1e-9);
+}
+
 TEST(Stats, SpindleStartUpScalesWithTheSpeed) {
   Machine run;
   spindle_on(run, 5000);                              // 0 → 5000: 1 s
