@@ -43,6 +43,9 @@ class Frame {
   double oy_ = 0.0;
 };
 
+// Adds entities to the current path; a line that starts where the path is
+// goes on from it, so that a chain of segments is one stroke (joins, not a
+// cap at every end: much faster to stroke).
 struct PathOf {
   cairo_t* cr;
   const Frame& frame;
@@ -50,7 +53,11 @@ struct PathOf {
   void operator()(const Line& l) const {
     const Vec2 a = frame.device(l.from);
     const Vec2 b = frame.device(l.to);
-    cairo_move_to(cr, a.x, a.y);
+    double x = 0.0;
+    double y = 0.0;
+    if (cairo_has_current_point(cr)) cairo_get_current_point(cr, &x, &y);
+    if (!cairo_has_current_point(cr) || std::fabs(x - a.x) > 1e-6 || std::fabs(y - a.y) > 1e-6)
+      cairo_move_to(cr, a.x, a.y);
     cairo_line_to(cr, b.x, b.y);
   }
 
