@@ -37,13 +37,11 @@ DrawingBuilder::DrawingBuilder(Drawing& drawing, View view, core::Vec3 start)
   // The standard layers exist even when empty, so that every drawing of a
   // view has the same layer table.
   if (view_ == View::Part) {
-    drawing_.layer(kContourLayer);
-    drawing_.layer(kRapidLayer);
-    drawing_.layer(kHolesLayer);
-    drawing_.layer(kPocketsLayer);
-  } else {
-    drawing_.layer(kRapidLayer);
+    contour_ = &drawing_.layer(kContourLayer);
+    holes_ = &drawing_.layer(kHolesLayer);
+    pockets_ = &drawing_.layer(kPocketsLayer);
   }
+  rapid_ = &drawing_.layer(kRapidLayer);
 }
 
 void DrawingBuilder::on(const canon::Op& op) {
@@ -71,15 +69,20 @@ void DrawingBuilder::on(const canon::Op& op) {
 }
 
 Layer* DrawingBuilder::feed_layer(canon::Origin origin) {
-  if (view_ == View::Part)
-    return origin == canon::Origin::Program ? &drawing_.layer(kContourLayer) : nullptr;
+  if (view_ == View::Part) {
+    if (origin != canon::Origin::Program) return nullptr;
+    auto& runs = contour_->tool_runs;
+    if (runs.empty() || runs.back().tool != tool_)
+      runs.push_back({contour_->entities.size(), tool_});
+    return contour_;
+  }
   if (tool_layer_ == nullptr) tool_layer_ = &drawing_.layer(toolpath_layer(tool_));
   return tool_layer_;
 }
 
 void DrawingBuilder::traverse(const Vec3& to, canon::Origin origin) {
   if (view_ == View::Toolpath || origin == canon::Origin::Program)
-    drawing_.add_line(drawing_.layer(kRapidLayer), xy(pos_), xy(to));
+    drawing_.add_line(*rapid_, xy(pos_), xy(to));
   pos_ = to;
 }
 
@@ -134,7 +137,7 @@ void DrawingBuilder::spline(const canon::Spline& s, canon::Origin origin) {
 
 void DrawingBuilder::hole(const canon::Hole& h) {
   if (view_ != View::Part) return;
-  Layer& layer = drawing_.layer(kHolesLayer);
+  Layer& layer = *holes_;
   const Vec2 c = xy(h.at);
   if (h.diameter > 0.0) {
     drawing_.add_circle(layer, {c, h.diameter / 2.0});
@@ -147,7 +150,7 @@ void DrawingBuilder::hole(const canon::Hole& h) {
 
 void DrawingBuilder::pocket(const canon::Pocket& p) {
   if (view_ != View::Part) return;
-  Layer& layer = drawing_.layer(kPocketsLayer);
+  Layer& layer = *pockets_;
   Vec2 at = p.outline.start;
   for (const canon::OutlineSegment& seg : p.outline.segs) {
     if (!seg.center || seg.turn == 0) {

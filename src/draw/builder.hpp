@@ -44,6 +44,11 @@ class DrawingBuilder final : public canon::Sink {
   core::Vec3 pos_;
   int tool_ = 0;
   Layer* tool_layer_ = nullptr;  // TOOLPATH_T<tool_>, made on first use
+  // The layers of the view, looked up once.
+  Layer* contour_ = nullptr;
+  Layer* rapid_ = nullptr;
+  Layer* holes_ = nullptr;
+  Layer* pockets_ = nullptr;
 };
 
 }  // namespace usina::draw

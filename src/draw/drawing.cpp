@@ -130,7 +130,7 @@ Box view_box(const Box& bounds) {
 Layer& Drawing::layer(std::string_view name) {
   for (auto& l : layers_)
     if (l->name == name) return *l;
-  layers_.push_back(std::make_unique<Layer>(Layer{std::string(name), style_of(name), {}}));
+  layers_.push_back(std::make_unique<Layer>(Layer{std::string(name), style_of(name), {}, {}}));
   return *layers_.back();
 }
 

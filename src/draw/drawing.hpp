@@ -85,10 +85,19 @@ struct LayerStyle {
   bool dashed = false;
 };
 
+// Entities from `first` on were drawn with `tool` (until the next run).
+struct ToolRun {
+  std::size_t first = 0;
+  int tool = 0;
+};
+
 struct Layer {
   std::string name;
   LayerStyle style;
   std::vector<Entity> entities;
+  // On CONTOUR: which tool cut which entities, so that the pictures colour
+  // the contour by tool (the toolpath view has a layer per tool instead).
+  std::vector<ToolRun> tool_runs;
 };
 
 class Drawing {

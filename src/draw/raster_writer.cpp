@@ -6,9 +6,13 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <cairo-pdf.h>
 #include <fmt/format.h>
+
+#include "draw/layer_style.hpp"
 
 namespace usina::draw {
 namespace {
@@ -119,36 +123,73 @@ void set_style(cairo_t* cr, const LayerStyle& style, const Furniture& f) {
   }
 }
 
-void draw_layers(cairo_t* cr, const Drawing& drawing, const Frame& frame, const Furniture& f) {
+// A stretch of a layer's entities drawn in one style: a whole layer, or on
+// CONTOUR the entities one tool cut (in the tool's colour; T0, no tool, in
+// the layer's).
+struct Piece {
+  const Layer* layer;
+  std::size_t first;
+  std::size_t last;  // one past
+  LayerStyle style;
+  std::string label;
+};
+
+std::vector<Piece> pieces_of(const Drawing& drawing) {
+  std::vector<Piece> out;
+  for (const Layer* layer : drawing.layers()) {
+    const std::size_t n = layer->entities.size();
+    const auto& runs = layer->tool_runs;
+    const std::size_t untooled = runs.empty() ? n : std::min(runs.front().first, n);
+    if (untooled > 0) out.push_back({layer, 0, untooled, layer->style, layer->name});
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const std::size_t first = std::min(runs[i].first, n);
+      const std::size_t last = i + 1 < runs.size() ? std::min(runs[i + 1].first, n) : n;
+      if (first >= last) continue;
+      const int tool = runs[i].tool;
+      LayerStyle style = layer->style;
+      if (tool != 0) {
+        style = style_of(toolpath_layer(tool));
+        style.dashed = layer->style.dashed;
+      }
+      out.push_back({layer, first, last, style,
+                     tool == 0 ? layer->name : fmt::format("{} T{}", layer->name, tool)});
+    }
+  }
+  return out;
+}
+
+void draw_pieces(cairo_t* cr, const std::vector<Piece>& pieces, const Frame& frame,
+                 const Furniture& f) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  for (const Layer* layer : drawing.layers()) {
-    set_style(cr, layer->style, f);
-    std::size_t n = 0;
-    for (const Entity& e : layer->entities) {
-      std::visit(PathOf{cr, frame}, e);
-      if (++n % kStrokeBatch == 0) cairo_stroke(cr);
+  for (const Piece& piece : pieces) {
+    set_style(cr, piece.style, f);
+    for (std::size_t i = piece.first; i < piece.last; ++i) {
+      std::visit(PathOf{cr, frame}, piece.layer->entities[i]);
+      if ((i + 1 - piece.first) % kStrokeBatch == 0) cairo_stroke(cr);
     }
     cairo_stroke(cr);
   }
 }
 
-// A sample of each layer that has entities and its name, left to right.
-void draw_legend(cairo_t* cr, const Drawing& drawing, const Furniture& f, double y) {
+// A sample and the label of each piece (once a label), left to right.
+void draw_legend(cairo_t* cr, const std::vector<Piece>& pieces, const Furniture& f, double y) {
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, f.font);
   double x = f.margin;
-  for (const Layer* layer : drawing.layers()) {
-    if (layer->entities.empty()) continue;
-    set_style(cr, layer->style, f);
+  std::vector<std::string> shown;
+  for (const Piece& piece : pieces) {
+    if (std::find(shown.begin(), shown.end(), piece.label) != shown.end()) continue;
+    shown.push_back(piece.label);
+    set_style(cr, piece.style, f);
     cairo_move_to(cr, x, y - f.font / 3.0);
     cairo_line_to(cr, x + 2.0 * f.font, y - f.font / 3.0);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
     cairo_move_to(cr, x + 2.5 * f.font, y);
-    cairo_show_text(cr, layer->name.c_str());
+    cairo_show_text(cr, piece.label.c_str());
     cairo_text_extents_t ext;
-    cairo_text_extents(cr, layer->name.c_str(), &ext);
+    cairo_text_extents(cr, piece.label.c_str(), &ext);
     x += 3.5 * f.font + ext.x_advance;
   }
 }
@@ -187,9 +228,10 @@ void render(cairo_t* cr, const Drawing& drawing, double width, double height, do
   const Furniture f = furniture_for(width, height, line_width);
   const Frame frame(view_box(drawing.bounds()), f.margin, f.margin, width - 2.0 * f.margin,
                     height - 2.0 * f.margin - f.band);
-  draw_layers(cr, drawing, frame, f);
+  const std::vector<Piece> pieces = pieces_of(drawing);
+  draw_pieces(cr, pieces, frame, f);
   const double baseline = height - f.margin;
-  draw_legend(cr, drawing, f, baseline);
+  draw_legend(cr, pieces, f, baseline);
   draw_scale_bar(cr, frame, f, width - f.margin, baseline);
 }
 

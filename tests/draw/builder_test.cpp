@@ -133,6 +133,20 @@ TEST(Builder, PartViewLeavesCycleAndToolChangeMovesOut) {
   EXPECT_EQ(std::get<Line>(c[1]).from, (Vec2{50, 50}));  // the position still follows
 }
 
+TEST(Builder, PartViewRecordsWhichToolCutTheContour) {
+  Drawing d = draw({op(canon::Feed{{5, 5, 0}, 100.0}), op(canon::ToolChange{1, 6.0}),
+                    op(canon::Feed{{10, 0, 0}, 100.0}), op(canon::Feed{{10, 0, -5}, 100.0}),
+                    op(canon::ToolChange{2, 3.0}), op(canon::Feed{{10, 10, 0}, 100.0})});
+  const Layer& c = d.layer(kContourLayer);
+  ASSERT_EQ(c.entities.size(), 3u);
+  ASSERT_EQ(c.tool_runs.size(), 3u);
+  EXPECT_EQ(c.tool_runs[0].tool, 0);
+  EXPECT_EQ(c.tool_runs[1].first, 1u);
+  EXPECT_EQ(c.tool_runs[1].tool, 1);
+  EXPECT_EQ(c.tool_runs[2].first, 2u);
+  EXPECT_EQ(c.tool_runs[2].tool, 2);
+}
+
 TEST(Builder, ToolpathViewDrawsEveryMoveOnTheToolsLayer) {
   Drawing d = draw({op(canon::ToolChange{3, 6.0}), op(canon::Feed{{10, 0, 0}, 100.0}),
                     op(canon::Feed{{10, 5, 0}, 100.0}, Origin::Cycle),

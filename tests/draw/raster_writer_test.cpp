@@ -6,6 +6,7 @@
 #include <cairo.h>
 #include <unistd.h>
 
+#include <array>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -65,6 +66,37 @@ TEST(PngWriter, IsAPngOfTheAskedSizeWithTheLineDrawn) {
     for (int x = 0; x < 10; ++x)
       EXPECT_FALSE(inked(s.get(), x, y)) << x << "," << y;
   unlink(path.c_str());
+}
+
+// The colour of the first inked pixel of the middle column above the legend.
+std::array<unsigned char, 3> middle_ink(const Drawing& d) {
+  const std::string path = temp_name(".png");
+  EXPECT_TRUE(write_png_file(d, path, {640, 480}));
+  Surface s(cairo_image_surface_create_from_png(path.c_str()));
+  unlink(path.c_str());
+  EXPECT_EQ(cairo_surface_status(s.get()), CAIRO_STATUS_SUCCESS);
+  cairo_surface_flush(s.get());
+  for (int y = 0; y < 400; ++y) {
+    if (!inked(s.get(), 320, y)) continue;
+    const unsigned char* p =
+        cairo_image_surface_get_data(s.get()) +
+        static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(s.get()) + 4 * 320;
+    return {p[2], p[1], p[0]};  // RGB24 is stored B, G, R on little-endian machines
+  }
+  ADD_FAILURE() << "no ink";
+  return {};
+}
+
+TEST(PngWriter, ContourIsBlackWithoutToolAndInTheToolsColourWithOne) {
+  Drawing d = one_line();
+  const auto black = middle_ink(d);
+  EXPECT_LT(black[0], 100);
+  EXPECT_LT(black[1], 100);
+  d.layer(kContourLayer).tool_runs.push_back({0, 1});  // T1: red
+  const auto red = middle_ink(d);
+  EXPECT_GT(red[0], 150);
+  EXPECT_LT(red[1], 100);
+  EXPECT_LT(red[2], 100);
 }
 
 TEST(PngWriter, EmptyDrawingIsAWhitePictureWithItsScaleBar) {
