@@ -2,7 +2,7 @@
 # Whole-command timing of the issue's speed and memory targets (a benchmark,
 # not a test: it reports, it never fails on a time).
 #
-#   bench/run_bench.sh [--blocks N] [--runs R] [--no-micro]
+#   bench/run_bench.sh [--blocks N] [--runs R] [--no-micro] [--no-draw]
 #   BUILD_DIR=/tmp/build-bench bench/run_bench.sh
 #
 # 1. builds usina Release in $BUILD_DIR (default build-release/, not build/);
@@ -17,7 +17,11 @@
 # 4. prints MB/s (10^6 bytes of G-code a second) by wall and by CPU time, and
 #    peak MiB, against the targets (check >= 100 MB/s, trace >= 30 MB/s,
 #    peak < 32 MB), and for stats the seconds against its target (< 3 s);
-# 5. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
+# 5. times `usina draw` to DXF, SVG, PNG and PDF (issue 3: < 5 s, < 200 MB)
+#    on the surfacing program and on a spiral of as many blocks made by
+#    bench/gen_spiral.py, in which no two moves merge (the worst case: one
+#    drawing entity a block); --no-draw leaves this out;
+# 6. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -25,12 +29,14 @@ build="${BUILD_DIR:-$root/build-release}"
 blocks=1000000
 runs=5
 micro=1
+draw=1
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --blocks) blocks="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
     --no-micro) micro=0; shift ;;
-    -h | --help) sed -n "2,21p" "$0"; exit 0 ;;
+    --no-draw) draw=0; shift ;;
+    -h | --help) sed -n "2,23p" "$0"; exit 0 ;;
     *) echo "run_bench.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -122,6 +128,32 @@ PY
 }
 report_seconds "stats" "'$usina' stats '$program' > /dev/null 2>&1" 3
 report_seconds "stats s-curve" "'$usina' stats --machine '$jerk_profile' '$program' > /dev/null 2>&1" 3
+report_draw() {  # name, command line: seconds and MiB against the targets of issue 3
+  local wall cpu mib
+  wall="$(wall_seconds "$2")"
+  read -r cpu mib < <(cpu_and_peak "$2")
+  python3 - "$1" "$wall" "$cpu" "$mib" << 'PY'
+import sys
+name, wall, cpu, mib = sys.argv[1], *map(float, sys.argv[2:])
+ok = lambda good: "ok" if good else "MISSED"
+print(f"{name:22} wall {wall:6.3f} s   cpu {cpu:6.3f} s   (target < 5 s: wall {ok(wall < 5)}, "
+      f"cpu {ok(cpu < 5)})   peak {mib:6.1f} MiB (target < 200: {ok(mib < 200)})")
+PY
+}
+
+if [[ "$draw" -eq 1 ]]; then
+  spiral="/tmp/usina-bench-spiral-$blocks.ngc"
+  if [[ ! -s "$spiral" || "$root/bench/gen_spiral.py" -nt "$spiral" ]]; then
+    python3 "$root/bench/gen_spiral.py" "$blocks" "$spiral"
+  fi
+  echo
+  echo "usina draw, $blocks blocks: surfacing (rows merge into lines) and spiral (nothing merges)"
+  for input in surfacing:"$program" spiral:"$spiral"; do
+    for format in dxf svg png pdf; do
+      report_draw "${input%%:*} -> $format" "'$usina' draw '${input#*:}' -o '$tmp/drawing.$format'"
+    done
+  done
+fi
 
 if [[ "$micro" -eq 1 ]]; then
   echo

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   usina::cli::add_check(app);
   usina::cli::add_calc(app);
   usina::cli::add_stats(app);
+  usina::cli::add_draw(app);
   CLI11_PARSE(app, argc, argv);
   return usina::cli::exit_status();
 }

@@ -105,6 +105,7 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   opts.max_total_iterations = o.max_total_iterations;
   opts.block_delete = o.block_delete;
   opts.ignore_cutter_comp = o.ignore_cutter_comp;
+  opts.start = o.start;
   opts.subroutine_path = split_path(o.subroutine_path);
   if (o.file != "-") opts.subroutine_path.push_back(folder_of(o.file));
 

@@ -9,6 +9,7 @@
 
 #include "canon/sink.hpp"
 #include "core/source.hpp"
+#include "core/vec3.hpp"
 
 namespace usina::cli {
 
@@ -24,6 +25,7 @@ struct RunOptions {
   long max_total_iterations = 10'000'000;
   bool block_delete = false;
   bool ignore_cutter_comp = false;  // set by a verb (draw --view part), not a flag
+  core::Vec3 start{};               // set by a verb (draw --start), not a run option
 };
 
 void add_run_options(CLI::App& app, RunOptions& o);

@@ -9,6 +9,7 @@ void add_trace(CLI::App& app);
 void add_check(CLI::App& app);
 void add_calc(CLI::App& app);
 void add_stats(CLI::App& app);
+void add_draw(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();

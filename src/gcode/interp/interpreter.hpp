@@ -37,6 +37,7 @@ struct InterpOptions {
   // contour (what a part drawing shows), not the tool centre.
   bool ignore_cutter_comp = false;
   ToolTable tools;
+  core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
 };
 
 struct BlockWords;

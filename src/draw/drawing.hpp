@@ -1,0 +1,132 @@
+// The drawing model: named layers of plane entities (LINE, ARC, CIRCLE,
+// POLYLINE) in the XY plane, in mm. The writers (DXF, SVG, PNG/PDF) read it;
+// a DrawingBuilder fills it from the canon stream.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/vec3.hpp"
+
+namespace usina::draw {
+
+using core::Vec2;
+
+struct Line {
+  Vec2 from;
+  Vec2 to;
+};
+
+// A true arc: from `start_angle` to `end_angle` (radians, in (-π, π]) about
+// `center`, counter-clockwise when `ccw`, clockwise otherwise; never a full
+// circle (that is a Circle).
+struct Arc {
+  Vec2 center;
+  double radius = 0.0;
+  double start_angle = 0.0;
+  double end_angle = 0.0;
+  bool ccw = true;
+};
+
+struct Circle {
+  Vec2 center;
+  double radius = 0.0;
+};
+
+struct Polyline {
+  std::vector<Vec2> points;
+  bool closed = false;
+};
+
+using Entity = std::variant<Line, Arc, Circle, Polyline>;
+
+// Start and end points of an arc.
+Vec2 arc_start(const Arc& a);
+Vec2 arc_end(const Arc& a);
+// The angle an arc sweeps, in (0, 2π), whichever its direction.
+double arc_sweep(const Arc& a);
+
+// An axis-aligned box; empty until a point is added.
+struct Box {
+  Vec2 min;
+  Vec2 max;
+  bool empty = true;
+
+  void add(Vec2 p);
+  void add(const Box& b);
+
+  double width() const { return empty ? 0.0 : max.x - min.x; }
+
+  double height() const { return empty ? 0.0 : max.y - min.y; }
+};
+
+Box bounds_of(const Entity& e);
+
+// The part of the plane a picture of the drawing shows: its bounds plus a
+// margin of 5 % of the larger side (at least 1 mm). An empty drawing shows
+// the 10 mm square about the origin.
+Box view_box(const Box& bounds);
+
+struct Rgb {
+  unsigned char r = 0;
+  unsigned char g = 0;
+  unsigned char b = 0;
+};
+
+// How a layer is drawn: an AutoCAD colour index for DXF, the colour of the
+// SVG/PNG/PDF pictures (on white paper), dashed or continuous.
+struct LayerStyle {
+  int aci = 7;
+  Rgb rgb;
+  bool dashed = false;
+};
+
+// Entities from `first` on were drawn with `tool` (until the next run).
+struct ToolRun {
+  std::size_t first = 0;
+  int tool = 0;
+};
+
+struct Layer {
+  std::string name;
+  LayerStyle style;
+  std::vector<Entity> entities;
+  // On CONTOUR: which tool cut which entities, so that the pictures colour
+  // the contour by tool (the toolpath view has a layer per tool instead).
+  std::vector<ToolRun> tool_runs;
+};
+
+class Drawing {
+ public:
+  // The layer named `name`, made on first use with the style of its name
+  // (layer_style.hpp).
+  Layer& layer(std::string_view name);
+
+  // Layers in the order of the writers: CONTOUR, RAPID, HOLES, POCKETS, then
+  // the tool layers by tool number, then any other by name.
+  std::vector<const Layer*> layers() const;
+
+  // A straight segment; merged into the layer's last line when it goes on
+  // from that line's end in the same direction. Segments shorter than 1 nm
+  // (moves along Z only) add nothing.
+  void add_line(Layer& layer, Vec2 from, Vec2 to);
+  void add_arc(Layer& layer, const Arc& arc);
+  void add_circle(Layer& layer, const Circle& circle);
+  // Consecutive equal points are dropped, collinear runs merged; two points
+  // left become a line, fewer nothing.
+  void add_polyline(Layer& layer, std::vector<Vec2> points, bool closed = false);
+
+  const Box& bounds() const { return bounds_; }
+
+  std::size_t entity_count() const;
+
+ private:
+  std::vector<std::unique_ptr<Layer>> layers_;
+  Box bounds_;
+};
+
+}  // namespace usina::draw
