@@ -19,16 +19,19 @@ double change_distance(double v_a, double v_b, const Kinematics& k) {
 namespace {
 
 // S-curve, acceleration below its limit: with s = sqrt(dv), the distance
-// d = (2 v + s²) s / sqrt(j), i.e. s³ + 2 v s − d sqrt(j) = 0, whose one
-// real root Cardano's formula gives (then one Newton step for rounding).
+// d = (2 v + s²) s / sqrt(j), i.e. f(s) = s³ + 2 v s − d sqrt(j) = 0. f is
+// convex and rising for s ≥ 0, so Newton's method from above (q/p and
+// cbrt(q) both are: take the smaller) falls monotonically onto the root.
 double jerk_limited_rise(double v_end, double length, double jerk) {
   const double p = 2.0 * v_end;
   const double q = length * std::sqrt(jerk);
-  const double disc = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
-  double s = std::cbrt(q / 2.0 + disc) + std::cbrt(q / 2.0 - disc);
-  const double f = s * s * s + p * s - q;
-  const double df = 3.0 * s * s + p;
-  if (df > 0.0) s -= f / df;
+  double s = p * p * p >= q * q ? q / p : std::cbrt(q);
+  for (int i = 0; i < 100; ++i) {
+    const double f = s * s * s + p * s - q;
+    const double step = f / (3.0 * s * s + p);
+    if (!(step > 1e-15 * s)) break;  // at the root (or a rounding step upwards)
+    s -= step;
+  }
   return std::max(0.0, s * s);
 }
 
@@ -50,9 +53,12 @@ double reachable_speed(double v_end, double length, const Kinematics& k, double 
   if (cap < std::numeric_limits<double>::infinity() && change_distance(v_end, cap, k) <= length) {
     return cap;
   }
-  // The quadratic holds where its root reaches the acceleration limit.
-  const double rise = accel_limited_rise(v_end, length, k);
-  if (rise * k.jerk >= k.accel * k.accel) return std::min(cap, v_end + rise);
+  // The change that just reaches the acceleration limit, dv = a²/j, takes
+  // 2a/j and covers (v + a²/2j)·2a/j: a longer move is in the quadratic's range.
+  const double a2_j = k.accel * k.accel / k.jerk;
+  if (length >= (v_end + 0.5 * a2_j) * 2.0 * k.accel / k.jerk) {
+    return std::min(cap, v_end + accel_limited_rise(v_end, length, k));
+  }
   return std::min(cap, v_end + jerk_limited_rise(v_end, length, k.jerk));
 }
 
