@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   usina::cli::add_trace(app);
   usina::cli::add_check(app);
   usina::cli::add_calc(app);
+  usina::cli::add_convert(app);
+  usina::cli::add_gen(app);
   CLI11_PARSE(app, argc, argv);
   return usina::cli::exit_status();
 }

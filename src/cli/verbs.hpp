@@ -8,6 +8,8 @@ namespace usina::cli {
 void add_trace(CLI::App& app);
 void add_check(CLI::App& app);
 void add_calc(CLI::App& app);
+void add_convert(CLI::App& app);
+void add_gen(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();
