@@ -60,7 +60,7 @@ class Writer final : public canon::Sink {
   std::optional<double> feed_;       // F as written
   std::optional<double> last_feed_;  // the last feed rate of any move (for bare holes)
   int plane_ = 17;
-  std::optional<double> speed_;
+  std::optional<long> speed_;
   canon::SpindleDir dir_ = canon::SpindleDir::Off;
   canon::Coolant coolant_;
   std::optional<double> cycle_z_, cycle_r_, cycle_q_;

@@ -1,4 +1,6 @@
 // Tool, spindle and coolant words, each written when it changes.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "post/writer.hpp"
@@ -8,7 +10,7 @@ namespace usina::post {
 void Writer::tool_change(const canon::ToolChange& t) {
   cancel_cycle();
   std::string note;
-  if (t.diameter) note = out_.comment(fmt::format("tool {} d{}", t.tool, out_.number(*t.diameter)));
+  if (t.diameter) note = out_.comment(fmt::format("tool {} d{:g}", t.tool, *t.diameter));
   if (!control_.tool_change_m6 && !options_.tool_change) {
     // grbl has no tool changer: the operator changes the tool at a pause.
     out_.block(out_.comment(fmt::format("change to tool {}", t.tool)));
@@ -26,9 +28,9 @@ void Writer::tool_change(const canon::ToolChange& t) {
 
 void Writer::spindle(const canon::Spindle& s) {
   std::string w;
-  if (s.dir != canon::SpindleDir::Off && speed_ != out_.rounded(s.rpm)) {
-    speed_ = out_.rounded(s.rpm);
-    w = "S" + out_.number(s.rpm);
+  if (s.dir != canon::SpindleDir::Off && speed_ != std::lround(s.rpm)) {
+    speed_ = std::lround(s.rpm);
+    w = fmt::format("S{}", std::lround(s.rpm));  // a whole number: Fanuc rejects "S3000."
   }
   if (s.dir != dir_) {
     dir_ = s.dir;
