@@ -46,6 +46,7 @@ int write_program(const PostOutput& o,
     return 2;
   }
   const int status = produce(*sink, post_diags);
+  sink->finish();  // a post's finish is idempotent; a generator need not call it
   if (status != 0) return status;
   if (post_diags.errors() > 0) return 1;
   if (o.out == "-") {

@@ -1,21 +1,37 @@
 #include "post/block_out.hpp"
 
+#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
 
 namespace usina::post {
 
+BlockOut::BlockOut(std::ostream& out, const Control& control, bool line_numbers)
+    : out_(out),
+      control_(control),
+      line_numbers_(line_numbers || control.always_line_numbers),
+      scale_(std::pow(10.0, control.decimals)) {}
+
 void BlockOut::block(std::string_view words) {
   if (line_numbers_) {
-    out_ << fmt::format("N{:0{}} ", next_n_, control_.line_number_width);
+    buffer_ += fmt::format("N{:0{}} ", next_n_, control_.line_number_width);
     next_n_ += 10;
   }
-  out_ << words << control_.block_end << '\n';
+  buffer_ += words;
+  buffer_ += control_.block_end;
+  buffer_ += '\n';
+  if (buffer_.size() > (1u << 16)) flush();
 }
 
 void BlockOut::raw(std::string_view line) {
-  out_ << line << '\n';
+  buffer_ += line;
+  buffer_ += '\n';
+}
+
+void BlockOut::flush() {
+  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  buffer_.clear();
 }
 
 std::string BlockOut::comment(std::string_view text) const {
@@ -32,22 +48,34 @@ std::string BlockOut::comment(std::string_view text) const {
 }
 
 double BlockOut::rounded(double v) const {
-  const double scale = std::pow(10.0, control_.decimals);
-  const double r = std::round(v * scale) / scale;
+  const double r = std::round(v * scale_) / scale_;
   return r == 0.0 ? 0.0 : r;  // no negative zero
 }
 
 std::string BlockOut::number(double v) const {
-  std::string s = fmt::format("{:.{}f}", rounded(v), control_.decimals);
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0')
-      s.pop_back();
-    if (s.back() == '.' && !control_.always_point) s.pop_back();
-  } else if (control_.always_point) {
-    s += '.';
-  }
-  if (s == "-0" || s == "-0.") s.erase(0, 1);
+  std::string s;
+  append_word(s, '\0', v);
   return s;
+}
+
+void BlockOut::append_word(std::string& words, char letter, double v) const {
+  char buf[64];
+  char* p = buf;
+  if (letter != '\0') {
+    if (!words.empty()) *p++ = ' ';
+    *p++ = letter;
+  }
+  const auto res =
+      std::to_chars(p, buf + sizeof buf, rounded(v), std::chars_format::fixed, control_.decimals);
+  char* end = res.ec == std::errc{} ? res.ptr : p;
+  if (control_.decimals > 0) {
+    while (end[-1] == '0')
+      --end;
+    if (end[-1] == '.' && !control_.always_point) --end;
+  } else if (control_.always_point) {
+    *end++ = '.';
+  }
+  words.append(buf, static_cast<std::size_t>(end - buf));
 }
 
 }  // namespace usina::post

@@ -12,8 +12,15 @@ namespace usina::post {
 
 class BlockOut {
  public:
-  BlockOut(std::ostream& out, const Control& control, bool line_numbers)
-      : out_(out), control_(control), line_numbers_(line_numbers || control.always_line_numbers) {}
+  BlockOut(std::ostream& out, const Control& control, bool line_numbers);
+
+  ~BlockOut() { flush(); }
+
+  BlockOut(const BlockOut&) = delete;
+  BlockOut& operator=(const BlockOut&) = delete;
+
+  // Hands the buffered blocks to the stream.
+  void flush();
 
   // One block: its N word (if numbered), the words, the block end.
   void block(std::string_view words);
@@ -27,6 +34,9 @@ class BlockOut {
   // `v` as the control writes it: its decimals, no trailing zeros, "-0" as "0".
   std::string number(double v) const;
 
+  // `letter` and number(v) appended to `words`, a space first unless empty.
+  void append_word(std::string& words, char letter, double v) const;
+
   // `v` rounded to the control's decimals: what a reader will get back.
   double rounded(double v) const;
 
@@ -36,6 +46,8 @@ class BlockOut {
   std::ostream& out_;
   const Control& control_;
   bool line_numbers_;
+  double scale_;        // 10^decimals
+  std::string buffer_;  // blocks not yet handed to out_ (a stream write a block is slow)
   long next_n_ = 10;
 };
 

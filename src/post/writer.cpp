@@ -13,14 +13,25 @@ namespace usina::post {
 
 using core::Vec3;
 
+namespace {
+
+Control with_options(Control c, const PostOptions& o) {
+  if (o.decimals >= 0) c.decimals = o.decimals;
+  return c;
+}
+
+}  // namespace
+
 Writer::Writer(std::ostream& out, Control control, const PostOptions& options,
                core::DiagnosticSink& diags)
-    : control_(std::move(control)),
+    : control_(with_options(std::move(control), options)),
       options_(options),
       out_(out, control_, options.line_numbers),
-      diags_(diags) {
-  if (options_.decimals >= 0) control_.decimals = options_.decimals;
-}
+      diags_(diags),
+      g0_(code('G', 0)),
+      g1_(code('G', 1)),
+      g81_(code('G', 81)),
+      g83_(code('G', 83)) {}
 
 void Writer::append(std::string& words, const std::string& w) {
   if (w.empty()) return;
@@ -54,6 +65,7 @@ void Writer::end() {
 
 void Writer::finish() {
   end();
+  out_.flush();
 }
 
 void Writer::on(const canon::Op& op) {
@@ -100,8 +112,14 @@ void Writer::on(const canon::Op& op) {
 }
 
 std::string Writer::axis_words(const Vec3& to, const canon::Abc& abc, const canon::Op& op) {
-  static constexpr char kLetters[] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
   std::string w;
+  append_axis_words(w, to, abc, op);
+  return w;
+}
+
+void Writer::append_axis_words(std::string& w, const Vec3& to, const canon::Abc& abc,
+                               const canon::Op& op) {
+  static constexpr char kLetters[] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
   for (std::size_t i = 0; i < 6; ++i) {
     const double v = i < 3 ? to[static_cast<int>(i)] : abc[i - 3];
     if (i >= 3 && !control_.rotary_axes) {
@@ -112,9 +130,8 @@ std::string Writer::axis_words(const Vec3& to, const canon::Abc& abc, const cano
     if (axes_[i] && *axes_[i] == r) continue;
     if (i >= 3 && !axes_[i] && r == 0.0) continue;  // rotary axes start at 0
     axes_[i] = r;
-    append(w, fmt::format("{}{}", kLetters[i], out_.number(v)));
+    out_.append_word(w, kLetters[i], v);
   }
-  return w;
 }
 
 std::string Writer::motion_word(const char* g) {
@@ -133,11 +150,13 @@ std::string Writer::feed_word(std::optional<double> f, const canon::Op& op) {
   const double r = out_.rounded(*f);
   if (feed_ && *feed_ == r) return {};
   feed_ = r;
-  return "F" + out_.number(*f);
+  std::string w;
+  out_.append_word(w, 'F', *f);
+  return w;
 }
 
 void Writer::cancel_cycle() {
-  if (motion_ != code('G', 81) && motion_ != code('G', 83)) return;
+  if (motion_ != g81_ && motion_ != g83_) return;
   out_.block(code('G', 80));
   motion_.clear();
   cycle_z_.reset();
@@ -146,27 +165,31 @@ void Writer::cancel_cycle() {
 }
 
 void Writer::traverse(const canon::Traverse& t, const canon::Op& op) {
-  cancel_cycle();
-  const std::string axes = axis_words(t.to, t.abc, op);
-  pos_ = t.to;
-  pos_known_ = true;
-  if (axes.empty()) return;
-  std::string w = motion_word(code('G', 0).c_str());
-  append(w, axes);
-  out_.block(w);
+  straight(g0_, t.to, std::nullopt, t.abc, op);
 }
 
 void Writer::feed(const Vec3& to, std::optional<double> f, const canon::Abc& abc,
                   const canon::Op& op) {
+  straight(g1_, to, f, abc, op);
+}
+
+// The hot path (a generator's program is mostly these): one reused buffer.
+void Writer::straight(const std::string& g, const Vec3& to, std::optional<double> f,
+                      const canon::Abc& abc, const canon::Op& op) {
   cancel_cycle();
-  const std::string axes = axis_words(to, abc, op);
+  axes_buf_.clear();
+  append_axis_words(axes_buf_, to, abc, op);
   pos_ = to;
   pos_known_ = true;
-  if (axes.empty()) return;
-  std::string w = motion_word(code('G', 1).c_str());
-  append(w, axes);
-  append(w, feed_word(f, op));
-  out_.block(w);
+  if (axes_buf_.empty()) return;
+  words_.clear();
+  if (motion_ != g) {
+    motion_ = g;
+    words_ = g;
+  }
+  append(words_, axes_buf_);
+  if (&g == &g1_) append(words_, feed_word(f, op));
+  out_.block(words_);
 }
 
 }  // namespace usina::post

@@ -28,6 +28,8 @@ class Writer final : public canon::Sink {
   void traverse(const canon::Traverse& t, const canon::Op& op);
   void feed(const core::Vec3& to, std::optional<double> f, const canon::Abc& abc,
             const canon::Op& op);
+  void straight(const std::string& g, const core::Vec3& to, std::optional<double> f,
+                const canon::Abc& abc, const canon::Op& op);
   void arc(const canon::Arc& a, const canon::Op& op);
   void arc_block(const canon::Arc& a, const core::Vec3& to, bool ccw, int turns, int plane,
                  std::string& feed);
@@ -40,6 +42,8 @@ class Writer final : public canon::Sink {
 
   // Words for the axes that changed ("X1 Z-2"); remembers them as written.
   std::string axis_words(const core::Vec3& to, const canon::Abc& abc, const canon::Op& op);
+  void append_axis_words(std::string& words, const core::Vec3& to, const canon::Abc& abc,
+                         const canon::Op& op);
   std::string motion_word(const char* g);
   std::string feed_word(std::optional<double> f, const canon::Op& op);
   std::string code(char letter, int n) const;  // "G1" or "G01"
@@ -64,6 +68,8 @@ class Writer final : public canon::Sink {
   canon::SpindleDir dir_ = canon::SpindleDir::Off;
   canon::Coolant coolant_;
   std::optional<double> cycle_z_, cycle_r_, cycle_q_;
+  std::string g0_, g1_, g81_, g83_;  // the motion codes as this control writes them
+  std::string words_, axes_buf_;     // reused for every straight move
 };
 
 }  // namespace usina::post

@@ -83,7 +83,7 @@ void Writer::arc_block(const canon::Arc& a, const Vec3& to, bool ccw, int turns,
     if (i == ax.axial) continue;
     const double c = out_.rounded(a.center[i]);
     const double v = control_.absolute_arc_center ? c : c - out_.rounded(start[i]);
-    append(w, fmt::format("{}{}", kCentre[i], out_.number(v)));
+    out_.append_word(w, kCentre[i], v);
   }
   if (turns > 1) append(w, fmt::format("P{}", turns));
   append(w, feed);

@@ -28,8 +28,7 @@ void Writer::hole(const canon::Hole& h, const canon::Op& op) {
 
 void Writer::cycle_hole(const canon::Hole& h) {
   const bool peck = options_.peck > 0;
-  const std::string g = code('G', peck ? 83 : 81);
-  std::string w = motion_word(g.c_str());
+  std::string w = motion_word((peck ? g83_ : g81_).c_str());
   const double r = out_.rounded(h.at.z);
   const double bottom = out_.rounded(h.at.z - h.depth);
   append(w, fmt::format("X{} Y{}", out_.number(h.at.x), out_.number(h.at.y)));
