@@ -141,6 +141,10 @@ TEST(EllipsePocket, ProgramRoundTripsThroughTheRs274ngcPost) {
   const std::string text = test::post_text(path.ops(), "rs274ngc", diags);
   EXPECT_FALSE(diags.has_errors());
   test::expect_same_path(path.ops(), test::interpret(text), 1e-4);
+  // grbl's program is plain RS274 too (its M0 tool pause aside): same path
+  // within its 3 decimals.
+  const std::string grbl = test::post_text(path.ops(), "grbl", diags);
+  test::expect_same_path(path.ops(), test::interpret(grbl), 1e-3);
 }
 
 TEST(EllipsePocket, ProgramPlungesAtTheCentreAndEndsAboveIt) {

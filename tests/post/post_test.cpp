@@ -110,6 +110,9 @@ TEST(Post, NumbersUseTheControlsDecimals) {
   post::PostOptions o;
   o.decimals = 1;
   EXPECT_THAT(test::post_text(ops, "grbl", diags, o), HasSubstr("G0 X1.2 Y0 Z2.5\n"));
+  o.decimals = 0;
+  EXPECT_THAT(test::post_text(ops, "fanuc", diags, o), HasSubstr("G00 X1. Y0. Z3.\n"));
+  EXPECT_THAT(test::post_text(ops, "rs274ngc", diags, o), HasSubstr("G0 X1 Y0 Z3\n"));
 }
 
 TEST(Post, LineNumbersOnRequest) {
