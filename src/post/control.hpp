@@ -18,6 +18,7 @@ struct Control {
   bool canned_cycles = true;         // G81/G83 for bare holes, else expanded moves
   bool absolute_arc_center = false;  // I J K absolute instead of from the start point
   bool turns_word = false;           // P<n> for extra helix turns; else split into full circles
+  bool full_circle_halves = false;   // a full circle as two half circles (end = start is ambiguous)
   bool rotary_axes = true;           // A B C words
   bool probe = true;                 // G38.2
   bool semicolon_comments = false;   // ";text" instead of "(text)"

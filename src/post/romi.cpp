@@ -1,6 +1,6 @@
 // ROMI MACH / Interact (spec/romi.md, seed 000's program): blocks end with
 // '#', N numbers of four digits step 10, ';' comments, G71 for mm, the arc
-// centre I J absolute, the tool's diameter in the tool-change comment
+// centre I J absolute, a full circle as two halves, the tool's diameter in the tool-change comment
 // ("T1 M06;tool 1 d10"), M02 at the end as in the seed's program. Holes are
 // written as moves: the spec's G81 measures Z from a work surface a canon
 // stream does not know.
@@ -38,6 +38,7 @@ Control romi_control() {
   c.two_digit_codes = true;
   c.canned_cycles = false;
   c.absolute_arc_center = true;
+  c.full_circle_halves = true;  // spec/romi.md: only the C360 form is a full circle
   c.rotary_axes = false;
   c.probe = false;
   c.semicolon_comments = true;

@@ -69,6 +69,16 @@ void Writer::arc_block(const canon::Arc& a, const Vec3& to, bool ccw, int turns,
                        std::string& feed) {
   static constexpr char kCentre[] = {'I', 'J', 'K'};
   const core::PlaneAxes ax = core::axes_of(core_plane(plane));
+  if (turns == 1 && control_.full_circle_halves &&
+      out_.rounded(to[ax.first]) == axes_[static_cast<std::size_t>(ax.first)] &&
+      out_.rounded(to[ax.second]) == axes_[static_cast<std::size_t>(ax.second)]) {
+    // Through the point opposite the start, half the helix's drop there.
+    Vec3 mid = a.center * 2.0 - pos_;
+    mid[ax.axial] = (pos_[ax.axial] + to[ax.axial]) / 2;
+    arc_block(a, mid, ccw, 1, plane, feed);
+    arc_block(a, to, ccw, 1, plane, feed);
+    return;
+  }
   std::string w = motion_word(code('G', ccw ? 3 : 2).c_str());
   // The start as the reader has it, so that its centre is the rounded centre.
   const Vec3 start{axes_[0].value_or(pos_.x), axes_[1].value_or(pos_.y), axes_[2].value_or(pos_.z)};

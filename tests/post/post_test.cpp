@@ -115,6 +115,19 @@ TEST(Post, NumbersUseTheControlsDecimals) {
   EXPECT_THAT(test::post_text(ops, "rs274ngc", diags, o), HasSubstr("G0 X1 Y0 Z3\n"));
 }
 
+TEST(Post, FullCircles) {
+  core::DiagnosticList diags;
+  const std::vector<canon::Op> ops{op(canon::Traverse{{10, 0, 0}}),
+                                   op(canon::Arc{{10, 0, -2}, {0, 0, 0}, {0, 0, 1}, 1, 100.0})};
+  EXPECT_THAT(test::post_text(ops, "rs274ngc", diags), HasSubstr("G3 Z-2 I-10 J0 F100\n"));
+  // romi: two halves through the opposite point, the centre absolute.
+  EXPECT_THAT(test::post_text(ops, "romi", diags),
+              HasSubstr(" G03 X-10 Z-1 I0 J0 F100#\nN0080 X10 Z-2 I0 J0#\n"));
+  EXPECT_FALSE(diags.has_errors());
+  test::expect_same_path(test::interpret(test::post_text(ops, "rs274ngc", diags)),
+                         test::interpret(test::post_text(ops, "grbl", diags)), 1e-3);
+}
+
 TEST(Post, LineNumbersOnRequest) {
   core::DiagnosticList diags;
   post::PostOptions o;
