@@ -65,8 +65,22 @@ TEST(EllipsePocket, RoughingPassesAreEqualAndNoWiderThanAe) {
   EXPECT_EQ(rs.back().kind, RingKind::Finishing);
 }
 
-TEST(EllipsePocket, FinishingRingIsTheToolRadiusFromTheWall) {
-  const EllipsePocket p = pocket();
+// The test pocket turned a quarter: Y is now the major axis.
+EllipsePocket tall_pocket() {
+  EllipsePocket p = pocket();
+  std::swap(p.rx, p.ry);
+  return p;
+}
+
+class EllipsePocketBoth : public testing::TestWithParam<bool> {
+ protected:
+  EllipsePocket subject() const { return GetParam() ? tall_pocket() : pocket(); }
+};
+
+INSTANTIATE_TEST_SUITE_P(WideAndTall, EllipsePocketBoth, testing::Bool());
+
+TEST_P(EllipsePocketBoth, FinishingRingIsTheToolRadiusFromTheWall) {
+  const EllipsePocket p = subject();
   const auto rs = rings(p, plan(p));
   ASSERT_EQ(rs.back().kind, RingKind::Finishing);
   double worst = 0;
@@ -85,10 +99,13 @@ TEST(EllipsePocket, FinishingRingIsTheToolRadiusFromTheWall) {
               p.resolution);
 }
 
-TEST(EllipsePocket, EveryRoughingPointIsInsideWithTheFinishStock) {
-  const EllipsePocket p = pocket();
+TEST_P(EllipsePocketBoth, EveryRoughingPointIsInsideWithTheFinishStock) {
+  const EllipsePocket p = subject();
   const EllipsePlan pl = plan(p);
   EXPECT_GT(pl.transition_rings, 0);  // 30 × 18: similar rings leave the ends wide
+  // Equal roughing rings at most ae apart along the major axis.
+  EXPECT_LE(pl.ae_used, p.ae);
+  EXPECT_NEAR(pl.ae_used * pl.roughing_rings, (1 - 4.5 / 18) * 30, 1e-9);
   const auto rs = rings(p, pl);
   double prev_y = 0;
   for (const Ring& r : rs) {
@@ -103,6 +120,25 @@ TEST(EllipsePocket, EveryRoughingPointIsInsideWithTheFinishStock) {
       ASSERT_TRUE(test::inside_ellipse(l, p.rx, p.ry));
       ASSERT_GE(test::ellipse_distance(l, p.rx, p.ry), 4.0 + 0.5 - 1e-6);
     }
+  }
+}
+
+// No ridge is left: every point of a ring is within ae of the ring before
+// it (the first ring: of the centre), so the tool's passes overlap.
+TEST_P(EllipsePocketBoth, RingsAreNeverMoreThanAeApart) {
+  const EllipsePocket p = subject();
+  const auto rs = rings(p, plan(p));
+  std::vector<Vec2> previous{p.center};
+  for (const Ring& r : rs) {
+    double widest = 0;
+    for (const Vec2& q : r.points) {
+      double nearest = 1e300;
+      for (const Vec2& o : previous)
+        nearest = std::min(nearest, core::distance(q, o));
+      widest = std::max(widest, nearest);
+    }
+    EXPECT_LE(widest, p.ae + p.resolution);
+    previous = r.points;
   }
 }
 
