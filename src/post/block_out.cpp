@@ -48,7 +48,13 @@ std::string BlockOut::comment(std::string_view text) const {
 }
 
 double BlockOut::rounded(double v) const {
-  const double r = std::round(v * scale_) / scale_;
+  const double x = v * scale_;
+  // Half away from zero, as std::round, without its library call (a post
+  // rounds every coordinate of millions of blocks).
+  const double whole = std::abs(x) < 1e15
+                           ? static_cast<double>(static_cast<long long>(x + (x < 0 ? -0.5 : 0.5)))
+                           : std::round(x);
+  const double r = whole / scale_;
   return r == 0.0 ? 0.0 : r;  // no negative zero
 }
 
@@ -59,6 +65,10 @@ std::string BlockOut::number(double v) const {
 }
 
 void BlockOut::append_word(std::string& words, char letter, double v) const {
+  append_rounded(words, letter, rounded(v));
+}
+
+void BlockOut::append_rounded(std::string& words, char letter, double r) const {
   char buf[64];
   char* p = buf;
   if (letter != '\0') {
@@ -66,7 +76,7 @@ void BlockOut::append_word(std::string& words, char letter, double v) const {
     *p++ = letter;
   }
   const auto res =
-      std::to_chars(p, buf + sizeof buf, rounded(v), std::chars_format::fixed, control_.decimals);
+      std::to_chars(p, buf + sizeof buf, r, std::chars_format::fixed, control_.decimals);
   char* end = res.ec == std::errc{} ? res.ptr : p;
   if (control_.decimals > 0) {
     while (end[-1] == '0')

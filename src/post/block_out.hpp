@@ -37,6 +37,9 @@ class BlockOut {
   // `letter` and number(v) appended to `words`, a space first unless empty.
   void append_word(std::string& words, char letter, double v) const;
 
+  // The same for a value rounded() already.
+  void append_rounded(std::string& words, char letter, double r) const;
+
   // `v` rounded to the control's decimals: what a reader will get back.
   double rounded(double v) const;
 

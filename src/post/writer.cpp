@@ -130,7 +130,7 @@ void Writer::append_axis_words(std::string& w, const Vec3& to, const canon::Abc&
     if (axes_[i] && *axes_[i] == r) continue;
     if (i >= 3 && !axes_[i] && r == 0.0) continue;  // rotary axes start at 0
     axes_[i] = r;
-    out_.append_word(w, kLetters[i], v);
+    out_.append_rounded(w, kLetters[i], r);
   }
 }
 
