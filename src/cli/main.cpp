@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   usina::cli::add_calc(app);
   usina::cli::add_stats(app);
   usina::cli::add_draw(app);
+  usina::cli::add_convert(app);
+  usina::cli::add_gen(app);
   CLI11_PARSE(app, argc, argv);
   return usina::cli::exit_status();
 }

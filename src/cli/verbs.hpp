@@ -10,6 +10,8 @@ void add_check(CLI::App& app);
 void add_calc(CLI::App& app);
 void add_stats(CLI::App& app);
 void add_draw(CLI::App& app);
+void add_convert(CLI::App& app);
+void add_gen(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();

@@ -1,0 +1,14 @@
+// usina gen <generator>: the frame; every generator adds its own subcommand.
+#include "cli/gen.hpp"
+
+#include "cli/verbs.hpp"
+
+namespace usina::cli {
+
+void add_gen(CLI::App& app) {
+  CLI::App* gen = app.add_subcommand("gen", "generate a program: a cycle the control lacks");
+  gen->require_subcommand(1);
+  add_gen_ellipse(*gen);
+}
+
+}  // namespace usina::cli

@@ -1,0 +1,65 @@
+#include "cli/post_output.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace usina::cli {
+
+void add_post_options(CLI::App& app, PostOutput& o) {
+  app.add_option("--post", o.post, "the control to write for")
+      ->required()
+      ->check(CLI::IsMember(post::post_names()));
+  app.add_option("-o,--output", o.out, "the program file ('-' writes standard output)")
+      ->capture_default_str();
+  app.add_option("--program-number", o.options.program_number,
+                 "O number (Fanuc), a comment elsewhere")
+      ->check(CLI::Range(1, 9999))
+      ->capture_default_str();
+  app.add_option("--program-name", o.options.program_name, "a comment in the header");
+  app.add_option("--decimals", o.options.decimals,
+                 "digits after the point (default: the control's: rs274ngc 4, others 3)")
+      ->check(CLI::Range(0, 6));
+  app.add_flag("--line-numbers", o.options.line_numbers, "N words, step 10 (romi always)");
+  app.add_flag("--tool-change", o.options.tool_change,
+               "grbl: write T M6 (else a comment and an M0 pause)");
+  app.add_option("--peck", o.options.peck, "holes as G83 pecks of this depth, mm (else G81)")
+      ->check(CLI::PositiveNumber);
+}
+
+void PostDiagnostics::report(core::Diagnostic d) {
+  if (d.severity == core::Severity::Error) ++errors_;
+  static const core::SourceManager kNone;
+  const std::string text = core::render(d, sources_ != nullptr ? *sources_ : kNone);
+  std::fwrite(text.data(), 1, text.size(), stderr);
+}
+
+int write_program(const PostOutput& o,
+                  const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
+  std::ostringstream text;
+  PostDiagnostics post_diags;
+  auto sink = post::make_post(o.post, text, o.options, post_diags);
+  if (!sink) {
+    fmt::print(stderr, "usina: error: unknown post '{}'\n", o.post);
+    return 2;
+  }
+  const int status = produce(*sink, post_diags);
+  sink->finish();  // a post's finish is idempotent; a generator need not call it
+  if (status != 0) return status;
+  if (post_diags.errors() > 0) return 1;
+  if (o.out == "-") {
+    fmt::print("{}", text.str());
+    return 0;
+  }
+  std::ofstream file(o.out, std::ios::binary);
+  file << text.str();
+  if (!file.flush()) {
+    fmt::print(stderr, "usina: error: cannot write {}\n", o.out);
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace usina::cli

@@ -1,0 +1,46 @@
+// What the verbs that write a program share (convert, gen ...): the post and
+// its options, the output file, and one run of a generator into the post.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "canon/sink.hpp"
+#include "core/diagnostic.hpp"
+#include "core/source.hpp"
+#include "post/post.hpp"
+
+namespace usina::cli {
+
+struct PostOutput {
+  std::string post;
+  std::string out = "-";
+  post::PostOptions options;
+};
+
+void add_post_options(CLI::App& app, PostOutput& o);
+
+// The post's diagnostics, rendered on stderr as they come, against the
+// sources of the run that made the ops (when there is one).
+class PostDiagnostics final : public core::DiagnosticSink {
+ public:
+  void set_sources(const core::SourceManager* sources) { sources_ = sources; }
+
+  void report(core::Diagnostic d) override;
+
+  int errors() const { return errors_; }
+
+ private:
+  const core::SourceManager* sources_ = nullptr;
+  int errors_ = 0;
+};
+
+// Runs `produce` (it feeds ops to the sink it is given and returns an exit
+// status) into the chosen post and writes the program to o.out only when
+// both succeeded: a failed run leaves no half program behind.
+int write_program(const PostOutput& o,
+                  const std::function<int(canon::Sink&, PostDiagnostics&)>& produce);
+
+}  // namespace usina::cli

@@ -1,0 +1,38 @@
+// grbl 1.1: no canned cycles (holes become moves), no O numbers, no tool
+// changer (a tool change is a comment and an M0 pause unless asked for),
+// no rotary axes, no helix turn count.
+#include <fmt/format.h>
+
+#include "post/block_out.hpp"
+#include "post/control.hpp"
+
+namespace usina::post {
+
+namespace {
+
+void header(BlockOut& out, const PostOptions& o) {
+  if (!o.program_name.empty()) out.block(out.comment(o.program_name));
+  out.block("G21 G17 G90 G94");
+}
+
+void footer(BlockOut& out, const PostOptions&) {
+  out.block("M5");
+  out.block("M9");
+  out.block("M30");
+}
+
+}  // namespace
+
+Control grbl_control() {
+  Control c;
+  c.name = "grbl";
+  c.decimals = 3;
+  c.canned_cycles = false;
+  c.rotary_axes = false;
+  c.tool_change_m6 = false;
+  c.header = header;
+  c.footer = footer;
+  return c;
+}
+
+}  // namespace usina::post

@@ -1,0 +1,195 @@
+#include "post/writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+
+#include <fmt/format.h>
+
+#include "core/arc.hpp"
+
+namespace usina::post {
+
+using core::Vec3;
+
+namespace {
+
+Control with_options(Control c, const PostOptions& o) {
+  if (o.decimals >= 0) c.decimals = o.decimals;
+  return c;
+}
+
+}  // namespace
+
+Writer::Writer(std::ostream& out, Control control, const PostOptions& options,
+               core::DiagnosticSink& diags)
+    : control_(with_options(std::move(control), options)),
+      options_(options),
+      out_(out, control_, options.line_numbers),
+      diags_(diags),
+      g0_(code('G', 0)),
+      g1_(code('G', 1)),
+      g81_(code('G', 81)),
+      g83_(code('G', 83)) {}
+
+void Writer::append(std::string& words, const std::string& w) {
+  if (w.empty()) return;
+  if (!words.empty()) words += ' ';
+  words += w;
+}
+
+std::string Writer::code(char letter, int n) const {
+  return control_.two_digit_codes ? fmt::format("{}{:02}", letter, n)
+                                  : fmt::format("{}{}", letter, n);
+}
+
+void Writer::unsupported(const canon::Op& op, const std::string& what) {
+  diags_.report({core::Code::Unsupported, core::Severity::Error, op.src,
+                 fmt::format("the {} post cannot write {}", control_.name, what)});
+}
+
+void Writer::start() {
+  if (started_) return;
+  started_ = true;
+  control_.header(out_, options_);
+}
+
+void Writer::end() {
+  if (ended_) return;
+  start();
+  cancel_cycle();
+  ended_ = true;
+  control_.footer(out_, options_);
+}
+
+void Writer::finish() {
+  end();
+  out_.flush();
+}
+
+void Writer::on(const canon::Op& op) {
+  start();
+  if (ended_) return;  // nothing after the program end
+  std::visit(
+      [&](const auto& k) {
+        using T = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<T, canon::Traverse>) {
+          traverse(k, op);
+        } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          feed(k.to, k.f, k.abc, op);
+        } else if constexpr (std::is_same_v<T, canon::Arc>) {
+          arc(k, op);
+        } else if constexpr (std::is_same_v<T, canon::Spline>) {
+          for (const Vec3& p : k.points)
+            feed(p, k.f, canon::Abc{}, op);
+        } else if constexpr (std::is_same_v<T, canon::Probe>) {
+          if (!control_.probe) return unsupported(op, "a probing move");
+          cancel_cycle();
+          std::string w = "G38.2";
+          motion_.clear();
+          append(w, axis_words(k.to, k.abc, op));
+          out_.block(w);
+          pos_ = k.to;
+        } else if constexpr (std::is_same_v<T, canon::Dwell>) {
+          out_.block(fmt::format("{} {}{}", code('G', 4), control_.dwell_word, out_.number(k.s)));
+        } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
+          tool_change(k);
+        } else if constexpr (std::is_same_v<T, canon::Spindle>) {
+          spindle(k);
+        } else if constexpr (std::is_same_v<T, canon::Coolant>) {
+          coolant(k);
+        } else if constexpr (std::is_same_v<T, canon::Hole>) {
+          hole(k, op);
+        } else if constexpr (std::is_same_v<T, canon::Comment>) {
+          out_.block(out_.comment(k.text));
+        } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
+          end();
+        }
+        // A Pocket is a drawing's feature; its moves are in the stream.
+      },
+      op.kind);
+}
+
+std::string Writer::axis_words(const Vec3& to, const canon::Abc& abc, const canon::Op& op) {
+  std::string w;
+  append_axis_words(w, to, abc, op);
+  return w;
+}
+
+void Writer::append_axis_words(std::string& w, const Vec3& to, const canon::Abc& abc,
+                               const canon::Op& op) {
+  static constexpr char kLetters[] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
+  for (std::size_t i = 0; i < 6; ++i) {
+    const double v = i < 3 ? to[static_cast<int>(i)] : abc[i - 3];
+    if (i >= 3 && !control_.rotary_axes) {
+      if (out_.rounded(v) != 0.0) unsupported(op, "a rotary axis move");
+      continue;
+    }
+    const double r = out_.rounded(v);
+    if (axes_[i] && *axes_[i] == r) continue;
+    if (i >= 3 && !axes_[i] && r == 0.0) continue;  // rotary axes start at 0
+    axes_[i] = r;
+    out_.append_rounded(w, kLetters[i], r);
+  }
+}
+
+std::string Writer::motion_word(const char* g) {
+  if (motion_ == g) return {};
+  motion_ = g;
+  return g;
+}
+
+std::string Writer::feed_word(std::optional<double> f, const canon::Op& op) {
+  if (!f) {
+    // Inverse-time and per-revolution feeds come as moves without a rate.
+    if (!feed_) unsupported(op, "a feed move without a feed rate in mm/min");
+    return {};
+  }
+  last_feed_ = f;
+  const double r = out_.rounded(*f);
+  if (feed_ && *feed_ == r) return {};
+  feed_ = r;
+  std::string w;
+  out_.append_word(w, 'F', *f);
+  return w;
+}
+
+void Writer::cancel_cycle() {
+  if (motion_ != g81_ && motion_ != g83_) return;
+  out_.block(code('G', 80));
+  motion_.clear();
+  cycle_z_.reset();
+  cycle_r_.reset();
+  cycle_q_.reset();
+}
+
+void Writer::traverse(const canon::Traverse& t, const canon::Op& op) {
+  straight(g0_, t.to, std::nullopt, t.abc, op);
+}
+
+void Writer::feed(const Vec3& to, std::optional<double> f, const canon::Abc& abc,
+                  const canon::Op& op) {
+  straight(g1_, to, f, abc, op);
+}
+
+// The hot path (a generator's program is mostly these): one reused buffer.
+void Writer::straight(const std::string& g, const Vec3& to, std::optional<double> f,
+                      const canon::Abc& abc, const canon::Op& op) {
+  cancel_cycle();
+  axes_buf_.clear();
+  append_axis_words(axes_buf_, to, abc, op);
+  pos_ = to;
+  pos_known_ = true;
+  if (axes_buf_.empty()) return;
+  words_.clear();
+  if (motion_ != g) {
+    motion_ = g;
+    words_ = g;
+  }
+  append(words_, axes_buf_);
+  if (&g == &g1_) append(words_, feed_word(f, op));
+  out_.block(words_);
+}
+
+}  // namespace usina::post

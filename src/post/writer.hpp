@@ -1,0 +1,75 @@
+// The part of a post every control shares: a canon sink that writes blocks,
+// each modal word only when it changes, through a control's table.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "canon/sink.hpp"
+#include "core/diagnostic.hpp"
+#include "post/block_out.hpp"
+#include "post/control.hpp"
+
+namespace usina::post {
+
+class Writer final : public canon::Sink {
+ public:
+  Writer(std::ostream& out, Control control, const PostOptions& options,
+         core::DiagnosticSink& diags);
+
+  void on(const canon::Op& op) override;
+  void finish() override;
+
+ private:
+  void start();
+  void end();
+  void traverse(const canon::Traverse& t, const canon::Op& op);
+  void feed(const core::Vec3& to, std::optional<double> f, const canon::Abc& abc,
+            const canon::Op& op);
+  void straight(const std::string& g, const core::Vec3& to, std::optional<double> f,
+                const canon::Abc& abc, const canon::Op& op);
+  void arc(const canon::Arc& a, const canon::Op& op);
+  void arc_block(const canon::Arc& a, const core::Vec3& to, bool ccw, int turns, int plane,
+                 std::string& feed);
+  void hole(const canon::Hole& h, const canon::Op& op);
+  void cycle_hole(const canon::Hole& h);
+  void expanded_hole(const canon::Hole& h);
+  void spindle(const canon::Spindle& s);
+  void tool_change(const canon::ToolChange& t);
+  void coolant(const canon::Coolant& c);
+
+  // Words for the axes that changed ("X1 Z-2"); remembers them as written.
+  std::string axis_words(const core::Vec3& to, const canon::Abc& abc, const canon::Op& op);
+  void append_axis_words(std::string& words, const core::Vec3& to, const canon::Abc& abc,
+                         const canon::Op& op);
+  std::string motion_word(const char* g);
+  std::string feed_word(std::optional<double> f, const canon::Op& op);
+  std::string code(char letter, int n) const;  // "G1" or "G01"
+  void cancel_cycle();
+  void unsupported(const canon::Op& op, const std::string& what);
+  static void append(std::string& words, const std::string& w);
+
+  Control control_;
+  PostOptions options_;
+  BlockOut out_;
+  core::DiagnosticSink& diags_;
+  bool started_ = false;
+  bool ended_ = false;
+  std::string motion_;                         // the motion G word in force ("" unknown)
+  std::array<std::optional<double>, 6> axes_;  // X Y Z A B C as the reader has them
+  core::Vec3 pos_;                             // the canon's own position (exact)
+  bool pos_known_ = false;
+  std::optional<double> feed_;       // F as written
+  std::optional<double> last_feed_;  // the last feed rate of any move (for bare holes)
+  int plane_ = 17;
+  std::optional<long> speed_;
+  canon::SpindleDir dir_ = canon::SpindleDir::Off;
+  canon::Coolant coolant_;
+  std::optional<double> cycle_z_, cycle_r_, cycle_q_;
+  std::string g0_, g1_, g81_, g83_;  // the motion codes as this control writes them
+  std::string words_, axes_buf_;     // reused for every straight move
+};
+
+}  // namespace usina::post
