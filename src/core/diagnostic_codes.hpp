@@ -67,4 +67,15 @@
   X(Message, N_MESSAGE)                            \
   X(Unsupported, E_UNSUPPORTED)                    \
   /* machine profiles (sim) */                     \
-  X(BadMachineProfile, E_BAD_MACHINE_PROFILE)
+  X(BadMachineProfile, E_BAD_MACHINE_PROFILE)      \
+  /* the romi dialect */                           \
+  X(TypographicDash, W_TYPOGRAPHIC_DASH)           \
+  X(PolarWithXy, E_POLAR_WITH_XY)                  \
+  X(NoTangentDirection, E_NO_TANGENT_DIRECTION)    \
+  X(BlendNeedsMove, E_BLEND_NEEDS_MOVE)            \
+  X(ScaleOutOfRange, E_SCALE_OUT_OF_RANGE)         \
+  X(UnequalScaleArc, E_UNEQUAL_SCALE_ARC)          \
+  X(UnknownToolDiameter, E_UNKNOWN_TOOL_DIAMETER)  \
+  X(PocketTooSmall, E_POCKET_TOO_SMALL)            \
+  X(UnknownBlockNumber, E_UNKNOWN_BLOCK_NUMBER)    \
+  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)
