@@ -458,8 +458,13 @@ bool Parser::statement(std::size_t close) {
 
 void Parser::parenthesis() {
   const std::size_t open = i_;
-  const std::size_t close = s_.find(')', open);
-  if (close == std::string_view::npos || close >= end_) {
+  // The matching ')': a statement has parentheses of its own.
+  std::size_t close = open;
+  for (int depth = 0; close < end_; ++close) {
+    if (s_[close] == '(') ++depth;
+    if (s_[close] == ')' && --depth == 0) break;
+  }
+  if (close >= end_) {
     fail(core::Code::UnclosedComment, open, "'(' not closed with ')' before the end of the block");
     return;
   }
