@@ -68,8 +68,10 @@ bool Engine::drill_at(Vec2 p) {
   return true;
 }
 
-// A pattern's point: drilled when G81 is on, else only reached.
+// A pattern's point: drilled when G81 is on, else only reached. Each
+// counts against the run's iteration budget, so a loop of patterns ends.
 bool Engine::at_pattern_point(Vec2 p) {
+  if (!count_jump()) return false;
   if (drill_.active) return drill_at(p);
   return emit_line({p.x, p.y, pos_.z}, true);
 }

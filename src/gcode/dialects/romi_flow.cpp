@@ -51,8 +51,8 @@ void Engine::build_index() {
 bool Engine::count_jump() {
   if (++jumps_ <= options_.max_total_iterations) return true;
   return error(core::Code::TooManyIterations, 0,
-               fmt::format("the program jumped back more than {} times; raise the limit with "
-                           "--max-total-iterations",
+               fmt::format("the program's backward jumps, calls and pattern points came to more "
+                           "than {}; raise the limit with --max-total-iterations",
                            options_.max_total_iterations));
 }
 

@@ -86,6 +86,10 @@ bool Engine::h_pocket(int) {
     note(core::Code::DepthSignIgnored, core::Severity::Note, 0,
          fmt::format("G26 depth Z{}: the pocket is {} mm deep (the sign is ignored)", z, p.depth));
   }
+  if (!tf_.uniform()) {
+    return error(core::Code::UnequalScaleArc, 0,
+                 "a pocket under G72 with unequal factors: its corners would be ellipses");
+  }
   // The feature: the pocket's own outline, after the transformation.
   canon::Outline outline = rounded_rectangle(c, half_w, half_h, p.radius);
   auto place = [&](Vec2 q) {
@@ -109,6 +113,7 @@ bool Engine::h_pocket(int) {
     const double zk = -rough * k / p.steps;
     if (!emit_line({c.x, c.y, zk}, false)) return false;
     for (int m = 1; m <= p.rings; ++m) {
+      if (!count_jump()) return false;
       const double s = static_cast<double>(m) / p.rings;
       if (!ring(c, rx * s, ry * s, corner, zk)) return false;
     }
