@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   gcode::InterpOptions opts;
   opts.max_loop_iterations = 10'000;
-  opts.max_total_iterations = 10'000;
+  opts.max_total_iterations = 1'000;  // jumps, calls, pattern points, pocket rings
   opts.max_call_depth = 20;
   opts.subroutine_path.clear();
   if (size > 0 && (data[0] & 8u)) opts.ignore_cutter_comp = true;

@@ -230,6 +230,8 @@ class Engine final : public ProgramRunner, private ParameterSource {
   std::optional<Vec3> line_end(const Vec3& start, Fail& fail) const;
   Vec3 cartesian_end(const Vec3& start) const;
   bool arc_block();
+  bool arc_cartesian();
+  bool arc_polar();
   bool blend(const Vec3& next_end);
   bool emit_line(const Vec3& end, bool rapid);
   bool emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns);

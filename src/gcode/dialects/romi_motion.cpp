@@ -160,50 +160,61 @@ bool Engine::move() {
 
 bool Engine::arc_block() {
   if (!require_feed()) return false;
+  if (words_.has('X') || words_.has('Y')) return arc_cartesian();
+  return arc_polar();
+}
+
+// X Y I J (absolute centre) and X Y R (shorter arc; R < 0 the longer).
+bool Engine::arc_cartesian() {
   const bool ccw = motion_ == 3;
   const Vec2 p0 = xy(pos_);
-  const bool has_xy = words_.has('X') || words_.has('Y');
+  const Vec3 end = cartesian_end(pos_);
+  Vec2 center;
+  if (words_.has('A') || words_.has('C')) {
+    return error(core::Code::PolarWithXy, words_.col(words_.has('A') ? 'A' : 'C'),
+                 "an arc with X/Y takes I J or R, not A or C");
+  }
+  if (words_.has('R')) {
+    if (words_.has('I') || words_.has('J')) {
+      return error(core::Code::ArcMissingCenter, words_.col('R'),
+                   "an arc takes R or I J, not both");
+    }
+    const double r = mm(words_.get('R'));
+    if (core::distance(p0, xy(end)) < 1e-9) {
+      return error(core::Code::ArcZeroLength, words_.col('R'),
+                   "an X Y R arc with its end at its start: use C 360 or I J");
+    }
+    auto c = core::arc_center_from_radius(p0, xy(end), r, ccw, kOnCircle);
+    if (!c) {
+      return error(core::Code::ArcRadiusTooSmall, words_.col('R'),
+                   fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm",
+                               std::fabs(r), core::distance(p0, xy(end)) / 2));
+    }
+    center = *c;
+  } else if (words_.has('I') || words_.has('J')) {
+    center = {words_.has('I') ? mm(words_.get('I')) : 0.0,
+              words_.has('J') ? mm(words_.get('J')) : 0.0};
+    const double r1 = core::distance(p0, center);
+    const double r2 = core::distance(xy(end), center);
+    if (std::fabs(r1 - r2) > kOnCircle) {
+      return error(core::Code::ArcRadiusMismatch, 0,
+                   fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius "
+                               "{:.4f} about ({:.4f}, {:.4f})",
+                               end.x, end.y, std::fabs(r1 - r2), r1, center.x, center.y));
+    }
+    if (r1 < 1e-9) return error(core::Code::ArcZeroLength, 0, "arc of zero radius");
+  } else {
+    return error(core::Code::ArcMissingCenter, 0, "an arc with X/Y needs I J or R");
+  }
+  return emit_arc(end, center, ccw, 1);
+}
+
+// The polar forms: C I J, C, R C, R A, R A C, and R alone (a blend).
+bool Engine::arc_polar() {
+  const bool ccw = motion_ == 3;
+  const Vec2 p0 = xy(pos_);
   Vec3 end = cartesian_end(pos_);
   Vec2 center;
-  if (has_xy) {
-    if (words_.has('A') || words_.has('C')) {
-      return error(core::Code::PolarWithXy, words_.col(words_.has('A') ? 'A' : 'C'),
-                   "an arc with X/Y takes I J or R, not A or C");
-    }
-    if (words_.has('R')) {
-      if (words_.has('I') || words_.has('J')) {
-        return error(core::Code::ArcMissingCenter, words_.col('R'),
-                     "an arc takes R or I J, not both");
-      }
-      const double r = mm(words_.get('R'));
-      if (core::distance(p0, xy(end)) < 1e-9) {
-        return error(core::Code::ArcZeroLength, words_.col('R'),
-                     "an X Y R arc with its end at its start: use C 360 or I J");
-      }
-      auto c = core::arc_center_from_radius(p0, xy(end), r, ccw, kOnCircle);
-      if (!c) {
-        return error(core::Code::ArcRadiusTooSmall, words_.col('R'),
-                     fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm",
-                                 std::fabs(r), core::distance(p0, xy(end)) / 2));
-      }
-      center = *c;
-    } else if (words_.has('I') || words_.has('J')) {
-      center = {words_.has('I') ? mm(words_.get('I')) : 0.0,
-                words_.has('J') ? mm(words_.get('J')) : 0.0};
-      const double r1 = core::distance(p0, center);
-      const double r2 = core::distance(xy(end), center);
-      if (std::fabs(r1 - r2) > kOnCircle) {
-        return error(core::Code::ArcRadiusMismatch, 0,
-                     fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius "
-                                 "{:.4f} about ({:.4f}, {:.4f})",
-                                 end.x, end.y, std::fabs(r1 - r2), r1, center.x, center.y));
-      }
-      if (r1 < 1e-9) return error(core::Code::ArcZeroLength, 0, "arc of zero radius");
-    } else {
-      return error(core::Code::ArcMissingCenter, 0, "an arc with X/Y needs I J or R");
-    }
-    return emit_arc(end, center, ccw, 1);
-  }
   double sweep = 0.0;
   if (words_.has('R')) {
     const double r = mm(words_.get('R'));
