@@ -208,6 +208,11 @@ TEST(RomiTransform, ScaleAndItsLimits) {
   expect_near(run_romi("G72 K2#G72 K1#X10#M02#")->ends().back(), {10, 0, 0});
 }
 
+TEST(RomiTransform, PocketUnderUnequalScaleIsAnError) {
+  auto r = run_romi("T1 M06;d10#G72 X2 Y1#G26 X40 Y40 Z5 F100#M02#");
+  EXPECT_EQ(r->first_error(), Code::UnequalScaleArc);
+}
+
 TEST(RomiTransform, RotationAboutIJ) {
   expect_near(run_romi("G73 C90 I10 J0#X20#M02#")->ends().back(), {10, 10, 0});
   expect_near(run_romi("G73 C90#G73 C0#X20#M02#")->ends().back(), {20, 0, 0});

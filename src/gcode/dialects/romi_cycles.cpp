@@ -46,7 +46,7 @@ bool Engine::h_cycle(int code) {
 // One hole at the programmed point p: approach to the R plane, feed to the
 // depth, dwell, retract (G99: to the R plane; G98: to where it started).
 bool Engine::drill_at(Vec2 p) {
-  if (!require_feed()) return false;
+  if (!require_feed("G81")) return false;
   if (tool_diameter_ <= 0.0) {
     return error(core::Code::UnknownToolDiameter, 0,
                  "a drilled hole needs the tool's diameter: change the tool with T<n> M06 first");

@@ -141,6 +141,10 @@ class Engine final : public ProgramRunner, private ParameterSource {
   // A handler: runs one code of the block (code in tenths).
   using Handler = bool (Engine::*)(int code);
 
+  // Whether a handler of this name is registered (every name in the
+  // dialect's table must be: a test checks).
+  static bool knows_handler(std::string_view name) { return handlers().count(name) > 0; }
+
  private:
   // The handlers, by the names the dialect's table uses.
   static const std::unordered_map<std::string_view, Handler>& handlers();
@@ -235,7 +239,7 @@ class Engine final : public ProgramRunner, private ParameterSource {
   bool blend(const Vec3& next_end);
   bool emit_line(const Vec3& end, bool rapid);
   bool emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns);
-  bool require_feed();
+  bool require_feed(const char* what);
   void in_order(std::function<void()> effect);
 
   // Cycles (romi_cycles.cpp).

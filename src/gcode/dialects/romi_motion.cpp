@@ -104,9 +104,9 @@ std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
   return end;
 }
 
-bool Engine::require_feed() {
+bool Engine::require_feed(const char* what) {
   if (feed_ > 0.0) return true;
-  return error(core::Code::NoFeedRate, 0, fmt::format("G{:02} with no feed rate: give F", motion_));
+  return error(core::Code::NoFeedRate, 0, fmt::format("{} with no feed rate: give F", what));
 }
 
 bool Engine::move() {
@@ -154,12 +154,12 @@ bool Engine::move() {
     }
     if (!blend(*end)) return false;
   }
-  if (motion_ == 1 && !require_feed()) return false;
+  if (motion_ == 1 && !require_feed("G01")) return false;
   return emit_line(*end, motion_ == 0);
 }
 
 bool Engine::arc_block() {
-  if (!require_feed()) return false;
+  if (!require_feed(motion_ == 2 ? "G02" : "G03")) return false;
   if (words_.has('X') || words_.has('Y')) return arc_cartesian();
   return arc_polar();
 }

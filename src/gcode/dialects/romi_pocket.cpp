@@ -33,7 +33,7 @@ bool Engine::h_pocket(int) {
     return error(core::Code::MissingWord, 0,
                  "G26 needs X Y (the opposite corner) and Z (the depth)");
   }
-  if (!require_feed()) return false;
+  if (!require_feed("G26")) return false;
   if (tool_diameter_ <= 0.0) {
     return error(core::Code::UnknownToolDiameter, 0,
                  "a pocket needs the tool's diameter: change the tool with T<n> M06 first");
