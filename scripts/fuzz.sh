@@ -94,7 +94,7 @@ declare -A pid rc
 for t in "${targets[@]}"; do
   mkdir -p "$out/corpus/$t"
   "$out/fuzz_$t" -max_len=4096 -timeout=5 -rss_limit_mb=2048 -max_total_time="$seconds" \
-    -dict="$fuzz/gcode.dict" -artifact_prefix="$fuzz/crashers/$t-" -print_final_stats=1 \
+    -dict="$([[ -f "$fuzz/$t.dict" ]] && echo "$fuzz/$t.dict" || echo "$fuzz/gcode.dict")" -artifact_prefix="$fuzz/crashers/$t-" -print_final_stats=1 \
     "$out/corpus/$t" "$([[ -d "$fuzz/corpus_$t" ]] && echo "$fuzz/corpus_$t" || echo "$fuzz/corpus")" \
     > "$out/fuzz_$t.log" 2>&1 &
   pid[$t]=$!
