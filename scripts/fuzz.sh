@@ -24,7 +24,7 @@ cxx="${CXX_FUZZ:-clang++-14}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
-targets=(parser interpreter)
+targets=(parser interpreter romi)
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -94,8 +94,9 @@ declare -A pid rc
 for t in "${targets[@]}"; do
   mkdir -p "$out/corpus/$t"
   "$out/fuzz_$t" -max_len=4096 -timeout=5 -rss_limit_mb=2048 -max_total_time="$seconds" \
-    -dict="$fuzz/gcode.dict" -artifact_prefix="$fuzz/crashers/$t-" -print_final_stats=1 \
-    "$out/corpus/$t" "$fuzz/corpus" > "$out/fuzz_$t.log" 2>&1 &
+    -dict="$([[ -f "$fuzz/$t.dict" ]] && echo "$fuzz/$t.dict" || echo "$fuzz/gcode.dict")" -artifact_prefix="$fuzz/crashers/$t-" -print_final_stats=1 \
+    "$out/corpus/$t" "$([[ -d "$fuzz/corpus_$t" ]] && echo "$fuzz/corpus_$t" || echo "$fuzz/corpus")" \
+    > "$out/fuzz_$t.log" 2>&1 &
   pid[$t]=$!
   if [[ "$jobs" -le 1 ]]; then
     rc[$t]=0

@@ -319,6 +319,52 @@ EXPLAIN = {
         "(each axis's `max_feed` of the machine profile, projected on the move's direction). "
         "The control clamps it; the time is computed at the clamped feed.",
         "Lower the feed, or check the profile's `max_feed`."),
+    # the romi dialect (docs/romi.md)
+    "W_TYPOGRAPHIC_DASH": (
+        "A typographic dash (U+2013 en dash, U+2014 em dash or U+2212 minus sign) stands "
+        "before a number, as when a program is copied from a document (the seed's `Y–250.`). "
+        "usina reads it as a minus sign.",
+        "Replace it with `-`; `--dialect-option typographic_dash=error` makes it an error."),
+    "E_POLAR_WITH_XY": (
+        "A romi block gives a polar word (`R`, `A`, `C`) of a straight move together with `X` "
+        "or `Y`: the end point would be given twice.",
+        "Give the end point either in Cartesian words or in polar words."),
+    "E_NO_TANGENT_DIRECTION": (
+        "A romi tangent arc (`G02`/`G03` with `R C`, `R A` or `R` alone) starts tangent to the "
+        "direction of the previous move, and there is no previous move.",
+        "Move first, or give the start direction with `R A C`, or the centre with `C I J`."),
+    "E_BLEND_NEEDS_MOVE": (
+        "A romi arc with only `R` blends the previous move into the next one, so the next block "
+        "must be a straight move whose end point does not depend on where the arc ends "
+        "(absolute `X` and `Y`).",
+        "Follow the arc with a `G00`/`G01` block with absolute `X` and `Y`, or give the arc's "
+        "sweep (`R C`) or end direction (`R A`)."),
+    "E_SCALE_OUT_OF_RANGE": (
+        "A romi `G72` scale factor is outside 0.05 to 20, the control's range.",
+        "Give a factor within 0.05 and 20; `G72 K1` cancels the scale."),
+    "E_UNEQUAL_SCALE_ARC": (
+        "An arc is programmed while `G72` scales X and Y by different factors: the result "
+        "would be an ellipse, which no arc can draw.",
+        "Scale both axes alike (`G72 K`), or cancel the scale around the arc."),
+    "E_UNKNOWN_TOOL_DIAMETER": (
+        "A romi tool change (`T<n> M06`) names a tool whose diameter usina cannot find: not in "
+        "the tool table and no `d<number>` in the block's comment. The diameter is needed for "
+        "the holes and pockets the tool makes and for cutter compensation.",
+        "Give a tool table with `--tool-table`, or write the diameter in the block's comment "
+        "(`T02 M06;broca d20mm`)."),
+    "E_POCKET_TOO_SMALL": (
+        "A romi `G26` pocket cannot be cut with the tool: its corner radius `R` is smaller than "
+        "the tool's radius, the pocket is narrower than the tool, or the finishing allowances "
+        "leave nothing to rough.",
+        "Use a smaller tool, a larger corner radius or a smaller allowance."),
+    "E_UNKNOWN_BLOCK_NUMBER": (
+        "A romi parametric statement (`GOTO`, `IF .. GOTO`, `RPT`) names a block number `N` "
+        "that no block of the program has, or `CALL` names a subroutine with no `(SUB n)`.",
+        "Correct the number, or add the block or the subroutine."),
+    "N_DEPTH_SIGN_IGNORED": (
+        "A romi cycle's depth `Z` (G81, G26) is a distance below the work surface; its sign "
+        "is ignored. The seed writes `Z40.` in one program and `Z-25.` in another.",
+        "Nothing; the note says which depth was used."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

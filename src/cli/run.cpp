@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/source.hpp"
+#include "gcode/dialect.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/var_file.hpp"
 
@@ -15,9 +16,14 @@ namespace usina::cli {
 
 void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("file", o.file, "NC program ('-' reads standard input)")->required();
+  std::vector<std::string> dialects;
+  for (const gcode::Dialect* d : gcode::all_dialects())
+    dialects.emplace_back(d->name);
   app.add_option("--dialect", o.dialect, "the control's language")
-      ->check(CLI::IsMember({"rs274ngc"}))
+      ->check(CLI::IsMember(dialects))
       ->capture_default_str();
+  app.add_option("--dialect-option", o.dialect_options,
+                 "name=value: an open choice of the dialect (repeatable; docs/dialects.md)");
   app.add_option("--tool-table", o.tool_table, "LinuxCNC tool table (lengths in machine units)");
   app.add_option("--machine-units", o.machine_units,
                  "units of the machine: of the tool table, parameters and programs without G20/G21")
@@ -91,6 +97,16 @@ std::string folder_of(const std::string& path) {
 
 int run_program(const RunOptions& o, canon::Sink& sink,
                 const std::function<void(const core::SourceManager&)>& on_sources) {
+  const gcode::Dialect* dialect = gcode::find_dialect(o.dialect);
+  gcode::OptionValues dialect_options;
+  if (dialect == nullptr) {
+    fmt::print(stderr, "usina: error: unknown dialect {}\n", o.dialect);
+    return 2;
+  }
+  if (auto bad = gcode::resolve_options(*dialect, o.dialect_options, dialect_options)) {
+    fmt::print(stderr, "usina: error: {}\n", *bad);
+    return 2;
+  }
   core::SourceManager sources;
   if (on_sources) on_sources(sources);
   StderrDiagnostics diags(sources);
@@ -127,10 +143,11 @@ int run_program(const RunOptions& o, canon::Sink& sink,
     if (!read) return 2;
     vars = std::move(*read);
   }
-  gcode::Interpreter interp(sources, std::move(opts), sink, diags);
+  auto runner = dialect->make_runner(
+      gcode::RunContext{sources, std::move(opts), std::move(dialect_options), sink, diags});
   for (const auto& v : vars)
-    interp.set_parameter(v.number, v.value);
-  const bool ok = interp.run(main_id);
+    runner->set_parameter(v.number, v.value);
+  const bool ok = runner->run(main_id);
   return ok && diags.errors() == 0 ? 0 : 1;
 }
 

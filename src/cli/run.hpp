@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,7 @@ namespace usina::cli {
 struct RunOptions {
   std::string file;
   std::string dialect = "rs274ngc";
+  std::vector<std::string> dialect_options;  // name=value
   std::string tool_table;
   std::string machine_units = "mm";
   std::string var_file;

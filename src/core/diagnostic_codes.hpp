@@ -74,4 +74,15 @@
   X(FeedSpindleStopped, W_FEED_SPINDLE_STOPPED)    \
   X(RapidIntoStock, W_RAPID_INTO_STOCK)            \
   X(ArcFeedReduced, W_ARC_FEED_REDUCED)            \
-  X(FeedClamped, W_FEED_CLAMPED)
+  X(FeedClamped, W_FEED_CLAMPED)                   \
+  /* the romi dialect */                           \
+  X(TypographicDash, W_TYPOGRAPHIC_DASH)           \
+  X(PolarWithXy, E_POLAR_WITH_XY)                  \
+  X(NoTangentDirection, E_NO_TANGENT_DIRECTION)    \
+  X(BlendNeedsMove, E_BLEND_NEEDS_MOVE)            \
+  X(ScaleOutOfRange, E_SCALE_OUT_OF_RANGE)         \
+  X(UnequalScaleArc, E_UNEQUAL_SCALE_ARC)          \
+  X(UnknownToolDiameter, E_UNKNOWN_TOOL_DIAMETER)  \
+  X(PocketTooSmall, E_POCKET_TOO_SMALL)            \
+  X(UnknownBlockNumber, E_UNKNOWN_BLOCK_NUMBER)    \
+  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)

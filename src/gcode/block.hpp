@@ -60,7 +60,9 @@ enum class Func : std::uint8_t {
   Round,
   Sin,
   Sqrt,
-  Tan
+  Tan,
+  Log10,  // Fagor LOG
+  Trunc,  // Fagor INT: the integer part, toward zero
 };
 
 struct ExprNode {

@@ -149,6 +149,13 @@ std::optional<double> Evaluator::function(const ExprNode& n, double a) {
     }
     return std::sqrt(a);
   case Func::Tan: return std::tan(core::deg_to_rad(a));
+  case Func::Log10:
+    if (a <= 0.0) {
+      return fail(n.col, core::Code::DomainError,
+                  fmt::format("LOG({}): the argument must be positive", a));
+    }
+    return std::log10(a);
+  case Func::Trunc: return std::trunc(a);
   }
   return fail(n.col, core::Code::UnknownFunction, "bad function");
 }

@@ -1,0 +1,71 @@
+#include "gcode/dialect.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace usina::gcode {
+
+// Each dialect's file defines one of these.
+const Dialect& rs274ngc_dialect();
+const Dialect& romi_dialect();
+
+const std::vector<const Dialect*>& all_dialects() {
+  static const std::vector<const Dialect*> list = {&rs274ngc_dialect(), &romi_dialect()};
+  return list;
+}
+
+const Dialect* find_dialect(std::string_view name) {
+  for (const Dialect* d : all_dialects()) {
+    if (d->name == name) return d;
+  }
+  return nullptr;
+}
+
+const CodeEntry* Dialect::find_code(char letter, int code) const {
+  for (const CodeEntry& e : codes) {
+    if (e.letter == letter && e.code == code) return &e;
+  }
+  return nullptr;
+}
+
+namespace {
+
+std::string list_options(const Dialect& d) {
+  if (d.options.empty()) return fmt::format("dialect {} has no options", d.name);
+  std::string out = fmt::format("the options of dialect {}:", d.name);
+  for (const DialectOption& o : d.options) {
+    out += fmt::format(" {}={}", o.name, fmt::join(o.values, "|"));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::string> resolve_options(const Dialect& d, const std::vector<std::string>& given,
+                                           OptionValues& out) {
+  out.clear();
+  for (const DialectOption& o : d.options)
+    out[std::string(o.name)] = std::string(o.values.front());
+  for (const std::string& g : given) {
+    const std::size_t eq = g.find('=');
+    if (eq == std::string::npos) {
+      return fmt::format("--dialect-option {} is not name=value; {}", g, list_options(d));
+    }
+    const std::string name = g.substr(0, eq);
+    const std::string value = g.substr(eq + 1);
+    auto it = std::find_if(d.options.begin(), d.options.end(),
+                           [&](const DialectOption& o) { return o.name == name; });
+    if (it == d.options.end()) {
+      return fmt::format("unknown dialect option '{}'; {}", name, list_options(d));
+    }
+    if (std::find(it->values.begin(), it->values.end(), value) == it->values.end()) {
+      return fmt::format("dialect option {} takes {}, not '{}'", name, fmt::join(it->values, "|"),
+                         value);
+    }
+    out[name] = value;
+  }
+  return std::nullopt;
+}
+
+}  // namespace usina::gcode

@@ -1,0 +1,93 @@
+// A dialect: what one control's language is (DESIGN.md, "Dialects are data
+// plus a few handlers"). The lexical rules, the G/M table (code → modal
+// group → handler name), the codes in force at program start and the named
+// options are data; the handlers are functions registered by name in the
+// dialect's own files. The runner is the interpreter that reads the table:
+// the RS274NGC interpreter (interp/) or a dialect's own block engine.
+// Adding a control is adding files under dialects/ and one line in
+// dialect.cpp's list.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "canon/sink.hpp"
+#include "core/diagnostic.hpp"
+#include "core/source.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+
+// How the text is cut into blocks and words.
+struct LexicalRules {
+  std::string_view block_ends = "\n";  // characters that end a block besides end of file
+  std::string_view comment_forms;      // e.g. "( )" or "; to block end"
+  std::string_view parameter_syntax;   // e.g. "#1 #<name>" or "P0..P999"
+  bool lower_case_meaning = false;     // a lower-case letter means something else
+  bool bare_letter_is_zero = false;    // `G` alone is G0
+  bool typographic_minus = false;      // U+2013 U+2014 U+2212 read as '-'
+};
+
+// One G or M code: code in tenths (G38.2 → 382), its modal group (dialect
+// numbering) and the name of the handler that runs it.
+struct CodeEntry {
+  char letter = 'G';
+  int code = 0;
+  int group = 0;
+  std::string_view handler;
+};
+
+// An open choice of the dialect, set with --dialect-option name=value.
+struct DialectOption {
+  std::string_view name;
+  std::vector<std::string_view> values;  // the first is the default
+  std::string_view help;
+};
+
+using OptionValues = std::map<std::string, std::string, std::less<>>;
+
+// What runs a program in a dialect.
+class ProgramRunner {
+ public:
+  virtual ~ProgramRunner() = default;
+  // A numbered parameter before the run (a parameter file).
+  virtual void set_parameter(int index, double value) = 0;
+  // Runs the program to its end or first error; true when no error.
+  virtual bool run(std::uint32_t file) = 0;
+};
+
+struct RunContext {
+  core::SourceManager& sources;
+  InterpOptions options;
+  OptionValues dialect_options;  // every option of the dialect, defaults filled in
+  canon::Sink& sink;
+  core::DiagnosticSink& diags;
+};
+
+struct Dialect {
+  std::string_view name;
+  std::string_view summary;
+  LexicalRules lexical;
+  std::vector<CodeEntry> codes;        // empty: the runner's built-in table
+  std::vector<CodeEntry> start_codes;  // in force at program start
+  std::vector<DialectOption> options;
+  std::unique_ptr<ProgramRunner> (*make_runner)(RunContext context) = nullptr;
+
+  const CodeEntry* find_code(char letter, int code) const;
+};
+
+// The dialects usina knows, by name.
+const std::vector<const Dialect*>& all_dialects();
+const Dialect* find_dialect(std::string_view name);
+
+// Reads "name=value" settings against the dialect's options and fills in
+// the defaults. On an unknown name or value, a message listing the valid
+// ones.
+std::optional<std::string> resolve_options(const Dialect& d, const std::vector<std::string>& given,
+                                           OptionValues& out);
+
+}  // namespace usina::gcode

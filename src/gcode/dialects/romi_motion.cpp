@@ -1,0 +1,397 @@
+// Moves of the romi dialect: Cartesian and polar end points of straight
+// moves, the polar and tangent arc forms, the R-only blend (which waits for
+// the next block), and the path from program coordinates through the
+// transformation and cutter compensation to the canonical machine.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/dialects/romi_engine.hpp"
+
+namespace usina::gcode::romi {
+namespace {
+
+constexpr double kOnCircle = 0.01;  // mm: an end point this far off its circle is an error
+
+double deg(double rad) {
+  return core::rad_to_deg(rad);
+}
+
+double rad(double degrees) {
+  return core::deg_to_rad(degrees);
+}
+
+Vec2 polar(Vec2 origin, double r, double angle_deg) {
+  return {origin.x + r * std::cos(rad(angle_deg)), origin.y + r * std::sin(rad(angle_deg))};
+}
+
+Vec2 xy(const Vec3& p) {
+  return {p.x, p.y};
+}
+
+// An angle in (0, 360].
+double positive_sweep(double a) {
+  double s = std::fmod(a, 360.0);
+  if (s <= 1e-9) s += 360.0;
+  return s;
+}
+
+}  // namespace
+
+Vec3 Engine::cartesian_end(const Vec3& start) const {
+  Vec3 end = start;
+  for (int a = 0; a < 3; ++a) {
+    const char letter = "XYZ"[a];
+    if (!words_.has(letter)) continue;
+    const double v = mm(words_.get(letter));
+    end[a] = incremental(letter) ? start[a] + v : v;
+  }
+  return end;
+}
+
+// The end of a straight move (G00, G01, a drilling position) from `start`.
+std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
+  const bool polar_words = words_.has('R') || words_.has('A') || words_.has('C');
+  if (!polar_words) {
+    if (words_.has('I') || words_.has('J')) {
+      const char c = words_.has('I') ? 'I' : 'J';
+      fail = {core::Code::MissingWord, words_.col(c),
+              "a polar centre (I J) with no R or C: the move has no end point"};
+      return std::nullopt;
+    }
+    return cartesian_end(start);
+  }
+  if (words_.has('X') || words_.has('Y')) {
+    const char c = words_.has('X') ? 'X' : 'Y';
+    fail = {core::Code::PolarWithXy, words_.col(c),
+            "polar words (R, A, C) and X/Y in one straight move: give the end point one way"};
+    return std::nullopt;
+  }
+  Vec3 end = cartesian_end(start);  // Z may accompany any form
+  const Vec2 p0 = xy(start);
+  const Vec2 o{words_.has('I') ? mm(words_.get('I')) : 0.0,
+               words_.has('J') ? mm(words_.get('J')) : 0.0};
+  const Vec2 d{p0.x - o.x, p0.y - o.y};
+  const double r0 = std::hypot(d.x, d.y);
+  const double t0 = deg(std::atan2(d.y, d.x));
+  Vec2 q;
+  if (words_.has('A')) {
+    if (!words_.has('R') || words_.has('C')) {
+      fail = {core::Code::MissingWord, words_.col('A'),
+              words_.has('C') ? "R A C is an arc form; a straight move takes R A or R C"
+                              : "A (the direction of the move) needs R (its length)"};
+      return std::nullopt;
+    }
+    q = polar(p0, mm(words_.get('R')), words_.get('A'));
+  } else if (words_.has('R')) {
+    const double r = incremental('R') ? r0 + mm(words_.get('R')) : mm(words_.get('R'));
+    if (words_.has('C')) {
+      q = polar(o, r, incremental('C') ? t0 + words_.get('C') : words_.get('C'));
+    } else {
+      if (r0 < 1e-9) {
+        fail = {core::Code::BadWordValue, words_.col('R'),
+                "R alone moves along the line from the polar centre through the current point, "
+                "and the current point is the centre"};
+        return std::nullopt;
+      }
+      q = {o.x + r * d.x / r0, o.y + r * d.y / r0};
+    }
+  } else {
+    q = polar(o, r0, incremental('C') ? t0 + words_.get('C') : words_.get('C'));
+  }
+  end.x = q.x;
+  end.y = q.y;
+  return end;
+}
+
+bool Engine::require_feed(const char* what) {
+  if (feed_ > 0.0) return true;
+  return error(core::Code::NoFeedRate, 0, fmt::format("{} with no feed rate: give F", what));
+}
+
+bool Engine::move() {
+  if (moved_by_handler_) return true;
+  bool position = false;
+  for (const char c : {'X', 'Y', 'Z', 'R', 'A', 'C', 'I', 'J'}) {
+    if (!words_.open(c)) continue;
+    words_.take(c);
+    position = true;
+  }
+  if (blend_) {
+    if (!position || motion_ > 1 || drill_.active) {
+      loc_ = blend_->loc;
+      return error(core::Code::BlendNeedsMove, 0,
+                   "an arc with only R blends into the next move, and the next block is not a "
+                   "straight move");
+    }
+  }
+  if (!position) return true;
+  if (drill_.active) {
+    if (motion_ > 1) {
+      return error(core::Code::NotAllowedInMode, 0,
+                   "an arc while the drilling cycle G81 is on: G80 first");
+    }
+    Fail fail;
+    auto end = line_end(pos_, fail);
+    if (!end) return error(fail);
+    return drill_at(xy(*end));
+  }
+  if (motion_ >= 2) return arc_block();
+  Fail fail;
+  auto end = line_end(pos_, fail);
+  if (!end) return error(fail);
+  if (blend_) {
+    // The end must not depend on where the blend arc ends.
+    Vec3 other = blend_->start;
+    other.x += 1.0;
+    other.y += 1.0;
+    auto check = line_end(other, fail);
+    if (!check || core::distance(xy(*check), xy(*end)) > 1e-9) {
+      loc_ = blend_->loc;
+      return error(core::Code::BlendNeedsMove, 0,
+                   "an arc with only R blends into the next move, whose end point must not "
+                   "depend on its start: give absolute X and Y");
+    }
+    if (!blend(*end)) return false;
+  }
+  if (motion_ == 1 && !require_feed("G01")) return false;
+  return emit_line(*end, motion_ == 0);
+}
+
+bool Engine::arc_block() {
+  if (!require_feed(motion_ == 2 ? "G02" : "G03")) return false;
+  if (words_.has('X') || words_.has('Y')) return arc_cartesian();
+  return arc_polar();
+}
+
+// X Y I J (absolute centre) and X Y R (shorter arc; R < 0 the longer).
+bool Engine::arc_cartesian() {
+  const bool ccw = motion_ == 3;
+  const Vec2 p0 = xy(pos_);
+  const Vec3 end = cartesian_end(pos_);
+  Vec2 center;
+  if (words_.has('A') || words_.has('C')) {
+    return error(core::Code::PolarWithXy, words_.col(words_.has('A') ? 'A' : 'C'),
+                 "an arc with X/Y takes I J or R, not A or C");
+  }
+  if (words_.has('R')) {
+    if (words_.has('I') || words_.has('J')) {
+      return error(core::Code::ArcMissingCenter, words_.col('R'),
+                   "an arc takes R or I J, not both");
+    }
+    const double r = mm(words_.get('R'));
+    if (core::distance(p0, xy(end)) < 1e-9) {
+      return error(core::Code::ArcZeroLength, words_.col('R'),
+                   "an X Y R arc with its end at its start: use C 360 or I J");
+    }
+    auto c = core::arc_center_from_radius(p0, xy(end), r, ccw, kOnCircle);
+    if (!c) {
+      return error(core::Code::ArcRadiusTooSmall, words_.col('R'),
+                   fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm",
+                               std::fabs(r), core::distance(p0, xy(end)) / 2));
+    }
+    center = *c;
+  } else if (words_.has('I') || words_.has('J')) {
+    center = {words_.has('I') ? mm(words_.get('I')) : 0.0,
+              words_.has('J') ? mm(words_.get('J')) : 0.0};
+    const double r1 = core::distance(p0, center);
+    const double r2 = core::distance(xy(end), center);
+    if (std::fabs(r1 - r2) > kOnCircle) {
+      return error(core::Code::ArcRadiusMismatch, 0,
+                   fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius "
+                               "{:.4f} about ({:.4f}, {:.4f})",
+                               end.x, end.y, std::fabs(r1 - r2), r1, center.x, center.y));
+    }
+    if (r1 < 1e-9) return error(core::Code::ArcZeroLength, 0, "arc of zero radius");
+  } else {
+    return error(core::Code::ArcMissingCenter, 0, "an arc with X/Y needs I J or R");
+  }
+  return emit_arc(end, center, ccw, 1);
+}
+
+// The polar forms: C I J, C, R C, R A, R A C, and R alone (a blend).
+bool Engine::arc_polar() {
+  const bool ccw = motion_ == 3;
+  const Vec2 p0 = xy(pos_);
+  Vec3 end = cartesian_end(pos_);
+  Vec2 center;
+  double sweep = 0.0;
+  if (words_.has('R')) {
+    const double r = mm(words_.get('R'));
+    if (!(r > 0.0))
+      return error(core::Code::BadWordValue, words_.col('R'), "arc radius must be positive");
+    double dir = 0.0;
+    if (words_.has('A') && words_.has('C')) {
+      dir = words_.get('A');
+    } else if (!direction_) {
+      return error(core::Code::NoTangentDirection, words_.col('R'),
+                   "a tangent arc with no previous move to be tangent to");
+    } else {
+      dir = *direction_;
+    }
+    const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
+                       : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
+    center = {p0.x + r * n.x, p0.y + r * n.y};
+    if (words_.has('C')) {
+      sweep = words_.get('C');
+    } else if (words_.has('A')) {
+      sweep = positive_sweep(ccw ? words_.get('A') - dir : dir - words_.get('A'));
+      if (sweep >= 360.0 - 1e-9) {
+        return error(core::Code::ArcZeroLength, words_.col('A'),
+                     "the arc would end in the direction it starts: A equals the direction "
+                     "of travel");
+      }
+    } else {
+      if (words_.has('I') || words_.has('J') || words_.has('Z')) {
+        return error(core::Code::UnusedWord, 0, "a blend arc (R alone) takes no I, J or Z");
+      }
+      blend_ = PendingBlend{loc_, center, r, ccw, pos_};
+      return true;
+    }
+  } else if (words_.has('C')) {
+    if (words_.has('A')) {
+      return error(core::Code::MissingWord, words_.col('A'), "A in an arc needs R");
+    }
+    center = {words_.has('I') ? mm(words_.get('I')) : 0.0,
+              words_.has('J') ? mm(words_.get('J')) : 0.0};
+    sweep = words_.get('C');
+  } else {
+    return error(core::Code::ArcMissingCenter, 0,
+                 "an arc needs X Y with I J or R, or the polar words C, R C, R A, R A C or R");
+  }
+  if (!(sweep > 0.0) || sweep > 360.0 * 1000) {
+    return error(core::Code::BadWordValue, words_.col('C'),
+                 "the sweep C must be positive (G02 or G03 gives the direction)");
+  }
+  const double r = core::distance(p0, center);
+  if (r < 1e-9)
+    return error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is the start point");
+  const double a0 = deg(std::atan2(p0.y - center.y, p0.x - center.x));
+  const double turns_exact = sweep / 360.0;
+  const int turns = std::max(1, static_cast<int>(std::ceil(turns_exact - 1e-9)));
+  const bool whole = std::fabs(turns_exact - std::round(turns_exact)) < 1e-9;
+  const Vec2 q = whole ? p0 : polar(center, r, ccw ? a0 + sweep : a0 - sweep);
+  end.x = q.x;
+  end.y = q.y;
+  return emit_arc(end, center, ccw, turns);
+}
+
+// The R-only arc held from the previous block, now that the next move's end
+// is known: it runs on to where its tangent passes through that end.
+bool Engine::blend(const Vec3& next_end) {
+  const PendingBlend b = *blend_;
+  blend_.reset();
+  const Vec2 q = xy(next_end);
+  const double dq = core::distance(q, b.center);
+  if (dq <= b.radius + 1e-9) {
+    loc_ = b.loc;
+    return error(core::Code::BlendNeedsMove, 0,
+                 "the next move ends inside the blend arc's circle: no tangent reaches it");
+  }
+  const double phi = std::atan2(q.y - b.center.y, q.x - b.center.x);
+  const double alpha = std::acos(b.radius / dq);
+  // Of the two tangent points, the one where the arc's direction of travel
+  // points to the end.
+  double t = 0.0;
+  for (const double cand : {phi + alpha, phi - alpha}) {
+    const Vec2 tp{b.center.x + b.radius * std::cos(cand), b.center.y + b.radius * std::sin(cand)};
+    const Vec2 dir =
+        b.ccw ? Vec2{-std::sin(cand), std::cos(cand)} : Vec2{std::sin(cand), -std::cos(cand)};
+    if ((q.x - tp.x) * dir.x + (q.y - tp.y) * dir.y > 0) t = cand;
+  }
+  const core::SourceLoc here = loc_;
+  loc_ = b.loc;
+  machine_.set_source(loc_);
+  const Vec3 end{b.center.x + b.radius * std::cos(t), b.center.y + b.radius * std::sin(t),
+                 b.start.z};
+  const bool ok = emit_arc(end, b.center, b.ccw, 1);
+  loc_ = here;
+  machine_.set_source(loc_);
+  return ok;
+}
+
+bool Engine::emit_line(const Vec3& end, bool rapid) {
+  const Vec3 m = tf_.apply(end);
+  if (comp_.active() || !comp_.arc_allowed()) {
+    if (auto e = comp_.straight(m, rapid, loc_, machine_)) return error(*e);
+  } else if (rapid) {
+    machine_.traverse(m);
+  } else {
+    machine_.feed(m);
+  }
+  const Vec2 d{end.x - pos_.x, end.y - pos_.y};
+  if (std::hypot(d.x, d.y) > 1e-9) direction_ = deg(std::atan2(d.y, d.x));
+  pos_ = end;
+  return true;
+}
+
+bool Engine::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
+  if (!tf_.uniform()) {
+    return error(core::Code::UnequalScaleArc, 0,
+                 fmt::format("an arc under G72 with unequal factors (X {}, Y {}): it would be "
+                             "an ellipse",
+                             tf_.scale_x, tf_.scale_y));
+  }
+  const Vec3 m = tf_.apply(end);
+  const Vec2 mc = tf_.apply(center);
+  const bool machine_ccw = ccw != tf_.flips();
+  const int turn = machine_ccw ? turns : -turns;
+  const Vec3 c3{mc.x, mc.y, machine_state_.pos[2]};
+  if (comp_.active() || !comp_.arc_allowed()) {
+    if (auto e = comp_.arc(m, c3, turn, loc_, machine_)) return error(*e);
+  } else {
+    machine_.arc(m, c3, turn);
+  }
+  const double ae = std::atan2(end.y - center.y, end.x - center.x);
+  direction_ = deg(ae) + (ccw ? 90.0 : -90.0);
+  pos_ = end;
+  return true;
+}
+
+bool Engine::h_mirror(int code) {
+  if (code == 300) {
+    tf_.mirror_x = tf_.mirror_y = false;
+    return true;
+  }
+  const auto x = words_.take('X');
+  const auto y = words_.take('Y');
+  if (!x && !y) return error(core::Code::MissingWord, 0, "G31 needs X and/or Y: the mirror line");
+  tf_.mirror_x = x.has_value();
+  tf_.mirror_y = y.has_value();
+  tf_.mirror_at = {x ? mm(*x) : 0.0, y ? mm(*y) : 0.0};
+  return true;
+}
+
+bool Engine::h_scale(int) {
+  const auto k = words_.take('K');
+  const auto x = words_.take('X');
+  const auto y = words_.take('Y');
+  if (!k && !x && !y) return error(core::Code::MissingWord, 0, "G72 needs K, or X and/or Y");
+  for (const char c : {'K', 'X', 'Y'}) {
+    if (!words_.has(c)) continue;
+    const double f = words_.get(c);
+    if (!(f >= 0.05 && f <= 20.0)) {
+      return error(core::Code::ScaleOutOfRange, words_.col(c),
+                   fmt::format("scale factor {}{} is outside 0.05 to 20", c, f));
+    }
+  }
+  if (k) {
+    tf_.scale_x = tf_.scale_y = *k;
+  } else {
+    tf_.scale_x = x ? *x : 1.0;
+    tf_.scale_y = y ? *y : 1.0;
+  }
+  return true;
+}
+
+bool Engine::h_rotate(int) {
+  const auto c = words_.take('C');
+  if (!c) return error(core::Code::MissingWord, 0, "G73 needs C: the angle (C0 cancels)");
+  const auto i = words_.take('I');
+  const auto j = words_.take('J');
+  tf_.rotation_deg = *c;
+  tf_.rotation_at = {i ? mm(*i) : 0.0, j ? mm(*j) : 0.0};
+  return true;
+}
+
+}  // namespace usina::gcode::romi
