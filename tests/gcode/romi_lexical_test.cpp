@@ -64,6 +64,28 @@ TEST(RomiLexical, TypographicDashIsAMinusWithAWarning) {
   }
 }
 
+TEST(RomiLexical, TypographicDashInAStatement) {
+  auto r = run_romi(
+      "(P1 = \xE2\x88\x92"
+      "4 * 2)#G00 X P1#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  expect_near(r->ends().back(), {-8, 0, 0});
+  EXPECT_TRUE(r->has(Code::TypographicDash));
+}
+
+TEST(RomiLexical, ByteOrderMarkIsSkippedWithAWarning) {
+  auto r = run_romi("\xEF\xBB\xBFG00 X1#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_TRUE(r->has(Code::ByteOrderMark));
+  expect_near(r->ends().back(), {1, 0, 0});
+}
+
+TEST(RomiLexical, CrLfLineEnds) {
+  auto r = run_romi("G00 X1#\r\nY2\r\nM02#\r\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  expect_near(r->ends().back(), {1, 2, 0});
+}
+
 TEST(RomiLexical, TypographicDashCanBeAnError) {
   auto r = run_romi(
       "G00 Y\xE2\x80\x93"

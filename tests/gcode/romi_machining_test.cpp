@@ -105,6 +105,23 @@ TEST(RomiDrill, MotionCodeCancelsTheCycleOnlyWhenAsked) {
   EXPECT_EQ(run_romi(prog, {}, {"motion_cancels_cycle=on"})->all<canon::Hole>().size(), 0u);
 }
 
+TEST(RomiDrill, G98RetractsToTheStartingHeight) {
+  auto r = run_romi("T2 M06;d20#G00 Z10#G98 G81 R2 Z5 F100 X10#G99 X20#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  const auto t = r->all<canon::Traverse>();
+  // G98: back up to Z10 after the first hole; G99: only to the R plane.
+  bool up_to_start = false;
+  for (const canon::Traverse& m : t)
+    up_to_start = up_to_start || (m.to.x == 10 && m.to.z == 10);
+  EXPECT_TRUE(up_to_start);
+  expect_near(r->ends().back(), {20, 0, 2});
+}
+
+TEST(RomiDrill, HoleWithNoToolIsAnError) {
+  auto r = run_romi("G81 R2 Z5 F100 X10#M02#");
+  EXPECT_EQ(r->first_error(), Code::UnknownToolDiameter);
+}
+
 TEST(RomiDrill, G81NeedsADepth) {
   auto r = run_romi("T2 M06;d20#G81 R2 F150#M02#");
   EXPECT_EQ(r->first_error(), Code::MissingWord);
@@ -165,6 +182,26 @@ TEST(RomiPocket, OutlineFeatureAndCycleMoves) {
   expect_near(r->ends().back(), {250, 220, 0});
 }
 
+TEST(RomiPocket, AllowancesLeaveTheFinishToTheLastPass) {
+  // 40 × 40 pocket, d10 tool: the wall pass runs 5 mm inside (5..35); with
+  // I2 J2 K1 the roughing rings stop at 7..33 and at Z−9 of Z−10.
+  auto r = run_romi("T1 M06;d10#G26 X40 Y40 Z10 I2 J2 K1 D2 L3 F100#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  double lowest_rough = 0;
+  double widest_rough = 0;
+  double widest = 0;
+  for (const canon::Feed& f : r->all<canon::Feed>()) {
+    widest = std::max(widest, f.to.x);
+    if (f.to.z > -10 + 1e-9) {
+      lowest_rough = std::min(lowest_rough, f.to.z);
+      widest_rough = std::max(widest_rough, f.to.x);
+    }
+  }
+  EXPECT_NEAR(lowest_rough, -9, 1e-9);
+  EXPECT_NEAR(widest_rough, 33, 1e-9);
+  EXPECT_NEAR(widest, 35, 1e-9);
+}
+
 TEST(RomiPocket, CircularWhenRIsHalfTheSide) {
   auto r = run_romi("T1 M06;d10#G26 X40 Y40 Z5 R20 F100#M02#");
   ASSERT_TRUE(r->ok) << r->first_error_text();
@@ -191,6 +228,18 @@ TEST(RomiTransform, MirrorOneAxisSwapsArcs) {
   ASSERT_EQ(a.size(), 1u);
   EXPECT_EQ(a[0].turn, 1);
   expect_near(a[0].to, {0, -10, 0});
+}
+
+TEST(RomiTransform, MirrorBothAxesKeepsArcs) {
+  auto r = run_romi("G31 X0 Y0#G00 X10#G02 C90 F100#M02#");
+  const auto a = r->all<canon::Arc>();
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].turn, -1);
+  expect_near(a[0].to, {0, 10, 0});
+}
+
+TEST(RomiTransform, G31NeedsAnAxis) {
+  EXPECT_EQ(run_romi("G31#M02#")->first_error(), Code::MissingWord);
 }
 
 TEST(RomiTransform, MirrorSwapsCompensationSides) {

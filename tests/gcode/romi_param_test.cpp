@@ -13,6 +13,14 @@ TEST(RomiParam, AssignAndUseAsAWordValue) {
   expect_near(r->ends().back(), {10, 4, 0});
 }
 
+TEST(RomiParam, AnyWordTakesAParameter) {
+  auto r = run_romi("(P3 = 250)#(P4 = 1)#G P4 X10 F P3#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  const auto f = r->all<canon::Feed>();
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].f, 250.0);
+}
+
 TEST(RomiParam, OperatorsAndFunctions) {
   auto r = run_romi(
       "(P2 = SIN(30) + SQRT(16) + 2^3 + 7 MOD 4 + INT(-2.5) + LOG(100) + ABS(-1) + ROUND(1.6))#"

@@ -37,6 +37,10 @@ TEST(RomiPolarLine, CUnderG91AddsToTheAngle) {
   expect_near(last_end("X10#G91 C90#C90#M02#"), {-10, 0, 0});
 }
 
+TEST(RomiPolarLine, LowerCaseCIsIncremental) {
+  expect_near(last_end("X10#c90#c90#M02#"), {-10, 0, 0});
+}
+
 TEST(RomiPolarLine, RAGoesFromTheStartPoint) {
   expect_near(last_end("X5 Y5#R10 A90#M02#"), {5, 15, 0});
 }

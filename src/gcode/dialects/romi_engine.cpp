@@ -128,6 +128,11 @@ bool Engine::run(std::uint32_t file) {
   if (f == nullptr) return false;
   loc_ = {file, 1, 1, 0, 0};
   machine_.set_source(loc_);
+  if (f->text().substr(0, 3) == "\xEF\xBB\xBF") {
+    note(core::Code::ByteOrderMark, core::Severity::Warning, 1,
+         "UTF-8 byte-order mark at the start of the file ignored");
+    cursor_.offset = 3;
+  }
   for (const CodeEntry& c : dialect_.start_codes) {
     auto h = handlers().find(c.handler);
     if (h != handlers().end()) (this->*(h->second))(c.code);

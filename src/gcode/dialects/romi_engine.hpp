@@ -58,6 +58,13 @@ class Words {
     return s.value;
   }
 
+  // Letters a handler took are no longer the block's to move with.
+  void forget_taken() {
+    for (Slot& s : slots_) {
+      if (s.taken) s.present = false;
+    }
+  }
+
   // The first letter present and not taken, or 0.
   char untaken() const {
     for (char c = 'A'; c <= 'Z'; ++c) {

@@ -111,6 +111,7 @@ bool Engine::require_feed(const char* what) {
 
 bool Engine::move() {
   if (moved_by_handler_) return true;
+  words_.forget_taken();  // G81's R and Z, G31's X Y...: not a position
   bool position = false;
   for (const char c : {'X', 'Y', 'Z', 'R', 'A', 'C', 'I', 'J'}) {
     if (!words_.open(c)) continue;

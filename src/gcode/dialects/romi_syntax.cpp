@@ -304,10 +304,12 @@ ExprRef Parser::unary(int depth) {
   }
   const char c = peek();
   const std::size_t at = i_;
-  if (c == '-' || c == '+') {
-    ++i_;
+  const auto dash = dash_length(i_);
+  if (c == '-' || c == '+' || dash) {
+    if (dash) b_.dashes.push_back(col(i_));
+    i_ += dash ? *dash : 1;
     const ExprRef a = unary(depth + 1);
-    if (c == '+' || a == kNoExpr) return a;
+    if ((c == '+' && !dash) || a == kNoExpr) return a;
     return node({ExprKind::Negate, 0, a, kNoExpr, 0.0, {}, col(at)});
   }
   if (keyword("NOT")) {
