@@ -81,7 +81,10 @@ Layer* DrawingBuilder::feed_layer(canon::Origin origin) {
 }
 
 void DrawingBuilder::traverse(const Vec3& to, canon::Origin origin) {
-  if (view_ == View::Toolpath || origin == canon::Origin::Program)
+  // A cycle's rapids in the plane are its moves from hole to hole (its own
+  // are along the drill's axis, which the plan view does not show): the part
+  // view keeps them, as the seed's drawing does; a tool-change excursion not.
+  if (view_ == View::Toolpath || origin != canon::Origin::ToolChange)
     drawing_.add_line(*rapid_, xy(pos_), xy(to));
   pos_ = to;
 }

@@ -121,13 +121,18 @@ TEST(Builder, PartViewPutsFeedsOnContourAndRapidsOnRapid) {
   EXPECT_EQ(names, (std::vector<std::string>{"CONTOUR", "RAPID", "HOLES", "POCKETS"}));
 }
 
-TEST(Builder, PartViewLeavesCycleAndToolChangeMovesOut) {
+// The cycle's rapid from hole to hole stays (the seed's drawing shows it), its
+// feeds and the tool-change excursion do not.
+TEST(Builder, PartViewLeavesCycleFeedsAndToolChangeMovesOut) {
   Drawing d = draw(
       {op(canon::Feed{{10, 0, 0}, 100.0}), op(canon::Traverse{{20, 0, 0}}, Origin::Cycle),
        op(canon::Feed{{20, 10, 0}, 100.0}, Origin::Cycle),
        op(arc({20, 10, 0}, {25, 10, 0}, kUp, 1), Origin::Cycle),
        op(canon::Traverse{{50, 50, 0}}, Origin::ToolChange), op(canon::Feed{{60, 50, 0}, 100.0})});
-  EXPECT_TRUE(entities(d, kRapidLayer).empty());
+  const auto& rapids = entities(d, kRapidLayer);
+  ASSERT_EQ(rapids.size(), 1u);
+  EXPECT_EQ(std::get<Line>(rapids[0]).from, (Vec2{10, 0}));
+  EXPECT_EQ(std::get<Line>(rapids[0]).to, (Vec2{20, 0}));
   const auto& c = entities(d, kContourLayer);
   ASSERT_EQ(c.size(), 2u);
   EXPECT_EQ(std::get<Line>(c[1]).from, (Vec2{50, 50}));  // the position still follows
