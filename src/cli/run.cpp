@@ -49,18 +49,21 @@ namespace {
 
 class StderrDiagnostics final : public core::DiagnosticSink {
  public:
-  explicit StderrDiagnostics(const core::SourceManager& sources) : sources_(sources) {}
+  StderrDiagnostics(const core::SourceManager& sources, core::DiagnosticSink* observer)
+      : sources_(sources), observer_(observer) {}
 
   void report(core::Diagnostic d) override {
     if (d.severity == core::Severity::Error) ++errors_;
     const std::string text = core::render(d, sources_);
     std::fwrite(text.data(), 1, text.size(), stderr);
+    if (observer_ != nullptr) observer_->report(std::move(d));
   }
 
   int errors() const { return errors_; }
 
  private:
   const core::SourceManager& sources_;
+  core::DiagnosticSink* observer_;
   int errors_ = 0;
 };
 
@@ -96,7 +99,8 @@ std::string folder_of(const std::string& path) {
 }  // namespace
 
 int run_program(const RunOptions& o, canon::Sink& sink,
-                const std::function<void(const core::SourceManager&)>& on_sources) {
+                const std::function<void(const core::SourceManager&)>& on_sources,
+                core::DiagnosticSink* observer) {
   const gcode::Dialect* dialect = gcode::find_dialect(o.dialect);
   gcode::OptionValues dialect_options;
   if (dialect == nullptr) {
@@ -109,7 +113,7 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   }
   core::SourceManager sources;
   if (on_sources) on_sources(sources);
-  StderrDiagnostics diags(sources);
+  StderrDiagnostics diags(sources, observer);
   auto program = open_input(o.file);
   if (!program) return 2;
   const std::uint32_t main_id = sources.add(std::move(program));

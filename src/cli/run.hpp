@@ -37,7 +37,10 @@ void add_run_options(CLI::App& app, RunOptions& o);
 // input cannot be read.
 // `on_sources` is told the run's sources before the program runs (a trace
 // writer names subroutine files with them).
+// `observer`, when given, is told every diagnostic of the run too (stats
+// lists them in its JSON).
 int run_program(const RunOptions& o, canon::Sink& sink,
-                const std::function<void(const core::SourceManager&)>& on_sources = {});
+                const std::function<void(const core::SourceManager&)>& on_sources = {},
+                core::DiagnosticSink* observer = nullptr);
 
 }  // namespace usina::cli

@@ -56,7 +56,26 @@ class CheckDiagnostics final : public core::DiagnosticSink {
 
   const std::vector<Reported>& all() const { return all_; }
 
+  // The program's own diagnostics, already printed by run_program: kept only.
+  class Keeper final : public core::DiagnosticSink {
+   public:
+    explicit Keeper(CheckDiagnostics& owner) : owner_(owner) {}
+
+    void report(core::Diagnostic d) override { owner_.keep(std::move(d)); }
+
+   private:
+    CheckDiagnostics& owner_;
+  };
+
  private:
+  void keep(core::Diagnostic d) {
+    std::string file = "<input>";
+    if (sources_ != nullptr) {
+      if (const core::SourceFile* f = sources_->get(d.loc.file)) file = f->name();
+    }
+    all_.push_back({std::move(d), std::move(file)});
+  }
+
   const core::SourceManager* sources_ = nullptr;
   std::vector<Reported> all_;
 };
@@ -248,8 +267,10 @@ void run_stats(const StatsOptions& o) {
   sim::StatsOptions so;
   so.stock_top = o.stock_top;
   sim::StatsSink sink(*profile, so, diags);
+  CheckDiagnostics::Keeper program_diags(diags);
   const int status = run_program(
-      o.run, sink, [&diags](const core::SourceManager& sources) { diags.set_sources(&sources); });
+      o.run, sink, [&diags](const core::SourceManager& sources) { diags.set_sources(&sources); },
+      &program_diags);
   if (status == 2) return set_exit_status(2);
   sink.finish();
   const sim::StatsReport report = sink.report();

@@ -174,6 +174,12 @@ TEST(StatsCli, ProgramErrorExitsOneWithTheFiguresBeforeIt) {
   const json j = parse(r);
   EXPECT_FALSE(j["complete"].get<bool>());
   EXPECT_DOUBLE_EQ(j["distance"]["cutting_mm"].get<double>(), 10.0);
+  // The program's error is in the JSON too, with its line.
+  bool listed = false;
+  for (const json& d : j["diagnostics"]) {
+    if (d["severity"] == "error" && d["line"] == 4) listed = true;
+  }
+  EXPECT_TRUE(listed) << j["diagnostics"].dump();
 }
 
 TEST(StatsCli, UnreadableProgramIsBadInput) {
