@@ -287,10 +287,12 @@ EXPLAIN = {
     "W_OVERTRAVEL": (
         "`usina stats`: a move takes an axis beyond the travel limits of the machine profile "
         "(`min`/`max` of `[axes.x]` ...), by the amount the message gives. Arcs are checked "
-        "by their true extent, not only their end points. Positions are those of the trace: "
-        "absolute, after work offsets, so a program whose offsets are not set is checked as "
-        "if its zero were the machine's zero. Reported at the first move of each excursion.",
-        "Check the work offsets (`--var-file`), the machine profile, or move the part."),
+        "by their true extent, not only their end points. The program is placed on the "
+        "machine by `--work-zero X,Y,Z` (machine coordinates of program zero) or by the "
+        "offsets of `--var-file`; with neither, the message says instead that an axis's moves "
+        "span more than its travel (reported once per axis). Reported at the first move of "
+        "each excursion.",
+        "Check the work zero, the machine profile, or move the part."),
     "W_FEED_WITHOUT_RATE": (
         "`usina stats`: a feed move has no feed rate in mm/min (inverse time `G93` or feed "
         "per revolution `G95`), so its time cannot be known from the move alone. It is timed "

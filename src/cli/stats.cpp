@@ -31,6 +31,7 @@ struct StatsOptions {
   std::string machine;
   std::string format = "text";
   std::optional<double> stock_top;
+  std::vector<double> work_zero;
 };
 
 // A diagnostic as the JSON lists it.
@@ -266,6 +267,12 @@ void run_stats(const StatsOptions& o) {
   CheckDiagnostics diags;
   sim::StatsOptions so;
   so.stock_top = o.stock_top;
+  // A parameter file places the program (its G54.. offsets are in the trace).
+  if (!o.work_zero.empty()) {
+    so.work_zero = core::Vec3{o.work_zero[0], o.work_zero[1], o.work_zero[2]};
+  } else if (!o.run.var_file.empty()) {
+    so.work_zero = core::Vec3{};
+  }
   sim::StatsSink sink(*profile, so, diags);
   CheckDiagnostics::Keeper program_diags(diags);
   const int status = run_program(
@@ -296,6 +303,11 @@ void add_stats(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--stock-top", opts->stock_top,
                   "Z of the top of the stock, mm: rapids below it are reported");
+  cmd->add_option("--work-zero", opts->work_zero,
+                  "X,Y,Z: machine coordinates of program zero (mm), to check the travel "
+                  "limits; without it (or --var-file) the program's extent is checked")
+      ->delimiter(',')
+      ->expected(3);
   cmd->callback([opts] { run_stats(*opts); });
 }
 

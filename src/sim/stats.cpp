@@ -80,7 +80,7 @@ StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
                      core::DiagnosticSink& diags)
     : machine_(machine),
       options_(options),
-      checks_(machine_, options.stock_top, options.max_reports_per_check, diags),
+      checks_(machine_, options.stock_top, options.work_zero, options.max_reports_per_check, diags),
       planner_(PlannerSettings{machine.junction_deviation, options.lookahead}) {
   tools_.emplace_back();
   slot_of_tool_[0] = 0;

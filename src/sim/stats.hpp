@@ -94,6 +94,11 @@ struct StatsReport {
 
 struct StatsOptions {
   std::optional<double> stock_top;  // mm, Z in the trace's coordinates
+  // Where the trace's origin is in machine coordinates (program zero: the
+  // work offset the operator sets). Without it the travel check cannot
+  // place the program on the machine and compares its extent with each
+  // axis's travel instead.
+  std::optional<core::Vec3> work_zero;
   std::size_t max_reports_per_check = 10;
   std::size_t lookahead = 200;  // blocks
 };

@@ -1,5 +1,6 @@
 #include "sim/stats_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -17,8 +18,9 @@ char axis_letter(int axis) {
 }
 
 StatsChecks::StatsChecks(const MachineProfile& machine, std::optional<double> stock_top,
-                         std::size_t cap, core::DiagnosticSink& diags)
-    : machine_(machine), stock_top_(stock_top), cap_(cap), diags_(diags) {}
+                         std::optional<Vec3> work_zero, std::size_t cap,
+                         core::DiagnosticSink& diags)
+    : machine_(machine), stock_top_(stock_top), work_zero_(work_zero), cap_(cap), diags_(diags) {}
 
 void StatsChecks::flag(core::Code code, const canon::Op& op, bool first_of_run,
                        const std::string& message) {
@@ -30,12 +32,31 @@ void StatsChecks::flag(core::Code code, const canon::Op& op, bool first_of_run,
   diags_.report({code, core::Severity::Warning, op.src, message});
 }
 
+void StatsChecks::extent(const canon::Op& op, int i, double low, double high) {
+  const auto k = static_cast<std::size_t>(i);
+  span_lo_[k] = spanned_ ? std::min(span_lo_[k], low) : low;
+  span_hi_[k] = spanned_ ? std::max(span_hi_[k], high) : high;
+  const AxisLimits& a = machine_.axes[k];
+  const double span = span_hi_[k] - span_lo_[k];
+  if (too_long_[k] || span <= a.max - a.min + kTolerance) return;
+  too_long_[k] = true;
+  flag(core::Code::OverTravel, op, true,
+       fmt::format("{} spans {:.3f} mm (from {:.3f} to {:.3f}), more than the {:.3f} mm the axis "
+                   "travels; give the work zero (--work-zero or --var-file) to check the limits",
+                   axis_letter(i), span, span_lo_[k], span_hi_[k], a.max - a.min));
+}
+
 void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, const Axes6& end) {
   for (int i = 0; i < 6; ++i) {
     const AxisLimits& a = machine_.axes[static_cast<std::size_t>(i)];
     if (!a.present) continue;
-    const double low = i < 3 ? lo[i] : end[static_cast<std::size_t>(i)];
-    const double high = i < 3 ? hi[i] : end[static_cast<std::size_t>(i)];
+    if (i < 3 && !work_zero_) {
+      extent(op, i, lo[i], hi[i]);
+      continue;
+    }
+    const double shift = i < 3 ? (*work_zero_)[i] : 0.0;
+    const double low = i < 3 ? lo[i] + shift : end[static_cast<std::size_t>(i)];
+    const double high = i < 3 ? hi[i] + shift : end[static_cast<std::size_t>(i)];
     const char* unit = i < 3 ? "mm" : "deg";
     auto& out = outside_[static_cast<std::size_t>(i)];
     const bool below = low < a.min - kTolerance;
@@ -51,9 +72,10 @@ void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, co
                        axis_letter(i), high, unit, high - a.max, unit, a.max));
     }
     // The excursion lasts until a move ends back inside the limits.
-    const double at = end[static_cast<std::size_t>(i)];
+    const double at = end[static_cast<std::size_t>(i)] + shift;
     out = {at<a.min - kTolerance, at> a.max + kTolerance};
   }
+  spanned_ = true;
 }
 
 void StatsChecks::feed(const canon::Op& op, bool has_rate, bool spindle_running) {

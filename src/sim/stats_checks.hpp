@@ -20,8 +20,10 @@ namespace usina::sim {
 
 class StatsChecks {
  public:
-  StatsChecks(const MachineProfile& machine, std::optional<double> stock_top, std::size_t cap,
-              core::DiagnosticSink& diags);
+  // `work_zero`: the machine coordinates of the trace's origin, or nullopt
+  // when unknown (the linear axes are then checked by the program's extent).
+  StatsChecks(const MachineProfile& machine, std::optional<double> stock_top,
+              std::optional<Vec3> work_zero, std::size_t cap, core::DiagnosticSink& diags);
 
   // A move whose path spans [lo, hi] (X Y Z) and ends at `end` (A B C checked there).
   void travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, const Axes6& end);
@@ -43,16 +45,24 @@ class StatsChecks {
   const std::map<core::Code, std::uint64_t>& counts() const { return counts_; }
 
  private:
+  // With no work zero: the extent of the program so far on linear axis `i`
+  // against the axis's travel, reported once per axis.
+  void extent(const canon::Op& op, int i, double low, double high);
+
   // Counts the op; reports it when `first_of_run` and under the cap.
   void flag(core::Code code, const canon::Op& op, bool first_of_run, const std::string& message);
 
   const MachineProfile& machine_;
   std::optional<double> stock_top_;
+  std::optional<Vec3> work_zero_;
   std::size_t cap_;
   core::DiagnosticSink& diags_;
   std::map<core::Code, std::uint64_t> counts_;
   std::map<core::Code, std::size_t> shown_;
   std::array<std::array<bool, 2>, 6> outside_{};  // per axis, below min / above max
+  std::array<double, 3> span_lo_{}, span_hi_{};   // the program's extent (no work zero)
+  bool spanned_ = false;
+  std::array<bool, 3> too_long_{};
   bool in_no_rate_run_ = false;
   bool in_stopped_run_ = false;
   bool in_stock_run_ = false;

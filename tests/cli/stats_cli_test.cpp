@@ -144,8 +144,8 @@ TEST(StatsCli, TextIsForAMachinist) {
 }
 
 TEST(StatsCli, MachineProfileAndItsChecks) {
-  // small_vmc: Z from -350 to 0, so Z5 is over travel.
-  const Result r = usina("stats --format json --machine '" + kVmc + "' -",
+  // small_vmc: Z from -350 to 0, so Z5 is over travel with program zero at machine zero.
+  const Result r = usina("stats --format json --work-zero 0,0,0 --machine '" + kVmc + "' -",
                          "G21\nS1000 M3\nG0 Z5\nG1 X10 F100\nM2\n");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = parse(r);
@@ -165,6 +165,17 @@ TEST(StatsCli, StockTopReportsRapidsIntoTheStock) {
   EXPECT_TRUE(contains(r.err, "[W_RAPID_INTO_STOCK]")) << r.err;
   EXPECT_TRUE(contains(r.out, "W_RAPID_INTO_STOCK")) << r.out;
   EXPECT_FALSE(contains(usina("stats -", "G21\nG0 X10 Z-1\nM2\n").err, "W_RAPID"));
+}
+
+// Without a work zero, a program that fits the machine's travel is not
+// flagged wherever its zero is; one longer than the travel is.
+TEST(StatsCli, WithoutWorkZeroTheExtentIsChecked) {
+  const std::string vmc = " --machine '" + kVmc + "' -";
+  EXPECT_FALSE(contains(usina("stats" + vmc, "G21\nS1000 M3\nG0 Z5\nG1 X10 F100\nM2\n").err,
+                        "W_OVERTRAVEL"));
+  const Result r = usina("stats" + vmc, "G21\nS1000 M3\nG0 X-400\nG1 X400 F100\nM2\n");
+  EXPECT_TRUE(contains(r.err, "<stdin>:4:1: warning: X spans 800.000 mm")) << r.err;
+  EXPECT_NE(usina("stats --work-zero 1,2" + vmc, "M2\n").status, 0);
 }
 
 TEST(StatsCli, ProgramErrorExitsOneWithTheFiguresBeforeIt) {

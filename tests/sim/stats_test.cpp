@@ -215,8 +215,50 @@ accel = 1
 
 // --- checks ---------------------------------------------------------------------
 
-TEST(StatsChecks, OverTravelOncePerExcursion) {
+// Program zero 50 mm left of machine zero: X120 in the program is X70 on
+// the machine (inside test_profile's -100..100).
+TEST(StatsChecks, WorkZeroPlacesTheProgramOnTheMachine) {
+  StatsOptions o;
+  o.work_zero = Vec3{-50, 0, 0};
+  Machine run(test_profile(), o);
+  spindle_on(run);
+  run(feed_to({120, 0, 0}, 600), 2);  // machine X70: inside
+  run(feed_to({160, 0, 0}, 600), 3);  // machine X110: 10 above
+  run.done();
+  const auto d = run.with(core::Code::OverTravel);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0]->loc.line, 3u);
+  EXPECT_EQ(d[0]->message, "X goes to 110.000 mm, 10.000 mm above its travel limit 100.000");
+}
+
+// Without a work zero only the extent can be checked: X from -30 to 180 is
+// 210 mm, more than the 200 mm of travel of test_profile's X (-100..100);
+// reported once, at the move that makes it too long.
+TEST(StatsChecks, WithoutWorkZeroTheExtentIsChecked) {
   Machine run;
+  spindle_on(run);
+  run(feed_to({-30, 0, 0}, 600), 2);
+  run(feed_to({160, 0, 0}, 600), 3);  // 190 mm: fits
+  run(feed_to({180, 0, 0}, 600), 4);  // 210 mm: too long
+  run(feed_to({190, 0, 0}, 600), 5);  // still too long: not again
+  run.done();
+  const auto d = run.with(core::Code::OverTravel);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0]->loc.line, 4u);
+  EXPECT_EQ(d[0]->message,
+            "X spans 210.000 mm (from -30.000 to 180.000), more than the 200.000 mm the axis "
+            "travels; give the work zero (--work-zero or --var-file) to check the limits");
+}
+
+// The tests of the travel limits place program zero at machine zero.
+StatsOptions at_machine_zero() {
+  StatsOptions o;
+  o.work_zero = Vec3{};
+  return o;
+}
+
+TEST(StatsChecks, OverTravelOncePerExcursion) {
+  Machine run(test_profile(), at_machine_zero());
   spindle_on(run);
   run(feed_to({120, 0, 0}, 600), 2);  // out: reported
   run(feed_to({130, 0, 0}, 600), 3);  // still out: counted only
@@ -236,7 +278,7 @@ TEST(StatsChecks, OverTravelOncePerExcursion) {
 TEST(StatsChecks, OverTravelOfAnArcUsesItsExtent) {
   MachineProfile m = test_profile();
   m.axes[1].min = -3;
-  Machine run(m);
+  Machine run(m, at_machine_zero());
   spindle_on(run);
   run(half_circle({0, 0, 0}, 5, 1, 600), 7);
   run.done();
@@ -247,7 +289,7 @@ TEST(StatsChecks, OverTravelOfAnArcUsesItsExtent) {
 }
 
 TEST(StatsChecks, OverTravelReportsAtMostTheCap) {
-  StatsOptions o;
+  StatsOptions o = at_machine_zero();
   o.max_reports_per_check = 10;
   Machine run(test_profile(), o);
   spindle_on(run);
