@@ -25,8 +25,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--dialect-option", o.dialect_options,
                  "name=value: an open choice of the dialect (repeatable; docs/dialects.md)");
   app.add_option("--tool-table", o.tool_table, "LinuxCNC tool table (lengths in machine units)");
-  app.add_option("--machine-units", o.machine_units,
-                 "units of the machine: of the tool table, parameters and programs without G20/G21")
+  app.add_option(
+         "--machine-units", o.machine_units,
+         "units of the machine: of the tool table and stored parameters (programs start in G21)")
       ->check(CLI::IsMember({"mm", "inch"}))
       ->capture_default_str();
   app.add_option("--var-file", o.var_file, "LinuxCNC parameter file to start from");
