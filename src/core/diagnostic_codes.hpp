@@ -67,4 +67,13 @@
   X(Message, N_MESSAGE)                            \
   X(Unsupported, E_UNSUPPORTED)                    \
   /* machine profiles (sim) */                     \
-  X(BadMachineProfile, E_BAD_MACHINE_PROFILE)
+  X(BadMachineProfile, E_BAD_MACHINE_PROFILE)      \
+  /* cam generators: drawings, fonts, values */    \
+  X(DxfUnreadable, E_DXF_UNREADABLE)               \
+  X(DxfNoEntities, E_DXF_NO_ENTITIES)              \
+  X(DxfUnsupportedEntity, W_DXF_UNSUPPORTED)       \
+  X(GenBadValue, E_GEN_BAD_VALUE)                  \
+  X(GenToolTooBig, E_GEN_TOOL_TOO_BIG)             \
+  X(GenOpenOutline, E_GEN_OPEN_OUTLINE)            \
+  X(FontUnreadable, E_FONT_UNREADABLE)             \
+  X(TextNotInFont, E_TEXT_NOT_IN_FONT)

@@ -1,0 +1,180 @@
+#include "cam/pocket.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace usina::cam {
+namespace {
+
+// The pocket's region for Clipper: outline counter-clockwise, islands clockwise.
+std::vector<Ring> region(const PocketShape& s, double tol) {
+  std::vector<Ring> r{to_ring(s.outline, tol, true)};
+  for (const Path& island : s.islands)
+    r.push_back(to_ring(island, tol, false));
+  return r;
+}
+
+// Strict crossing of segments ab and cd (touching does not count).
+bool crosses(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = core::cross(b - a, c - a);
+  const double d2 = core::cross(b - a, d - a);
+  const double d3 = core::cross(d - c, a - c);
+  const double d4 = core::cross(d - c, b - c);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+// Whether the tool centre may feed straight from a to b: the segment crosses
+// no wall ring and its middle is inside the walls (even-odd over the rings,
+// so inside the outline's and outside the islands').
+bool inside_walls(Vec2 a, Vec2 b, const std::vector<Ring>& walls) {
+  int count = 0;
+  const Vec2 mid = (a + b) * 0.5;
+  for (const Ring& r : walls) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      if (crosses(a, b, r[i], r[(i + 1) % r.size()])) return false;
+    }
+    if (inside(r, mid)) ++count;
+  }
+  return count % 2 == 1;
+}
+
+class PocketWriter {
+ public:
+  PocketWriter(ProgramWriter& w, const std::vector<Ring>& walls) : w_(w), walls_(walls) {}
+
+  // One ring at height z from its point nearest the tool, reached by a feed
+  // inside the walls when there is one, else over the top.
+  void ring(const Ring& r, double z, bool first) {
+    const Vec3 at = w_.position();
+    const Path p = ring_to_path(r, {at.x, at.y});
+    if (first || !inside_walls({at.x, at.y}, p.start, walls_)) {
+      w_.rapid_over(p.start);
+      w_.plunge(z);
+    } else {
+      w_.feed({p.start.x, p.start.y, z});
+    }
+    w_.path(p, z);
+  }
+
+ private:
+  ProgramWriter& w_;
+  const std::vector<Ring>& walls_;
+};
+
+bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::DiagnosticSink& diags) {
+  bool ok = check_cutting(o.cut, diags);
+  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
+  ok = check_positive("the step down", o.step_down, "mm", diags) && ok;
+  ok = check_positive("the stepover", o.stepover, "mm", diags) && ok;
+  ok = check_positive("the finish allowance", o.finish_allowance, "mm", diags, true) && ok;
+  ok = check_positive("the tolerance", o.tolerance, "mm", diags) && ok;
+  if (!ok) return false;
+  if (o.stepover > o.cut.tool_diameter) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("the stepover {:g} mm is more than the tool diameter {:g} mm, which "
+                            "would leave ridges between the rings; give at most {:g}",
+                            o.stepover, o.cut.tool_diameter, o.cut.tool_diameter));
+  }
+  if (!shape.outline.closed) {
+    return fail(diags, core::Code::GenOpenOutline,
+                fmt::format("the pocket's outline (from ({:g}, {:g})) is not closed; a pocket "
+                            "needs a closed outline",
+                            shape.outline.start.x, shape.outline.start.y));
+  }
+  for (const Path& island : shape.islands) {
+    if (!island.closed) {
+      return fail(diags, core::Code::GenOpenOutline,
+                  fmt::format("the island from ({:g}, {:g}) is not closed", island.start.x,
+                              island.start.y));
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+Path rectangle(Vec2 c, double width, double height, double r) {
+  const double x0 = c.x - width / 2, x1 = c.x + width / 2;
+  const double y0 = c.y - height / 2, y1 = c.y + height / 2;
+  Path p{{c.x, y0}, {}, true};
+  auto line = [&](Vec2 to) {
+    if (!(to == end_point(p))) p.segs.push_back({to, std::nullopt, 0});
+  };
+  auto corner = [&](Vec2 to, Vec2 center) {
+    if (r > 0) p.segs.push_back({to, center, 1});
+  };
+  line({x1 - r, y0});
+  corner({x1, y0 + r}, {x1 - r, y0 + r});
+  line({x1, y1 - r});
+  corner({x1 - r, y1}, {x1 - r, y1 - r});
+  line({x0 + r, y1});
+  corner({x0, y1 - r}, {x0 + r, y1 - r});
+  line({x0, y0 + r});
+  corner({x0 + r, y0}, {x0 + r, y0 + r});
+  line({c.x, y0});
+  return p;
+}
+
+Path circle(Vec2 center, double radius) {
+  const Vec2 a{center.x + radius, center.y};
+  return {a, {{a, center, 1}}, true};
+}
+
+PocketRings pocket_rings(const PocketShape& shape, const PocketOptions& o) {
+  const double r = o.cut.tool_diameter / 2.0;
+  const std::vector<Ring> reg = region(shape, o.tolerance);
+  PocketRings out;
+  out.finish = offset_rings(reg, -r, o.tolerance);
+  if (out.finish.empty()) return out;
+  std::vector<std::vector<Ring>> levels;
+  double d = r + o.finish_allowance;
+  for (auto rings = offset_rings(reg, -d, o.tolerance); !rings.empty();
+       rings = offset_rings(reg, -d, o.tolerance)) {
+    levels.push_back(std::move(rings));
+    d += o.stepover;
+  }
+  // The material deeper than a tool radius inside the last ring (a stepover
+  // above the radius leaves a core uncut): one more ring a radius further in.
+  const double last = d - o.stepover;
+  if (!levels.empty() && o.stepover > r) {
+    auto core_rings = offset_rings(reg, -(last + r), o.tolerance);
+    if (!core_rings.empty()) levels.push_back(std::move(core_rings));
+  }
+  for (auto it = levels.rbegin(); it != levels.rend(); ++it) {
+    out.roughing.insert(out.roughing.end(), it->begin(), it->end());
+  }
+  return out;
+}
+
+bool generate_pocket(const PocketShape& shape, const PocketOptions& o, canon::Sink& sink,
+                     core::DiagnosticSink& diags) {
+  if (!check_pocket(shape, o, diags)) return false;
+  const PocketRings rings = pocket_rings(shape, o);
+  if (rings.finish.empty()) {
+    return fail(diags, core::Code::GenToolTooBig,
+                fmt::format("a tool of diameter {:g} mm does not fit in the pocket; use a "
+                            "smaller tool",
+                            o.cut.tool_diameter));
+  }
+  ProgramWriter w(sink, o.cut);
+  w.begin(fmt::format("usina gen pocket: depth {:g} mm, stepover {:g} mm", o.depth, o.stepover));
+  w.emit(canon::Pocket{to_outline(shape.outline), o.depth});
+  w.set_origin(canon::Origin::Cycle);
+  PocketWriter pw(w, rings.finish);
+  for (const double z : depth_levels(o.depth, o.step_down)) {
+    bool first = true;
+    for (const Ring& r : rings.roughing)
+      pw.ring(r, z, std::exchange(first, false));
+    for (const Ring& r : rings.finish)
+      pw.ring(r, z, std::exchange(first, false));
+  }
+  w.retract();
+  w.set_origin(canon::Origin::Program);
+  w.end();
+  return true;
+}
+
+}  // namespace usina::cam
