@@ -77,8 +77,9 @@ bool generate_engrave(const HersheyFont& font, const EngraveOptions& o, canon::S
   std::vector<std::vector<Vec2>> strokes;
   if (!ok || !layout_text(font, o, strokes, diags)) return false;
   ProgramWriter w(sink, o.cut);
-  w.begin(
-      fmt::format("usina gen engrave: \"{}\", {:g} mm high, font {}", o.text, o.height, font.name));
+  // The text itself stays out of the comment: a parenthesis in it would end
+  // a G-code comment early.
+  w.begin(fmt::format("usina gen engrave: {} characters, {:g} mm high", o.text.size(), o.height));
   for (const auto& stroke : strokes) {
     w.rapid_over(stroke.front());
     w.plunge(-o.depth);
