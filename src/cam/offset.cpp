@@ -108,14 +108,21 @@ Ring to_ring(const Path& p, double tolerance, bool ccw) {
 }
 
 Path ring_to_path(const Ring& ring, Vec2 near) {
-  std::size_t first = 0;
-  for (std::size_t i = 1; i < ring.size(); ++i) {
-    if (core::distance(ring[i], near) < core::distance(ring[first], near)) first = i;
+  // Starts at the ring's point nearest `near`, which may be inside an edge:
+  // that edge is split there (unless the point is one of its ends).
+  std::size_t edge = 0;
+  Vec2 at = ring.front();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 q = nearest_on(ring[i], ring[(i + 1) % ring.size()], near);
+    if (core::distance(q, near) < core::distance(at, near)) edge = i, at = q;
   }
-  Path path{ring[first], {}, true};
-  for (std::size_t k = 1; k <= ring.size(); ++k) {
-    path.segs.push_back({ring[(first + k) % ring.size()], std::nullopt, 0});
+  const std::size_t n = ring.size();
+  Path path{at, {}, true};
+  for (std::size_t k = 1; k <= n; ++k) {
+    const Vec2 v = ring[(edge + k) % n];
+    if (!(v == end_point(path))) path.segs.push_back({v, std::nullopt, 0});
   }
+  if (!(at == end_point(path))) path.segs.push_back({at, std::nullopt, 0});
   return path;
 }
 
