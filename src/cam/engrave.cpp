@@ -74,6 +74,7 @@ bool generate_engrave(const HersheyFont& font, const EngraveOptions& o, canon::S
                       core::DiagnosticSink& diags) {
   bool ok = check_cutting(o.cut, diags);
   ok = check_positive("the depth", o.depth, "mm", diags) && ok;
+  ok = check_positive("the text height", o.height, "mm", diags) && ok;
   std::vector<std::vector<Vec2>> strokes;
   if (!ok || !layout_text(font, o, strokes, diags)) return false;
   ProgramWriter w(sink, o.cut);
