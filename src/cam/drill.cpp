@@ -83,6 +83,16 @@ bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& o, cano
   w.begin(fmt::format("usina gen drill: {} holes, depth {:g} mm{}", points.size(), o.depth,
                       o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string()));
   w.rapid_over(points.front());
+  if (o.form == HoleForm::Features) {
+    const Vec2 p = points.front();
+    w.plunge(o.retract);  // the post's cycle drills at this feed
+    w.rapid({p.x, p.y, o.cut.safe_z});
+    for (const Vec2& q : points) {
+      w.emit(canon::Hole{{q.x, q.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth});
+    }
+    w.end();
+    return true;
+  }
   w.set_origin(canon::Origin::Cycle);
   for (const Vec2& p : points) {
     w.rapid({p.x, p.y, o.cut.safe_z});

@@ -1,7 +1,14 @@
-// Drilling patterns: a list of points, a bolt circle, a grid. Each hole is a
-// Hole feature followed by its moves (origin Cycle), the moves LinuxCNC's
-// G81 (or G83 with a peck) makes in G98 mode: so a post writes the canned
-// cycle when the control has it, and the moves when it has not.
+// Drilling patterns: a list of points, a bolt circle, a grid, in one of two
+// forms (HoleForm):
+// - Moves: each hole a Hole feature followed by its moves, all of origin
+//   Cycle: the ops usina's interpreter makes of a G81 (G83 with a peck) in
+//   G98 mode, so a drawing, a simulation or a trace sees every move, and a
+//   post writes the moves as plain blocks (a conversion expands cycles);
+// - Features: each hole a bare Hole feature (origin Program) and no moves, so
+//   the post drills it: G81/G83 where the control has canned cycles, the
+//   same moves where it has not. The post drills at the last feed rate, so
+//   the program first feeds down to the R plane over the first hole (at the
+//   plunge feed) and rapids back to the safe Z.
 #pragma once
 
 #include <vector>
@@ -18,7 +25,10 @@ std::vector<Vec2> bolt_circle(Vec2 center, double radius, int count, double star
 // other row walked back (the shorter travel between rows).
 std::vector<Vec2> grid(Vec2 origin, int nx, int ny, double dx, double dy);
 
+enum class HoleForm { Moves, Features };
+
 struct DrillOptions {
+  HoleForm form = HoleForm::Moves;
   Cutting cut;                  // tool_diameter is the drill's (the Hole's diameter)
   double depth = 5.0;           // mm below the top, to the drill's tip
   double retract = 1.0;         // mm above the top: the R plane each hole starts and ends at

@@ -82,6 +82,26 @@ TEST(Drill, PecksAsG83OutToRAndBackToTheClearance) {
   EXPECT_EQ(zs, expect);
 }
 
+TEST(Drill, FeaturesFormIsBareHolesAfterAFeedThatSetsTheRate) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  DrillOptions o = options();
+  o.form = HoleForm::Features;
+  ASSERT_TRUE(generate_drill(bolt_circle({0, 0}, 20, 4, 0), o, tp, d));
+  const auto holes = ops_of<canon::Hole>(tp);
+  ASSERT_EQ(holes.size(), 4u);
+  EXPECT_NEAR(holes[1].at.y, 20, 1e-12);
+  for (const canon::Op& op : tp.ops())
+    EXPECT_EQ(op.origin, canon::Origin::Program);
+  const auto feeds = ops_of<canon::Feed>(tp);
+  ASSERT_EQ(feeds.size(), 1u);
+  EXPECT_EQ(feeds[0].to, (Vec3{20, 0, 2}));
+  EXPECT_EQ(feeds[0].f, o.cut.plunge_feed);
+  // Back at the safe Z before the first hole: the cycle's clear level.
+  const auto t = ops_of<canon::Traverse>(tp);
+  EXPECT_EQ(t[1].to, (Vec3{20, 0, 10}));
+}
+
 TEST(Drill, ErrorsNothingEmitted) {
   canon::Toolpath tp;
   core::DiagnosticList d;
