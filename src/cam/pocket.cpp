@@ -123,6 +123,46 @@ Path circle(Vec2 center, double radius) {
   return {a, {{a, center, 1}}, true};
 }
 
+std::optional<PocketShape> pocket_shape(const std::vector<Path>& paths,
+                                        core::DiagnosticSink& diags) {
+  constexpr double kTol = 0.001;
+  std::optional<std::size_t> outer;
+  double outer_area = 0.0;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    if (!paths[i].closed) {
+      fail(diags, core::Code::GenOpenOutline,
+           fmt::format("the contour from ({:g}, {:g}) to ({:g}, {:g}) is open; a pocket's "
+                       "outline and islands must be closed",
+                       paths[i].start.x, paths[i].start.y, end_point(paths[i]).x,
+                       end_point(paths[i]).y));
+      return std::nullopt;
+    }
+    const double area = std::fabs(signed_area2(linearize(paths[i], kTol)));
+    if (!outer || area > outer_area) outer = i, outer_area = area;
+  }
+  if (!outer) {
+    fail(diags, core::Code::GenOpenOutline, "there is no contour to pocket");
+    return std::nullopt;
+  }
+  PocketShape shape{paths[*outer], {}};
+  const Ring outline = to_ring(shape.outline, kTol, true);
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    if (i == *outer) continue;
+    for (const Vec2& p : linearize(paths[i], kTol)) {
+      if (!inside(outline, p)) {
+        fail(diags, core::Code::GenBadValue,
+             fmt::format("the contour from ({:g}, {:g}) is not inside the pocket's outline "
+                         "(the largest contour, from ({:g}, {:g})); draw one pocket at a time",
+                         paths[i].start.x, paths[i].start.y, shape.outline.start.x,
+                         shape.outline.start.y));
+        return std::nullopt;
+      }
+    }
+    shape.islands.push_back(paths[i]);
+  }
+  return shape;
+}
+
 PocketRings pocket_rings(const PocketShape& shape, const PocketOptions& o) {
   const double r = o.cut.tool_diameter / 2.0;
   const std::vector<Ring> reg = region(shape, o.tolerance);

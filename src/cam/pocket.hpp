@@ -24,6 +24,13 @@ Path rectangle(Vec2 center, double width, double height, double corner_radius);
 // A circle, counter-clockwise from its rightmost point.
 Path circle(Vec2 center, double radius);
 
+// A drawing's chained paths as a pocket: the closed path of the largest area
+// is the outline, every other closed path an island inside it. Nullopt after
+// an error: an open path (E_GEN_OPEN_OUTLINE), a closed path outside the
+// outline or crossing it (E_GEN_BAD_VALUE), no path at all.
+std::optional<PocketShape> pocket_shape(const std::vector<Path>& paths,
+                                        core::DiagnosticSink& diags);
+
 struct PocketOptions {
   Cutting cut;
   double depth = 1.0;             // mm below the top

@@ -155,6 +155,26 @@ TEST(Pocket, OpenOutlineOrIslandIsAnError) {
   EXPECT_EQ(count_code(d, core::Code::GenOpenOutline), 2);
 }
 
+TEST(PocketShape, LargestClosedContourIsTheOutlineTheOthersIslands) {
+  core::DiagnosticList d;
+  const auto shape =
+      pocket_shape({circle({0, 0}, 3), rectangle({0, 0}, 40, 30, 2), circle({10, 5}, 2)}, d);
+  ASSERT_TRUE(shape);
+  EXPECT_NEAR(path_length(shape->outline), path_length(rectangle({0, 0}, 40, 30, 2)), 1e-12);
+  ASSERT_EQ(shape->islands.size(), 2u);
+  EXPECT_EQ(shape->islands[1].start, (Vec2{12, 5}));
+}
+
+TEST(PocketShape, OpenOutsideOrNothingIsAnError) {
+  core::DiagnosticList d;
+  const Path open{{0, 0}, {{{10, 0}, std::nullopt, 0}}, false};
+  EXPECT_FALSE(pocket_shape({circle({0, 0}, 30), open}, d));
+  EXPECT_FALSE(pocket_shape({circle({0, 0}, 30), circle({100, 0}, 3)}, d));
+  EXPECT_FALSE(pocket_shape({}, d));
+  EXPECT_EQ(count_code(d, core::Code::GenOpenOutline), 2);
+  EXPECT_EQ(count_code(d, core::Code::GenBadValue), 1);
+}
+
 TEST(Pocket, BadValuesAreErrors) {
   canon::Toolpath tp;
   core::DiagnosticList d;
