@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <unordered_map>
 
 #include <polyclipping/clipper.hpp>
 
@@ -50,21 +52,63 @@ Vec2 nearest_on(Vec2 a, Vec2 b, Vec2 p) {
   return a + d * t;
 }
 
-// Which side of the polyline `pts` the point p is on: +1 left, −1 right,
-// judged at the polyline's point nearest p.
-int side_of(const std::vector<Vec2>& pts, Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  int side = 0;
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const Vec2 q = nearest_on(pts[i], pts[i + 1], p);
-    const double d = core::distance(p, q);
-    if (d < best) {
-      best = d;
-      side = core::cross(pts[i + 1] - pts[i], p - q) >= 0.0 ? 1 : -1;
+// Which side of the polyline `pts` a point of its offset band is on: +1
+// left, −1 right, judged at the polyline's point nearest it. The band's points
+// are at most `reach` from the polyline, so only the segments in the grid
+// cells within `reach` are looked at: linear, not quadratic, in the points.
+class SideFinder {
+ public:
+  SideFinder(const std::vector<Vec2>& pts, double reach)
+      : pts_(pts), cell_(std::max(reach, 1e-6)), reach_(reach) {
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      const auto [x0, y0] =
+          cell_of({std::min(pts[i].x, pts[i + 1].x), std::min(pts[i].y, pts[i + 1].y)});
+      const auto [x1, y1] =
+          cell_of({std::max(pts[i].x, pts[i + 1].x), std::max(pts[i].y, pts[i + 1].y)});
+      for (std::int64_t x = x0; x <= x1; ++x) {
+        for (std::int64_t y = y0; y <= y1; ++y)
+          cells_[key(x, y)].push_back(i);
+      }
     }
   }
-  return side;
-}
+
+  int side(Vec2 p) const {
+    double best = std::numeric_limits<double>::infinity();
+    int side = 0;
+    const auto [x0, y0] = cell_of(p - Vec2{reach_, reach_});
+    const auto [x1, y1] = cell_of(p + Vec2{reach_, reach_});
+    for (std::int64_t x = x0; x <= x1; ++x) {
+      for (std::int64_t y = y0; y <= y1; ++y) {
+        const auto it = cells_.find(key(x, y));
+        if (it == cells_.end()) continue;
+        for (const std::size_t i : it->second) {
+          const Vec2 q = nearest_on(pts_[i], pts_[i + 1], p);
+          const double d = core::distance(p, q);
+          if (d < best) {
+            best = d;
+            side = core::cross(pts_[i + 1] - pts_[i], p - q) >= 0.0 ? 1 : -1;
+          }
+        }
+      }
+    }
+    return side;
+  }
+
+ private:
+  std::pair<std::int64_t, std::int64_t> cell_of(Vec2 p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x / cell_)),
+            static_cast<std::int64_t>(std::floor(p.y / cell_))};
+  }
+
+  static std::uint64_t key(std::int64_t x, std::int64_t y) {
+    return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(y);
+  }
+
+  const std::vector<Vec2>& pts_;
+  double cell_;
+  double reach_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+};
 
 // The longest cyclic run of ring points on the wanted side.
 std::vector<Vec2> longest_run(const Ring& ring, const std::vector<bool>& wanted) {
@@ -154,9 +198,11 @@ std::optional<Path> offset_open(const Path& p, double radius, bool left, double 
   }
   if (!outer) return std::nullopt;
   const Ring band = to_mm(*outer);
+  // Clipper's integer rounding may put a band point a little beyond the radius.
+  const SideFinder sides(pts, radius + tolerance + 2.0 / kClipperScale);
   std::vector<bool> wanted;
   for (const Vec2& q : band)
-    wanted.push_back(side_of(pts, q) == (left ? 1 : -1));
+    wanted.push_back(sides.side(q) == (left ? 1 : -1));
   std::vector<Vec2> run = longest_run(band, wanted);
   if (run.size() < 2) return std::nullopt;
   if (core::distance(run.front(), pts.front()) > core::distance(run.back(), pts.front())) {
