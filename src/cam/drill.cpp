@@ -46,10 +46,12 @@ bool check_drill(const std::vector<Vec2>& points, const DrillOptions& o,
                 fmt::format("a peck of {:g} mm makes more than 100000 pecks a hole", o.peck));
   }
   if (points.empty()) return fail(diags, core::Code::GenBadValue, "there are no holes to drill");
+  if (points.size() > 10 * static_cast<std::size_t>(kMaxPasses)) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("{} holes are more than {}", points.size(), 10 * kMaxPasses));
+  }
   for (const Vec2& p : points) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-      return fail(diags, core::Code::GenBadValue, "a hole position is not a finite number");
-    }
+    if (!check_point("the hole at", p, diags)) return false;
   }
   return true;
 }

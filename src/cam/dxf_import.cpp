@@ -45,7 +45,7 @@ class Collector final : public DL_CreationAdapter {
 
   void addLine(const DL_LineData& d) override {
     if (!begin_entity()) return;
-    paths.push_back({{d.x1, d.y1}, {{{d.x2, d.y2}, std::nullopt, 0}}, false});
+    keep({{d.x1, d.y1}, {{{d.x2, d.y2}, std::nullopt, 0}}, false});
   }
 
   void addArc(const DL_ArcData& d) override {
@@ -55,14 +55,16 @@ class Collector final : public DL_CreationAdapter {
                         d.cy + d.radius * std::sin(radians(d.angle1))});
     const Vec2 b = ocs({d.cx + d.radius * std::cos(radians(d.angle2)),
                         d.cy + d.radius * std::sin(radians(d.angle2))});
-    paths.push_back({a, {{b, c, mirrored() ? -1 : 1}}, false});
+    if (!(d.radius > 0.0)) return warn("an ARC of no radius; left out");
+    keep({a, {{b, c, mirrored() ? -1 : 1}}, false});
   }
 
   void addCircle(const DL_CircleData& d) override {
     if (!begin_entity()) return;
     const Vec2 c = ocs({d.cx, d.cy});
     const Vec2 a = ocs({d.cx + d.radius, d.cy});
-    paths.push_back({a, {{a, c, mirrored() ? -1 : 1}}, true});
+    if (!(d.radius > 0.0)) return warn("a CIRCLE of no radius; left out");
+    keep({a, {{a, c, mirrored() ? -1 : 1}}, true});
   }
 
   // LWPOLYLINE and POLYLINE: vertices follow, each bulge belongs to the
@@ -180,6 +182,24 @@ class Collector final : public DL_CreationAdapter {
   void finish_polyline();
   void finish_spline();
 
+  // Takes the entity when every coordinate is a number within
+  // kMaxDrawingCoordinate, so that no later stage (Clipper's integer range,
+  // arc linearisation) meets a value it cannot take.
+  void keep(Path p) {
+    auto ok = [](Vec2 v) {
+      return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= kMaxDrawingCoordinate &&
+             std::fabs(v.y) <= kMaxDrawingCoordinate;
+    };
+    bool good = ok(p.start);
+    for (const PathSegment& seg : p.segs)
+      good = good && ok(seg.to) && (!seg.center || ok(*seg.center));
+    if (!good) {
+      return warn(fmt::format("a coordinate is not a number or beyond ±{:g} mm; left out",
+                              kMaxDrawingCoordinate));
+    }
+    paths.push_back(std::move(p));
+  }
+
   const DxfOptions& options_;
   std::string name_;
   core::DiagnosticSink& diags_;
@@ -207,7 +227,7 @@ void Collector::finish_polyline() {
     path.segs.push_back(
         bulge_segment(segment_start(path, path.segs.size()), to, sign * p.vertices[i].bulge));
   }
-  if (!path.segs.empty()) paths.push_back(std::move(path));
+  if (!path.segs.empty()) keep(std::move(path));
 }
 
 void Collector::finish_spline() {
@@ -216,7 +236,11 @@ void Collector::finish_spline() {
   std::vector<Vec2> pts;
   if (!s.control.empty()) {
     std::string error;
-    pts = approximate_spline(s.degree, s.control, s.knots, options_.spline_tolerance, error);
+    pts = approximate_spline(s.degree, s.control, s.knots,
+                             options_.spline_tolerance >= kMinSplineTolerance
+                                 ? options_.spline_tolerance
+                                 : kMinSplineTolerance,
+                             error);
     if (pts.empty()) return warn(fmt::format("SPLINE {}; left out", error));
   } else if (s.fit.size() >= 2) {
     warn("SPLINE with fit points only: cut through its fit points as straight segments");
@@ -227,7 +251,7 @@ void Collector::finish_spline() {
   Path path{pts.front(), {}, s.closed};
   for (std::size_t i = 1; i < pts.size(); ++i)
     path.segs.push_back({pts[i], std::nullopt, 0});
-  paths.push_back(std::move(path));
+  keep(std::move(path));
 }
 
 std::optional<std::vector<Path>> finish(Collector& c, const std::string& name,

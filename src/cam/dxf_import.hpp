@@ -14,6 +14,14 @@
 
 namespace usina::cam {
 
+// Coordinates beyond this (mm) are not a part a machine holds: such an
+// entity is a warning and left out.
+inline constexpr double kMaxDrawingCoordinate = 1e5;
+
+// SPLINE tolerances below this are raised to it (a finer one only makes
+// more chords than a control can follow).
+inline constexpr double kMinSplineTolerance = 1e-4;
+
 struct DxfOptions {
   std::optional<std::string> layer;  // only this layer (DXF layer names are case-insensitive)
   double spline_tolerance = 0.01;    // mm between a SPLINE and its chords

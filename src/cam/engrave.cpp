@@ -40,6 +40,16 @@ bool layout_text(const HersheyFont& font, const EngraveOptions& o,
                  std::vector<std::vector<Vec2>>& strokes, core::DiagnosticSink& diags) {
   if (!check_positive("the text height", o.height, "mm", diags)) return false;
   if (o.text.empty()) return fail(diags, core::Code::TextNotInFont, "the text is empty");
+  if (o.text.size() > static_cast<std::size_t>(kMaxPasses)) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("the text has {} characters, more than {}", o.text.size(), kMaxPasses));
+  }
+  if (!check_point("the text's start", o.at, diags)) return false;
+  if (!check_point("the text's end",
+                   o.at + Vec2{o.height * static_cast<double>(o.text.size()) * 2, o.height},
+                   diags)) {
+    return false;
+  }
   for (std::size_t i = 0; i < o.text.size(); ++i) {
     const char c = o.text[i];
     if (c < ' ' || c > '~' || !font.glyph(c)) {

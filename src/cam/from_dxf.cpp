@@ -41,7 +41,7 @@ bool generate_from_paths(const std::vector<Path>& paths, const FromDxfOptions& o
   bool ok = check_cutting(o.cut, diags);
   ok = check_positive("the depth", o.depth, "mm", diags) && ok;
   ok = check_positive("the tolerance", o.tolerance, "mm", diags) && ok;
-  if (!ok) return false;
+  if (!ok || !check_extent(paths, diags)) return false;
   std::vector<Path> cut;
   if (!tool_paths(paths, o.side, o.cut.tool_diameter / 2.0, o.tolerance, cut, diags)) return false;
   ProgramWriter w(sink, o.cut);

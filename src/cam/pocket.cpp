@@ -64,6 +64,21 @@ class PocketWriter {
   const std::vector<Ring>& walls_;
 };
 
+// The rings are at most the outline's half width over the stepover.
+bool check_rings(const Path& outline, const PocketOptions& o, core::DiagnosticSink& diags) {
+  double lo_x = outline.start.x, hi_x = lo_x, lo_y = outline.start.y, hi_y = lo_y;
+  for (const Vec2& p : linearize(outline, 0.01)) {
+    lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
+    lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
+  }
+  const double half = std::max(hi_x - lo_x, hi_y - lo_y) / 2.0;
+  if (half / o.stepover <= kMaxPasses) return true;
+  return fail(diags, core::Code::GenBadValue,
+              fmt::format("a stepover of {:g} mm makes more than {} rings in a pocket {:g} mm "
+                          "across",
+                          o.stepover, kMaxPasses, 2 * half));
+}
+
 bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::DiagnosticSink& diags) {
   bool ok = check_cutting(o.cut, diags);
   ok = check_positive("the depth", o.depth, "mm", diags) && ok;
@@ -72,6 +87,10 @@ bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::Diagno
   ok = check_positive("the finish allowance", o.finish_allowance, "mm", diags, true) && ok;
   ok = check_positive("the tolerance", o.tolerance, "mm", diags) && ok;
   if (!ok) return false;
+  std::vector<Path> all{shape.outline};
+  all.insert(all.end(), shape.islands.begin(), shape.islands.end());
+  if (!check_extent(all, diags) || !check_passes(o.depth, o.step_down, diags)) return false;
+  if (!check_rings(shape.outline, o, diags)) return false;
   if (o.stepover > o.cut.tool_diameter) {
     return fail(diags, core::Code::GenBadValue,
                 fmt::format("the stepover {:g} mm is more than the tool diameter {:g} mm, which "

@@ -148,6 +148,13 @@ bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
                             o.tabs.height, o.depth));
     }
   }
+  if (!ok || !check_extent(contours, diags) || !check_passes(o.depth, o.step_down, diags)) {
+    return false;
+  }
+  if (o.tabs.count > kMaxPasses) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("{} tabs are more than {}", o.tabs.count, kMaxPasses));
+  }
   const bool needs_closed = o.side == ProfileSide::Outside || o.side == ProfileSide::Inside;
   for (const Path& c : contours) {
     if (needs_closed && !c.closed) {

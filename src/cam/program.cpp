@@ -33,6 +33,34 @@ bool check_cutting(const Cutting& c, core::DiagnosticSink& diags) {
   return ok;
 }
 
+bool check_point(std::string_view what, Vec2 p, core::DiagnosticSink& diags) {
+  if (std::isfinite(p.x) && std::isfinite(p.y) && std::fabs(p.x) <= kMaxCoordinate &&
+      std::fabs(p.y) <= kMaxCoordinate) {
+    return true;
+  }
+  return fail(diags, core::Code::GenBadValue,
+              fmt::format("{} ({:g}, {:g}) is beyond ±{:g} mm of the origin", what, p.x, p.y,
+                          kMaxCoordinate));
+}
+
+bool check_extent(const std::vector<Path>& paths, core::DiagnosticSink& diags) {
+  for (const Path& p : paths) {
+    if (!check_point("a contour's point", p.start, diags)) return false;
+    for (const PathSegment& s : p.segs) {
+      if (!check_point("a contour's point", s.to, diags)) return false;
+      if (s.center && !check_point("an arc's centre", *s.center, diags)) return false;
+    }
+  }
+  return true;
+}
+
+bool check_passes(double depth, double step, core::DiagnosticSink& diags) {
+  if (depth / step <= kMaxPasses) return true;
+  return fail(diags, core::Code::GenBadValue,
+              fmt::format("a depth of {:g} mm in steps of {:g} mm makes more than {} passes", depth,
+                          step, kMaxPasses));
+}
+
 std::vector<double> depth_levels(double depth, double step) {
   // The tiny allowance keeps 6 / 2 at three passes despite rounding.
   const auto n = static_cast<int>(std::ceil(depth / step - 1e-9));

@@ -31,6 +31,17 @@ struct Cutting {
 bool check_positive(std::string_view what, double value, std::string_view unit,
                     core::DiagnosticSink& diags, bool zero_ok = false);
 
+// Limits that keep hostile input finite (DESIGN.md, "Errors and bad input").
+inline constexpr double kMaxCoordinate = 1e5;  // mm from the origin: 100 m
+inline constexpr int kMaxPasses = 10000;       // depth passes, rings, tabs, holes / 10
+
+// E_GEN_BAD_VALUE unless every point of `paths` is within ±kMaxCoordinate.
+bool check_extent(const std::vector<Path>& paths, core::DiagnosticSink& diags);
+bool check_point(std::string_view what, Vec2 p, core::DiagnosticSink& diags);
+
+// E_GEN_BAD_VALUE when depth / step makes more than kMaxPasses passes.
+bool check_passes(double depth, double step, core::DiagnosticSink& diags);
+
 // Every check of `c`; true when all pass.
 bool check_cutting(const Cutting& c, core::DiagnosticSink& diags);
 

@@ -167,6 +167,22 @@ TEST(DxfImport, BadSplineIsAWarningAndLeftOut) {
   EXPECT_NE(d.all()[0].message.find("5 knots"), std::string::npos) << d.all()[0].message;
 }
 
+TEST(DxfImport, HugeOrBadCoordinatesAndEmptyCirclesAreLeftOut) {
+  // (dxflib reads a value that is not a number, "nan" too, as 0.)
+  core::DiagnosticList d;
+  std::istringstream in(
+      "0\nSECTION\n2\nENTITIES\n"
+      "0\nLINE\n8\n0\n10\n0\n20\n0\n30\n0\n11\n1e300\n21\n0\n31\n0\n"
+      "0\nLINE\n8\n0\n10\n-2e5\n20\n0\n30\n0\n11\n1\n21\n0\n31\n0\n"
+      "0\nCIRCLE\n8\n0\n10\n0\n20\n0\n30\n0\n40\n0\n"
+      "0\nLINE\n8\n0\n10\n0\n20\n0\n30\n0\n11\n1\n21\n0\n31\n0\n"
+      "0\nENDSEC\n0\nEOF\n");
+  const auto paths = read_dxf(in, "hostile", {}, d);
+  ASSERT_TRUE(paths);
+  EXPECT_EQ(paths->size(), 1u);
+  EXPECT_EQ(count(d, core::Code::DxfUnsupportedEntity), 3);
+}
+
 TEST(DxfImport, MirroredArcTurnsClockwise) {
   // Extrusion (0, 0, -1): the arc's X axis is the world's -X.
   core::DiagnosticList d;

@@ -123,6 +123,20 @@ TEST(Engrave, CharacterOutsideTheFontIsAnError) {
   EXPECT_EQ(tp.size(), 0u);
 }
 
+TEST(Engrave, TextTooLongOrTooFarIsAnError) {
+  core::DiagnosticList d;
+  const auto font = parse_hershey(kTwoGlyphs, "two", d);
+  ASSERT_TRUE(font);
+  EngraveOptions o;
+  o.text = std::string(20000, '!');
+  canon::Toolpath tp;
+  EXPECT_FALSE(generate_engrave(*font, o, tp, d));
+  o.text = "!!";
+  o.at = {1e9, 0};
+  EXPECT_FALSE(generate_engrave(*font, o, tp, d));
+  EXPECT_EQ(count_code(d, core::Code::GenBadValue), 2);
+}
+
 TEST(Engrave, BadHeightOrDepthIsAnError) {
   core::DiagnosticList d;
   const auto font = parse_hershey(kTwoGlyphs, "two", d);

@@ -175,6 +175,20 @@ TEST(PocketShape, OpenOutsideOrNothingIsAnError) {
   EXPECT_EQ(count_code(d, core::Code::GenBadValue), 1);
 }
 
+TEST(Pocket, LimitsKeepTheWorkFinite) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  PocketOptions o = options();
+  o.stepover = 1e-6;  // 10^7 rings
+  EXPECT_FALSE(generate_pocket({circle({0, 0}, 20), {}}, o, tp, d));
+  o = options();
+  o.step_down = 1e-6;  // 5·10^6 passes
+  EXPECT_FALSE(generate_pocket({circle({0, 0}, 20), {}}, o, tp, d));
+  EXPECT_FALSE(generate_pocket({circle({1e6, 0}, 20), {}}, options(), tp, d));
+  EXPECT_EQ(count_code(d, core::Code::GenBadValue), 3);
+  EXPECT_EQ(tp.size(), 0u);
+}
+
 TEST(Pocket, BadValuesAreErrors) {
   canon::Toolpath tp;
   core::DiagnosticList d;

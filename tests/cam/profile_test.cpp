@@ -133,6 +133,18 @@ TEST(Profile, TabsThatDoNotFitAreAnError) {
   EXPECT_EQ(count_code(d, core::Code::GenBadValue), 1);
 }
 
+TEST(Profile, TooManyTabsOrPassesAreErrors) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  ProfileOptions o = options();
+  o.tabs = {20000, 0.001, 1.0};
+  EXPECT_FALSE(generate_profile({circle({0, 0}, 1e4)}, o, tp, d));
+  o = options();
+  o.step_down = 1e-9;
+  EXPECT_FALSE(generate_profile({circle({0, 0}, 20)}, o, tp, d));
+  EXPECT_EQ(count_code(d, core::Code::GenBadValue), 2);
+}
+
 TEST(Profile, TabAsHighAsTheDepthIsAnError) {
   canon::Toolpath tp;
   core::DiagnosticList d;
