@@ -38,12 +38,8 @@ class EndIndex {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         const auto it = cells_.find(key(cx + dx, cy + dy));
         if (it == cells_.end()) continue;
-        for (const End& e : it->second) {
-          if (used[e.entity] || e.entity > best.entity) continue;
-          const Vec2 q = e.at_end ? end_point(entities[e.entity]) : entities[e.entity].start;
-          if (core::distance(p, q) > tolerance_) continue;
-          if (e.entity < best.entity || (!e.at_end && best.at_end)) best = {e.entity, e.at_end};
-        }
+        for (const End& e : it->second)
+          consider(e, p, entities, used, best);
       }
     }
     return best;
@@ -54,6 +50,15 @@ class EndIndex {
     std::size_t entity;
     bool at_end;
   };
+
+  // Takes `e` as the best match when it is nearer in drawing order.
+  void consider(const End& e, Vec2 p, const std::vector<Path>& entities,
+                const std::vector<bool>& used, Match& best) const {
+    if (used[e.entity] || e.entity > best.entity) return;
+    const Vec2 q = e.at_end ? end_point(entities[e.entity]) : entities[e.entity].start;
+    if (core::distance(p, q) > tolerance_) return;
+    if (e.entity < best.entity || (!e.at_end && best.at_end)) best = {e.entity, e.at_end};
+  }
 
   std::pair<std::int64_t, std::int64_t> cell_of(Vec2 p) const {
     // Clamped so a huge or non-finite coordinate still has a cell.

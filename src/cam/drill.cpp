@@ -17,10 +17,12 @@ void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
   if (o.peck > 0.0) {
     // G83: out to R after each peck, back down to the clearance above the
     // last depth; the repeated subtraction decides the last peck, as there.
-    for (double d = r - o.peck; d > bottom; d -= o.peck) {
+    double d = r - o.peck;
+    while (d > bottom) {
       w.feed(to(d));
       w.rapid(to(r));
       w.rapid(to(d + o.peck_clearance));
+      d -= o.peck;
     }
   }
   w.feed(to(bottom));

@@ -25,7 +25,8 @@ Span y_span(const HersheyGlyph& g) {
 // The font's capital height and baseline in font units: those of its "H",
 // or of all its glyphs together when it has no "H" (a symbol font).
 Span cap_span(const HersheyFont& font) {
-  if (const HersheyGlyph* h = font.glyph('H'); h && !h->strokes.empty()) return y_span(*h);
+  if (const HersheyGlyph* h = font.glyph('H'); h != nullptr && !h->strokes.empty())
+    return y_span(*h);
   Span all;
   for (const HersheyGlyph& g : font.glyphs) {
     const Span s = y_span(g);
@@ -52,7 +53,7 @@ bool layout_text(const HersheyFont& font, const EngraveOptions& o,
   }
   for (std::size_t i = 0; i < o.text.size(); ++i) {
     const char c = o.text[i];
-    if (c < ' ' || c > '~' || !font.glyph(c)) {
+    if (c < ' ' || c > '~' || font.glyph(c) == nullptr) {
       return fail(diags, core::Code::TextNotInFont,
                   fmt::format("character {} of the text (byte 0x{:02X}) has no glyph in font {}; "
                               "the fonts draw printable ASCII, from space to '~'",
@@ -70,6 +71,7 @@ bool layout_text(const HersheyFont& font, const EngraveOptions& o,
     const HersheyGlyph& g = *font.glyph(c);
     for (const auto& stroke : g.strokes) {
       std::vector<Vec2> out;
+      out.reserve(stroke.size());
       for (const Vec2& p : stroke) {
         out.push_back({cursor + (p.x - g.left) * scale, o.at.y + (p.y - cap.lo) * scale});
       }

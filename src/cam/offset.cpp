@@ -194,9 +194,9 @@ std::optional<Path> offset_open(const Path& p, double radius, bool left, double 
   o.Execute(solution, radius * kClipperScale);
   const cl::Path* outer = nullptr;
   for (const cl::Path& s : solution) {
-    if (!outer || std::fabs(cl::Area(s)) > std::fabs(cl::Area(*outer))) outer = &s;
+    if (outer == nullptr || std::fabs(cl::Area(s)) > std::fabs(cl::Area(*outer))) outer = &s;
   }
-  if (!outer) return std::nullopt;
+  if (outer == nullptr) return std::nullopt;
   const Ring band = to_mm(*outer);
   // Clipper's integer rounding may put a band point a little beyond the radius.
   const SideFinder sides(pts, radius + tolerance + 2.0 / kClipperScale);

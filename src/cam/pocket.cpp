@@ -66,12 +66,13 @@ class PocketWriter {
 
 // The rings are at most the outline's half width over the stepover.
 bool check_rings(const Path& outline, const PocketOptions& o, core::DiagnosticSink& diags) {
-  double lo_x = outline.start.x, hi_x = lo_x, lo_y = outline.start.y, hi_y = lo_y;
+  Vec2 lo = outline.start;
+  Vec2 hi = outline.start;
   for (const Vec2& p : linearize(outline, 0.01)) {
-    lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
-    lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  const double half = std::max(hi_x - lo_x, hi_y - lo_y) / 2.0;
+  const double half = std::max(hi.x - lo.x, hi.y - lo.y) / 2.0;
   if (half / o.stepover <= kMaxPasses) return true;
   return fail(diags, core::Code::GenBadValue,
               fmt::format("a stepover of {:g} mm makes more than {} rings in a pocket {:g} mm "
@@ -115,15 +116,19 @@ bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::Diagno
 
 }  // namespace
 
-Path rectangle(Vec2 c, double width, double height, double r) {
-  const double x0 = c.x - width / 2, x1 = c.x + width / 2;
-  const double y0 = c.y - height / 2, y1 = c.y + height / 2;
+Path rectangle(Vec2 center, double width, double height, double corner_radius) {
+  const Vec2 c = center;
+  const double r = corner_radius;
+  const double x0 = c.x - width / 2;
+  const double x1 = c.x + width / 2;
+  const double y0 = c.y - height / 2;
+  const double y1 = c.y + height / 2;
   Path p{{c.x, y0}, {}, true};
   auto line = [&](Vec2 to) {
     if (!(to == end_point(p))) p.segs.push_back({to, std::nullopt, 0});
   };
-  auto corner = [&](Vec2 to, Vec2 center) {
-    if (r > 0) p.segs.push_back({to, center, 1});
+  auto corner = [&](Vec2 to, Vec2 about) {
+    if (r > 0) p.segs.push_back({to, about, 1});
   };
   line({x1 - r, y0});
   corner({x1, y0 + r}, {x1 - r, y0 + r});
@@ -202,8 +207,8 @@ PocketRings pocket_rings(const PocketShape& shape, const PocketOptions& o) {
     auto core_rings = offset_rings(reg, -(last + r), o.tolerance);
     if (!core_rings.empty()) levels.push_back(std::move(core_rings));
   }
-  for (auto it = levels.rbegin(); it != levels.rend(); ++it) {
-    out.roughing.insert(out.roughing.end(), it->begin(), it->end());
+  for (std::size_t i = levels.size(); i-- > 0;) {  // innermost first
+    out.roughing.insert(out.roughing.end(), levels[i].begin(), levels[i].end());
   }
   return out;
 }

@@ -77,7 +77,7 @@ struct Lead {
   Vec2 from;  // where the arc starts
   Vec2 to;    // where it ends
   Vec2 center;
-  int turn;
+  int turn = 1;
 };
 
 // A quarter circle tangent to the path at its start (lead-in) or end

@@ -46,32 +46,38 @@ bool clamped(const core::Nurbs& c) {
 // An unclamped curve does not start at its first control point, which the
 // Bézier decomposition of core assumes: halve each parameter interval until
 // its middle point is within the tolerance of the chord (depth-limited), from
-// 16 intervals a knot span so no wiggle is skipped.
-void subdivide(const core::Nurbs& c, double u0, double u1, Vec2 a, Vec2 b, double tol, int depth,
-               std::vector<Vec2>& out) {
-  const double um = (u0 + u1) / 2.0;
-  const Vec2 m = core::point(c, um);
-  const Vec2 chord = b - a;
-  const double len = core::norm(chord);
-  const double off = len > 0.0 ? std::fabs(core::cross(chord, m - a)) / len : core::norm(m - a);
-  if (depth < 20 && off > tol) {
-    subdivide(c, u0, um, a, m, tol, depth + 1, out);
-    subdivide(c, um, u1, m, b, tol, depth + 1, out);
-    return;
+// 16 intervals a control point so no wiggle is skipped.
+struct Sampler {
+  const core::Nurbs& c;
+  double tol;
+  std::vector<Vec2> out;
+
+  // Points of (u0, u1], the curve from a (at u0) to b (at u1).
+  void subdivide(double u0, double u1, Vec2 a, Vec2 b, int depth) {
+    const double um = (u0 + u1) / 2.0;
+    const Vec2 m = core::point(c, um);
+    const Vec2 chord = b - a;
+    const double len = core::norm(chord);
+    const double off = len > 0.0 ? std::fabs(core::cross(chord, m - a)) / len : core::norm(m - a);
+    if (depth < 20 && off > tol) {
+      subdivide(u0, um, a, m, depth + 1);
+      subdivide(um, u1, m, b, depth + 1);
+      return;
+    }
+    out.push_back(b);
   }
-  out.push_back(b);
-}
+};
 
 std::vector<Vec2> sample_unclamped(const core::Nurbs& c, double tol) {
   const auto [first, last] = core::domain(c);
   const int pieces = 16 * static_cast<int>(c.points.size());
-  std::vector<Vec2> out{core::point(c, first)};
+  Sampler s{c, tol, {core::point(c, first)}};
   for (int i = 0; i < pieces; ++i) {
     const double u0 = first + (last - first) * i / pieces;
     const double u1 = first + (last - first) * (i + 1) / pieces;
-    subdivide(c, u0, u1, out.back(), core::point(c, u1), tol, 0, out);
+    s.subdivide(u0, u1, s.out.back(), core::point(c, u1), 0);
   }
-  return out;
+  return s.out;
 }
 
 }  // namespace
