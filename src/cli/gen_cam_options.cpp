@@ -53,7 +53,8 @@ std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
                                                   core::DiagnosticSink& diags) {
   const cam::Vec2 c{s.center.at(0), s.center.at(1)};
   if (!s.rect.empty()) {
-    const double w = s.rect.at(0), h = s.rect.at(1);
+    const double w = s.rect.at(0);
+    const double h = s.rect.at(1);
     bool ok = cam::check_positive("the rectangle's width", w, "mm", diags);
     ok = cam::check_positive("the rectangle's height", h, "mm", diags) && ok;
     ok = cam::check_positive("the corner radius", s.corner_radius, "mm", diags, true) && ok;
