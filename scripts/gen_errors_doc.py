@@ -254,6 +254,46 @@ EXPLAIN = {
         "(a negative rapid rate, min above max, units other than mm or inch).",
         "Correct the key named in the message; `examples/machines/` has complete profiles to "
         "start from."),
+    # cam generators
+    "E_DXF_UNREADABLE": (
+        "The drawing given to `usina gen` cannot be opened, or dxflib cannot read it as a DXF "
+        "file.",
+        "Check the path; save the drawing from the CAD program as ASCII DXF (R12 or later)."),
+    "E_DXF_NO_ENTITIES": (
+        "The drawing has no LINE, ARC, CIRCLE, POLYLINE, LWPOLYLINE or SPLINE to cut, on the "
+        "layer chosen with `--layer` or at all (only text, hatches, blocks or ellipses).",
+        "Check the layer's name (`--layer`), or draw the contour with lines, arcs or "
+        "polylines; explode blocks before saving."),
+    "W_DXF_UNSUPPORTED": (
+        "An entity of the drawing is not a contour usina can cut (POINT, ELLIPSE, TEXT, MTEXT, "
+        "INSERT, HATCH, SOLID, ...), or a SPLINE or polyline whose data do not make a curve; it "
+        "is left out of the program. A SPLINE given by fit points only is cut through them as "
+        "straight segments.",
+        "Convert the entity to polylines or arcs in the CAD program, explode block "
+        "references, or move it to a layer the program does not read."),
+    "E_GEN_BAD_VALUE": (
+        "A value given to a generator is out of range: a depth, feed, speed, diameter or "
+        "stepover that is not above zero, a stepover above the tool diameter, tabs as high as "
+        "the cut is deep or too many for the contour, an R plane above the safe Z.",
+        "Give the value the message asks for."),
+    "E_GEN_TOOL_TOO_BIG": (
+        "The tool does not fit: a pocket narrower than the tool, or a contour whose offset by "
+        "the tool radius vanishes on the side asked for.",
+        "Use a smaller tool, or cut the contour on the other side."),
+    "E_GEN_OPEN_OUTLINE": (
+        "A pocket's outline or island, or a contour to be cut inside or outside, is not closed: "
+        "its ends are more than 0.01 mm apart after chaining.",
+        "Close the contour in the drawing (join its ends), or cut an open contour with `--side "
+        "left` or `right`."),
+    "E_FONT_UNREADABLE": (
+        "The Hershey font for `usina gen engrave` cannot be opened or is not in the .jhf "
+        "format (5-column glyph number, 3-column pair count, the pairs).",
+        "Install hershey-fonts-data, or name a font of /usr/share/hershey-fonts (`--font "
+        "rowmans`) or a .jhf file."),
+    "E_TEXT_NOT_IN_FONT": (
+        "The text to engrave is empty or has a character the font has no glyph for: the fonts "
+        "draw printable ASCII, from the space to `~` (no accented letters, tabs or line ends).",
+        "Write the text in plain ASCII (\"Sao Paulo\" for \"São Paulo\")."),
     "E_BAD_TOOL_TABLE": (
         "A line of the tool table given with `--tool-table` cannot be used (no `T` word, a "
         "value that is not a number or too large, an unknown letter). Some defects are "

@@ -14,5 +14,10 @@
 namespace usina::cli {
 
 void add_gen_ellipse(CLI::App& gen);
+void add_gen_from_dxf(CLI::App& gen);
+void add_gen_pocket(CLI::App& gen);
+void add_gen_profile(CLI::App& gen);
+void add_gen_drill(CLI::App& gen);
+void add_gen_engrave(CLI::App& gen);
 
 }  // namespace usina::cli

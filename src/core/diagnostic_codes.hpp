@@ -85,4 +85,13 @@
   X(UnknownToolDiameter, E_UNKNOWN_TOOL_DIAMETER)  \
   X(PocketTooSmall, E_POCKET_TOO_SMALL)            \
   X(UnknownBlockNumber, E_UNKNOWN_BLOCK_NUMBER)    \
-  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)
+  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)        \
+  /* cam generators: drawings, fonts, values */    \
+  X(DxfUnreadable, E_DXF_UNREADABLE)               \
+  X(DxfNoEntities, E_DXF_NO_ENTITIES)              \
+  X(DxfUnsupportedEntity, W_DXF_UNSUPPORTED)       \
+  X(GenBadValue, E_GEN_BAD_VALUE)                  \
+  X(GenToolTooBig, E_GEN_TOOL_TOO_BIG)             \
+  X(GenOpenOutline, E_GEN_OPEN_OUTLINE)            \
+  X(FontUnreadable, E_FONT_UNREADABLE)             \
+  X(TextNotInFont, E_TEXT_NOT_IN_FONT)

@@ -1,0 +1,112 @@
+#include "cam/drill.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+namespace usina::cam {
+namespace {
+
+// The hole's moves as src/gcode/interp/canned_cycles.cpp (after LinuxCNC's
+// interp_cycles.cc) makes them in G98 mode, the clear level at the safe Z.
+void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
+  const double r = o.retract;
+  const double bottom = -o.depth;
+  auto to = [&](double z) { return Vec3{at.x, at.y, z}; };
+  if (o.peck > 0.0) {
+    // G83: out to R after each peck, back down to the clearance above the
+    // last depth; the repeated subtraction decides the last peck, as there.
+    double d = r - o.peck;
+    while (d > bottom) {
+      w.feed(to(d));
+      w.rapid(to(r));
+      w.rapid(to(d + o.peck_clearance));
+      d -= o.peck;
+    }
+  }
+  w.feed(to(bottom));
+  w.rapid(to(o.cut.safe_z));
+}
+
+bool check_drill(const std::vector<Vec2>& points, const DrillOptions& o,
+                 core::DiagnosticSink& diags) {
+  bool ok = check_cutting(o.cut, diags);
+  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
+  ok = check_positive("the retract height", o.retract, "mm", diags, true) && ok;
+  ok = check_positive("the peck", o.peck, "mm", diags, true) && ok;
+  ok = check_positive("the peck clearance", o.peck_clearance, "mm", diags, true) && ok;
+  if (!ok) return false;
+  if (o.retract > o.cut.safe_z) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("the retract height {:g} mm is above the safe Z {:g} mm; the R "
+                            "plane must be at or below the safe Z",
+                            o.retract, o.cut.safe_z));
+  }
+  if (o.peck > 0.0 && (o.depth + o.retract) / o.peck > 100000.0) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("a peck of {:g} mm makes more than 100000 pecks a hole", o.peck));
+  }
+  if (points.empty()) return fail(diags, core::Code::GenBadValue, "there are no holes to drill");
+  if (points.size() > 10 * static_cast<std::size_t>(kMaxPasses)) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("{} holes are more than {}", points.size(), 10 * kMaxPasses));
+  }
+  for (const Vec2& p : points) {
+    if (!check_point("the hole at", p, diags)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<Vec2> bolt_circle(Vec2 center, double radius, int count, double start_deg) {
+  std::vector<Vec2> out;
+  for (int i = 0; i < count; ++i) {
+    const double a = (start_deg + 360.0 * i / count) * std::numbers::pi / 180.0;
+    out.push_back({center.x + radius * std::cos(a), center.y + radius * std::sin(a)});
+  }
+  return out;
+}
+
+std::vector<Vec2> grid(Vec2 origin, int nx, int ny, double dx, double dy) {
+  std::vector<Vec2> out;
+  for (int j = 0; j < ny; ++j) {
+    for (int k = 0; k < nx; ++k) {
+      const int i = j % 2 == 0 ? k : nx - 1 - k;
+      out.push_back({origin.x + dx * i, origin.y + dy * j});
+    }
+  }
+  return out;
+}
+
+bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& o, canon::Sink& sink,
+                    core::DiagnosticSink& diags) {
+  if (!check_drill(points, o, diags)) return false;
+  ProgramWriter w(sink, o.cut);
+  w.begin(fmt::format("usina gen drill: {} holes, depth {:g} mm{}", points.size(), o.depth,
+                      o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string()));
+  w.rapid_over(points.front());
+  if (o.form == HoleForm::Features) {
+    const Vec2 p = points.front();
+    w.plunge(o.retract);  // the post's cycle drills at this feed
+    w.rapid({p.x, p.y, o.cut.safe_z});
+    for (const Vec2& q : points) {
+      w.emit(canon::Hole{{q.x, q.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth});
+    }
+    w.end();
+    return true;
+  }
+  w.set_origin(canon::Origin::Cycle);
+  for (const Vec2& p : points) {
+    w.rapid({p.x, p.y, o.cut.safe_z});
+    if (o.cut.safe_z > o.retract) w.rapid({p.x, p.y, o.retract});
+    w.emit(canon::Hole{{p.x, p.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth});
+    drill_moves(w, p, o);
+  }
+  w.set_origin(canon::Origin::Program);
+  w.end();
+  return true;
+}
+
+}  // namespace usina::cam

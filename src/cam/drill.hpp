@@ -1,0 +1,44 @@
+// Drilling patterns: a list of points, a bolt circle, a grid, in one of two
+// forms (HoleForm):
+// - Moves: each hole a Hole feature followed by its moves, all of origin
+//   Cycle: the ops usina's interpreter makes of a G81 (G83 with a peck) in
+//   G98 mode, so a drawing, a simulation or a trace sees every move, and a
+//   post writes the moves as plain blocks (a conversion expands cycles);
+// - Features: each hole a bare Hole feature (origin Program) and no moves, so
+//   the post drills it: G81/G83 where the control has canned cycles, the
+//   same moves where it has not. The post drills at the last feed rate, so
+//   the program first feeds down to the R plane over the first hole (at the
+//   plunge feed) and rapids back to the safe Z.
+#pragma once
+
+#include <vector>
+
+#include "cam/program.hpp"
+
+namespace usina::cam {
+
+// `count` points on a circle, the first at `start_deg` (counter-clockwise
+// from +X), equally spaced counter-clockwise.
+std::vector<Vec2> bolt_circle(Vec2 center, double radius, int count, double start_deg);
+
+// `nx` × `ny` points from `origin`, `dx` and `dy` apart, row by row, every
+// other row walked back (the shorter travel between rows).
+std::vector<Vec2> grid(Vec2 origin, int nx, int ny, double dx, double dy);
+
+enum class HoleForm { Moves, Features };
+
+struct DrillOptions {
+  HoleForm form = HoleForm::Moves;
+  Cutting cut;                  // tool_diameter is the drill's (the Hole's diameter)
+  double depth = 5.0;           // mm below the top, to the drill's tip
+  double retract = 1.0;         // mm above the top: the R plane each hole starts and ends at
+  double peck = 0.0;            // mm per peck (G83), 0 for one feed to the bottom (G81)
+  double peck_clearance = 1.0;  // mm above the last peck's bottom the drill comes back down to
+};
+
+// Checks, then the holes in the given order. False, with nothing emitted,
+// after an error (bad value, no points, R plane above the safe Z).
+bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& o, canon::Sink& sink,
+                    core::DiagnosticSink& diags);
+
+}  // namespace usina::cam

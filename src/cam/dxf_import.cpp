@@ -1,0 +1,302 @@
+#include "cam/dxf_import.hpp"
+
+#include <dl_creationadapter.h>
+#include <dl_dxf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "cam/spline_approx.hpp"
+
+namespace usina::cam {
+namespace {
+
+bool same_layer(const std::string& a, const std::string& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
+    return std::tolower(static_cast<unsigned char>(x)) ==
+           std::tolower(static_cast<unsigned char>(y));
+  });
+}
+
+double radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
+
+// Collects entities. ARC, CIRCLE and LWPOLYLINE are in the entity's object
+// coordinate system; the only one a flat drawing uses besides the world's is
+// the mirrored one, extrusion (0, 0, −1), whose X axis is the world's −X
+// (DXF reference, "Arbitrary Axis Algorithm"), so its arcs turn clockwise.
+class Collector final : public DL_CreationAdapter {
+ public:
+  Collector(const DxfOptions& o, std::string name, core::DiagnosticSink& d)
+      : options_(o), name_(std::move(name)), diags_(d) {}
+
+  std::vector<Path> paths;
+  int on_layer = 0;  // entities seen on the selected layer, unsupported ones included
+
+  void addBlock(const DL_BlockData&) override { in_block_ = true; }
+
+  void endBlock() override { in_block_ = false; }
+
+  void addLine(const DL_LineData& d) override {
+    if (!begin_entity()) return;
+    keep({{d.x1, d.y1}, {{{d.x2, d.y2}, std::nullopt, 0}}, false});
+  }
+
+  void addArc(const DL_ArcData& d) override {
+    if (!begin_entity()) return;
+    const Vec2 c = ocs({d.cx, d.cy});
+    const Vec2 a = ocs({d.cx + d.radius * std::cos(radians(d.angle1)),
+                        d.cy + d.radius * std::sin(radians(d.angle1))});
+    const Vec2 b = ocs({d.cx + d.radius * std::cos(radians(d.angle2)),
+                        d.cy + d.radius * std::sin(radians(d.angle2))});
+    if (!(d.radius > 0.0)) return warn("an ARC of no radius; left out");
+    keep({a, {{b, c, mirrored() ? -1 : 1}}, false});
+  }
+
+  void addCircle(const DL_CircleData& d) override {
+    if (!begin_entity()) return;
+    const Vec2 c = ocs({d.cx, d.cy});
+    const Vec2 a = ocs({d.cx + d.radius, d.cy});
+    if (!(d.radius > 0.0)) return warn("a CIRCLE of no radius; left out");
+    keep({a, {{a, c, mirrored() ? -1 : 1}}, true});
+  }
+
+  // LWPOLYLINE and POLYLINE: vertices follow, each bulge belongs to the
+  // segment that starts at its vertex; flag 1 closes the polyline.
+  void addPolyline(const DL_PolylineData& d) override {
+    if (!begin_entity()) return;
+    poly_ = Poly{};
+    poly_->closed = (d.flags & 1) != 0;
+    poly_->mirrored = mirrored();
+  }
+
+  void addVertex(const DL_VertexData& d) override {
+    if (poly_) poly_->vertices.push_back({d.x, d.y, d.bulge});
+  }
+
+  void endSequence() override { flush(); }
+
+  void addSpline(const DL_SplineData& d) override {
+    if (!begin_entity()) return;
+    spline_ = SplineData{};
+    spline_->degree = static_cast<int>(d.degree);
+    spline_->closed = (d.flags & 1) != 0;
+  }
+
+  void addControlPoint(const DL_ControlPointData& d) override {
+    if (spline_) spline_->control.push_back({{d.x, d.y}, d.w});
+  }
+
+  void addKnot(const DL_KnotData& d) override {
+    if (spline_) spline_->knots.push_back(d.k);
+  }
+
+  void addFitPoint(const DL_FitPointData& d) override {
+    if (spline_) spline_->fit.push_back({d.x, d.y});
+  }
+
+  void addPoint(const DL_PointData&) override { unsupported("POINT"); }
+
+  void addEllipse(const DL_EllipseData&) override { unsupported("ELLIPSE"); }
+
+  void addXLine(const DL_XLineData&) override { unsupported("XLINE"); }
+
+  void addRay(const DL_RayData&) override { unsupported("RAY"); }
+
+  void addInsert(const DL_InsertData&) override { unsupported("INSERT (explode the block)"); }
+
+  void addText(const DL_TextData&) override { unsupported("TEXT (use usina gen engrave)"); }
+
+  void addMText(const DL_MTextData&) override { unsupported("MTEXT (use usina gen engrave)"); }
+
+  void addHatch(const DL_HatchData&) override { unsupported("HATCH"); }
+
+  void addSolid(const DL_SolidData&) override { unsupported("SOLID"); }
+
+  void addTrace(const DL_TraceData&) override { unsupported("TRACE"); }
+
+  void add3dFace(const DL_3dFaceData&) override { unsupported("3DFACE"); }
+
+  void addLeader(const DL_LeaderData&) override { unsupported("LEADER"); }
+
+  void addImage(const DL_ImageData&) override { unsupported("IMAGE"); }
+
+  // Ends whatever entity is still open (a SPLINE has no end marker).
+  void flush() {
+    if (poly_) finish_polyline();
+    if (spline_) finish_spline();
+  }
+
+ private:
+  struct Vertex {
+    double x, y, bulge;
+  };
+
+  struct Poly {
+    std::vector<Vertex> vertices;
+    bool closed = false;
+    bool mirrored = false;
+  };
+
+  struct SplineData {
+    int degree = 0;
+    bool closed = false;
+    std::vector<WeightedPoint> control;
+    std::vector<double> knots;
+    std::vector<Vec2> fit;
+  };
+
+  bool mirrored() { return getExtrusion()->getDirection()[2] < 0.0; }
+
+  Vec2 ocs(Vec2 p) { return mirrored() ? Vec2{-p.x, p.y} : p; }
+
+  // True when the entity starting now is to be read.
+  bool begin_entity() {
+    flush();
+    ++entity_;
+    if (in_block_) return false;
+    if (options_.layer && !same_layer(getAttributes().getLayer(), *options_.layer)) return false;
+    ++on_layer;
+    return true;
+  }
+
+  void warn(std::string message) {
+    diags_.report({core::Code::DxfUnsupportedEntity,
+                   core::Severity::Warning,
+                   {},
+                   fmt::format("{}: entity {}: {}", name_, entity_, message)});
+  }
+
+  void unsupported(const char* what) {
+    if (!begin_entity()) return;
+    warn(fmt::format("{} on layer \"{}\" is not a contour usina can cut; left out", what,
+                     getAttributes().getLayer()));
+  }
+
+  void finish_polyline();
+  void finish_spline();
+
+  // Takes the entity when every coordinate is a number within
+  // kMaxDrawingCoordinate, so that no later stage (Clipper's integer range,
+  // arc linearisation) meets a value it cannot take.
+  void keep(Path p) {
+    auto ok = [](Vec2 v) {
+      return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= kMaxDrawingCoordinate &&
+             std::fabs(v.y) <= kMaxDrawingCoordinate;
+    };
+    bool good = ok(p.start);
+    for (const PathSegment& seg : p.segs)
+      good = good && ok(seg.to) && (!seg.center || ok(*seg.center));
+    if (!good) {
+      return warn(fmt::format("a coordinate is not a number or beyond ±{:g} mm; left out",
+                              kMaxDrawingCoordinate));
+    }
+    paths.push_back(std::move(p));
+  }
+
+  const DxfOptions& options_;
+  std::string name_;
+  core::DiagnosticSink& diags_;
+  bool in_block_ = false;
+  int entity_ = 0;
+  std::optional<Poly> poly_;
+  std::optional<SplineData> spline_;
+};
+
+void Collector::finish_polyline() {
+  Poly p = std::move(*poly_);
+  poly_.reset();
+  if (p.vertices.size() < 2) {
+    warn(fmt::format("a polyline with {} vertex is not a path; left out", p.vertices.size()));
+    return;
+  }
+  const double sign = p.mirrored ? -1.0 : 1.0;  // mirroring reverses every bulge
+  auto at = [&](std::size_t i) { return Vec2{sign * p.vertices[i].x, p.vertices[i].y}; };
+  Path path{at(0), {}, p.closed};
+  const std::size_t n = p.vertices.size();
+  const std::size_t segments = p.closed ? n : n - 1;
+  for (std::size_t i = 0; i < segments; ++i) {
+    const Vec2 to = at((i + 1) % n);
+    if (to == segment_start(path, path.segs.size()) && p.vertices[i].bulge == 0.0) continue;
+    path.segs.push_back(
+        bulge_segment(segment_start(path, path.segs.size()), to, sign * p.vertices[i].bulge));
+  }
+  if (!path.segs.empty()) keep(std::move(path));
+}
+
+void Collector::finish_spline() {
+  SplineData s = std::move(*spline_);
+  spline_.reset();
+  std::vector<Vec2> pts;
+  if (!s.control.empty()) {
+    std::string error;
+    pts = approximate_spline(s.degree, s.control, s.knots,
+                             options_.spline_tolerance >= kMinSplineTolerance
+                                 ? options_.spline_tolerance
+                                 : kMinSplineTolerance,
+                             error);
+    if (pts.empty()) return warn(fmt::format("SPLINE {}; left out", error));
+  } else if (s.fit.size() >= 2) {
+    warn("SPLINE with fit points only: cut through its fit points as straight segments");
+    pts = s.fit;
+  } else {
+    return warn("SPLINE with neither control points nor fit points; left out");
+  }
+  Path path{pts.front(), {}, s.closed};
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    path.segs.push_back({pts[i], std::nullopt, 0});
+  keep(std::move(path));
+}
+
+std::optional<std::vector<Path>> finish(Collector& c, const std::string& name,
+                                        const DxfOptions& options, core::DiagnosticSink& diags) {
+  c.flush();
+  if (c.paths.empty()) {
+    const std::string where =
+        options.layer ? fmt::format("on layer \"{}\"", *options.layer) : std::string("at all");
+    diags.report({core::Code::DxfNoEntities,
+                  core::Severity::Error,
+                  {},
+                  fmt::format("{}: no LINE, ARC, CIRCLE, POLYLINE, LWPOLYLINE or SPLINE {}{}", name,
+                              where, c.on_layer > 0 ? " (only entities usina cannot cut)" : "")});
+    return std::nullopt;
+  }
+  return std::move(c.paths);
+}
+
+}  // namespace
+
+std::optional<std::vector<Path>> read_dxf(std::istream& in, const std::string& name,
+                                          const DxfOptions& options, core::DiagnosticSink& diags) {
+  Collector c(options, name, diags);
+  DL_Dxf dxf;
+  if (!dxf.in(in, &c)) {
+    diags.report({core::Code::DxfUnreadable,
+                  core::Severity::Error,
+                  {},
+                  fmt::format("{}: not a readable DXF drawing", name)});
+    return std::nullopt;
+  }
+  return finish(c, name, options, diags);
+}
+
+std::optional<std::vector<Path>> read_dxf(const std::string& file, const DxfOptions& options,
+                                          core::DiagnosticSink& diags) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    diags.report({core::Code::DxfUnreadable,
+                  core::Severity::Error,
+                  {},
+                  fmt::format("{}: cannot open the drawing", file)});
+    return std::nullopt;
+  }
+  return read_dxf(in, file, options, diags);
+}
+
+}  // namespace usina::cam

@@ -1,0 +1,40 @@
+// Reading a DXF drawing's geometry (dxflib): LINE, ARC, CIRCLE, LWPOLYLINE
+// and POLYLINE with bulges, SPLINE approximated to a tolerance, each entity a
+// Path in drawing order. What cannot be machined as a contour (text, hatches,
+// block references, ellipses) is a warning and is left out.
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cam/path.hpp"
+#include "core/diagnostic.hpp"
+
+namespace usina::cam {
+
+// Coordinates beyond this (mm) are not a part a machine holds: such an
+// entity is a warning and left out.
+inline constexpr double kMaxDrawingCoordinate = 1e5;
+
+// SPLINE tolerances below this are raised to it (a finer one only makes
+// more chords than a control can follow).
+inline constexpr double kMinSplineTolerance = 1e-4;
+
+struct DxfOptions {
+  std::optional<std::string> layer;  // only this layer (DXF layer names are case-insensitive)
+  double spline_tolerance = 0.01;    // mm between a SPLINE and its chords
+};
+
+// The entities of `file` in drawing order, or nullopt after an error
+// (E_DXF_UNREADABLE, E_DXF_NO_ENTITIES). Entities of block definitions are
+// not part of the drawing's model space and are skipped.
+std::optional<std::vector<Path>> read_dxf(const std::string& file, const DxfOptions& options,
+                                          core::DiagnosticSink& diags);
+
+// The same from a stream; `name` names it in messages.
+std::optional<std::vector<Path>> read_dxf(std::istream& in, const std::string& name,
+                                          const DxfOptions& options, core::DiagnosticSink& diags);
+
+}  // namespace usina::cam

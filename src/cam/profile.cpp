@@ -1,0 +1,239 @@
+#include "cam/profile.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "cam/from_dxf.hpp"
+#include "cam/offset.hpp"
+
+namespace usina::cam {
+namespace {
+
+Vec2 unit(Vec2 v) {
+  const double n = core::norm(v);
+  return n > 0.0 ? v / n : Vec2{1.0, 0.0};
+}
+
+// Direction of travel where a segment starts (at `from`) or ends.
+Vec2 start_tangent(Vec2 from, const PathSegment& s) {
+  if (!s.center) return unit(s.to - from);
+  return unit(core::perp(from - *s.center) * s.turn);
+}
+
+Vec2 end_tangent(Vec2 from, const PathSegment& s) {
+  if (!s.center) return unit(s.to - from);
+  return unit(core::perp(s.to - *s.center) * s.turn);
+}
+
+// The point `length` along a segment from `from`.
+Vec2 point_along(Vec2 from, const PathSegment& s, double length) {
+  const double total = segment_length(from, s);
+  const double f = total > 0.0 ? length / total : 0.0;
+  if (!s.center) return from + (s.to - from) * f;
+  return *s.center + core::rotate(from - *s.center, segment_sweep(from, s) * f);
+}
+
+// A piece of a path between two distances along it, and whether a tab lifts it.
+struct Piece {
+  Path path;
+  bool tab = false;
+};
+
+// The path cut at the tab ends: pieces alternate between cut and tab.
+std::vector<Piece> split_for_tabs(const Path& p, const Tabs& tabs, double tool_diameter) {
+  const double total = path_length(p);
+  std::vector<double> cuts;
+  const double half = (tabs.width + tool_diameter) / 2.0;
+  for (int i = 0; i < tabs.count; ++i) {
+    const double c = total * (i + 0.5) / tabs.count;
+    cuts.push_back(c - half);
+    cuts.push_back(c + half);
+  }
+  std::vector<Piece> pieces{{{p.start, {}, false}, false}};
+  std::size_t next = 0;
+  double s0 = 0.0;
+  for (std::size_t i = 0; i < p.segs.size(); ++i) {
+    const Vec2 from = segment_start(p, i);
+    const PathSegment& seg = p.segs[i];
+    const double len = segment_length(from, seg);
+    for (; next < cuts.size() && cuts[next] < s0 + len; ++next) {
+      if (cuts[next] - s0 <= 1e-9) {  // at the segment's start: no zero-length piece
+        pieces.push_back({{from, {}, false}, next % 2 == 0});
+        continue;
+      }
+      const Vec2 q = point_along(from, seg, cuts[next] - s0);
+      pieces.back().path.segs.push_back({q, seg.center, seg.turn});
+      pieces.push_back({{q, {}, false}, next % 2 == 0});
+    }
+    pieces.back().path.segs.push_back(seg);
+    s0 += len;
+  }
+  return pieces;
+}
+
+struct Lead {
+  Vec2 from;  // where the arc starts
+  Vec2 to;    // where it ends
+  Vec2 center;
+  int turn = 1;
+};
+
+// A quarter circle tangent to the path at its start (lead-in) or end
+// (lead-out), on the `side` away from the part.
+Lead lead_in(const Path& p, double radius, int side) {
+  const Vec2 t = start_tangent(p.start, p.segs.front());
+  const Vec2 c = p.start + core::perp(t) * (radius * side);
+  const Vec2 a = c + core::rotate(p.start - c, -side * std::numbers::pi / 2);
+  return {a, p.start, c, side};
+}
+
+Lead lead_out(const Path& p, double radius, int side) {
+  const Vec2 e = end_point(p);
+  const Vec2 t = end_tangent(segment_start(p, p.segs.size() - 1), p.segs.back());
+  const Vec2 c = e + core::perp(t) * (radius * side);
+  return {e, c + core::rotate(e - c, side * std::numbers::pi / 2), c, side};
+}
+
+void one_pass(ProgramWriter& w, const Path& p, double z, const ProfileOptions& o) {
+  const int side = lead_side(o.side);
+  const double tab_z = -o.depth + o.tabs.height;
+  const bool leads = o.lead_radius > 0.0;
+  if (leads) {
+    const Lead in = lead_in(p, o.lead_radius, side);
+    w.rapid_over(in.from);
+    w.plunge(z);
+    w.arc(in.to, in.center, in.turn, z);
+  } else {
+    w.rapid_over(p.start);
+    w.plunge(z);
+  }
+  if (o.tabs.count > 0 && z < tab_z) {
+    for (const Piece& piece : split_for_tabs(p, o.tabs, o.cut.tool_diameter)) {
+      const double piece_z = piece.tab ? tab_z : z;
+      const Vec3 at = w.position();
+      if (piece_z > at.z) w.feed({at.x, at.y, piece_z});
+      if (piece_z < at.z) w.plunge(piece_z);
+      w.path(piece.path, piece_z);
+    }
+  } else {
+    w.path(p, z);
+  }
+  if (leads) {
+    const Lead out = lead_out(p, o.lead_radius, side);
+    w.arc(out.to, out.center, out.turn, z);
+  }
+  w.retract();
+}
+
+bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
+                   core::DiagnosticSink& diags) {
+  bool ok = check_cutting(o.cut, diags);
+  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
+  ok = check_positive("the step down", o.step_down, "mm", diags) && ok;
+  ok = check_positive("the lead radius", o.lead_radius, "mm", diags, true) && ok;
+  ok = check_positive("the tolerance", o.tolerance, "mm", diags) && ok;
+  if (o.tabs.count < 0) {
+    ok = fail(diags, core::Code::GenBadValue,
+              fmt::format("the tab count is {}; give 0 (no tabs) or more", o.tabs.count));
+  }
+  if (o.tabs.count > 0) {
+    ok = check_positive("the tab width", o.tabs.width, "mm", diags) && ok;
+    ok = check_positive("the tab height", o.tabs.height, "mm", diags) && ok;
+    if (ok && o.tabs.height >= o.depth) {
+      ok = fail(diags, core::Code::GenBadValue,
+                fmt::format("the tab height {:g} mm is not below the depth {:g} mm; tabs are "
+                            "the material left at the bottom of the cut",
+                            o.tabs.height, o.depth));
+    }
+  }
+  if (!ok || !check_extent(contours, diags) || !check_passes(o.depth, o.step_down, diags)) {
+    return false;
+  }
+  if (o.tabs.count > kMaxPasses) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("{} tabs are more than {}", o.tabs.count, kMaxPasses));
+  }
+  const bool needs_closed = o.side == ProfileSide::Outside || o.side == ProfileSide::Inside;
+  for (const Path& c : contours) {
+    if (needs_closed && !c.closed) {
+      return fail(
+          diags, core::Code::GenOpenOutline,
+          fmt::format("the contour from ({:g}, {:g}) is open, so it has no {}; use "
+                      "--side left or right",
+                      c.start.x, c.start.y, o.side == ProfileSide::Outside ? "outside" : "inside"));
+    }
+  }
+  return ok;
+}
+
+bool check_tabs_fit(const Path& p, const ProfileOptions& o, core::DiagnosticSink& diags) {
+  if (o.tabs.count == 0) return true;
+  const double need = o.tabs.count * (o.tabs.width + o.cut.tool_diameter);
+  const double have = path_length(p);
+  if (need < have) return true;
+  return fail(diags, core::Code::GenBadValue,
+              fmt::format("{} tabs {:g} mm wide with a {:g} mm tool need more than {:.3f} mm of "
+                          "tool path, and the path from ({:g}, {:g}) is {:.3f} mm long; use fewer "
+                          "or narrower tabs",
+                          o.tabs.count, o.tabs.width, o.cut.tool_diameter, need, p.start.x,
+                          p.start.y, have));
+}
+
+}  // namespace
+
+int lead_side(ProfileSide side) {
+  return side == ProfileSide::Right ? -1 : 1;
+}
+
+std::vector<Path> profile_paths(const Path& contour, const ProfileOptions& o) {
+  const double r = o.cut.tool_diameter / 2.0;
+  if (o.side == ProfileSide::On) return {contour};
+  if (o.side == ProfileSide::Left || o.side == ProfileSide::Right) {
+    std::vector<Path> out;
+    core::DiagnosticList ignored;  // an empty result says the tool does not fit
+    tool_paths({contour}, o.side == ProfileSide::Left ? Side::Left : Side::Right, r, o.tolerance,
+               out, ignored);
+    return out;
+  }
+  const bool ccw = signed_area2(linearize(contour, o.tolerance)) > 0.0;
+  const bool outside = o.side == ProfileSide::Outside;
+  // The outside of a counter-clockwise contour is on its right.
+  std::vector<Path> out = offset_closed(contour, r, outside != ccw, o.tolerance);
+  for (Path& p : out) {
+    const bool p_ccw = signed_area2(linearize(p, o.tolerance)) > 0.0;
+    if (p_ccw == outside) p = reversed(p);  // outside clockwise, inside counter-clockwise
+  }
+  return out;
+}
+
+bool generate_profile(const std::vector<Path>& contours, const ProfileOptions& o, canon::Sink& sink,
+                      core::DiagnosticSink& diags) {
+  if (!check_profile(contours, o, diags)) return false;
+  std::vector<Path> paths;
+  for (const Path& c : contours) {
+    std::vector<Path> ps = profile_paths(c, o);
+    if (ps.empty()) {
+      return fail(diags, core::Code::GenToolTooBig,
+                  fmt::format("the contour from ({:g}, {:g}) leaves no room for a tool of "
+                              "diameter {:g} mm on that side; use a smaller tool",
+                              c.start.x, c.start.y, o.cut.tool_diameter));
+    }
+    for (const Path& p : ps) {
+      if (!check_tabs_fit(p, o, diags)) return false;
+    }
+    paths.insert(paths.end(), ps.begin(), ps.end());
+  }
+  ProgramWriter w(sink, o.cut);
+  w.begin(fmt::format("usina gen profile: {} contours, depth {:g} mm", paths.size(), o.depth));
+  const std::vector<double> levels = depth_levels(o.depth, o.step_down);
+  for (const Path& p : paths) {
+    for (const double z : levels)
+      one_pass(w, p, z, o);
+  }
+  w.end();
+  return true;
+}
+
+}  // namespace usina::cam

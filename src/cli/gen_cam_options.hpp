@@ -1,0 +1,52 @@
+// What the cam generators' subcommands share (usina gen from-dxf, pocket,
+// profile, drill, engrave): the cutting options, a shape given as a
+// rectangle, a circle or a DXF drawing, and running a generator into the
+// post (cli/post_output.hpp: --post, -o, and the program's options).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cam/path.hpp"
+#include "cam/program.hpp"
+#include "canon/sink.hpp"
+#include "core/diagnostic.hpp"
+
+namespace usina::cli {
+
+// --tool-diameter --feed --plunge-feed --rpm --safe-z --tool
+void add_cutting_options(CLI::App& cmd, cam::Cutting& c);
+
+// One of --rect W,H (with --corner-radius), --circle R (both about --center
+// X,Y) or --dxf FILE (with --layer, --spline-tolerance).
+struct ShapeOptions {
+  std::vector<double> rect;
+  double circle = 0.0;
+  std::vector<double> center{0.0, 0.0};
+  double corner_radius = 0.0;
+  std::string dxf;
+  std::string layer;
+  double spline_tolerance = 0.01;
+};
+
+void add_shape_options(CLI::App& cmd, ShapeOptions& s);
+// --layer and --spline-tolerance only (from-dxf names its drawing itself).
+void add_dxf_options(CLI::App& cmd, ShapeOptions& s);
+
+// The shape's contours: the rectangle or circle, or the drawing's entities
+// chained; nullopt after an error (reported).
+std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
+                                                  core::DiagnosticSink& diags);
+
+// Runs `generate` (it returns whether it succeeded, its errors reported)
+// into the post chosen by the PostOutput options; sets the exit status:
+// 0, or 2 when the generator failed (its input was bad).
+struct PostOutput;
+void run_generator(const PostOutput& out,
+                   const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate);
+
+}  // namespace usina::cli

@@ -1,0 +1,51 @@
+// usina gen from-dxf: a program from a drawing's contours (seed 002,
+// section 4), arcs kept as G2/G3.
+#include <memory>
+
+#include "cam/chain.hpp"
+#include "cam/dxf_import.hpp"
+#include "cam/from_dxf.hpp"
+#include "cli/gen_cam_options.hpp"
+#include "cli/post_output.hpp"
+
+namespace usina::cli {
+namespace {
+
+struct FromDxfCli {
+  std::string drawing;
+  ShapeOptions shape;
+  cam::FromDxfOptions gen;
+  std::string side = "on";
+  PostOutput output;
+};
+
+}  // namespace
+
+void add_gen_from_dxf(CLI::App& gen) {
+  auto o = std::make_shared<FromDxfCli>();
+  CLI::App* cmd =
+      gen.add_subcommand("from-dxf", "cut a DXF drawing's contours (seed 002, section 4)");
+  cmd->add_option("DRAWING", o->drawing, "the DXF file")->required();
+  add_dxf_options(*cmd, o->shape);
+  cmd->add_option("--depth", o->gen.depth, "depth below Z0 (the top of the part), mm")
+      ->capture_default_str();
+  cmd->add_option("--side", o->side,
+                  "where the tool centre runs: on the line, or a tool radius to its left or "
+                  "right (offset by Clipper: arcs become lines)")
+      ->check(CLI::IsMember({"on", "left", "right"}))
+      ->capture_default_str();
+  add_cutting_options(*cmd, o->gen.cut);
+  add_post_options(*cmd, o->output);
+  cmd->callback([o] {
+    o->gen.side = o->side == "left"    ? cam::Side::Left
+                  : o->side == "right" ? cam::Side::Right
+                                       : cam::Side::On;
+    o->shape.dxf = o->drawing;
+    run_generator(o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+      const auto paths = shape_paths(o->shape, diags);
+      return paths && cam::generate_from_paths(*paths, o->gen, sink, diags);
+    });
+  });
+}
+
+}  // namespace usina::cli
