@@ -1,7 +1,6 @@
-// Every generator of this module through every post usina can read back
-// (rs274ngc, fanuc, grbl; romi's '#' blocks are not an input dialect yet),
-// then through usina's own interpreter: the same tool path (issue 5, "the
-// round trip").
+// Every generator of this module through every post, then read back by
+// usina in that post's dialect: the same tool path (issue 5, "the round
+// trip"). A dialect usina does not read yet is skipped, and says so.
 #include <gtest/gtest.h>
 
 #include "../post/round_trip.hpp"
@@ -20,15 +19,30 @@ namespace {
 // 0.0005 mm on each axis, 0.0005·√3 in space.
 constexpr double kTol = 1e-3;
 
+constexpr const char* kPosts[] = {"rs274ngc", "fanuc", "grbl", "romi"};
+
+// The dialects that are not read yet, for GTEST_SKIP.
+std::string unread_dialects() {
+  std::string out;
+  for (const char* post : kPosts) {
+    if (gcode::find_dialect(post) == nullptr) out += std::string(out.empty() ? "" : ", ") + post;
+  }
+  return out;
+}
+
 void round_trip(const canon::Toolpath& tp) {
   ASSERT_GT(tp.size(), 3u);
-  for (const char* post : {"rs274ngc", "fanuc", "grbl"}) {
+  for (const char* post : kPosts) {
     SCOPED_TRACE(post);
     core::DiagnosticList diags;
     const std::string text = test::post_text(tp.ops(), post, diags);
     EXPECT_FALSE(diags.has_errors());
-    test::expect_same_path(tp.ops(), test::interpret(text), kTol);
+    if (const auto back = test::interpret_in(text, post)) {
+      test::expect_same_path(tp.ops(), *back, kTol);
+    }
   }
+  if (const std::string missing = unread_dialects(); !missing.empty())
+    GTEST_SKIP() << "not read back yet: " << missing;
 }
 
 std::vector<Path> slot() {
@@ -89,11 +103,12 @@ TEST(GenRoundTrip, DrillFeaturesBecomeCyclesThatReachTheBottom) {
   o.form = HoleForm::Features;
   const auto holes = grid({0, 0}, 3, 2, 10, 10);
   ASSERT_TRUE(generate_drill(holes, o, tp, d));
-  for (const char* post : {"rs274ngc", "fanuc", "grbl"}) {
+  for (const char* post : kPosts) {
     SCOPED_TRACE(post);
     core::DiagnosticList diags;
-    const auto back = test::interpret(test::post_text(tp.ops(), post, diags));
-    const auto ends = test::motion_ends(back, kTol);
+    const auto back = test::interpret_in(test::post_text(tp.ops(), post, diags), post);
+    if (!back) continue;
+    const auto ends = test::motion_ends(*back, kTol);
     for (const Vec2& h : holes) {
       const bool reached = std::any_of(ends.begin(), ends.end(), [&](const Vec3& e) {
         return core::distance(e, Vec3{h.x, h.y, -o.depth}) < kTol;
@@ -101,6 +116,8 @@ TEST(GenRoundTrip, DrillFeaturesBecomeCyclesThatReachTheBottom) {
       EXPECT_TRUE(reached) << h.x << ", " << h.y;
     }
   }
+  if (const std::string missing = unread_dialects(); !missing.empty())
+    GTEST_SKIP() << "not read back yet: " << missing;
 }
 
 TEST(GenRoundTrip, Engrave) {

@@ -2,6 +2,7 @@
 // own interpreter, and a comparison of the two tool paths.
 #pragma once
 
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 
 #include "canon/toolpath.hpp"
 #include "core/source.hpp"
+#include "gcode/dialect.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "post/post.hpp"
 
@@ -38,6 +40,27 @@ inline std::vector<canon::Op> interpret(const std::string& text) {
   EXPECT_TRUE(interp.run(id));
   for (const core::Diagnostic& d : diags.all())
     EXPECT_NE(d.severity, core::Severity::Error) << core::render(d, sources);
+  return path.ops();
+}
+
+// The ops usina makes of `text` read in `dialect` (the control a post wrote
+// for), or nullopt when usina does not read that dialect yet; errors fail
+// the test.
+inline std::optional<std::vector<canon::Op>> interpret_in(const std::string& text,
+                                                          const std::string& dialect) {
+  const gcode::Dialect* d = gcode::find_dialect(dialect);
+  if (d == nullptr) return std::nullopt;
+  core::SourceManager sources;
+  const std::uint32_t id = sources.add(core::SourceFile::from_string("post.nc", text));
+  core::DiagnosticList diags;
+  canon::Toolpath path;
+  gcode::OptionValues options;
+  EXPECT_FALSE(gcode::resolve_options(*d, {}, options).has_value());
+  auto runner =
+      d->make_runner(gcode::RunContext{sources, gcode::InterpOptions{}, options, path, diags});
+  EXPECT_TRUE(runner->run(id)) << dialect;
+  for (const core::Diagnostic& dg : diags.all())
+    EXPECT_NE(dg.severity, core::Severity::Error) << dialect << ": " << core::render(dg, sources);
   return path.ops();
 }
 
