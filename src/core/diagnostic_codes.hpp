@@ -85,4 +85,7 @@
   X(UnknownToolDiameter, E_UNKNOWN_TOOL_DIAMETER)  \
   X(PocketTooSmall, E_POCKET_TOO_SMALL)            \
   X(UnknownBlockNumber, E_UNKNOWN_BLOCK_NUMBER)    \
-  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)
+  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)       \
+  /* the grbl dialect */                         \
+  X(GrblError, E_GRBL)                           \
+  X(GrblWarning, W_GRBL)
