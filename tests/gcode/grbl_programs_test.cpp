@@ -214,6 +214,15 @@ TEST(GrblPrograms, PercentLinesRealTimeCharactersAndTextAfterEnd) {
   EXPECT_EQ(mid->errors(), (std::vector<std::pair<std::uint32_t, int>>{{1, 1}}));
 }
 
+TEST(GrblPrograms, MachineCommandsWarnAndDoNothing) {
+  for (const char* line : {"$C", "$SLP", "$RST=$", "$RST=#", "$RST=*"}) {
+    auto r = run_grbl(std::string(line) + "\nG0 X1\n");
+    EXPECT_TRUE(r->has(core::Code::GrblWarning)) << line;
+    EXPECT_TRUE(r->errors().empty()) << line;
+    EXPECT_EQ(r->moves().size(), 1u) << line;
+  }
+}
+
 TEST(GrblPrograms, BlockDeleteRunsTheBlock) {
   auto r = run_grbl("/G0 X7\n");
   ASSERT_EQ(r->moves().size(), 1u);
