@@ -407,6 +407,18 @@ EXPLAIN = {
         "A romi cycle's depth `Z` (G81, G26) is a distance below the work surface; its sign "
         "is ignored. The seed writes `Z40.` in one program and `Z-25.` in another.",
         "Nothing; the note says which depth was used."),
+    "E_GRBL": (
+        "Grbl 1.1 would refuse the line (`--dialect grbl`): the message starts with the number "
+        "the machine prints, `grbl error:N (Grbl's text)`, then what usina found. The line "
+        "changes nothing and the next line is read, as on the firmware "
+        "(`--dialect-option after_error=stop` ends there). The numbers are in docs/grbl.md.",
+        "Fix the line for Grbl: the number's table in docs/grbl.md says what Grbl wants."),
+    "W_GRBL": (
+        "Something in a Grbl file that the firmware takes as a command outside the program: a "
+        "real-time character (`?` `~` `!` Ctrl-X, even inside a comment) or a `$C`, `$SLP`, "
+        "`$RST` line. usina leaves it out of the trace.",
+        "Take the character out of the comment, or the line out of the file, unless it is "
+        "meant for the machine."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

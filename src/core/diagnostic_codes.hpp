@@ -94,4 +94,7 @@
   X(GenToolTooBig, E_GEN_TOOL_TOO_BIG)             \
   X(GenOpenOutline, E_GEN_OPEN_OUTLINE)            \
   X(FontUnreadable, E_FONT_UNREADABLE)             \
-  X(TextNotInFont, E_TEXT_NOT_IN_FONT)
+  X(TextNotInFont, E_TEXT_NOT_IN_FONT)             \
+  /* the grbl dialect */                           \
+  X(GrblError, E_GRBL)                             \
+  X(GrblWarning, W_GRBL)

@@ -1,0 +1,108 @@
+// The grbl dialect (Grbl 1.1, docs/grbl.md): Grbl's line reader, its word
+// and block checks with Grbl's error numbers, and its `$` system commands.
+// The checked program is then run by the RS274NGC interpreter (grbl.cpp), so
+// the geometry is the shared one; these files only say what Grbl accepts.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/diagnostic.hpp"
+#include "gcode/dialect.hpp"
+
+namespace usina::gcode::grbl {
+
+// Grbl's own text for an error number (1–38, [err] of docs/grbl.md); empty
+// for a number Grbl does not use.
+std::string_view error_text(int number);
+
+// The Grbl number an interpreter diagnostic stands for; 0 when Grbl has
+// none (the diagnostic is then reported as usina's own).
+int error_for(core::Code code);
+
+// The message of a Grbl error: "grbl error:22 (Undefined feed rate): detail".
+std::string error_message(int number, std::string_view detail);
+
+// Why Grbl refuses a line: its error number, the 1-based column in the
+// original line, and what usina adds to Grbl's text.
+struct Failure {
+  int number = 0;
+  std::uint32_t col = 0;
+  std::string detail;
+};
+
+// A line as Grbl's line reader leaves it ([proto]): upper case, no blanks or
+// control characters, no comments, no '/', no real-time characters.
+struct StrippedLine {
+  std::string text;                 // what Grbl's parser sees
+  std::vector<std::uint32_t> cols;  // 1-based column of each character of text
+  std::string blanked;              // the line with what Grbl drops turned to spaces
+  std::uint32_t realtime_col = 0;   // first real-time character (? ~ ! ^X), 0 if none
+};
+
+StrippedLine strip_line(std::string_view line);
+
+// Grbl's LINE_BUFFER_SIZE is 80 with the terminator.
+inline constexpr std::size_t kMaxLineLength = 79;
+
+struct Word {
+  char letter = 0;
+  double value = 0.0;
+  std::uint32_t col = 0;
+};
+
+// Grbl's words: a letter and a number (sign, digits, one point). error:1 when
+// a word does not start with a letter, error:2 when the number is bad.
+std::optional<Failure> read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
+                                  std::vector<Word>& out);
+
+// What the checks need to know between blocks (a subset of Grbl's gc_state).
+struct Modal {
+  int motion = 0;             // tenths: 0, 10, 20, 30, 382..385, 800
+  bool motion_given = false;  // false: still Grbl's start-up G0 (the interpreter starts in G80)
+  int plane = 170;
+  bool incremental = false;
+  bool inch = false;
+  bool inverse_time = false;
+  double feed_mm = 0.0;  // 0: undefined (Grbl's F0)
+};
+
+// What a checked block asks of the interpreter's copy of the line.
+struct Accepted {
+  bool program_end = false;  // M2 or M30
+  bool uses_motion = false;  // axis words moved by the modal motion (no motion code of its own)
+  bool sets_motion = false;  // a motion code in the block
+  bool sets_distance = false;
+  bool sets_feed_mode = false;
+  bool sets_feed = false;
+};
+
+// Grbl's checks of one G-code block (gc_execute_line steps 1–3); on success
+// `state` is what it is after the block.
+std::optional<Failure> check_block(const Dialect& d, const OptionValues& options,
+                                   const std::vector<Word>& words, Modal& state, Accepted& out);
+
+// Grbl's settings ($x=value) that usina reads; the others are recorded only.
+struct Settings {
+  std::map<int, double> values;
+  double get(int n) const;
+};
+
+// A `$` line. `interp_line` receives what the interpreter runs in its place
+// (a jog's or a homing's move), empty when nothing; `notes` warnings.
+struct SystemResult {
+  std::optional<Failure> failure;
+  std::string interp_line;
+  bool restore_modes = false;  // the move changed modes Grbl keeps: put them back
+  std::vector<std::string> warnings;
+};
+
+SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
+                            const std::vector<std::uint32_t>& cols, const Modal& state,
+                            Settings& settings);
+
+}  // namespace usina::gcode::grbl

@@ -1,0 +1,323 @@
+// The grbl runner: the checks of every line, the copy the interpreter runs,
+// and the reruns that let Grbl's "report and read on" hold for the errors
+// only the interpreter finds (arc geometry, probe targets).
+#include "gcode/dialects/grbl_runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace usina::gcode::grbl {
+namespace {
+
+std::string motion_name(int tenths) {
+  return tenths % 10 == 0 ? fmt::format("G{}", tenths / 10)
+                          : fmt::format("G{}.{}", tenths / 10, tenths % 10);
+}
+
+// The modes a `$J=` jog or `$H` changed in the interpreter and Grbl kept:
+// put back on the next G-code line (distance, feed mode, F) and on the next
+// line moving with the modal motion (the motion mode).
+struct Restore {
+  bool modes = false;
+  bool motion = false;
+  Modal before;
+};
+
+// Reads the program line by line as Grbl does and writes the interpreter's copy.
+class Preparer {
+ public:
+  Preparer(const Dialect& d, const OptionValues& o, std::uint32_t file)
+      : d_(d), options_(o), file_(file) {}
+
+  Prepared out;
+
+  void line(std::uint32_t n, std::uint64_t offset, std::string_view text, bool refused) {
+    loc_ = {file_, n, 1, 0, offset};
+    const StrippedLine s = strip_line(text);
+    if (ended_) {
+      if (!s.text.empty() && s.text != "%" && !warned_after_end_) {
+        warn(
+            core::Code::TextAfterProgramEnd, 1,
+            "lines after M2/M30: Grbl goes on reading them, usina's trace ends at the program end");
+        warned_after_end_ = true;
+      }
+      return blank();
+    }
+    if (s.realtime_col > 0) {
+      warn(core::Code::GrblWarning, s.realtime_col,
+           "'?', '~', '!' and Ctrl-X are Grbl real-time commands (status, cycle start, feed hold, "
+           "reset), taken out of the stream wherever they are; usina drops them");
+    }
+    if (s.text.empty() || s.text == "%" || refused) return blank();
+    if (s.text.size() > kMaxLineLength) {
+      return fail({11, 1,
+                   fmt::format("{} characters after blanks and comments are removed; Grbl "
+                               "holds {}",
+                               s.text.size(), kMaxLineLength)});
+    }
+    if (s.text[0] == '$') return system(s);
+    std::vector<Word> words;
+    if (auto f = read_words(s.text, s.cols, words)) return fail(*f);
+    const Modal before = state_;
+    Accepted acc;
+    if (auto f = check_block(d_, options_, words, state_, acc)) return fail(*f);
+    out.text += s.blanked + appended(acc, before);
+    out.text += '\n';
+    if (acc.program_end) ended_ = true;
+  }
+
+  bool failed() const { return failed_; }
+
+ private:
+  void blank() { out.text += '\n'; }
+
+  void fail(const Failure& f) {
+    core::SourceLoc at = loc_;
+    at.col = f.col;
+    at.length = 1;
+    out.diags.push_back(
+        {core::Code::GrblError, core::Severity::Error, at, error_message(f.number, f.detail)});
+    failed_ = true;
+    blank();
+  }
+
+  void warn(core::Code code, std::uint32_t col, std::string message) {
+    core::SourceLoc at = loc_;
+    at.col = col;
+    out.diags.push_back({code, core::Severity::Warning, at, std::move(message)});
+  }
+
+  void system(const StrippedLine& s) {
+    SystemResult r = system_command(d_, options_, s.text, s.cols, state_, settings_);
+    for (std::string& w : r.warnings)
+      warn(core::Code::GrblWarning, s.cols.front(), std::move(w));
+    if (r.failure) return fail(*r.failure);
+    if (r.restore_modes && !restore_.modes && !restore_.motion) restore_.before = state_;
+    if (r.restore_modes) restore_.modes = restore_.motion = true;
+    out.text += r.interp_line;
+    out.text += '\n';
+  }
+
+  // The words the interpreter's copy of an accepted block needs besides
+  // Grbl's: the modes a jog changed, and Grbl's start-up G0 (the
+  // interpreter starts in G80).
+  std::string appended(const Accepted& acc, const Modal& before) {
+    std::string extra;
+    const double per_unit = before.inch ? 25.4 : 1.0;
+    if (restore_.modes) {
+      const Modal& p = restore_.before;
+      if (!acc.sets_distance) extra += p.incremental ? " G91" : " G90";
+      if (!acc.sets_feed_mode) extra += p.inverse_time ? " G93" : " G94";
+      if (!acc.sets_feed) {
+        extra += fmt::format(" F{:.12f}", p.inverse_time ? p.feed_mm : p.feed_mm / per_unit);
+      }
+      restore_.modes = false;
+    }
+    const Modal& m = restore_.motion ? restore_.before : before;
+    if (acc.uses_motion && (restore_.motion || !before.motion_given)) {
+      extra += " " + motion_name(m.motion_given ? m.motion : 0);
+    }
+    if (acc.uses_motion || acc.sets_motion) restore_.motion = false;
+    return extra;
+  }
+
+  const Dialect& d_;
+  const OptionValues& options_;
+  std::uint32_t file_;
+  core::SourceLoc loc_;
+  Modal state_;
+  Settings settings_;
+  Restore restore_;
+  bool ended_ = false;
+  bool warned_after_end_ = false;
+  bool failed_ = false;
+};
+
+// Collects the interpreter's ops and checks what Grbl checks from the
+// position: the arc end on the circle within Grbl's tolerance, a probe going
+// somewhere.
+class CheckingSink final : public canon::Sink {
+ public:
+  explicit CheckingSink(const core::Vec3& start) : pos_(start) {}
+
+  std::vector<canon::Op> ops;
+  std::optional<core::Diagnostic> failure;
+
+  void on(const canon::Op& op) override {
+    ops.push_back(op);
+    if (failure) return;
+    if (const auto* a = std::get_if<canon::Arc>(&op.kind)) check_arc(*a, op.src);
+    if (const auto* p = std::get_if<canon::Probe>(&op.kind)) {
+      if (known_ && core::norm(p->to - pos_) < 1e-9) {
+        fail(op.src, 33, "the probe target is the current position");
+      }
+      known_ = false;  // the probe stops short of its target: the next start is not `to`
+      return;
+    }
+    if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) moved(t->to);
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind)) moved(f->to);
+    if (const auto* s = std::get_if<canon::Spline>(&op.kind)) moved(s->to);
+  }
+
+ private:
+  void moved(const core::Vec3& to) {
+    pos_ = to;
+    known_ = true;
+  }
+
+  void check_arc(const canon::Arc& a, const core::SourceLoc& src) {
+    if (known_) {
+      // Grbl's rule (gcode.c): the radius to the end may differ from the
+      // radius to the start by 0.005 mm, or by up to 0.5 mm when that is
+      // also at most 0.1 % of the radius.
+      const core::Vec3 n = a.normal;
+      auto in_plane = [&](const core::Vec3& v) { return v - n * core::dot(v, n); };
+      const double r = core::norm(in_plane(pos_ - a.center));
+      const double delta = std::fabs(core::norm(in_plane(a.to - a.center)) - r);
+      if (delta > 0.005 && (delta > 0.5 || delta > 0.001 * r)) {
+        fail(src, 33,
+             fmt::format("the arc's end is {:.4f} mm off its circle of radius {:.4f} mm (Grbl "
+                         "allows 0.005 mm, or 0.1 % of the radius up to 0.5 mm)",
+                         delta, r));
+      }
+    }
+    moved(a.to);
+  }
+
+  void fail(const core::SourceLoc& src, int number, std::string_view detail) {
+    failure = core::Diagnostic{core::Code::GrblError, core::Severity::Error, src,
+                               error_message(number, detail)};
+  }
+
+  core::Vec3 pos_;
+  bool known_ = true;
+};
+
+// The interpreter's error as Grbl's, when Grbl has a number for it.
+core::Diagnostic as_grbl(core::Diagnostic d) {
+  if (const int n = error_for(d.code); n > 0) {
+    d.code = core::Code::GrblError;
+    d.message = error_message(n, d.message);
+  }
+  return d;
+}
+
+}  // namespace
+
+Prepared Runner::prepare(std::uint32_t file, const std::set<std::uint32_t>& refused,
+                         std::uint32_t cut_from) const {
+  const bool stop =
+      c_.dialect_options.count("after_error") && c_.dialect_options.at("after_error") == "stop";
+  Preparer p(dialect_, c_.dialect_options, file);
+  for (std::size_t i = 0; i < lines_.size(); ++i) {
+    const auto n = static_cast<std::uint32_t>(i + 1);
+    if (n >= cut_from || (stop && p.failed())) {
+      p.out.text += '\n';
+      continue;
+    }
+    p.line(n, lines_[i].offset, lines_[i].text, refused.count(n) > 0);
+  }
+  return std::move(p.out);
+}
+
+namespace {
+
+struct Attempt {
+  CheckingSink sink;
+  core::DiagnosticList diags;
+  std::optional<core::Diagnostic>
+      failure;  // the first line the interpreter or Grbl's geometry refused
+
+  explicit Attempt(const core::Vec3& start) : sink(start) {}
+};
+
+void run_attempt(RunContext& c, const std::vector<std::pair<int, double>>& params,
+                 std::uint32_t copy, Attempt& a) {
+  Interpreter interp(c.sources, c.options, a.sink, a.diags);
+  for (const auto& [index, value] : params)
+    interp.set_parameter(index, value);
+  interp.run(copy);
+  for (const core::Diagnostic& d : a.diags.all()) {
+    if (d.severity == core::Severity::Error) {
+      a.failure = as_grbl(d);
+      break;
+    }
+  }
+  if (a.sink.failure && (!a.failure || a.sink.failure->loc.line <= a.failure->loc.line)) {
+    a.failure = a.sink.failure;
+  }
+}
+
+}  // namespace
+
+bool Runner::run(std::uint32_t file) {
+  const core::SourceFile* source = c_.sources.get(file);
+  if (source == nullptr) return false;
+  const std::string_view text = source->text();
+  lines_.clear();
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    lines_.push_back({at, text.substr(at, end - at)});
+    at = end + 1;
+  }
+  // Where each op and diagnostic of the copy points: the same line of `file`.
+  auto to_file = [&](core::SourceLoc& loc) {
+    loc.file = file;
+    if (loc.line >= 1 && loc.line <= lines_.size()) loc.line_offset = lines_[loc.line - 1].offset;
+  };
+  std::set<std::uint32_t> refused;
+  std::vector<core::Diagnostic> found;  // the interpreter's errors, one a rerun
+  std::uint32_t cut_from = std::numeric_limits<std::uint32_t>::max();
+  const bool stop = c_.dialect_options.at("after_error") == "stop";
+  for (int rerun = 0;; ++rerun) {
+    Prepared p = prepare(file, refused, cut_from);
+    const std::uint32_t copy =
+        c_.sources.add(core::SourceFile::from_string(source->name(), std::move(p.text)));
+    Attempt a(c_.options.start);
+    run_attempt(c_, params_, copy, a);
+    if (a.failure) {
+      to_file(a.failure->loc);
+      found.push_back(*a.failure);
+      const std::uint32_t line = a.failure->loc.line;
+      // A line is refused once, and the copy run again without it; in stop
+      // mode or past the rerun limit the program is cut there instead. An
+      // error with no line (or a loop that would not end) is reported with
+      // this run's trace.
+      if (line > 0 && rerun <= kMaxReruns + 1) {
+        if (stop || refused.count(line) || rerun >= kMaxReruns) {
+          cut_from = line;
+        } else {
+          refused.insert(line);
+        }
+        continue;
+      }
+    }
+    for (const core::Diagnostic& d : a.diags.all()) {
+      if (d.severity == core::Severity::Error || d.code == core::Code::NoProgramEnd) continue;
+      p.diags.push_back(d);
+      to_file(p.diags.back().loc);
+    }
+    for (core::Diagnostic& d : found)
+      p.diags.push_back(d);
+    std::stable_sort(p.diags.begin(), p.diags.end(),
+                     [](const core::Diagnostic& x, const core::Diagnostic& y) {
+                       return x.loc.line < y.loc.line;
+                     });
+    bool ok = true;
+    for (core::Diagnostic& d : p.diags) {
+      ok = ok && d.severity != core::Severity::Error;
+      c_.diags.report(std::move(d));
+    }
+    for (canon::Op op : a.sink.ops) {
+      if (op.src.file == copy) to_file(op.src);
+      c_.sink.on(op);
+    }
+    c_.sink.finish();
+    return ok;
+  }
+}
+
+}  // namespace usina::gcode::grbl
