@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <fmt/format.h>
@@ -136,18 +137,18 @@ class Preparer {
   bool failed_ = false;
 };
 
-// Collects the interpreter's ops and checks what Grbl checks from the
-// position: the arc end on the circle within Grbl's tolerance, a probe going
-// somewhere.
+// Checks what Grbl checks from the position: the arc end on the circle
+// within Grbl's tolerance, a probe going somewhere; and passes the ops on
+// (`forward`) in the run whose lines are all accepted, so nothing is held.
 class CheckingSink final : public canon::Sink {
  public:
   explicit CheckingSink(const core::Vec3& start) : pos_(start) {}
 
-  std::vector<canon::Op> ops;
+  std::function<void(const canon::Op&)> forward;
   std::optional<core::Diagnostic> failure;
 
   void on(const canon::Op& op) override {
-    ops.push_back(op);
+    if (forward) forward(op);
     if (failure) return;
     if (const auto* a = std::get_if<canon::Arc>(&op.kind)) check_arc(*a, op.src);
     if (const auto* p = std::get_if<canon::Probe>(&op.kind)) {
@@ -311,10 +312,15 @@ bool Runner::run(std::uint32_t file) {
       ok = ok && d.severity != core::Severity::Error;
       c_.diags.report(std::move(d));
     }
-    for (canon::Op op : a.sink.ops) {
-      if (op.src.file == copy) to_file(op.src);
-      c_.sink.on(op);
-    }
+    // The accepted copy once more, its ops streamed to the caller: checking
+    // runs keep no ops, so memory stays constant whatever the program's length.
+    Attempt final_run(c_.options.start);
+    final_run.sink.forward = [&](const canon::Op& op) {
+      canon::Op mapped = op;
+      if (mapped.src.file == copy) to_file(mapped.src);
+      c_.sink.on(mapped);
+    };
+    run_attempt(c_, params_, copy, final_run);
     c_.sink.finish();
     return ok;
   }
