@@ -85,4 +85,9 @@
   X(UnknownToolDiameter, E_UNKNOWN_TOOL_DIAMETER)  \
   X(PocketTooSmall, E_POCKET_TOO_SMALL)            \
   X(UnknownBlockNumber, E_UNKNOWN_BLOCK_NUMBER)    \
-  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)
+  X(DepthSignIgnored, N_DEPTH_SIGN_IGNORED)        \
+  X(IntegerCoordinate, W_INTEGER_COORDINATE)       \
+  X(MacroAlarm, E_MACRO_ALARM)                     \
+  X(MacroFormat, E_MACRO_FORMAT)                   \
+  X(BadLoop, E_BAD_LOOP)                           \
+  X(DialectGuess, N_DIALECT_GUESS)

@@ -1,0 +1,288 @@
+// The fanuc dialect's runner: lexical rules, the decimal-point option,
+// control flow, subprograms and macros, system variables, the
+// transformations, each rule and each error path (docs/fanuc.md).
+#include <gtest/gtest.h>
+
+#include "fanuc_test_support.hpp"
+
+namespace usina::gcode::fanuc_test {
+namespace {
+
+using core::Code;
+using core::Vec3;
+
+void expect_end(const Run& r, Vec3 want) {
+  ASSERT_FALSE(r.ends().empty());
+  const Vec3 got = r.ends().back();
+  EXPECT_NEAR(got.x, want.x, 1e-6);
+  EXPECT_NEAR(got.y, want.y, 1e-6);
+  EXPECT_NEAR(got.z, want.z, 1e-6);
+}
+
+TEST(FanucEngine, SemicolonEndsABlockAndPercentDelimitsTheTape) {
+  auto r = run_fanuc("leader text\n%\nO0001 (MAIN)\nG0 X1. ; G0 Y2.\nM30\n%\ntrailing junk\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 2u);
+  expect_end(*r, {1, 2, 0});
+}
+
+TEST(FanucEngine, TextAfterSemicolonIsAnotherBlock) {
+  auto r = run_fanuc("G0 X1. ; note\nM30\n");
+  EXPECT_FALSE(r->ok);
+}
+
+TEST(FanucEngine, CommentsMayHoldSemicolonsAndNestedParentheses) {
+  auto r = run_fanuc("G0 X1. (A; B (C) D)\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {1, 0, 0});
+}
+
+TEST(FanucEngine, DecimalPointCalculatorWarnsOnce) {
+  auto r = run_fanuc("G0 X1000\nY2000\nM30\n");
+  EXPECT_TRUE(r->ok);
+  expect_end(*r, {1000, 2000, 0});
+  int warnings = 0;
+  for (const core::Diagnostic& d : r->diags.all())
+    warnings += d.code == Code::IntegerCoordinate ? 1 : 0;
+  EXPECT_EQ(warnings, 1);
+}
+
+TEST(FanucEngine, DecimalPointFanucReadsLeastIncrements) {
+  auto r = run_fanuc("#1 = 50\nG0 X1000 Y2.\nX#1 Z[5 * 2]\nF100 G1 X1.5\nM30\n", {},
+                     {"decimal_point=fanuc"});
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 3u);
+  EXPECT_NEAR(r->ends()[0].x, 1.0, 1e-9);
+  EXPECT_NEAR(r->ends()[1].x, 50.0, 1e-9);  // variables carry real values
+  EXPECT_NEAR(r->ends()[1].z, 10.0, 1e-9);
+  EXPECT_NEAR(r->ends()[2].x, 1.5, 1e-9);
+  EXPECT_FALSE(r->has(Code::IntegerCoordinate));
+}
+
+TEST(FanucEngine, VacantVariableLeavesItsWordOut) {
+  auto r = run_fanuc("G0 X5. Y5.\nG0 X#1 Y7.\nM30\n");
+  EXPECT_TRUE(r->ok);
+  expect_end(*r, {5, 7, 0});
+}
+
+TEST(FanucEngine, IfThenAndIfGoto) {
+  auto r = run_fanuc(
+      "IF [#1 EQ #0] THEN #1 = 3.\n#2 = 0\nN10 #2 = #2 + 1\nIF [#2 LT #1] GOTO 10\nG0 X#2\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {3, 0, 0});
+}
+
+TEST(FanucEngine, NestedWhileThreeDeep) {
+  auto r = run_fanuc(
+      "#1 = 0\n#10 = 0\nWHILE [#1 LT 2] DO1\n#2 = 0\nWHILE [#2 LT 2] DO2\n#3 = 0\n"
+      "WHILE [#3 LT 2] DO3\n#10 = #10 + 1\n#3 = #3 + 1\nEND3\n#2 = #2 + 1\nEND2\n"
+      "#1 = #1 + 1\nEND1\nG0 X#10\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {8, 0, 0});
+}
+
+TEST(FanucEngine, SequentialLoopsMayReuseTheirNumber) {
+  auto r = run_fanuc(
+      "#1 = 0\nWHILE [#1 LT 2] DO1\n#1 = #1 + 1\nEND1\n"
+      "WHILE [#1 LT 5] DO1\n#1 = #1 + 1\nEND1\nG0 X#1\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {5, 0, 0});
+}
+
+TEST(FanucEngine, LoopErrors) {
+  EXPECT_EQ(run_fanuc("WHILE [1 EQ 1] DO4\nEND4\nM30\n")->first_error(), Code::BadLoop);
+  EXPECT_EQ(run_fanuc("WHILE [1 EQ 1] DO1\nM30\n")->first_error(), Code::BadLoop);
+  EXPECT_EQ(run_fanuc("END1\nM30\n")->first_error(), Code::BadLoop);
+  // Overlapping ranges.
+  EXPECT_EQ(run_fanuc("WHILE [1 EQ 1] DO1\nWHILE [1 EQ 1] DO2\nEND1\nEND2\nM30\n")->first_error(),
+            Code::BadLoop);
+  // Four deep (DO1 DO2 DO3 DO1 nested).
+  EXPECT_EQ(
+      run_fanuc("DO1\nDO2\nDO3\nWHILE [1 EQ 1] DO1\nEND1\nEND3\nEND2\nEND1\nM30\n")->first_error(),
+      Code::BadLoop);
+}
+
+TEST(FanucEngine, GotoOutOfALoopIsAllowedIntoALoopIsNot) {
+  auto out = run_fanuc(
+      "#1 = 0\nWHILE [#1 LT 9] DO1\n#1 = #1 + 1\nIF [#1 EQ 3] GOTO 50\nEND1\n"
+      "N50 G0 X#1\nM30\n");
+  EXPECT_TRUE(out->ok) << out->first_error_text();
+  expect_end(*out, {3, 0, 0});
+  auto into = run_fanuc("GOTO 20\nWHILE [1 EQ 1] DO1\nN20 #1 = 1\nEND1\nM30\n");
+  EXPECT_EQ(into->first_error(), Code::BadLoop);
+  EXPECT_EQ(run_fanuc("GOTO 99\nM30\n")->first_error(), Code::UnknownBlockNumber);
+}
+
+TEST(FanucEngine, EndlessLoopStopsAtTheLimit) {
+  InterpOptions o;
+  o.max_loop_iterations = 100;
+  auto r = run_fanuc("DO1\nEND1\nM30\n", o);
+  EXPECT_EQ(r->first_error(), Code::TooManyIterations);
+}
+
+TEST(FanucEngine, MacroStatementMixedWithNcWordsIsAnError) {
+  EXPECT_EQ(run_fanuc("G1 X1. #2 = 5\nM30\n")->first_error(), Code::MacroFormat);
+  EXPECT_EQ(run_fanuc("#2 = [1 LT 2]\nM30\n")->first_error(), Code::MacroFormat);
+  EXPECT_EQ(run_fanuc("IF [1 EQ 1] X1.\nM30\n")->first_error(), Code::MacroFormat);
+}
+
+TEST(FanucEngine, VariableWritesAndErrors) {
+  EXPECT_EQ(run_fanuc("#0 = 1\nM30\n")->first_error(), Code::ReadOnlyParameter);
+  EXPECT_EQ(run_fanuc("#50 = 1\nM30\n")->first_error(), Code::ReadOnlyParameter);
+  EXPECT_EQ(run_fanuc("#1 = #50\nM30\n")->first_error(), Code::ParameterOutOfRange);
+  auto alarm = run_fanuc("#3000 = 1 (ARGUMENT A MISSING)\nM30\n");
+  EXPECT_EQ(alarm->first_error(), Code::MacroAlarm);
+  EXPECT_EQ(alarm->first_error_text(), "alarm 3001: ARGUMENT A MISSING");
+  auto stop = run_fanuc("#3006 = 1 (CHECK)\nM30\n");
+  EXPECT_TRUE(stop->ok);
+  EXPECT_TRUE(stop->has(Code::Message));
+}
+
+TEST(FanucEngine, G65ArgumentSpecificationI) {
+  // Each letter to its variable; the macro moves to their sum weighted so
+  // every one is seen: X = #1 + #2 + #3 + #7 + #4 + #5 + #6, Y = #24 #25 #26.
+  auto r = run_fanuc(
+      "G65 P9000 A1. B2. C3. D4. I5. J6. K7. X8. Y9. Z10.\nM30\n"
+      "O9000\nG0 X[#1 + #2 + #3 + #7 + #4 + #5 + #6] Y[#24 * 100 + #25 * 10 + #26]\n"
+      "IF [#8 NE #0] THEN #3000 = 1 (E PASSED)\nM99\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {28, 900, 0});
+}
+
+TEST(FanucEngine, G65SpecificationIIRepeatsIJK) {
+  auto r = run_fanuc("G65 P9000 A1. I3. I4. D5.\nM30\nO9000\nG0 X#4 Y#7\nM99\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {3, 5, 0});  // D after the second I: the later word wins
+}
+
+TEST(FanucEngine, G65GetsNewLocalsM98SharesThem) {
+  auto r = run_fanuc(
+      "#1 = 7.\nG65 P9000\nG0 X#1\nM98 P9001\nG0 Y#1\nM30\n"
+      "O9000\n#1 = 100.\nM99\nO9001\n#1 = 9.\nM99\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 2u);
+  EXPECT_NEAR(r->ends()[0].x, 7.0, 1e-9);
+  EXPECT_NEAR(r->ends()[1].y, 9.0, 1e-9);
+}
+
+TEST(FanucEngine, G65WithAGCodeArgumentIsAnError) {
+  EXPECT_EQ(run_fanuc("G65 P9000 G1\nM30\nO9000\nM99\n")->first_error(), Code::MacroFormat);
+  EXPECT_EQ(run_fanuc("G65 A1.\nM30\n")->first_error(), Code::MissingWord);
+}
+
+TEST(FanucEngine, RecursionLimit) {
+  auto r = run_fanuc("G65 P9000\nM30\nO9000\nG65 P9000\nM99\n");
+  EXPECT_EQ(r->first_error(), Code::RecursionTooDeep);
+}
+
+TEST(FanucEngine, M98RepeatCountInTheHighDigits) {
+  auto r = run_fanuc("#100 = 0\nM98 P30010\nG0 X#100\nM30\nO0010\n#100 = #100 + 1\nM99\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {3, 0, 0});
+  auto eight = run_fanuc("M98 P30010\nM30\nO0010\nM99\n", {}, {"program_digits=8"});
+  EXPECT_EQ(eight->first_error(), Code::UnknownSubroutine);
+}
+
+TEST(FanucEngine, M99PReturnsToABlockOfTheCaller) {
+  auto r = run_fanuc("M98 P20\nG0 X1.\nN30 G0 Y1.\nM30\nO20\nM99 P30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 1u);
+  expect_end(*r, {0, 1, 0});
+}
+
+TEST(FanucEngine, M99InTheMainProgramEndsTheTraceWithAWarning) {
+  auto r = run_fanuc("G0 X1.\nM99\nG0 X2.\n");
+  EXPECT_TRUE(r->ok);
+  expect_end(*r, {1, 0, 0});
+  EXPECT_TRUE(r->has(Code::NoProgramEnd));
+}
+
+TEST(FanucEngine, SubprogramWithoutM99IsAnError) {
+  EXPECT_EQ(run_fanuc("M98 P20\nM30\nO20\nG0 X1.\n")->first_error(), Code::UnclosedBlock);
+}
+
+TEST(FanucEngine, G66CallsTheMacroAfterEachMove) {
+  auto r = run_fanuc(
+      "#100 = 0\nG66 P9000 Z-1.\nG0 X1.\nX2.\nG67\nX3.\nG0 Y#100\nM30\n"
+      "O9000\n#100 = #100 + 1\nM99\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {3, 2, 0});
+}
+
+TEST(FanucEngine, SystemVariables) {
+  auto r = run_fanuc(
+      "G91 G1 X5. F250.\n#1 = #4003\n#2 = #4109\n#3 = #5001\n#4 = #4001\n"
+      "G90 G0 X#1 Y#2 Z[#3 + #4]\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {91, 250, 6});
+}
+
+TEST(FanucEngine, WorkOffsetVariablesGoThroughG10) {
+  auto r = run_fanuc("#5221 = 10.\nG54 G0 X0\n#1 = #5221\nG0 Y#1\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 2u);
+  EXPECT_NEAR(r->ends()[0].x, 10.0, 1e-9);  // machine = work 0 + offset 10
+}
+
+TEST(FanucEngine, G04PIsMilliseconds) {
+  auto r = run_fanuc("G04 P1500\nG04 X2.\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  const auto dwells = r->all<canon::Dwell>();
+  ASSERT_EQ(dwells.size(), 2u);
+  EXPECT_NEAR(dwells[0].s, 1.5, 1e-9);
+  EXPECT_NEAR(dwells[1].s, 2.0, 1e-9);
+}
+
+TEST(FanucEngine, G10L2InG91Adds) {
+  auto r = run_fanuc("G10 L2 P1 X10.\nG91 G10 L2 P1 X5.\nG90 G54 G0 X0\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {15, 0, 0});
+}
+
+TEST(FanucEngine, PolarAngleOnlyInG91KeepsTheRadius) {
+  auto r = run_fanuc("G16\nG0 X10. Y0\nG91 Y90.\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {0, 10, 0});
+}
+
+TEST(FanucEngine, RotationTurnsPositions) {
+  auto r = run_fanuc("G68 X0 Y0 R90.\nG0 X10. Y0\nG69\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {0, 10, 0});
+}
+
+TEST(FanucEngine, ScalingWithPAndPerAxisFactors) {
+  auto p = run_fanuc("G51 X0 Y0 P2000\nG0 X3. Y4.\nG50\nM30\n");
+  EXPECT_TRUE(p->ok) << p->first_error_text();
+  expect_end(*p, {6, 8, 0});
+  auto ij = run_fanuc("G51 X0 Y0 I2. J-1.\nG0 X3. Y4.\nM30\n");
+  EXPECT_TRUE(ij->ok) << ij->first_error_text();
+  expect_end(*ij, {6, -4, 0});
+  EXPECT_EQ(run_fanuc("G51 X0 Y0 I2. J1.\nG0 X1. Y0\nG2 X-1. R1. F100.\nM30\n")->first_error(),
+            Code::UnequalScaleArc);
+}
+
+TEST(FanucEngine, MirrorReversesArcs) {
+  auto r = run_fanuc("G0 X0 Y0\nG51.1 X0\nG0 X1. Y0\nG3 X0 Y1. R1. F100.\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  const auto arcs = r->all<canon::Arc>();
+  ASSERT_EQ(arcs.size(), 1u);
+  EXPECT_NEAR(arcs[0].to.x, 0.0, 1e-9);
+  EXPECT_LT(arcs[0].turn, 0);  // G03 mirrored in X is clockwise
+}
+
+TEST(FanucEngine, CodesNotImplementedSaySo) {
+  EXPECT_EQ(run_fanuc("G44 H1\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G76 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G10 L12 P1 R5.\nM30\n")->first_error(), Code::Unsupported);
+}
+
+TEST(FanucEngine, CycleRAndZAreKeptAsPositions) {
+  // G85 without R takes the R of the running cycle; G91 K3 keeps R and Z.
+  auto r = run_fanuc("G0 Z10.\nG99 G81 X0 Y0 Z-5. R2. F100.\nG85 X10.\nG91 X10. K2\nG80\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {30, 0, 2});
+}
+
+}  // namespace
+}  // namespace usina::gcode::fanuc_test
