@@ -273,7 +273,8 @@ TEST(FanucEngine, MirrorReversesArcs) {
 
 TEST(FanucEngine, CodesNotImplementedSaySo) {
   EXPECT_EQ(run_fanuc("G44 H1\nM30\n")->first_error(), Code::Unsupported);
-  EXPECT_EQ(run_fanuc("G76 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G87 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G91 G76 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G10 L12 P1 R5.\nM30\n")->first_error(), Code::Unsupported);
 }
 
@@ -282,6 +283,18 @@ TEST(FanucEngine, CycleRAndZAreKeptAsPositions) {
   auto r = run_fanuc("G0 Z10.\nG99 G81 X0 Y0 Z-5. R2. F100.\nG85 X10.\nG91 X10. K2\nG80\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
   expect_end(*r, {30, 0, 2});
+}
+
+TEST(FanucEngine, G76FineBoringShiftsAwayFromTheWall) {
+  auto r = run_fanuc("G0 X0 Y0 Z10.\nS500 M3\nG98 G76 X5. Y5. Z-8. R2. Q0.5 P200 F60.\nG80\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  const auto ends = r->ends();
+  ASSERT_GE(ends.size(), 6u);
+  EXPECT_NEAR(ends[3].z, -8.0, 1e-9);  // fed to the bottom
+  EXPECT_NEAR(ends[4].x, 5.5, 1e-9);   // shifted Q in +X
+  EXPECT_NEAR(ends[5].z, 10.0, 1e-9);  // G98: back to the initial level
+  ASSERT_EQ(r->all<canon::Dwell>().size(), 1u);
+  EXPECT_NEAR(r->all<canon::Dwell>()[0].s, 0.2, 1e-9);
 }
 
 }  // namespace

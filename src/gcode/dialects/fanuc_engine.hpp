@@ -116,6 +116,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool convert_codes(const TapeBlock& b, Words& w);
   void cycle_levels(Words& w, bool incremental);
   bool hand_over(const TapeBlock& b, Words& w);
+  bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);
 
   // Transformations (fanuc_transform.cpp).
@@ -163,6 +164,12 @@ class Engine final : public ProgramRunner, private VariableSource {
   int length_mode_ = 490, cycle_ = 800;
   // Fanuc keeps a cycle's R and Z as positions until G80 (§7, item 22b).
   std::optional<double> cycle_r_, cycle_z_, cycle_p_;
+
+  struct FineBoring {
+    std::optional<double> r, z, initial;
+    double q = 0, p = 0, f = 0;
+    bool to_r = false;
+  } g76_;
 
   Transform xf_;
   bool polar_ = false;

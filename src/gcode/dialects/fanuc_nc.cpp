@@ -220,6 +220,9 @@ bool Engine::nc_block(const TapeBlock& b) {
   for (const NcWord& word : w.list)
     moved = moved || (!word.taken && !word.vacant &&
                       std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos);
+  if (w.has_g(760) || (cycle_ == 760 && !w.has_g(800))) {
+    if (!fine_boring(b, w)) return false;
+  }
   const bool cancels_cycle = w.has_g(800);
   if (!hand_over(b, w)) return false;
   if (cancels_cycle) interp_.forget_cycle_level();
@@ -244,7 +247,6 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
 
   static constexpr Missing kMissing[] = {
       {440, "G44 (tool length offset, minus)"},
-      {760, "G76 (fine boring)"},
       {870, "G87 (back boring)"},
       {541, "G54.1 (additional work coordinate systems)"},
       {220, "G22 (stored stroke check)"},
@@ -350,6 +352,51 @@ void Engine::cycle_levels(Words& w, bool incremental) {
     const double v = incremental ? *cycle_z_ - *cycle_r_ : *cycle_z_;
     w.list.push_back({'Z', v, v, false, false, false, 0});
   }
+}
+
+// G76 fine boring (docs/fanuc.md §7): feed to Z, dwell, orient, shift Q
+// away from the wall (+X), rapid out, shift back, spindle on. Written as
+// RS274NGC blocks for the interpreter; G90 only for now.
+bool Engine::fine_boring(const TapeBlock& b, Words& w) {
+  w.take_g(760);
+  if (interp_.state().incremental || w.has_g(910)) {
+    return error(core::Code::Unsupported, b, 0,
+                 "G76 under G91 is not implemented in the fanuc dialect yet");
+  }
+  if (NcWord* r = w.find('R')) g76_.r = r->value;
+  if (NcWord* z = w.find('Z')) g76_.z = z->value;
+  if (NcWord* q = w.find('Q')) g76_.q = std::fabs(q->value);
+  if (NcWord* p = w.find('P')) g76_.p = p->raw / 1000.0;
+  if (NcWord* f = w.find('F')) g76_.f = f->value;
+  if (w.has_g(980)) g76_.to_r = false;
+  if (w.has_g(990)) g76_.to_r = true;
+  const double per = core::mm_per(interp_.state().units);
+  if (cycle_ != 760 || !g76_.initial) g76_.initial = interp_.state().pos[2] / per;
+  const bool hole = w.has('X') || w.has('Y');
+  const double x = w.get('X', interp_.state().pos[0] / per);
+  const double y = w.get('Y', interp_.state().pos[1] / per);
+  for (char l : std::string_view("XYZRQPFGKL"))
+    w.take(l);
+  cycle_ = 760;
+  if (!hole) return true;
+  if (!g76_.r || !g76_.z)
+    return error(core::Code::MissingWord, b, 0, "G76 needs R and Z when it starts");
+  const double back = g76_.to_r ? *g76_.r : std::max(*g76_.initial, *g76_.r);
+  const std::string blocks[] = {
+      fmt::format("G0 X{} Y{}", number(x), number(y)),
+      fmt::format("G0 Z{}", number(*g76_.r)),
+      fmt::format("G1 Z{} F{}", number(*g76_.z), number(g76_.f)),
+      fmt::format("G4 P{}", number(g76_.p)),
+      "M19",
+      fmt::format("G0 X{}", number(x + g76_.q)),
+      fmt::format("G0 Z{}", number(back)),
+      fmt::format("G0 X{}", number(x)),
+      "M3",
+  };
+  for (const std::string& text : blocks) {
+    if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
+  }
+  return true;
 }
 
 bool Engine::hand_over(const TapeBlock& b, Words& w) {
