@@ -31,6 +31,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "units of the machine: of the tool table, parameters and programs without G20/G21")
       ->check(CLI::IsMember({"mm", "inch"}))
       ->capture_default_str();
+  app.add_option("--offsets", o.offsets,
+                 "fanuc: the offset page (H and D registers) as a TOML file (docs/fanuc.md)");
   app.add_option("--var-file", o.var_file, "LinuxCNC parameter file to start from");
   app.add_option(
       "--subroutine-path", o.subroutine_path,
@@ -130,6 +132,7 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   opts.max_loop_iterations = o.max_iterations;
   opts.max_total_iterations = o.max_total_iterations;
   opts.block_delete = o.block_delete;
+  opts.offset_file = o.offsets;
   opts.ignore_cutter_comp = o.ignore_cutter_comp;
   opts.start = o.start;
   opts.subroutine_path = split_path(o.subroutine_path);

@@ -1,6 +1,8 @@
 // The fanuc dialect's runner: lexical rules, the decimal-point option,
 // control flow, subprograms and macros, system variables, the
 // transformations, each rule and each error path (docs/fanuc.md).
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "fanuc_test_support.hpp"
@@ -272,10 +274,10 @@ TEST(FanucEngine, MirrorReversesArcs) {
 }
 
 TEST(FanucEngine, CodesNotImplementedSaySo) {
-  EXPECT_EQ(run_fanuc("G44 H1\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G44\nM30\n")->first_error(), Code::MissingWord);
   EXPECT_EQ(run_fanuc("G87 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G91 G76 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
-  EXPECT_EQ(run_fanuc("G10 L12 P1 R5.\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G10 L20 P1 X5.\nM30\n")->first_error(), Code::Unsupported);
 }
 
 TEST(FanucEngine, CycleRAndZAreKeptAsPositions) {
@@ -295,6 +297,68 @@ TEST(FanucEngine, G76FineBoringShiftsAwayFromTheWall) {
   EXPECT_NEAR(ends[5].z, 10.0, 1e-9);  // G98: back to the initial level
   ASSERT_EQ(r->all<canon::Dwell>().size(), 1u);
   EXPECT_NEAR(r->all<canon::Dwell>()[0].s, 0.2, 1e-9);
+}
+
+std::string offsets_file() {
+  const std::string path = ::testing::TempDir() + "fanuc_offsets.toml";
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  std::fputs(
+      "# offset page\n[H]\n1 = [10.5, -0.5]\n2 = 3.0\n[D]\n11 = [5.0, -0.01]\n"
+      "12 = [-2.0, 0]\n",
+      f);
+  std::fclose(f);
+  return path;
+}
+
+TEST(FanucEngine, G43AndG44TakeHRegistersFromTheOffsetFile) {
+  InterpOptions o;
+  o.offset_file = offsets_file();
+  // #5083: the tool length offset now applied on Z (the trace shows the tip).
+  auto r = run_fanuc("G43 H1\nG0 X#5083\nG44 H2\nG0 X#5083\nG49\nG0 X#5083\nM30\n", o);
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 3u);
+  EXPECT_NEAR(r->ends()[0].x, 10.0, 1e-9);  // geometry + wear
+  EXPECT_NEAR(r->ends()[1].x, -3.0, 1e-9);  // G44 subtracts
+  EXPECT_NEAR(r->ends()[2].x, 0.0, 1e-9);
+}
+
+TEST(FanucEngine, OffsetRegistersAsVariablesAndG10L10ToL13) {
+  InterpOptions o;
+  o.offset_file = offsets_file();
+  auto r = run_fanuc(
+      "G0 X#2201 Y#2001 Z#2611\nG10 L10 P3 R7.\nG91 G10 L11 P3 R1.\nG90\n"
+      "G0 X[#2203 + #2003]\nM30\n",
+      o);
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 2u);
+  EXPECT_NEAR(r->ends()[0].x, 10.5, 1e-9);
+  EXPECT_NEAR(r->ends()[0].y, -0.5, 1e-9);
+  EXPECT_NEAR(r->ends()[0].z, 5.0, 1e-9);
+  EXPECT_NEAR(r->ends()[1].x, 8.0, 1e-9);
+}
+
+TEST(FanucEngine, CutterCompTakesTheRadiusOfRegisterD) {
+  InterpOptions o;
+  o.offset_file = offsets_file();
+  auto r = run_fanuc("G0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X-20.\nM30\n", o);
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_GE(r->ends().size(), 3u);
+  EXPECT_NEAR(r->ends()[2].x, -4.99, 1e-6);  // G41 on +Y travel: tool to the left (-X)
+}
+
+TEST(FanucEngine, OffsetFileErrors) {
+  InterpOptions o;
+  o.offset_file = ::testing::TempDir() + "no_such_offsets.toml";
+  EXPECT_EQ(run_fanuc("M30\n", o)->first_error(), Code::FileNotFound);
+  const std::string bad = ::testing::TempDir() + "bad_offsets.toml";
+  std::FILE* f = std::fopen(bad.c_str(), "w");
+  std::fputs("[H]\n1 = [x, 2]\n", f);
+  std::fclose(f);
+  o.offset_file = bad;
+  EXPECT_EQ(run_fanuc("M30\n", o)->first_error(), Code::BadToolTable);
+  auto missing = run_fanuc("G43 H5\nM30\n");
+  EXPECT_TRUE(missing->ok);
+  EXPECT_TRUE(missing->has(Code::UnknownTool));  // warned: taken as 0
 }
 
 }  // namespace

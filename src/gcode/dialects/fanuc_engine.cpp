@@ -51,6 +51,7 @@ Engine::Engine(RunContext& c)
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
   locals_.push_back(vacant_locals());
+  if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
 }
 
 std::array<Value, 34> vacant_locals() {
@@ -93,7 +94,7 @@ bool Engine::macro_error(const MacroReader& r, const TapeBlock& b) {
 
 bool Engine::run(std::uint32_t file) {
   const core::SourceFile* f = sources_.get(file);
-  if (f == nullptr) return false;
+  if (f == nullptr || !offsets_ok_) return false;
   tape_.add_file(file, f->text());
   main_end_ = tape_.size() > 0 ? tape_.program_end(0) : 0;
   if (tape_.size() > 0) {

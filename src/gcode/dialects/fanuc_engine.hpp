@@ -9,6 +9,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,17 @@ class Engine final : public ProgramRunner, private VariableSource {
   void reset_program_point();
   core::Vec2 actual_xy() const;
 
+  // Offset registers (fanuc_offsets.cpp).
+  bool read_offsets(const std::string& path);
+  double offset_register(bool h, long n, const TapeBlock& b);
+  bool offset_codes(const TapeBlock& b, Words& w);
+  bool write_register(const TapeBlock& b, Words& w, long l);
+  std::optional<double> register_variable(long index) const;
+  std::map<long, std::array<double, 2>> h_regs_, d_regs_;  // geometry, wear
+  std::set<long> warned_registers_;
+  int length_sign_ = 0;  // G43 +1, G44 -1, G49 0
+  int comp_side_ = 40;
+
   // Variables (fanuc_vars.cpp).
   std::optional<Value> read(long index, MacroError& err) override;
   bool write(long index, Value v, const TapeBlock& b, std::size_t pos);
@@ -149,6 +161,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   std::size_t main_end_ = 0;
   bool done_ = false;
   bool failed_ = false;
+  bool offsets_ok_ = true;
   bool warned_integer_ = false;
   long total_jumps_ = 0;
   std::map<std::size_t, long> loop_runs_;

@@ -187,7 +187,8 @@ bool Engine::nc_block(const TapeBlock& b) {
     w.take_g(670);
     modal_call_.reset();
   }
-  if (!fanuc_codes(b, w) || !transform_codes(b, w) || !convert_codes(b, w)) return false;
+  if (!fanuc_codes(b, w) || !offset_codes(b, w) || !transform_codes(b, w) || !convert_codes(b, w))
+    return false;
   if (!transform_words(b, w)) return false;
   // M98 / M99 run after the block's other words (the move first).
   std::optional<long> sub, back;
@@ -246,7 +247,6 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
   };
 
   static constexpr Missing kMissing[] = {
-      {440, "G44 (tool length offset, minus)"},
       {870, "G87 (back boring)"},
       {541, "G54.1 (additional work coordinate systems)"},
       {220, "G22 (stored stroke check)"},
@@ -267,6 +267,7 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
   }
   if (w.has_g(100)) {
     const long l = std::lround(w.get('L', 0));
+    if (l >= 10 && l <= 13) return write_register(b, w, l);
     if (l != 2) {
       return error(core::Code::Unsupported, b, 0,
                    fmt::format("G10 L{} (Fanuc offset registers) is not implemented in the fanuc "
@@ -407,8 +408,7 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     if (word.letter == 'G') {
       const int t = tenths(word.value);
       text += t % 10 == 0 ? fmt::format("G{} ", t / 10) : fmt::format("G{}.{} ", t / 10, t % 10);
-    } else if (word.letter == 'M' || word.letter == 'T' || word.letter == 'H' ||
-               word.letter == 'D' || word.letter == 'L') {
+    } else if (word.letter == 'M' || word.letter == 'L') {
       text += fmt::format("{}{} ", word.letter, std::lround(word.value));
     } else {
       text += fmt::format("{}{} ", word.letter, number(word.value));

@@ -73,6 +73,7 @@ std::optional<double> Engine::system_variable(long index) const {
   const ModalState& s = interp_.state();
   const double per = core::mm_per(s.units);
   auto length = [&](int axis, double mm) { return axis >= 3 && axis <= 5 ? mm : mm / per; };
+  if (auto r = register_variable(index)) return r;
   if (index >= 4001 && index <= 4030) return modal_group(static_cast<int>(index - 4000));
   switch (index) {
   case 4107: return d_;

@@ -38,6 +38,7 @@ struct InterpOptions {
   // contour (what a part drawing shows), not the tool centre.
   bool ignore_cutter_comp = false;
   ToolTable tools;
+  std::string offset_file;  // fanuc: the H and D offset registers (docs/fanuc.md)
   core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
 };
 
