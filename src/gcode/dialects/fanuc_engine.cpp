@@ -15,6 +15,13 @@ constexpr int kMaxMacroLevels = 4;   // G65/G66 levels on 0i/16i [16PB]
 constexpr int kMaxCallNesting = 10;  // M98 + G65 on 0i-D/31i
 
 // DO m / END m of a block, without evaluating it: 1 for DO, 2 for END.
+// A GOTO target as a whole number; out of range values become -1 (no such
+// block) rather than overflowing.
+long sequence_number(double v) {
+  const double r = round_half_away(v);
+  return (r >= 0 && r <= 99'999'999) ? static_cast<long>(r) : -1;
+}
+
 int loop_mark(std::string_view text, int& m) {
   std::string up;
   for (char c : text)
@@ -133,9 +140,10 @@ bool Engine::step() {
   if (b.sequence >= 0) n_ = static_cast<double>(b.sequence);
   if (b.text.empty()) return true;
   const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[0])));
-  if (c == '#' || c == 'I' || c == 'W' || c == 'E' ||
-      (c == 'D' && b.text.size() > 1 && std::toupper(b.text[1]) == 'O') ||
-      (c == 'G' && b.text.size() > 1 && std::toupper(b.text[1]) == 'O')) {
+  const char second = b.text.size() > 1 ? static_cast<char>(std::toupper(
+                                               static_cast<unsigned char>(b.text[1])))
+                                         : '\0';
+  if (c == '#' || c == 'I' || c == 'W' || c == 'E' || ((c == 'D' || c == 'G') && second == 'O')) {
     return statement(b);
   }
   return nc_block(b);
@@ -148,7 +156,7 @@ bool Engine::statement(const TapeBlock& b) {
     auto n = r.expression();
     if (!n) return macro_error(r, b);
     if (!r.at_end()) return error(core::Code::MacroFormat, b, r.pos(), "text after GOTO n");
-    return goto_block(static_cast<long>(round_half_away(n->v)), b, 0);
+    return goto_block(sequence_number(n->v), b, 0);
   }
   if (r.keyword("IF")) {
     auto cond = r.condition();
@@ -158,7 +166,7 @@ bool Engine::statement(const TapeBlock& b) {
       auto n = r.expression();
       if (!n) return macro_error(r, b);
       if (!r.at_end()) return error(core::Code::MacroFormat, b, r.pos(), "text after GOTO n");
-      return *cond ? goto_block(static_cast<long>(round_half_away(n->v)), b, at) : true;
+      return *cond ? goto_block(sequence_number(n->v), b, at) : true;
     }
     if (r.keyword("THEN")) {
       if (r.peek() != '#')

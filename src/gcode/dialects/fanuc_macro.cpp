@@ -20,8 +20,13 @@ char upper(char c) {
   return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
 }
 
+// Rounded and kept within ±1e15, so a huge or NaN value never overflows
+// the integer it is converted to.
 long to_integer(double x) {
-  return static_cast<long>(round_half_away(x));
+  const double r = round_half_away(x);
+  if (!(r > -1e15)) return r > 0 ? 1'000'000'000'000'000L : -1'000'000'000'000'000L;
+  if (r > 1e15) return 1'000'000'000'000'000L;
+  return static_cast<long>(r);
 }
 
 }  // namespace
@@ -140,7 +145,7 @@ std::optional<long> MacroReader::variable_number() {
   auto n = number();
   if (!n) return fail(core::Code::BadParameterName, "'#' needs a variable number");
   if (had_point_) return fail(core::Code::BadParameterName, "a variable number has no point");
-  return static_cast<long>(*n);
+  return to_integer(*n);
 }
 
 std::optional<Value> MacroReader::expression() {
@@ -218,18 +223,18 @@ std::optional<Value> MacroReader::product() {
 }
 
 std::optional<Value> MacroReader::unary() {
-  const char c = peek();
-  if (c == '-' || c == '+') {
+  // Signs in a loop, not by recursion: '-----...' cannot exhaust the stack.
+  bool negative = false, signed_ = false;
+  for (char c = peek(); c == '-' || c == '+'; c = peek()) {
     ++i_;
-    auto v = unary();
-    if (!v) return std::nullopt;
-    // '-#1' with #1 vacant stays vacant so its word is left out; in
-    // arithmetic a vacant value is 0 anyway.
-    const bool keep = single_var_ && v->vacant;
-    literal_ = literal_ && true;
-    return Value{c == '-' ? -v->v : v->v, keep};
+    negative = negative != (c == '-');
+    signed_ = true;
   }
-  return primary();
+  auto v = primary();
+  if (!v || !signed_) return v;
+  // '-#1' with #1 vacant stays vacant so its word is left out; in
+  // arithmetic a vacant value is 0 anyway.
+  return Value{negative ? -v->v : v->v, single_var_ && v->vacant};
 }
 
 std::optional<Value> MacroReader::primary() {
@@ -361,7 +366,7 @@ std::optional<Value> MacroReader::function(std::string_view name) {
     r = std::exp(x);
   else if (name == "BIN" || name == "BCD") {
     long v = to_integer(x);
-    if (!domain(v >= 0)) return std::nullopt;
+    if (!domain(v >= 0 && v <= 99'999'999)) return std::nullopt;
     long out = 0, place = 1;
     for (; v > 0; v = name == "BIN" ? v / 16 : v / 10, place *= name == "BIN" ? 10 : 16)
       out += (name == "BIN" ? v % 16 : v % 10) * place;

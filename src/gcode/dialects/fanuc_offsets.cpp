@@ -70,7 +70,7 @@ bool Engine::read_offsets(const std::string& path) {
     if (table == nullptr || eq == std::string_view::npos)
       return bad("expected [H], [D] or 'register = [geometry, wear]'");
     auto reg = parse_number(l.substr(0, eq));
-    if (!reg || *reg < 0 || *reg != std::floor(*reg))
+    if (!reg || *reg < 0 || *reg > 99999999 || *reg != std::floor(*reg))
       return bad("a register number is a whole number");
     std::string_view v = trim(l.substr(eq + 1));
     std::array<double, 2> entry{0, 0};
@@ -93,7 +93,7 @@ bool Engine::read_offsets(const std::string& path) {
 }
 
 double Engine::offset_register(bool h, long n, const TapeBlock& b) {
-  if (n == 0) return 0.0;
+  if (n <= 0 || n > 99'999'999) return 0.0;
   const auto& table = h ? h_regs_ : d_regs_;
   auto it = table.find(n);
   if (it == table.end()) {
