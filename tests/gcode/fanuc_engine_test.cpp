@@ -275,7 +275,7 @@ TEST(FanucEngine, MirrorReversesArcs) {
 
 TEST(FanucEngine, CodesNotImplementedSaySo) {
   EXPECT_EQ(run_fanuc("G44\nM30\n")->first_error(), Code::MissingWord);
-  EXPECT_EQ(run_fanuc("G87 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
+  EXPECT_EQ(run_fanuc("G54.1 P1\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G91 G76 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G10 L20 P1 X5.\nM30\n")->first_error(), Code::Unsupported);
 }
@@ -297,6 +297,19 @@ TEST(FanucEngine, G76FineBoringShiftsAwayFromTheWall) {
   EXPECT_NEAR(ends[5].z, 10.0, 1e-9);  // G98: back to the initial level
   ASSERT_EQ(r->all<canon::Dwell>().size(), 1u);
   EXPECT_NEAR(r->all<canon::Dwell>()[0].s, 0.2, 1e-9);
+}
+
+TEST(FanucEngine, G87BackBoringFeedsUpFromTheBottom) {
+  auto r = run_fanuc("G0 X0 Y0 Z10.\nS500 M3\nG98 G87 X5. Y5. Z-2. R-20. Q0.5 P0 F60.\nG80\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  const auto ends = r->ends();
+  ASSERT_GE(ends.size(), 9u);
+  EXPECT_NEAR(ends[2].x, 5.5, 1e-9);    // shifted in
+  EXPECT_NEAR(ends[3].z, -20.0, 1e-9);  // rapid down to R, the bottom
+  EXPECT_NEAR(ends[5].z, -2.0, 1e-9);   // fed up to Z
+  EXPECT_NEAR(ends[7].z, 10.0, 1e-9);   // out at the initial level
+  EXPECT_EQ(run_fanuc("G99 G87 X5. Y5. Z-2. R-20. Q0.5 F60.\nM30\n")->first_error(),
+            Code::NotAllowedInMode);
 }
 
 std::string offsets_file() {

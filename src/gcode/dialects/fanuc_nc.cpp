@@ -221,7 +221,7 @@ bool Engine::nc_block(const TapeBlock& b) {
   for (const NcWord& word : w.list)
     moved = moved || (!word.taken && !word.vacant &&
                       std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos);
-  if (w.has_g(760) || (cycle_ == 760 && !w.has_g(800))) {
+  if (w.has_g(760) || w.has_g(870) || ((cycle_ == 760 || cycle_ == 870) && !w.has_g(800))) {
     if (!fine_boring(b, w)) return false;
   }
   const bool cancels_cycle = w.has_g(800);
@@ -247,7 +247,6 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
   };
 
   static constexpr Missing kMissing[] = {
-      {870, "G87 (back boring)"},
       {541, "G54.1 (additional work coordinate systems)"},
       {220, "G22 (stored stroke check)"},
       {121, "G12.1 (polar interpolation)"},
@@ -359,10 +358,12 @@ void Engine::cycle_levels(Words& w, bool incremental) {
 // away from the wall (+X), rapid out, shift back, spindle on. Written as
 // RS274NGC blocks for the interpreter; G90 only for now.
 bool Engine::fine_boring(const TapeBlock& b, Words& w) {
+  const int code = w.has_g(870) ? 870 : w.has_g(760) ? 760 : cycle_;
   w.take_g(760);
+  w.take_g(870);
   if (interp_.state().incremental || w.has_g(910)) {
     return error(core::Code::Unsupported, b, 0,
-                 "G76 under G91 is not implemented in the fanuc dialect yet");
+                 "G76/G87 under G91 is not implemented in the fanuc dialect yet");
   }
   if (NcWord* r = w.find('R')) g76_.r = r->value;
   if (NcWord* z = w.find('Z')) g76_.z = z->value;
@@ -372,13 +373,16 @@ bool Engine::fine_boring(const TapeBlock& b, Words& w) {
   if (w.has_g(980)) g76_.to_r = false;
   if (w.has_g(990)) g76_.to_r = true;
   const double per = core::mm_per(interp_.state().units);
-  if (cycle_ != 760 || !g76_.initial) g76_.initial = interp_.state().pos[2] / per;
+  if ((cycle_ != 760 && cycle_ != 870) || !g76_.initial)
+    g76_.initial = interp_.state().pos[2] / per;
   const bool hole = w.has('X') || w.has('Y');
   const double x = w.get('X', interp_.state().pos[0] / per);
   const double y = w.get('Y', interp_.state().pos[1] / per);
   for (char l : std::string_view("XYZRQPFGKL"))
     w.take(l);
-  cycle_ = 760;
+  cycle_ = code;
+  if (code == 870 && g76_.to_r)
+    return error(core::Code::NotAllowedInMode, b, 0, "G87 back boring does not take G99");
   if (!hole) return true;
   if (!g76_.r || !g76_.z)
     return error(core::Code::MissingWord, b, 0, "G76 needs R and Z when it starts");
@@ -394,6 +398,28 @@ bool Engine::fine_boring(const TapeBlock& b, Words& w) {
       fmt::format("G0 X{}", number(x)),
       "M3",
   };
+  // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
+  const std::string back_boring[] = {
+      fmt::format("G0 X{} Y{}", number(x), number(y)),
+      "M19",
+      fmt::format("G0 X{}", number(x + g76_.q)),
+      fmt::format("G0 Z{}", number(*g76_.r)),
+      fmt::format("G0 X{}", number(x)),
+      "M3",
+      fmt::format("G1 Z{} F{}", number(*g76_.z), number(g76_.f)),
+      fmt::format("G4 P{}", number(g76_.p)),
+      "M19",
+      fmt::format("G0 X{}", number(x + g76_.q)),
+      fmt::format("G0 Z{}", number(*g76_.initial)),
+      fmt::format("G0 X{}", number(x)),
+      "M3",
+  };
+  if (code == 870) {
+    for (const std::string& text : back_boring) {
+      if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
+    }
+    return true;
+  }
   for (const std::string& text : blocks) {
     if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
   }
