@@ -374,5 +374,15 @@ TEST(FanucEngine, OffsetFileErrors) {
   EXPECT_TRUE(missing->has(Code::UnknownTool));  // warned: taken as 0
 }
 
+TEST(FanucEngine, MirrorSwapsTheCompensationSide) {
+  InterpOptions o;
+  o.offset_file = offsets_file();
+  auto r =
+      run_fanuc("G51.1 X0\nG0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X20.\nM30\n", o);
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_GE(r->ends().size(), 3u);
+  EXPECT_NEAR(r->ends()[2].x, 4.99, 1e-6);  // G41 mirrored is G42: the tool on +X
+}
+
 }  // namespace
 }  // namespace usina::gcode::fanuc_test

@@ -432,7 +432,10 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
     if (word.letter == 'G') {
-      const int t = tenths(word.value);
+      int t = tenths(word.value);
+      // One mirrored axis swaps the side of cutter compensation.
+      if (xf_.reverses() && (t == 410 || t == 420 || t == 411 || t == 421))
+        t = t < 415 ? t + 10 : t - 10;
       text += t % 10 == 0 ? fmt::format("G{} ", t / 10) : fmt::format("G{}.{} ", t / 10, t % 10);
     } else if (word.letter == 'M' || word.letter == 'L') {
       text += fmt::format("{}{} ", word.letter, std::lround(word.value));
