@@ -226,6 +226,14 @@ TEST(FanucEngine, WorkOffsetVariablesGoThroughG10) {
   EXPECT_NEAR(r->ends()[0].x, 10.0, 1e-9);  // machine = work 0 + offset 10
 }
 
+TEST(FanucEngine, AfterG80AxisWordsMoveInTheGroupOneMode) {
+  auto r = run_fanuc("X5.\nG1 X6. F100.\nG81 X7. Z-1. R1.\nG80\nX8.\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_FALSE(r->all<canon::Feed>().empty());
+  expect_end(*r, {8, 0, 1});
+  EXPECT_NEAR(r->all<canon::Feed>().back().to.x, 8.0, 1e-9);  // G01 again after G80
+}
+
 TEST(FanucEngine, G04PIsMilliseconds) {
   auto r = run_fanuc("G04 P1500\nG04 X2.\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
@@ -274,7 +282,7 @@ TEST(FanucEngine, MirrorReversesArcs) {
 }
 
 TEST(FanucEngine, CodesNotImplementedSaySo) {
-  EXPECT_EQ(run_fanuc("G44\nM30\n")->first_error(), Code::MissingWord);
+  EXPECT_EQ(run_fanuc("G12.1\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G54.1 P1\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G91 G76 X1. Z-1. R1. Q0.1 F10.\nM30\n")->first_error(), Code::Unsupported);
   EXPECT_EQ(run_fanuc("G10 L20 P1 X5.\nM30\n")->first_error(), Code::Unsupported);
@@ -333,6 +341,17 @@ TEST(FanucEngine, G43AndG44TakeHRegistersFromTheOffsetFile) {
   EXPECT_NEAR(r->ends()[0].x, 10.0, 1e-9);  // geometry + wear
   EXPECT_NEAR(r->ends()[1].x, -3.0, 1e-9);  // G44 subtracts
   EXPECT_NEAR(r->ends()[2].x, 0.0, 1e-9);
+}
+
+TEST(FanucEngine, G43WithAMoveAndHSelectedBefore) {
+  InterpOptions o;
+  o.offset_file = offsets_file();
+  auto r = run_fanuc("H1\nG43 Z50.\nG0 X#5083\nG43 H2 Z20.\nM30\n", o);
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 3u);
+  EXPECT_NEAR(r->ends()[0].z, 50.0, 1e-9);
+  EXPECT_NEAR(r->ends()[1].x, 10.0, 1e-9);
+  EXPECT_NEAR(r->ends()[2].z, 20.0, 1e-9);
 }
 
 TEST(FanucEngine, OffsetRegistersAsVariablesAndG10L10ToL13) {

@@ -117,6 +117,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool convert_codes(const TapeBlock& b, Words& w);
   void cycle_levels(Words& w, bool incremental);
   bool hand_over(const TapeBlock& b, Words& w);
+  void group_one_motion(Words& w);
   bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);
 
@@ -136,6 +137,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   std::set<long> warned_registers_;
   int length_sign_ = 0;  // G43 +1, G44 -1, G49 0
   int comp_side_ = 40;
+  long h_register_ = 0, d_register_ = 0;
 
   // Variables (fanuc_vars.cpp).
   std::optional<Value> read(long index, MacroError& err) override;

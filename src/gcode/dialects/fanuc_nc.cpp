@@ -224,6 +224,7 @@ bool Engine::nc_block(const TapeBlock& b) {
   if (w.has_g(760) || w.has_g(870) || ((cycle_ == 760 || cycle_ == 870) && !w.has_g(800))) {
     if (!fine_boring(b, w)) return false;
   }
+  group_one_motion(w);
   const bool cancels_cycle = w.has_g(800);
   if (!hand_over(b, w)) return false;
   if (cancels_cycle) interp_.forget_cycle_level();
@@ -424,6 +425,23 @@ bool Engine::fine_boring(const TapeBlock& b, Words& w) {
     if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
   }
   return true;
+}
+
+// Fanuc's G80 is a group of its own: after it (and at power-on) axis words
+// move in the group 1 mode (G00 at first); LinuxCNC's G80 stops motion.
+void Engine::group_one_motion(Words& w) {
+  if (interp_.state().motion != 800) return;
+  bool axes = false;
+  for (const NcWord& word : w.list) {
+    if (word.taken || word.vacant) continue;
+    if (std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos) axes = true;
+    if (word.letter != 'G') continue;
+    const int t = tenths(word.value);
+    if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
+        t == 520 || t == 530 || t == 920 || t == 431)
+      return;
+  }
+  if (axes) w.list.push_back({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
 }
 
 bool Engine::hand_over(const TapeBlock& b, Words& w) {

@@ -110,34 +110,34 @@ double Engine::offset_register(bool h, long n, const TapeBlock& b) {
 // G43/G44 H and G41/G42 D name offset registers: the interpreter is given
 // the values (G43.1 Z, G41.1/G42.1 D diameter).
 bool Engine::offset_codes(const TapeBlock& b, Words& w) {
+  // H and D select registers (modal, #4111 #4107), also outside G43/G41.
+  const NcWord* h = w.find('H');
+  const NcWord* d = w.find('D');
+  if (h != nullptr) h_register_ = std::lround(h->raw);
+  if (d != nullptr) d_register_ = std::lround(d->raw);
   const bool g43 = w.has_g(430), g44 = w.has_g(440);
   if (g43 || g44) length_sign_ = g43 ? 1 : -1;
   if (w.has_g(490)) length_sign_ = 0;
-  if (NcWord* h = w.find('H'); h != nullptr && (g43 || g44 || length_sign_ != 0)) {
-    const double v = length_sign_ * offset_register(true, std::lround(h->raw), b);
-    w.take_g(430);
-    w.take_g(440);
-    w.take('H');
-    w.list.push_back({'G', 43.1, 43.1, false, false, false, 0});
-    w.list.push_back({'Z', v, v, false, false, false, 0});
-    if (w.has('X') || w.has('Y')) {
-      return error(core::Code::Unsupported, b, 0,
-                   "a move in the G43/G44 block is not implemented in the fanuc dialect yet: "
-                   "give the move its own block");
-    }
-  } else if (g44) {
-    return error(core::Code::MissingWord, b, 0, "G44 needs H (the offset register)");
+  if (g43 || g44 || (h != nullptr && length_sign_ != 0)) {
+    // The offset first, in a block of its own: 'G43 H1 Z50.' then moves
+    // to Z50 with it, as on the control.
+    const double v = length_sign_ * offset_register(true, h_register_, b);
+    if (!interp_.run_block(fmt::format("G43.1 Z{:.10f}", v), {b.file, b.line, b.line_offset}))
+      return false;
   }
+  w.take_g(430);
+  w.take_g(440);
+  w.take('H');
+  w.take('D');
   const bool g41 = w.has_g(410), g42 = w.has_g(420);
   if (g41 || g42) comp_side_ = g41 ? 41 : 42;
   if (w.has_g(400)) comp_side_ = 40;
-  if (NcWord* d = w.find('D'); d != nullptr && comp_side_ != 40) {
-    const double r = offset_register(false, std::lround(d->raw), b);
+  if (g41 || g42 || (d != nullptr && comp_side_ != 40)) {
+    const double r = offset_register(false, d_register_, b);
     int side = comp_side_;
     if (r < 0) side = side == 41 ? 42 : 41;  // a negative radius swaps the side
     w.take_g(410);
     w.take_g(420);
-    w.take('D');
     const double g = side + 0.1;
     w.list.push_back({'G', g, g, false, false, false, 0});
     w.list.push_back({'D', 2 * std::fabs(r), 2 * std::fabs(r), false, false, false, 0});
