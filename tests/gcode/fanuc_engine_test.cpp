@@ -28,6 +28,14 @@ TEST(FanucEngine, SemicolonEndsABlockAndPercentDelimitsTheTape) {
   expect_end(*r, {1, 2, 0});
 }
 
+TEST(FanucEngine, EmptyProgramsWarn) {
+  for (const char* text : {"", "%\n%\n", "(ONLY A COMMENT)\n", ";;;\n"}) {
+    auto r = run_fanuc(text);
+    EXPECT_TRUE(r->ok) << text;
+    EXPECT_TRUE(r->has(Code::NoProgramEnd)) << text;
+  }
+}
+
 TEST(FanucEngine, TextAfterSemicolonIsAnotherBlock) {
   auto r = run_fanuc("G0 X1. ; note\nM30\n");
   EXPECT_FALSE(r->ok);

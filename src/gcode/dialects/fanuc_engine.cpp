@@ -102,6 +102,7 @@ bool Engine::macro_error(const MacroReader& r, const TapeBlock& b) {
 bool Engine::run(std::uint32_t file) {
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr || !offsets_ok_) return false;
+  main_file_ = file;
   tape_.add_file(file, f->text());
   main_end_ = tape_.size() > 0 ? tape_.program_end(0) : 0;
   if (tape_.size() > 0) {
@@ -117,6 +118,12 @@ bool Engine::run(std::uint32_t file) {
 }
 
 bool Engine::end_of_program() {
+  if (tape_.size() == 0) {
+    done_ = true;
+    diags_.report({core::Code::NoProgramEnd, core::Severity::Warning, {main_file_, 1, 0, 0, 0},
+                   "the program is empty"});
+    return true;
+  }
   const TapeBlock& last = tape_.at(pc_ == 0 ? 0 : pc_ - 1);
   if (!frames_.empty()) {
     return error(core::Code::UnclosedBlock, last, 0,

@@ -160,6 +160,7 @@ class Engine final : public ProgramRunner, private VariableSource {
 
   Tape tape_;
   std::size_t pc_ = 0;
+  std::uint32_t main_file_ = 0;
   std::size_t main_end_ = 0;
   bool done_ = false;
   bool failed_ = false;
