@@ -2,6 +2,9 @@
 // control flow, subprograms and macros, system variables, the
 // transformations, each rule and each error path (docs/fanuc.md).
 #include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -409,6 +412,23 @@ TEST(FanucEngine, MirrorSwapsTheCompensationSide) {
   EXPECT_TRUE(r->ok) << r->first_error_text();
   ASSERT_GE(r->ends().size(), 3u);
   EXPECT_NEAR(r->ends()[2].x, 4.99, 1e-6);  // G41 mirrored is G42: the tool on +X
+}
+
+std::string program_text(const std::string& name) {
+  std::ifstream in(std::string(USINA_TEST_DIR) + "/programs/fanuc/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(FanucEngine, TheG65PocketRunsAndAlarmsWithoutItsDiameter) {
+  const std::string text = program_text("o1002_g65_circular_pocket.nc");
+  ASSERT_FALSE(text.empty());
+  EXPECT_TRUE(run_fanuc(text)->ok);
+  // Without D the macro's guard raises alarm 3001 (docs/fanuc.md §11).
+  auto r = run_fanuc(std::regex_replace(text, std::regex(" D1[06]\\."), ""));
+  EXPECT_EQ(r->first_error(), Code::MacroAlarm);
+  EXPECT_EQ(r->first_error_text(), "alarm 3001: DIAMETER D MISSING");
 }
 
 }  // namespace
