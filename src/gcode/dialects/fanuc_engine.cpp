@@ -120,7 +120,9 @@ bool Engine::run(std::uint32_t file) {
 bool Engine::end_of_program() {
   if (tape_.size() == 0) {
     done_ = true;
-    diags_.report({core::Code::NoProgramEnd, core::Severity::Warning, {main_file_, 1, 0, 0, 0},
+    diags_.report({core::Code::NoProgramEnd,
+                   core::Severity::Warning,
+                   {main_file_, 1, 0, 0, 0},
                    "the program is empty"});
     return true;
   }
@@ -147,9 +149,9 @@ bool Engine::step() {
   if (b.sequence >= 0) n_ = static_cast<double>(b.sequence);
   if (b.text.empty()) return true;
   const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[0])));
-  const char second = b.text.size() > 1 ? static_cast<char>(std::toupper(
-                                               static_cast<unsigned char>(b.text[1])))
-                                         : '\0';
+  const char second = b.text.size() > 1
+                          ? static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[1])))
+                          : '\0';
   if (c == '#' || c == 'I' || c == 'W' || c == 'E' || ((c == 'D' || c == 'G') && second == 'O')) {
     return statement(b);
   }
