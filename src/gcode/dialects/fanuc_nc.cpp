@@ -118,9 +118,9 @@ void Engine::decimal_point(const TapeBlock& b, Words& w) {
       warned_integer_ = true;
       warn(core::Code::IntegerCoordinate, b, word.pos,
            fmt::format("{}{} has no decimal point: read as {} {}; a Fanuc control with DPI = 0 "
-                       "reads {} (--dialect-option decimal_point=fanuc)",
+                       "reads {} {} (--dialect-option decimal_point=fanuc)",
                        word.letter, number(word.raw), number(word.raw), inch ? "in" : "mm",
-                       number(word.raw * (inch ? 0.0001 : 0.001))));
+                       number(word.raw * (inch ? 0.0001 : 0.001)), inch ? "in" : "mm"));
     }
   }
 }
