@@ -24,8 +24,7 @@ cxx="${CXX_FUZZ:-clang++-14}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
-targets=(parser interpreter romi)
-targets+=(grbl)  # the grbl dialect (fuzz_grbl.cpp)
+targets=(parser interpreter romi fanuc grbl)
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }

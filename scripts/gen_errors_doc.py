@@ -419,6 +419,33 @@ EXPLAIN = {
         "`$RST` line. usina leaves it out of the trace.",
         "Take the character out of the comment, or the line out of the file, unless it is "
         "meant for the machine."),
+    "W_INTEGER_COORDINATE": (
+        "A fanuc program writes a distance or an angle without a decimal point (`X1000`) and "
+        "the dialect reads it as the pocket calculator does (`decimal_point=calculator`, the "
+        "default): 1000 mm. A Fanuc control with parameter 3401 DPI = 0 reads 1 mm (least "
+        "input increment). Said once per run, on the first such word.",
+        "Write the point (`X1000.`), or run with `--dialect-option decimal_point=fanuc`."),
+    "E_MACRO_ALARM": (
+        "A fanuc macro wrote `#3000 = n (MESSAGE)`: the program raises alarm 3000 + n with its "
+        "message and stops, as the control does. Macros use it to reject missing or bad "
+        "arguments.",
+        "Give the macro what its alarm asks for (often a G65 argument)."),
+    "E_MACRO_FORMAT": (
+        "A fanuc Custom Macro B statement is malformed: a macro statement (`#1 = ..`, `IF`, "
+        "`WHILE`, `GOTO`) mixed with NC words in one block (Fanuc alarm 114), a relation "
+        "stored in a variable, `IF` without `GOTO` or `THEN`, or a G code among G65's "
+        "arguments.",
+        "Put the statement in a block of its own and follow the forms of docs/fanuc.md §5."),
+    "E_BAD_LOOP": (
+        "A fanuc `WHILE [..] DO m` / `END m` loop is wrong: m not 1, 2 or 3 (alarm 126), loops "
+        "nested deeper than 3, `DO` without its `END` or ranges that overlap (alarm 124), or "
+        "`GOTO` into a loop from outside it (alarm 128).",
+        "Match each `DO m` with its `END m`, nest at most three loops, jump only out of loops."),
+    "N_DIALECT_GUESS": (
+        "`--dialect auto` looked at the program's text and chose a dialect; the note says which "
+        "and the rule that decided (`%` and `O` numbers: fanuc; `$` lines: grbl; `#` block "
+        "ends: romi; `o<name>` or `o123 sub`: rs274ngc; otherwise rs274ngc).",
+        "Nothing; give `--dialect NAME` to choose yourself."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

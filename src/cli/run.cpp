@@ -9,6 +9,7 @@
 
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
+#include "gcode/dialect_guess.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/var_file.hpp"
 
@@ -19,7 +20,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   std::vector<std::string> dialects;
   for (const gcode::Dialect* d : gcode::all_dialects())
     dialects.emplace_back(d->name);
-  app.add_option("--dialect", o.dialect, "the control's language")
+  dialects.emplace_back("auto");
+  app.add_option("--dialect", o.dialect, "the control's language (auto: guessed from the text)")
       ->check(CLI::IsMember(dialects))
       ->capture_default_str();
   app.add_option("--dialect-option", o.dialect_options,
@@ -30,6 +32,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
          "units of the machine: of the tool table and stored parameters (programs start in G21)")
       ->check(CLI::IsMember({"mm", "inch"}))
       ->capture_default_str();
+  app.add_option("--offsets", o.offsets,
+                 "fanuc: the offset page (H and D registers) as a TOML file (docs/fanuc.md)");
   app.add_option("--var-file", o.var_file, "LinuxCNC parameter file to start from");
   app.add_option(
       "--subroutine-path", o.subroutine_path,
@@ -102,22 +106,30 @@ std::string folder_of(const std::string& path) {
 int run_program(const RunOptions& o, canon::Sink& sink,
                 const std::function<void(const core::SourceManager&)>& on_sources,
                 core::DiagnosticSink* observer) {
-  const gcode::Dialect* dialect = gcode::find_dialect(o.dialect);
-  gcode::OptionValues dialect_options;
-  if (dialect == nullptr) {
-    fmt::print(stderr, "usina: error: unknown dialect {}\n", o.dialect);
-    return 2;
-  }
-  if (auto bad = gcode::resolve_options(*dialect, o.dialect_options, dialect_options)) {
-    fmt::print(stderr, "usina: error: {}\n", *bad);
-    return 2;
-  }
   core::SourceManager sources;
   if (on_sources) on_sources(sources);
   StderrDiagnostics diags(sources, observer);
   auto program = open_input(o.file);
   if (!program) return 2;
   const std::uint32_t main_id = sources.add(std::move(program));
+  std::string name = o.dialect;
+  if (name == "auto") {
+    const gcode::DialectGuess guess = gcode::guess_dialect(sources.get(main_id)->text());
+    name = std::string(guess.dialect);
+    if (gcode::find_dialect(name) == nullptr) name = "rs274ngc";
+    fmt::print(stderr, "usina: note: --dialect auto chose {} ({}) [N_DIALECT_GUESS]\n", name,
+               guess.reason);
+  }
+  const gcode::Dialect* dialect = gcode::find_dialect(name);
+  gcode::OptionValues dialect_options;
+  if (dialect == nullptr) {
+    fmt::print(stderr, "usina: error: unknown dialect {}\n", name);
+    return 2;
+  }
+  if (auto bad = gcode::resolve_options(*dialect, o.dialect_options, dialect_options)) {
+    fmt::print(stderr, "usina: error: {}\n", *bad);
+    return 2;
+  }
 
   gcode::InterpOptions opts;
   opts.machine_units = o.machine_units == "inch" ? core::LengthUnit::Inch : core::LengthUnit::Mm;
@@ -125,6 +137,7 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   opts.max_loop_iterations = o.max_iterations;
   opts.max_total_iterations = o.max_total_iterations;
   opts.block_delete = o.block_delete;
+  opts.offset_file = o.offsets;
   opts.ignore_cutter_comp = o.ignore_cutter_comp;
   opts.start = o.start;
   opts.subroutine_path = split_path(o.subroutine_path);

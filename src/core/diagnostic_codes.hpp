@@ -97,4 +97,10 @@
   X(TextNotInFont, E_TEXT_NOT_IN_FONT)             \
   /* the grbl dialect */                           \
   X(GrblError, E_GRBL)                             \
-  X(GrblWarning, W_GRBL)
+  X(GrblWarning, W_GRBL)                           \
+  /* the fanuc dialect */                          \
+  X(IntegerCoordinate, W_INTEGER_COORDINATE)       \
+  X(MacroAlarm, E_MACRO_ALARM)                     \
+  X(MacroFormat, E_MACRO_FORMAT)                   \
+  X(BadLoop, E_BAD_LOOP)                           \
+  X(DialectGuess, N_DIALECT_GUESS)

@@ -9,11 +9,12 @@ namespace usina::gcode {
 // Each dialect's file defines one of these.
 const Dialect& rs274ngc_dialect();
 const Dialect& romi_dialect();
+const Dialect& fanuc_dialect();
 const Dialect& grbl_dialect();
 
 const std::vector<const Dialect*>& all_dialects() {
   static const std::vector<const Dialect*> list = {&rs274ngc_dialect(), &romi_dialect(),
-                                                   &grbl_dialect()};
+                                                   &fanuc_dialect(), &grbl_dialect()};
   return list;
 }
 

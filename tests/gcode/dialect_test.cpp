@@ -8,11 +8,13 @@
 namespace usina::gcode {
 namespace {
 
-TEST(Dialect, RegistryKnowsRs274ngcAndRomi) {
+TEST(Dialect, RegistryKnowsEveryDialect) {
   ASSERT_NE(find_dialect("rs274ngc"), nullptr);
   ASSERT_NE(find_dialect("romi"), nullptr);
-  EXPECT_EQ(find_dialect("fanuc"), nullptr);
-  EXPECT_GE(all_dialects().size(), 2u);
+  ASSERT_NE(find_dialect("fanuc"), nullptr);
+  ASSERT_NE(find_dialect("grbl"), nullptr);
+  EXPECT_EQ(find_dialect("no-such-control"), nullptr);
+  EXPECT_EQ(all_dialects().size(), 4u);
   for (const Dialect* d : all_dialects())
     EXPECT_NE(d->make_runner, nullptr) << d->name;
 }

@@ -64,6 +64,9 @@ class CannedCycles {
   // LinuxCNC: convert_motion clears cycle_il_flag.
   void note_other_motion() { initial_level_.reset(); }
 
+  // LinuxCNC's cycle_il as it holds it (program units), if a cycle runs.
+  std::optional<double> initial_level() const { return initial_level_; }
+
   // Program start: every sticky value back to LinuxCNC's initial one.
   void reset() { *this = CannedCycles{}; }
 

@@ -81,7 +81,8 @@ bool is_cycle(GCode g) {
 bool Interpreter::check(BlockWords& w) {
   const GCode g0 = w.g[kGroupNonModal];
   const GCode g1 = w.g[kGroupMotion];
-  const bool axes = w.has_axis() || w.has_polar();
+  // G43.1's X Y Z are offsets, not a move (LinuxCNC takes them for G43.1).
+  const bool axes = (w.has_axis() || w.has_polar()) && w.g[kGroupToolLength] != 431;
   if (g1 != -1) {
     w.motion = g1;
   } else if (axes && !uses_axes(g0)) {

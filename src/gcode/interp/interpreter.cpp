@@ -130,6 +130,33 @@ Interpreter::Flow Interpreter::step() {
   return ended_ ? Flow::End : Flow::Next;
 }
 
+bool Interpreter::run_block(std::string_view text, const LinePos& where) {
+  if (failed_ || ended_) return !failed_;
+  if (!parse_block(text, where, block_, diags_)) {
+    failed_ = true;
+    return false;
+  }
+  loc_ = block_.loc;
+  machine_.set_source(loc_);
+  if (block_.empty()) return true;
+  BlockWords& w = *words_;
+  if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return false;
+  const ModalState before = state_;
+  if (!execute(block_, w)) {
+    state_ = before;
+    return false;
+  }
+  return true;
+}
+
+bool Interpreter::finish() {
+  if (!failed_ && !ended_) {
+    if (auto e = comp_.flush(machine_)) error(*e);
+  }
+  sink_.finish();
+  return !failed_;
+}
+
 bool Interpreter::evaluate(const Block& b, BlockWords& w) {
   w.reset();
   EvalError err;

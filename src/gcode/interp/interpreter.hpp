@@ -19,6 +19,7 @@
 #include "gcode/interp/cutter_comp.hpp"
 #include "gcode/interp/state.hpp"
 #include "gcode/parameters.hpp"
+#include "gcode/parser.hpp"
 #include "gcode/program_index.hpp"
 #include "gcode/tool_table.hpp"
 
@@ -37,6 +38,7 @@ struct InterpOptions {
   // contour (what a part drawing shows), not the tool centre.
   bool ignore_cutter_comp = false;
   ToolTable tools;
+  std::string offset_file;  // fanuc: the H and D offset registers (docs/fanuc.md)
   core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
 };
 
@@ -58,6 +60,22 @@ class Interpreter final : private ParameterSource {
   bool run(std::uint32_t file);
 
   const ModalState& state() const { return state_; }
+
+  // For a front end that cuts and expands blocks itself (the fanuc
+  // dialect): runs one RS274NGC block of text, located at `where` for its
+  // diagnostics. False after an error. `finish` ends such a run.
+  bool run_block(std::string_view text, const LinePos& where);
+  bool finish();
+
+  bool ended() const { return ended_; }
+
+  // Fanuc: G80 ends a cycle mode, so the next cycle's initial level is
+  // where it starts (LinuxCNC keeps its cycle_il until another motion).
+  void forget_cycle_level() { cycles_.note_other_motion(); }
+
+  std::optional<double> cycle_initial_level() const { return cycles_.initial_level(); }
+
+  bool failed() const { return failed_; }
 
   const Parameters& parameters() const { return params_; }
 

@@ -1,0 +1,467 @@
+// NC blocks of the fanuc dialect: words with macro values (a vacant
+// variable leaves its word out), the decimal-point rule, the codes the
+// front end runs itself (M98 M99 G65 G66 G67, Fanuc's G04 P and cycle P K,
+// G10 L2 in G91), and the hand-over to the RS274NGC interpreter.
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/dialects/fanuc_engine.hpp"
+
+namespace usina::gcode::fanuc {
+namespace {
+
+// Distances and angles: the decimal-point rule applies (§2).
+bool is_distance(char l) {
+  return std::string_view("XYZUVWABCIJKRQ").find(l) != std::string_view::npos;
+}
+
+int tenths(double v) {
+  return static_cast<int>(std::lround(v * 10.0));
+}
+
+bool is_cycle(int g) {
+  return g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890);
+}
+
+std::string number(double v) {
+  if (std::fabs(v) < 5e-11) v = 0;
+  std::string s = fmt::format("{:.10f}", v);
+  while (!s.empty() && s.back() == '0')
+    s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+NcWord* Words::find(char letter) {
+  for (NcWord& w : list)
+    if (w.letter == letter && !w.taken && !w.vacant) return &w;
+  return nullptr;
+}
+
+double Words::get(char letter, double fallback) {
+  const NcWord* w = find(letter);
+  return w != nullptr ? w->value : fallback;
+}
+
+bool Words::has_g(int t) const {
+  for (const NcWord& w : list)
+    if (w.letter == 'G' && !w.taken && tenths(w.value) == t) return true;
+  return false;
+}
+
+bool Words::has_m(int m) const {
+  for (const NcWord& w : list)
+    if (w.letter == 'M' && !w.taken && std::lround(w.value) == m) return true;
+  return false;
+}
+
+void Words::take_g(int t) {
+  for (NcWord& w : list)
+    if (w.letter == 'G' && tenths(w.value) == t) w.taken = true;
+}
+
+void Words::take_m(int m) {
+  for (NcWord& w : list)
+    if (w.letter == 'M' && std::lround(w.value) == m) w.taken = true;
+}
+
+void Words::take(char letter) {
+  for (NcWord& w : list)
+    if (w.letter == letter) w.taken = true;
+}
+
+bool Engine::read_words(const TapeBlock& b, Words& w) {
+  MacroReader r(b.text, *this);
+  while (!r.at_end()) {
+    const std::size_t at = r.pos();
+    const char l = r.peek();
+    if (l == '=' || l == '#') {
+      return error(core::Code::MacroFormat, b, at,
+                   "a macro statement stands alone in its block (Fanuc alarm 114)");
+    }
+    if (l < 'A' || l > 'Z') {
+      return error(core::Code::UnexpectedCharacter, b, at,
+                   fmt::format("'{}' where a word's letter was expected", b.text[at]));
+    }
+    r.set_pos(at + 1);
+    auto v = r.expression();
+    if (!v) return macro_error(r, b);
+    NcWord word;
+    word.letter = l;
+    word.value = word.raw = v->v;
+    word.integer_literal = r.literal() && !r.had_point();
+    word.vacant = v->vacant && r.single_variable();
+    word.pos = at;
+    w.list.push_back(word);
+  }
+  return true;
+}
+
+void Engine::decimal_point(const TapeBlock& b, Words& w) {
+  bool inch = interp_.state().units == core::LengthUnit::Inch;
+  if (w.has_g(200)) inch = true;
+  if (w.has_g(210)) inch = false;
+  const bool cycle = is_cycle(interp_.state().motion);
+  bool cycle_block = cycle;
+  for (const NcWord& g : w.list)
+    if (g.letter == 'G' && is_cycle(tenths(g.value))) cycle_block = true;
+  for (NcWord& word : w.list) {
+    if (!word.integer_literal || !is_distance(word.letter)) continue;
+    if (word.letter == 'K' && cycle_block) continue;  // a repeat count
+    if (dpi_fanuc_) {
+      word.value = word.raw * (inch ? 0.0001 : 0.001);
+    } else if (!warned_integer_ && word.raw != 0.0) {
+      warned_integer_ = true;
+      warn(core::Code::IntegerCoordinate, b, word.pos,
+           fmt::format("{}{} has no decimal point: read as {} {}; a Fanuc control with DPI = 0 "
+                       "reads {} {} (--dialect-option decimal_point=fanuc)",
+                       word.letter, number(word.raw), number(word.raw), inch ? "in" : "mm",
+                       number(word.raw * (inch ? 0.0001 : 0.001)), inch ? "in" : "mm"));
+    }
+  }
+}
+
+// Argument specification I and II (docs/fanuc.md §6): letters to #1-#26,
+// repeated I J K to the triples #4-#33.
+std::array<Value, 34> Engine::arguments(Words& w) {
+  static constexpr std::string_view kLetters = "ABCDEFHIJKMQRSTUVWXYZ";
+  static constexpr int kVar[] = {1,  2,  3,  7,  8,  9,  11, 4,  5,  6, 13,
+                                 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
+  std::array<Value, 34> args = vacant_locals();
+  int triples[3] = {0, 0, 0};
+  for (NcWord& word : w.list) {
+    if (word.taken) continue;
+    const std::size_t at = kLetters.find(word.letter);
+    if (at == std::string_view::npos) continue;
+    int var = kVar[at];
+    if (word.letter == 'I' || word.letter == 'J' || word.letter == 'K') {
+      const int t = word.letter - 'I';
+      var = 4 + t + 3 * triples[t]++;
+      if (var > 33) continue;
+    }
+    word.taken = true;
+    if (!word.vacant) args[static_cast<std::size_t>(var)] = Value{word.value};
+  }
+  return args;
+}
+
+bool Engine::macro_call(const TapeBlock& b, Words& w) {
+  const bool modal = w.has_g(660);
+  w.take_g(modal ? 660 : 650);
+  for (const NcWord& g : w.list) {
+    if ((g.letter == 'G' || g.letter == 'N' || g.letter == 'O') && !g.taken) {
+      return error(core::Code::MacroFormat, b, g.pos,
+                   fmt::format("{} is not an argument of G65/G66 (Fanuc alarm 114)", g.letter));
+    }
+  }
+  const NcWord* p = w.find('P');
+  if (p == nullptr)
+    return error(core::Code::MissingWord, b, 0, "G65/G66 needs P (the macro's program number)");
+  const long program = std::lround(p->raw);
+  const long times = std::lround(w.get('L', 1));
+  w.take('P');
+  w.take('L');
+  std::array<Value, 34> args = arguments(w);
+  if (modal) {
+    modal_call_ = ModalCall{program, times, args};
+    return true;
+  }
+  return call(program, times, true, &args, b, p->pos, false);
+}
+
+bool Engine::nc_block(const TapeBlock& b) {
+  Words w;
+  if (!read_words(b, w)) return false;
+  decimal_point(b, w);
+  for (const NcWord& g : w.list) {
+    if (g.letter == 'M' && !g.vacant) m_ = g.value;
+    if (g.letter == 'D' && !g.vacant) d_ = g.value;
+    if (g.letter == 'H' && !g.vacant) h_ = g.value;
+  }
+  if (w.has_g(650) || w.has_g(660)) return macro_call(b, w);
+  if (w.has_g(670)) {
+    w.take_g(670);
+    modal_call_.reset();
+  }
+  if (!fanuc_codes(b, w) || !offset_codes(b, w) || !transform_codes(b, w) || !convert_codes(b, w))
+    return false;
+  if (!transform_words(b, w)) return false;
+  // M98 / M99 run after the block's other words (the move first).
+  std::optional<long> sub, back;
+  long times = 1;
+  std::size_t call_pos = 0;
+  if (w.has_m(98)) {
+    w.take_m(98);
+    const NcWord* p = w.find('P');
+    if (p == nullptr) return error(core::Code::MissingWord, b, 0, "M98 needs P (the program)");
+    call_pos = p->pos;
+    long pv = std::lround(p->raw);
+    const NcWord* l = w.find('L');
+    if (l != nullptr) {
+      times = std::lround(l->raw);
+    } else if (program_digits_ == 4 && pv >= 10000) {
+      times = pv / 10000;  // M98 P30010: O0010 three times
+      pv %= 10000;
+    }
+    sub = pv;
+    w.take('P');
+    w.take('L');
+  } else if (w.has_m(99)) {
+    w.take_m(99);
+    const NcWord* p = w.find('P');
+    back = p != nullptr ? std::lround(p->raw) : -1;
+    if (p != nullptr) call_pos = p->pos;
+    w.take('P');
+  }
+  bool moved = false;
+  for (const NcWord& word : w.list)
+    moved = moved || (!word.taken && !word.vacant &&
+                      std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos);
+  if (w.has_g(760) || w.has_g(870) || ((cycle_ == 760 || cycle_ == 870) && !w.has_g(800))) {
+    if (!fine_boring(b, w)) return false;
+  }
+  group_one_motion(w);
+  const bool cancels_cycle = w.has_g(800);
+  if (!hand_over(b, w)) return false;
+  if (cancels_cycle) interp_.forget_cycle_level();
+  if (!xf_.active() && !polar_) reset_program_point();
+  if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
+  if (back) return give_back(*back, b, call_pos);
+  bool in_modal_macro = false;
+  for (const Frame& f : frames_)
+    in_modal_macro = in_modal_macro || f.modal_call;
+  if (modal_call_ && moved && !in_modal_macro) {
+    return call(modal_call_->program, modal_call_->repeats, true, &modal_call_->args, b, 0, true);
+  }
+  return true;
+}
+
+// Codes Fanuc has and this front end does not run yet: an explicit error.
+bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
+  struct Missing {
+    int g;
+    const char* what;
+  };
+
+  static constexpr Missing kMissing[] = {
+      {541, "G54.1 (additional work coordinate systems)"},
+      {220, "G22 (stored stroke check)"},
+      {121, "G12.1 (polar interpolation)"},
+  };
+  for (const Missing& m : kMissing) {
+    if (w.has_g(m.g)) {
+      return error(core::Code::Unsupported, b, 0,
+                   fmt::format("{} is not implemented in the fanuc dialect yet", m.what));
+    }
+  }
+  for (const NcWord& g : w.list) {
+    if (g.letter != 'G' || g.taken) continue;
+    const int t = tenths(g.value);
+    if (t <= 30) motion_ = t;
+    if (t <= 30 || is_cycle(t) || t == 800) cycle_ = t;  // the last motion of groups 1 and 9
+    if (t == 430 || t == 490) length_mode_ = t;
+  }
+  if (w.has_g(100)) {
+    const long l = std::lround(w.get('L', 0));
+    if (l >= 10 && l <= 13) return write_register(b, w, l);
+    if (l != 2) {
+      return error(core::Code::Unsupported, b, 0,
+                   fmt::format("G10 L{} (Fanuc offset registers) is not implemented in the fanuc "
+                               "dialect yet; G10 L2 is",
+                               l));
+    }
+    const long p = std::lround(w.get('P', 0));
+    if (p < 1 || p > 6) {
+      return error(core::Code::BadWordValue, b, 0,
+                   "G10 L2 P takes 1..6 (G54..G59); P0 (external offset) is not implemented");
+    }
+    const bool incremental = w.has_g(910) || (interp_.state().incremental && !w.has_g(900));
+    if (incremental) {
+      // Fanuc: G10 in G91 adds to the offset (LinuxCNC always sets it).
+      const double per = core::mm_per(interp_.state().units);
+      for (NcWord& word : w.list) {
+        const std::size_t a = std::string_view(kAxisLetters).find(word.letter);
+        if (word.taken || word.vacant || a == std::string_view::npos) continue;
+        const double stored =
+            interp_.parameters().get(static_cast<int>(5201 + 20 * p + static_cast<long>(a)));
+        word.value += (a >= 3 && a <= 5) ? stored : stored / per;
+      }
+    }
+  }
+  return true;
+}
+
+// Fanuc's meanings of words the interpreter reads otherwise.
+bool Engine::convert_codes(const TapeBlock&, Words& w) {
+  if (w.has_g(40)) {
+    // G04: P in milliseconds, X in seconds; LinuxCNC's P is seconds.
+    NcWord* x = w.find('X');
+    NcWord* p = w.find('P');
+    if (p != nullptr) {
+      p->value = p->raw / 1000.0;
+    } else if (x != nullptr) {
+      x->letter = 'P';
+    }
+  }
+  int motion = interp_.state().motion;
+  bool starts = false;
+  for (const NcWord& g : w.list)
+    starts = starts || (g.letter == 'G' && !g.taken && is_cycle(tenths(g.value)));
+  for (const NcWord& g : w.list)
+    if (g.letter == 'G' && !g.taken &&
+        (tenths(g.value) <= 30 || is_cycle(tenths(g.value)) || tenths(g.value) == 800))
+      motion = tenths(g.value);
+  if (motion == 800 || motion <= 30) cycle_r_ = cycle_z_ = cycle_p_ = std::nullopt;
+  if (is_cycle(motion)) {
+    cycle_levels(w, w.has_g(910) || (interp_.state().incremental && !w.has_g(900)));
+    if (NcWord* p = w.find('P')) {
+      p->value = p->raw / 1000.0;
+      cycle_p_ = p->value;
+    } else if (starts && (cycle_p_ || motion == 820 || motion == 860 || motion == 890)) {
+      // The dwell is modal on Fanuc; LinuxCNC wants P when a cycle starts.
+      const double v = cycle_p_.value_or(0.0);
+      w.list.push_back({'P', v, v, false, false, false, 0});
+    }
+    if (NcWord* q = w.find('Q')) q->value = std::fabs(q->value);
+    if (NcWord* k = w.find('K')) k->letter = 'L';
+  }
+  return true;
+}
+
+// R and Z of a cycle block: given, they are remembered as positions; left
+// out, the remembered ones are written for the interpreter, which needs R
+// in the block that starts a cycle and re-reads the numbers under G91.
+void Engine::cycle_levels(Words& w, bool incremental) {
+  const double per = core::mm_per(interp_.state().units);
+  const double z_now = interp_.state().pos[2] / per;
+  const double initial = interp_.cycle_initial_level().value_or(z_now);
+  NcWord* r = w.find('R');
+  NcWord* z = w.find('Z');
+  const std::optional<double> r_abs =
+      r != nullptr ? std::optional<double>(incremental ? initial + r->value : r->value) : cycle_r_;
+  if (r_abs && z != nullptr) cycle_z_ = incremental ? *r_abs + z->value : z->value;
+  if (r_abs) cycle_r_ = r_abs;
+  if (r == nullptr && cycle_r_) {
+    const double v = incremental ? *cycle_r_ - initial : *cycle_r_;
+    w.list.push_back({'R', v, v, false, false, false, 0});
+  }
+  if (z == nullptr && cycle_z_ && cycle_r_) {
+    const double v = incremental ? *cycle_z_ - *cycle_r_ : *cycle_z_;
+    w.list.push_back({'Z', v, v, false, false, false, 0});
+  }
+}
+
+// G76 fine boring (docs/fanuc.md §7): feed to Z, dwell, orient, shift Q
+// away from the wall (+X), rapid out, shift back, spindle on. Written as
+// RS274NGC blocks for the interpreter; G90 only for now.
+bool Engine::fine_boring(const TapeBlock& b, Words& w) {
+  const int code = w.has_g(870) ? 870 : w.has_g(760) ? 760 : cycle_;
+  w.take_g(760);
+  w.take_g(870);
+  if (interp_.state().incremental || w.has_g(910)) {
+    return error(core::Code::Unsupported, b, 0,
+                 "G76/G87 under G91 is not implemented in the fanuc dialect yet");
+  }
+  if (NcWord* r = w.find('R')) g76_.r = r->value;
+  if (NcWord* z = w.find('Z')) g76_.z = z->value;
+  if (NcWord* q = w.find('Q')) g76_.q = std::fabs(q->value);
+  if (NcWord* p = w.find('P')) g76_.p = p->raw / 1000.0;
+  if (NcWord* f = w.find('F')) g76_.f = f->value;
+  if (w.has_g(980)) g76_.to_r = false;
+  if (w.has_g(990)) g76_.to_r = true;
+  const double per = core::mm_per(interp_.state().units);
+  if ((cycle_ != 760 && cycle_ != 870) || !g76_.initial)
+    g76_.initial = interp_.state().pos[2] / per;
+  const bool hole = w.has('X') || w.has('Y');
+  const double x = w.get('X', interp_.state().pos[0] / per);
+  const double y = w.get('Y', interp_.state().pos[1] / per);
+  for (char l : std::string_view("XYZRQPFGKL"))
+    w.take(l);
+  cycle_ = code;
+  if (code == 870 && g76_.to_r)
+    return error(core::Code::NotAllowedInMode, b, 0, "G87 back boring does not take G99");
+  if (!hole) return true;
+  if (!g76_.r || !g76_.z)
+    return error(core::Code::MissingWord, b, 0, "G76 needs R and Z when it starts");
+  const double back = g76_.to_r ? *g76_.r : std::max(*g76_.initial, *g76_.r);
+  const std::string blocks[] = {
+      fmt::format("G0 X{} Y{}", number(x), number(y)),
+      fmt::format("G0 Z{}", number(*g76_.r)),
+      fmt::format("G1 Z{} F{}", number(*g76_.z), number(g76_.f)),
+      fmt::format("G4 P{}", number(g76_.p)),
+      "M19",
+      fmt::format("G0 X{}", number(x + g76_.q)),
+      fmt::format("G0 Z{}", number(back)),
+      fmt::format("G0 X{}", number(x)),
+      "M3",
+  };
+  // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
+  const std::string back_boring[] = {
+      fmt::format("G0 X{} Y{}", number(x), number(y)),
+      "M19",
+      fmt::format("G0 X{}", number(x + g76_.q)),
+      fmt::format("G0 Z{}", number(*g76_.r)),
+      fmt::format("G0 X{}", number(x)),
+      "M3",
+      fmt::format("G1 Z{} F{}", number(*g76_.z), number(g76_.f)),
+      fmt::format("G4 P{}", number(g76_.p)),
+      "M19",
+      fmt::format("G0 X{}", number(x + g76_.q)),
+      fmt::format("G0 Z{}", number(*g76_.initial)),
+      fmt::format("G0 X{}", number(x)),
+      "M3",
+  };
+  if (code == 870) {
+    for (const std::string& text : back_boring) {
+      if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
+    }
+    return true;
+  }
+  for (const std::string& text : blocks) {
+    if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
+  }
+  return true;
+}
+
+// Fanuc's G80 is a group of its own: after it (and at power-on) axis words
+// move in the group 1 mode (G00 at first); LinuxCNC's G80 stops motion.
+void Engine::group_one_motion(Words& w) {
+  if (interp_.state().motion != 800) return;
+  bool axes = false;
+  for (const NcWord& word : w.list) {
+    if (word.taken || word.vacant) continue;
+    if (std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos) axes = true;
+    if (word.letter != 'G') continue;
+    const int t = tenths(word.value);
+    if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
+        t == 520 || t == 530 || t == 920 || t == 431)
+      return;
+  }
+  if (axes) w.list.push_back({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
+}
+
+bool Engine::hand_over(const TapeBlock& b, Words& w) {
+  const core::SourceLoc loc = loc_of(b, 0);
+  std::string text(loc.col > 1 ? loc.col - 1 : 0, ' ');
+  for (const NcWord& word : w.list) {
+    if (word.taken || word.vacant) continue;
+    if (word.letter == 'G') {
+      int t = tenths(word.value);
+      // One mirrored axis swaps the side of cutter compensation.
+      if (xf_.reverses() && (t == 410 || t == 420 || t == 411 || t == 421))
+        t = t < 415 ? t + 10 : t - 10;
+      text += t % 10 == 0 ? fmt::format("G{} ", t / 10) : fmt::format("G{}.{} ", t / 10, t % 10);
+    } else if (word.letter == 'M' || word.letter == 'L') {
+      text += fmt::format("{}{} ", word.letter, std::lround(word.value));
+    } else {
+      text += fmt::format("{}{} ", word.letter, number(word.value));
+    }
+  }
+  return interp_.run_block(text, {b.file, b.line, b.line_offset});
+}
+
+}  // namespace usina::gcode::fanuc
