@@ -1,5 +1,7 @@
 #include "cli/post_output.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -38,28 +40,43 @@ void PostDiagnostics::report(core::Diagnostic d) {
 
 int write_program(const PostOutput& o,
                   const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
-  std::ostringstream text;
+  // A file is written beside its name and renamed once the program is good,
+  // so a failed run leaves no file and a big program is never held in
+  // memory; standard output is held, as it cannot be taken back.
+  const bool to_stdout = o.out == "-";
+  const std::string partial = o.out + ".partial-" + std::to_string(::getpid());
+  std::ostringstream held;
+  std::ofstream file;
+  if (!to_stdout) {
+    file.open(partial, std::ios::binary);
+    if (!file) {
+      fmt::print(stderr, "usina: error: cannot write {}\n", o.out);
+      return 2;
+    }
+  }
+  std::ostream& text = to_stdout ? static_cast<std::ostream&>(held) : file;
   PostDiagnostics post_diags;
   auto sink = post::make_post(o.post, text, o.options, post_diags);
   if (!sink) {
     fmt::print(stderr, "usina: error: unknown post '{}'\n", o.post);
+    if (!to_stdout) std::remove(partial.c_str());
     return 2;
   }
-  const int status = produce(*sink, post_diags);
+  int status = produce(*sink, post_diags);
   sink->finish();  // a post's finish is idempotent; a generator need not call it
-  if (status != 0) return status;
-  if (post_diags.errors() > 0) return 1;
-  if (o.out == "-") {
-    fmt::print("{}", text.str());
-    return 0;
+  if (status == 0 && post_diags.errors() > 0) status = 1;
+  if (to_stdout) {
+    if (status == 0) fmt::print("{}", held.str());
+    return status;
   }
-  std::ofstream file(o.out, std::ios::binary);
-  file << text.str();
-  if (!file.flush()) {
+  const bool written = static_cast<bool>(file.flush());
+  file.close();
+  if (status == 0 && (!written || std::rename(partial.c_str(), o.out.c_str()) != 0)) {
     fmt::print(stderr, "usina: error: cannot write {}\n", o.out);
-    return 2;
+    status = 2;
   }
-  return 0;
+  if (status != 0) std::remove(partial.c_str());
+  return status;
 }
 
 }  // namespace usina::cli
