@@ -7,8 +7,9 @@
 // from the newest block (planned to end at rest) and a forward pass from the
 // oldest (whose entry is fixed) after every new block. The backward pass
 // stops at the first block it does not change and the forward pass starts
-// there, so a block costs a few steps, not the buffer's length. When the buffer is full the oldest block runs: its time follows
-// from its entry, its exit (the next block's entry) and its cruise speed.
+// there, so a block costs a few steps, not the buffer's length. When the buffer is full the oldest
+// block runs: its time follows from its entry, its exit (the next block's entry) and its cruise
+// speed.
 //
 // Every block is also timed with exact stop (G61: starting and ending at
 // rest) for comparison. Times are summed per account: a number the caller

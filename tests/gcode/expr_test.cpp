@@ -222,11 +222,10 @@ TEST(ParameterIndex, RejectsOutOfRangeAndFractionsWithTheColumn) {
   }
 }
 
-// Regression (a bug the tests found, fixed): parameter_index(NaN) returns a value: every comparison with NaN is
-// false, so it passes the range checks and static_cast<int>(NaN) (undefined
-// behaviour; INT_MIN on x86) is returned. Expected: nullopt and
-// E_PARAMETER_OUT_OF_RANGE. Actual: an index of -2147483648, which
-// Interpreter::numbered() then reads out of bounds (`#1=#[[10**400]-[10**400]]`
+// Regression (a bug the tests found, fixed): parameter_index(NaN) returns a value: every comparison
+// with NaN is false, so it passes the range checks and static_cast<int>(NaN) (undefined behaviour;
+// INT_MIN on x86) is returned. Expected: nullopt and E_PARAMETER_OUT_OF_RANGE. Actual: an index of
+// -2147483648, which Interpreter::numbered() then reads out of bounds (`#1=#[[10**400]-[10**400]]`
 // crashes `usina trace` with SIGSEGV).
 TEST(ParameterIndex, RejectsNotANumber) {
   EvalError err;
@@ -257,10 +256,10 @@ TEST(ExprError, NegativeBaseToAFractionalPower) {
   EXPECT_EQ(error_of("[-8 ** 0.5]").first, core::code_name(Code::DomainError));
 }
 
-// Regression (a bug the tests found, fixed): a binary operator's error points at the token after its right operand
-// (the ']' or the next operator), not at the operator. Expected: `X[1/0]`
-// reports column 4 (the '/'); actual: column 6 (the ']'). The parser gives a
-// Binary node the column of the lookahead at the time it reduces.
+// Regression (a bug the tests found, fixed): a binary operator's error points at the token after
+// its right operand (the ']' or the next operator), not at the operator. Expected: `X[1/0]` reports
+// column 4 (the '/'); actual: column 6 (the ']'). The parser gives a Binary node the column of the
+// lookahead at the time it reduces.
 TEST(ExprError, BinaryErrorPointsAtTheOperator) {
   EXPECT_EQ(error_of("[1/0]"), std::make_pair(core::code_name(Code::DivisionByZero), 4u));
   EXPECT_EQ(error_of("[1/0+5]"), std::make_pair(core::code_name(Code::DivisionByZero), 4u));
@@ -306,9 +305,10 @@ TEST(ExprError, InfiniteResultIsOutOfRange) {
   EXPECT_EQ(error_of("EXP[1000]").first, core::code_name(Code::NumberOutOfRange));
 }
 
-// Regression (a bug the tests found, fixed): same cause as ParameterIndex.DISABLED_RejectsNotANumber. Expected: an
-// error (E_PARAMETER_OUT_OF_RANGE or E_NUMBER_OUT_OF_RANGE) and no read.
-// Actual: numbered(-2147483648) is called and its value returned.
+// Regression (a bug the tests found, fixed): same cause as
+// ParameterIndex.DISABLED_RejectsNotANumber. Expected: an error (E_PARAMETER_OUT_OF_RANGE or
+// E_NUMBER_OUT_OF_RANGE) and no read. Actual: numbered(-2147483648) is called and its value
+// returned.
 TEST(ExprError, NotANumberAsAParameterIndexIsAnErrorNotARead) {
   // inf - inf is NaN; reading #NaN must be refused before the source is asked.
   MapParams p;

@@ -617,8 +617,8 @@ TEST(Parser, UnknownFunction) {
   EXPECT_SYNTAX_ERROR("G1 X[FOO[1]]", Code::UnknownFunction, 6);
 }
 
-// Regression (a bug the tests found, fixed): a number longer than the lexer's 64-character buffer is refused by
-// Lexer::number(), and the parser then reports "expected a value, found '0'"
+// Regression (a bug the tests found, fixed): a number longer than the lexer's 64-character buffer
+// is refused by Lexer::number(), and the parser then reports "expected a value, found '0'"
 // (E_EXPECTED_EXPRESSION), which points at a digit and says no value is
 // there. Expected: E_BAD_NUMBER (or E_NUMBER_OUT_OF_RANGE) at the number's
 // first column, saying the number is too long.

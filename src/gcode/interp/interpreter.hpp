@@ -39,7 +39,7 @@ struct InterpOptions {
   bool ignore_cutter_comp = false;
   ToolTable tools;
   std::string offset_file;  // fanuc: the H and D offset registers (docs/fanuc.md)
-  core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
+  core::Vec3 start{};       // where the tool is when the program starts (usina draw --start)
 };
 
 struct BlockWords;
