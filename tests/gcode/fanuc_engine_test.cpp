@@ -1,6 +1,8 @@
 // The fanuc dialect's runner: lexical rules, the decimal-point option,
 // control flow, subprograms and macros, system variables, the
 // transformations, each rule and each error path (docs/fanuc.md).
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <regex>
@@ -331,8 +333,14 @@ TEST(FanucEngine, G87BackBoringFeedsUpFromTheBottom) {
             Code::NotAllowedInMode);
 }
 
+// A file name of this test process: ctest runs the tests in parallel, and
+// one test must not truncate the file another is reading.
+std::string scratch(const std::string& name) {
+  return ::testing::TempDir() + "usina_fanuc_" + std::to_string(::getpid()) + "_" + name;
+}
+
 std::string offsets_file() {
-  const std::string path = ::testing::TempDir() + "fanuc_offsets.toml";
+  const std::string path = scratch("offsets.toml");
   std::FILE* f = std::fopen(path.c_str(), "w");
   std::fputs(
       "# offset page\n[H]\n1 = [10.5, -0.5]\n2 = 3.0\n[D]\n11 = [5.0, -0.01]\n"
@@ -393,7 +401,7 @@ TEST(FanucEngine, OffsetFileErrors) {
   InterpOptions o;
   o.offset_file = ::testing::TempDir() + "no_such_offsets.toml";
   EXPECT_EQ(run_fanuc("M30\n", o)->first_error(), Code::FileNotFound);
-  const std::string bad = ::testing::TempDir() + "bad_offsets.toml";
+  const std::string bad = scratch("bad_offsets.toml");
   std::FILE* f = std::fopen(bad.c_str(), "w");
   std::fputs("[H]\n1 = [x, 2]\n", f);
   std::fclose(f);
