@@ -1,7 +1,9 @@
 #include "cam/profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -96,8 +98,15 @@ Lead lead_out(const Path& p, double radius, int side) {
   return {e, c + core::rotate(e - c, side * std::numbers::pi / 2), c, side};
 }
 
-void one_pass(ProgramWriter& w, const Path& p, double z, const ProfileOptions& o) {
-  const int side = lead_side(o.side);
+// A tool-centre path and the side of its contour it was offset to.
+struct Cut {
+  Path path;
+  ProfileSide side;
+};
+
+void one_pass(ProgramWriter& w, const Cut& cut, double z, const ProfileOptions& o) {
+  const Path& p = cut.path;
+  const int side = lead_side(cut.side);
   const double tab_z = -o.depth + o.tabs.height;
   const bool leads = o.lead_radius > 0.0;
   if (leads) {
@@ -155,14 +164,14 @@ bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
     return fail(diags, core::Code::GenBadValue,
                 fmt::format("{} tabs are more than {}", o.tabs.count, kMaxPasses));
   }
-  const bool needs_closed = o.side == ProfileSide::Outside || o.side == ProfileSide::Inside;
+  const bool needs_closed = o.side == ProfileSide::Outside || o.side == ProfileSide::Inside ||
+                            o.side == ProfileSide::Auto;
   for (const Path& c : contours) {
     if (needs_closed && !c.closed) {
-      return fail(
-          diags, core::Code::GenOpenOutline,
-          fmt::format("the contour from ({:g}, {:g}) is open, so it has no {}; use "
-                      "--side left or right",
-                      c.start.x, c.start.y, o.side == ProfileSide::Outside ? "outside" : "inside"));
+      return fail(diags, core::Code::GenOpenOutline,
+                  fmt::format("the contour from ({:g}, {:g}) is open, so it has no inside or "
+                              "outside; use --side left or right",
+                              c.start.x, c.start.y));
     }
   }
   return ok;
@@ -198,7 +207,7 @@ std::vector<Path> profile_paths(const Path& contour, const ProfileOptions& o) {
     return out;
   }
   const bool ccw = signed_area2(linearize(contour, o.tolerance)) > 0.0;
-  const bool outside = o.side == ProfileSide::Outside;
+  const bool outside = o.side != ProfileSide::Inside;  // Auto: one contour is an outline
   // The outside of a counter-clockwise contour is on its right.
   std::vector<Path> out = offset_closed(contour, r, outside != ccw, o.tolerance);
   for (Path& p : out) {
@@ -208,29 +217,71 @@ std::vector<Path> profile_paths(const Path& contour, const ProfileOptions& o) {
   return out;
 }
 
+std::vector<int> nesting_depths(const std::vector<Path>& contours, double tolerance) {
+  std::vector<Ring> rings;
+  for (const Path& c : contours)
+    rings.push_back(linearize(c, tolerance));
+  std::vector<int> depth(contours.size(), 0);
+  for (std::size_t i = 0; i < contours.size(); ++i) {
+    for (std::size_t j = 0; j < contours.size(); ++j) {
+      if (i != j && contours[j].closed && inside(rings[j], contours[i].start)) ++depth[i];
+    }
+  }
+  return depth;
+}
+
+namespace {
+
+// Each contour's side: the option's, or under Auto the one its nesting gives.
+// Under Auto the holes come first (deepest first), so the part is still held
+// by its outline while they are cut.
+std::vector<std::pair<const Path*, ProfileSide>> sides_of(const std::vector<Path>& contours,
+                                                          const ProfileOptions& o) {
+  std::vector<std::pair<const Path*, ProfileSide>> out;
+  if (o.side != ProfileSide::Auto) {
+    for (const Path& c : contours)
+      out.emplace_back(&c, o.side);
+    return out;
+  }
+  const std::vector<int> depth = nesting_depths(contours, o.tolerance);
+  std::vector<std::size_t> order(contours.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+  for (const std::size_t i : order) {
+    out.emplace_back(&contours[i], depth[i] % 2 == 0 ? ProfileSide::Outside : ProfileSide::Inside);
+  }
+  return out;
+}
+
+}  // namespace
+
 bool generate_profile(const std::vector<Path>& contours, const ProfileOptions& o, canon::Sink& sink,
                       core::DiagnosticSink& diags) {
   if (!check_profile(contours, o, diags)) return false;
-  std::vector<Path> paths;
-  for (const Path& c : contours) {
-    std::vector<Path> ps = profile_paths(c, o);
+  std::vector<Cut> cuts;
+  for (const auto& [c, side] : sides_of(contours, o)) {
+    ProfileOptions one = o;
+    one.side = side;
+    std::vector<Path> ps = profile_paths(*c, one);
     if (ps.empty()) {
       return fail(diags, core::Code::GenToolTooBig,
                   fmt::format("the contour from ({:g}, {:g}) leaves no room for a tool of "
                               "diameter {:g} mm on that side; use a smaller tool",
-                              c.start.x, c.start.y, o.cut.tool_diameter));
+                              c->start.x, c->start.y, o.cut.tool_diameter));
     }
-    for (const Path& p : ps) {
+    for (Path& p : ps) {
       if (!check_tabs_fit(p, o, diags)) return false;
+      cuts.push_back({std::move(p), side});
     }
-    paths.insert(paths.end(), ps.begin(), ps.end());
   }
   ProgramWriter w(sink, o.cut);
-  w.begin(fmt::format("usina gen profile: {} contours, depth {:g} mm", paths.size(), o.depth));
+  w.begin(fmt::format("usina gen profile: {} contours, depth {:g} mm", cuts.size(), o.depth));
   const std::vector<double> levels = depth_levels(o.depth, o.step_down);
-  for (const Path& p : paths) {
+  for (const Cut& cut : cuts) {
     for (const double z : levels)
-      one_pass(w, p, z, o);
+      one_pass(w, cut, z, o);
   }
   w.end();
   return true;

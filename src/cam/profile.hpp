@@ -10,8 +10,11 @@
 namespace usina::cam {
 
 // Outside/Inside for a closed contour; Left/Right (seen along the drawn
-// direction) for any contour; On runs the tool centre on the line.
-enum class ProfileSide { Outside, Inside, Left, Right, On };
+// direction) for any contour; On runs the tool centre on the line. Auto
+// takes each closed contour by its nesting in the others: one inside an even
+// number of contours (0: the part's outline) is cut outside, one inside an odd
+// number (a hole in the part) inside.
+enum class ProfileSide { Outside, Inside, Left, Right, On, Auto };
 
 struct Tabs {
   int count = 0;        // 0: no tabs
@@ -34,6 +37,10 @@ struct ProfileOptions {
 // the spindle clockwise (the part on the tool's right: clockwise outside,
 // counter-clockwise inside). Empty when the tool does not fit.
 std::vector<Path> profile_paths(const Path& contour, const ProfileOptions& o);
+
+// How many of the other closed contours hold each contour (tested at its
+// start point; contours that cross each other are not a drawing of a part).
+std::vector<int> nesting_depths(const std::vector<Path>& contours, double tolerance);
 
 // +1 when the lead arcs are on the left of the tool-centre path, −1 right:
 // the side away from the part.

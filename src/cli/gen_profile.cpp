@@ -21,6 +21,7 @@ cam::ProfileSide side_of(const std::string& s) {
   if (s == "left") return cam::ProfileSide::Left;
   if (s == "right") return cam::ProfileSide::Right;
   if (s == "on") return cam::ProfileSide::On;
+  if (s == "auto") return cam::ProfileSide::Auto;
   return cam::ProfileSide::Outside;
 }
 
@@ -32,9 +33,10 @@ void add_gen_profile(CLI::App& gen) {
   add_shape_options(*cmd, o->shape);
   cmd->add_option("--depth", o->gen.depth, "depth below Z0 (the top of the part), mm")->required();
   cmd->add_option("--side", o->side,
-                  "outside or inside a closed contour; left or right of an open one (along "
-                  "its drawn direction); on the line")
-      ->check(CLI::IsMember({"outside", "inside", "left", "right", "on"}))
+                  "outside or inside a closed contour; auto: outside the outlines and inside "
+                  "the holes (by nesting); left or right of an open one (along its drawn "
+                  "direction); on the line")
+      ->check(CLI::IsMember({"outside", "inside", "left", "right", "on", "auto"}))
       ->capture_default_str();
   cmd->add_option("--step-down", o->gen.step_down, "largest depth of one pass, mm")
       ->capture_default_str();

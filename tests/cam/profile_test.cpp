@@ -1,5 +1,6 @@
 #include "cam/profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -185,6 +186,46 @@ TEST(Profile, InsideTooSmallForTheToolIsAnError) {
   o.side = ProfileSide::Inside;
   EXPECT_FALSE(generate_profile({circle({0, 0}, 2)}, o, tp, d));
   EXPECT_EQ(count_code(d, core::Code::GenToolTooBig), 1);
+  EXPECT_EQ(tp.size(), 0u);
+}
+
+TEST(ProfileNesting, DepthCountsTheContoursAround) {
+  // An outline, a hole in it and a boss standing in the hole.
+  const std::vector<Path> c{circle({50, 30}, 3), rectangle({50, 30}, 100, 60, 0),
+                            circle({50, 30}, 10)};
+  EXPECT_EQ(nesting_depths(c, 0.01), (std::vector<int>{2, 0, 1}));
+}
+
+TEST(Profile, AutoCutsTheHoleInsideFirstThenTheOutlineOutside) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  ProfileOptions o = options();
+  o.side = ProfileSide::Auto;
+  ASSERT_TRUE(generate_profile({rectangle({50, 30}, 100, 60, 0), circle({50, 30}, 10)}, o, tp, d));
+  std::vector<Vec2> cut;  // every feed end below the top
+  for (const canon::Op& op : tp.ops()) {
+    const auto at = end_of(op);
+    if (at && at->z < 0 && !std::holds_alternative<canon::Traverse>(op.kind)) {
+      cut.push_back({at->x, at->y});
+    }
+  }
+  ASSERT_FALSE(cut.empty());
+  // The hole first: a tool radius (3) inside its wall of radius 10.
+  EXPECT_NEAR(core::norm(cut.front() - Vec2{50, 30}), 7.0, 2e-3);
+  // The outline last: a tool radius outside the 100 x 60 rectangle.
+  const Vec2 last = cut.back();
+  const double out = std::max({-last.x, last.x - 100, -last.y, last.y - 60});
+  EXPECT_NEAR(out, 3.0, 2e-3);
+}
+
+TEST(Profile, AutoOnAnOpenContourIsAnError) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  ProfileOptions o = options();
+  o.side = ProfileSide::Auto;
+  const Path open{{0, 0}, {{{10, 0}, std::nullopt, 0}}, false};
+  EXPECT_FALSE(generate_profile({open}, o, tp, d));
+  EXPECT_EQ(count_code(d, core::Code::GenOpenOutline), 1);
   EXPECT_EQ(tp.size(), 0u);
 }
 
