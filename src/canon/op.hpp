@@ -20,6 +20,15 @@ using core::Vec3;
 // Rotary axes A, B, C in degrees.
 using Abc = std::array<double, 3>;
 
+// A feed programmed other than in mm/min, as the program gave it: under G93
+// the move takes 1/value minutes, under G95 it advances value mm per spindle
+// revolution. A move's `f` is empty then; a post writes the move from this.
+struct ProgrammedFeed {
+  enum class Mode : unsigned char { PerMinute, InverseTime, PerRevolution };
+  Mode mode = Mode::PerMinute;
+  double value = 0.0;
+};
+
 struct Traverse {
   Vec3 to;
   Abc abc{};
@@ -29,6 +38,7 @@ struct Feed {
   Vec3 to;
   std::optional<double> f;  // mm/min; empty under inverse-time or per-revolution feed
   Abc abc{};
+  ProgrammedFeed programmed{};
 };
 
 // Arc or helix about `center` (axial coordinate of the start), axis `normal`;
@@ -40,6 +50,7 @@ struct Arc {
   int turn = 1;
   std::optional<double> f;
   Abc abc{};
+  ProgrammedFeed programmed{};
 };
 
 // A spline move (G5, G5.1, G5.2, G6.2): the curve linearised within the
@@ -49,6 +60,7 @@ struct Spline {
   Vec3 to;
   std::vector<Vec3> points;
   std::optional<double> f;
+  ProgrammedFeed programmed{};
 };
 
 struct Probe {

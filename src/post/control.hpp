@@ -21,6 +21,8 @@ struct Control {
   bool full_circle_halves = false;   // a full circle as two half circles (end = start is ambiguous)
   bool rotary_axes = true;           // A B C words
   bool probe = true;                 // G38.2
+  bool inverse_time = true;          // G93
+  bool per_revolution = true;        // G95
   bool semicolon_comments = false;   // ";text" instead of "(text)"
   std::string block_end;             // written after every block ("#" for romi)
   int line_number_width = 0;         // zero-padded N words ("N0010")

@@ -28,6 +28,7 @@ Control grbl_control() {
   c.name = "grbl";
   c.decimals = 3;
   c.canned_cycles = false;
+  c.per_revolution = false;  // Grbl 1.1 has G93 and G94, not G95
   c.rotary_axes = false;
   c.tool_change_m6 = false;
   c.header = header;

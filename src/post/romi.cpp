@@ -41,6 +41,8 @@ Control romi_control() {
   c.full_circle_halves = true;  // spec/romi.md: only the C360 form is a full circle
   c.rotary_axes = false;
   c.probe = false;
+  c.inverse_time = false;  // spec/romi.md has no G93 or G95
+  c.per_revolution = false;
   c.semicolon_comments = true;
   c.block_end = "#";
   c.line_number_width = 4;

@@ -77,12 +77,11 @@ void Writer::on(const canon::Op& op) {
         if constexpr (std::is_same_v<T, canon::Traverse>) {
           traverse(k, op);
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
-          feed(k.to, k.f, k.abc, op);
+          feed(k.to, k.f, k.abc, op, k.programmed);
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           arc(k, op);
         } else if constexpr (std::is_same_v<T, canon::Spline>) {
-          for (const Vec3& p : k.points)
-            feed(p, k.f, canon::Abc{}, op);
+          spline(k, op);
         } else if constexpr (std::is_same_v<T, canon::Probe>) {
           if (!control_.probe) return unsupported(op, "a probing move");
           cancel_cycle();
@@ -140,21 +139,6 @@ std::string Writer::motion_word(const char* g) {
   return g;
 }
 
-std::string Writer::feed_word(std::optional<double> f, const canon::Op& op) {
-  if (!f) {
-    // Inverse-time and per-revolution feeds come as moves without a rate.
-    if (!feed_) unsupported(op, "a feed move without a feed rate in mm/min");
-    return {};
-  }
-  last_feed_ = f;
-  const double r = out_.rounded(*f);
-  if (feed_ && *feed_ == r) return {};
-  feed_ = r;
-  std::string w;
-  out_.append_word(w, 'F', *f);
-  return w;
-}
-
 void Writer::cancel_cycle() {
   if (motion_ != g81_ && motion_ != g83_) return;
   out_.block(code('G', 80));
@@ -169,26 +153,32 @@ void Writer::traverse(const canon::Traverse& t, const canon::Op& op) {
 }
 
 void Writer::feed(const Vec3& to, std::optional<double> f, const canon::Abc& abc,
-                  const canon::Op& op) {
-  straight(g1_, to, f, abc, op);
+                  const canon::Op& op, const canon::ProgrammedFeed& programmed) {
+  straight(g1_, to, f, abc, op, programmed);
 }
 
 // The hot path (a generator's program is mostly these): one reused buffer.
 void Writer::straight(const std::string& g, const Vec3& to, std::optional<double> f,
-                      const canon::Abc& abc, const canon::Op& op) {
+                      const canon::Abc& abc, const canon::Op& op,
+                      const canon::ProgrammedFeed& programmed) {
   cancel_cycle();
+  const bool rotary = moves_rotary(abc);
+  const double length = pos_known_ ? core::norm(to - pos_) : 0.0;
   axes_buf_.clear();
   append_axis_words(axes_buf_, to, abc, op);
   pos_ = to;
   pos_known_ = true;
   if (axes_buf_.empty()) return;
   words_.clear();
+  RateWords rate;
+  if (&g == &g1_) rate = rate_words({f, programmed, length, rotary}, op);
+  append(words_, rate.mode);
   if (motion_ != g) {
     motion_ = g;
-    words_ = g;
+    append(words_, g);
   }
   append(words_, axes_buf_);
-  if (&g == &g1_) append(words_, feed_word(f, op));
+  append(words_, rate.f);
   out_.block(words_);
 }
 

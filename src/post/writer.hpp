@@ -27,12 +27,22 @@ class Writer final : public canon::Sink {
   void end();
   void traverse(const canon::Traverse& t, const canon::Op& op);
   void feed(const core::Vec3& to, std::optional<double> f, const canon::Abc& abc,
-            const canon::Op& op);
+            const canon::Op& op, const canon::ProgrammedFeed& programmed = {});
   void straight(const std::string& g, const core::Vec3& to, std::optional<double> f,
-                const canon::Abc& abc, const canon::Op& op);
+                const canon::Abc& abc, const canon::Op& op,
+                const canon::ProgrammedFeed& programmed = {});
+  void spline(const canon::Spline& s, const canon::Op& op);
   void arc(const canon::Arc& a, const canon::Op& op);
+
+  // The feed-mode word (G93/G94/G95, when it changes; it leads the block)
+  // and the F word (when it must be written).
+  struct RateWords {
+    std::string mode;
+    std::string f;
+  };
+
   void arc_block(const canon::Arc& a, const core::Vec3& to, bool ccw, int turns, int plane,
-                 std::string& feed);
+                 RateWords& rate);
   void hole(const canon::Hole& h, const canon::Op& op);
   void cycle_hole(const canon::Hole& h);
   void expanded_hole(const canon::Hole& h);
@@ -45,7 +55,23 @@ class Writer final : public canon::Sink {
   void append_axis_words(std::string& words, const core::Vec3& to, const canon::Abc& abc,
                          const canon::Op& op);
   std::string motion_word(const char* g);
+
+  // A move's feed as the canon gives it, with what the post needs to write it
+  // another way (the move's length, whether a rotary axis moves).
+  struct MoveRate {
+    std::optional<double> f;
+    canon::ProgrammedFeed programmed;
+    double length = 0.0;
+    bool rotary = false;
+  };
+
+  RateWords rate_words(const MoveRate& m, const canon::Op& op);
+  RateWords per_minute(std::optional<double> f, const canon::Op& op);
+  RateWords inverse_time(const MoveRate& m, const canon::Op& op);
+  RateWords per_revolution(const MoveRate& m, const canon::Op& op);
+  std::string feed_mode_word(int mode);
   std::string feed_word(std::optional<double> f, const canon::Op& op);
+  bool moves_rotary(const canon::Abc& abc) const;
   std::string code(char letter, int n) const;  // "G1" or "G01"
   void cancel_cycle();
   void unsupported(const canon::Op& op, const std::string& what);
@@ -63,6 +89,7 @@ class Writer final : public canon::Sink {
   bool pos_known_ = false;
   std::optional<double> feed_;       // F as written
   std::optional<double> last_feed_;  // the last feed rate of any move (for bare holes)
+  int feed_mode_ = 94;               // G93, G94 or G95 as written
   int plane_ = 17;
   std::optional<long> speed_;
   canon::SpindleDir dir_ = canon::SpindleDir::Off;

@@ -3,6 +3,7 @@
 // extra helix turns as P or as full circles.
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -47,12 +48,19 @@ void Writer::arc(const canon::Arc& a, const canon::Op& op) {
     out_.block(code('G', plane));
     plane_ = plane;
   }
-  std::string f = feed_word(a.f, op);
+  const Vec3 start = pos_;
+  const double sweep = std::abs(core::arc_sweep(core::in_plane(start, p), core::in_plane(a.to, p),
+                                                core::in_plane(a.center, p), ccw, turns));
+  const double radius = core::norm(core::in_plane(start, p) - core::in_plane(a.center, p));
+  const double length = core::helix_length(radius, sweep, a.to[axial] - start[axial]);
+  const bool rotary = moves_rotary(a.abc);
+  RateWords f = rate_words({a.f, a.programmed, length, rotary}, op);
+  if (feed_mode_ == 93 && turns > 1 && !control_.turns_word) {
+    // G93's F is the time of one block; a split arc would need one of its own.
+    return unsupported(op, "an inverse-time (G93) arc of a rotary axis split into blocks");
+  }
   if (turns > 1 && !control_.turns_word) {
     // A helix of several turns as full circles, then the last part.
-    const Vec3 start = pos_;
-    const double sweep = std::abs(core::arc_sweep(core::in_plane(start, p), core::in_plane(a.to, p),
-                                                  core::in_plane(a.center, p), ccw, turns));
     const double per_turn = (a.to[axial] - start[axial]) * 2.0 * std::numbers::pi / sweep;
     for (int k = 1; k < turns; ++k) {
       Vec3 to = start;
@@ -66,7 +74,7 @@ void Writer::arc(const canon::Arc& a, const canon::Op& op) {
 }
 
 void Writer::arc_block(const canon::Arc& a, const Vec3& to, bool ccw, int turns, int plane,
-                       std::string& feed) {
+                       RateWords& rate) {
   static constexpr char kCentre[] = {'I', 'J', 'K'};
   const core::PlaneAxes ax = core::axes_of(core_plane(plane));
   if (turns == 1 && control_.full_circle_halves &&
@@ -75,11 +83,13 @@ void Writer::arc_block(const canon::Arc& a, const Vec3& to, bool ccw, int turns,
     // Through the point opposite the start, half the helix's drop there.
     Vec3 mid = a.center * 2.0 - pos_;
     mid[ax.axial] = (pos_[ax.axial] + to[ax.axial]) / 2;
-    arc_block(a, mid, ccw, 1, plane, feed);
-    arc_block(a, to, ccw, 1, plane, feed);
+    arc_block(a, mid, ccw, 1, plane, rate);
+    arc_block(a, to, ccw, 1, plane, rate);
     return;
   }
-  std::string w = motion_word(code('G', ccw ? 3 : 2).c_str());
+  std::string w = std::move(rate.mode);  // the feed mode leads the first block
+  rate.mode.clear();
+  append(w, motion_word(code('G', ccw ? 3 : 2).c_str()));
   // The start as the reader has it, so that its centre is the rounded centre.
   const Vec3 start{axes_[0].value_or(pos_.x), axes_[1].value_or(pos_.y), axes_[2].value_or(pos_.z)};
   std::string axes = axis_words(to, a.abc, canon::Op{});
@@ -96,8 +106,8 @@ void Writer::arc_block(const canon::Arc& a, const Vec3& to, bool ccw, int turns,
     out_.append_word(w, kCentre[i], v);
   }
   if (turns > 1) append(w, fmt::format("P{}", turns));
-  append(w, feed);
-  feed.clear();
+  append(w, rate.f);
+  rate.f.clear();
   pos_ = to;
   out_.block(w);
 }

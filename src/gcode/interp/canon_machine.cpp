@@ -33,6 +33,16 @@ std::optional<double> CanonMachine::feed_rate() const {
   return feed_;
 }
 
+canon::ProgrammedFeed CanonMachine::programmed_feed() const {
+  using Mode = canon::ProgrammedFeed::Mode;
+  switch (feed_mode_) {
+  case FeedMode::InverseTime: return {Mode::InverseTime, feed_};
+  case FeedMode::UnitsPerRev: return {Mode::PerRevolution, feed_};
+  case FeedMode::UnitsPerMinute: break;
+  }
+  return {Mode::PerMinute, feed_};
+}
+
 void CanonMachine::emit(canon::OpKind kind) {
   sink_.on(canon::Op{std::move(kind), src_, origin_});
 }
@@ -48,7 +58,7 @@ void CanonMachine::feed_axes(const Axes& to) {
   state_->pos = to;
   last_ = to_absolute(xyz(to));
   moved_ = true;
-  emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to)});
+  emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to), programmed_feed()});
 }
 
 void CanonMachine::probe_axes(const Axes& to) {
@@ -71,7 +81,8 @@ void CanonMachine::arc_axes(const Axes& to, const Vec3& center, int turn) {
   state_->pos = to;
   last_ = to_absolute(xyz(to));
   moved_ = true;
-  emit(canon::Arc{to_absolute(xyz(to)), to_absolute(c), normal, turn, feed_rate(), abc_of(to)});
+  emit(canon::Arc{to_absolute(xyz(to)), to_absolute(c), normal, turn, feed_rate(), abc_of(to),
+                  programmed_feed()});
 }
 
 void CanonMachine::spline(const std::vector<Vec3>& points) {
@@ -82,6 +93,7 @@ void CanonMachine::spline(const std::vector<Vec3>& points) {
     op.points.push_back(to_absolute(p));
   op.to = op.points.back();
   op.f = feed_rate();
+  op.programmed = programmed_feed();
   set_xyz(state_->pos, points.back());
   last_ = op.to;
   moved_ = true;

@@ -62,6 +62,7 @@ class CanonMachine final : public MotionTarget {
 
  private:
   std::optional<double> feed_rate() const;
+  canon::ProgrammedFeed programmed_feed() const;
 
   canon::Abc abc_of(const Axes& a) const { return {a[3], a[4], a[5]}; }
 
