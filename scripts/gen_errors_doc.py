@@ -415,8 +415,9 @@ EXPLAIN = {
         "Fix the line for Grbl: the number's table in docs/grbl.md says what Grbl wants."),
     "W_GRBL": (
         "Something in a Grbl file that the firmware takes as a command outside the program: a "
-        "real-time character (`?` `~` `!` Ctrl-X, even inside a comment) or a `$C`, `$SLP`, "
-        "`$RST` line. usina leaves it out of the trace.",
+        "real-time character (`?` `~` `!` Ctrl-X, even inside a comment) or a `$C`, `$SLP` "
+        "line, which usina leaves out of the trace; or a `$RST=` line, which usina applies (a "
+        "soft reset: Grbl's power-on modes, and zero offsets or default settings).",
         "Take the character out of the comment, or the line out of the file, unless it is "
         "meant for the machine."),
     "W_INTEGER_COORDINATE": (
@@ -446,6 +447,14 @@ EXPLAIN = {
         "and the rule that decided (`%` and `O` numbers: fanuc; `$` lines: grbl; `#` block "
         "ends: romi; `o<name>` or `o123 sub`: rs274ngc; otherwise rs274ngc).",
         "Nothing; give `--dialect NAME` to choose yourself."),
+    "E_GRBL_ALARM": (
+        "A move of a Grbl file ends beyond the machine's travel while soft limits are on "
+        "(`$20=1`): Grbl 1.1 raises `ALARM:2` (Soft limit), stops, and refuses every line "
+        "until a reset and `$X` or `$H`. The travel is machine space from -`$130`..`$132` to 0; "
+        "the machine position is the programmed one plus the work offset, G92 and G43.1. usina "
+        "reports it and ends the run at that line, whatever `after_error` says.",
+        "Move the work offset (G10 L2/L20, G92) or the program so every move stays in the "
+        "travel, or correct `$130`-`$132`."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -103,4 +103,5 @@
   X(MacroAlarm, E_MACRO_ALARM)                     \
   X(MacroFormat, E_MACRO_FORMAT)                   \
   X(BadLoop, E_BAD_LOOP)                           \
-  X(DialectGuess, N_DIALECT_GUESS)
+  X(DialectGuess, N_DIALECT_GUESS)                 \
+  X(GrblAlarm, E_GRBL_ALARM)

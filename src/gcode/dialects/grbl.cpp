@@ -100,6 +100,14 @@ const Dialect& grbl_dialect() {
            "continue: report the error and read the next line, as the firmware does; stop: end "
            "at the first error, as a sender that stops streaming"},
           {"grbl_m7", {"off", "on"}, "M7 (mist) exists only in Grbl builds with ENABLE_M7"},
+          {"line_buffer",
+           {"80", "256"},
+           "LINE_BUFFER_SIZE of the build (config.h): a line holds one character less "
+           "(error:11); above 80 a $Nx= start-up line can be too long for the EEPROM (error:14)"},
+          {"max_step_rate",
+           {"off", "30000"},
+           "MAX_STEP_RATE_HZ of the build (config.h; off by default): with 30000, a $10x/$11x "
+           "setting whose steps/mm x max rate passes 30 kHz is error:12"},
       },
       &make};
   return d;

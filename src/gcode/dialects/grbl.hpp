@@ -7,11 +7,13 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/diagnostic.hpp"
+#include "core/vec3.hpp"
 #include "gcode/dialect.hpp"
 
 namespace usina::gcode::grbl {
@@ -62,13 +64,13 @@ std::optional<Failure> read_words(std::string_view text, const std::vector<std::
 
 // What the checks need to know between blocks (a subset of Grbl's gc_state).
 struct Modal {
-  int motion = 0;             // tenths: 0, 10, 20, 30, 382..385, 800
-  bool motion_given = false;  // false: still Grbl's start-up G0 (the interpreter starts in G80)
+  int motion = 0;  // tenths: 0, 10, 20, 30, 382..385, 800; Grbl starts in G0
   int plane = 170;
   bool incremental = false;
   bool inch = false;
   bool inverse_time = false;
-  double feed_mm = 0.0;  // 0: undefined (Grbl's F0)
+  double feed_mm = 0.0;         // 0: undefined (Grbl's F0)
+  double tool_length_mm = 0.0;  // G43.1 Z, added to Z's machine position (G49: 0)
 };
 
 // What a checked block asks of the interpreter's copy of the line.
@@ -92,12 +94,46 @@ struct Settings {
   double get(int n) const;
 };
 
+// Grbl's machine travel (system_check_travel_limits in [sys]): machine space
+// is negative from the home at 0, each axis from -$13x to 0 (the default
+// build: no HOMING_FORCE_SET_ORIGIN, so $23 does not move it).
+struct Travel {
+  bool soft_limits = false;      // $20
+  core::Vec3 max;                // $130 $131 $132, mm
+  double arc_tolerance = 0.002;  // $12: Grbl checks each segment's end
+
+  static Travel of(const Settings& s);
+  // The first axis of `machine` beyond the travel (0 1 2), or -1.
+  int beyond(const core::Vec3& machine) const;
+  bool operator==(const Travel&) const = default;
+};
+
+// Where a move's machine position comes from, line by line: what the
+// runner's soft-limit check needs (grbl_runner.cpp).
+struct MachineFacts {
+  struct From {
+    Travel travel;
+    double tool_length_mm = 0.0;
+    bool operator==(const From&) const = default;
+  };
+
+  std::map<std::uint32_t, From> changes;  // line → in force from that line on
+  std::set<std::uint32_t> jogs;           // $J= lines: error:15, not alarm 2
+  std::set<std::uint32_t> homing;         // $H lines: not checked (Grbl's homing is not)
+
+  void record(std::uint32_t line, const From& now);
+  const From* at(std::uint32_t line) const;
+};
+
 // A `$` line. `interp_line` receives what the interpreter runs in its place
 // (a jog's or a homing's move), empty when nothing; `notes` warnings.
 struct SystemResult {
   std::optional<Failure> failure;
   std::string interp_line;
   bool restore_modes = false;  // the move changed modes Grbl keeps: put them back
+  bool reset = false;          // a soft reset follows ($RST=): the modal state is Grbl's power-on
+  bool homing = false;         // $H
+  bool jog = false;            // $J= with a move
   std::vector<std::string> warnings;
 };
 

@@ -246,10 +246,11 @@ std::optional<Failure> step3(const BlockCodes& b, std::uint32_t col0, Modal& sta
       (!s.has('Z') || s.has('X') || s.has('Y'))) {
     return Failure{37, s.code_col(), "G43.1 takes a Z word only"};
   }
-  if (b.has(kMotion)) {
-    s.next.motion = b.code(kMotion);
-    s.next.motion_given = true;
+  if (b.has(kToolLength)) {
+    s.next.tool_length_mm =
+        b.code(kToolLength) == 431 ? s.get('Z') * (s.next.inch ? 25.4 : 1.0) : 0.0;
   }
+  if (b.has(kMotion)) s.next.motion = b.code(kMotion);
   if (auto f = non_modal(s)) return f;
   if (auto f = motion(s)) return f;
   for (char l : std::string_view("NFSTXYZ"))

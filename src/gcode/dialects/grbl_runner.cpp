@@ -5,10 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 
 #include <fmt/format.h>
+
+#include "core/arc.hpp"
 
 namespace usina::gcode::grbl {
 namespace {
@@ -31,7 +34,7 @@ struct Restore {
 class Preparer {
  public:
   Preparer(const Dialect& d, const OptionValues& o, std::uint32_t file)
-      : d_(d), options_(o), file_(file) {}
+      : d_(d), options_(o), file_(file), max_length_(line_length(o)) {}
 
   Prepared out;
 
@@ -53,13 +56,16 @@ class Preparer {
            "reset), taken out of the stream wherever they are; usina drops them");
     }
     if (s.text.empty() || s.text == "%" || refused) return blank();
-    if (s.text.size() > kMaxLineLength) {
+    if (s.text.size() > max_length_) {
       return fail({11, 1,
                    fmt::format("{} characters after blanks and comments are removed; Grbl "
                                "holds {}",
-                               s.text.size(), kMaxLineLength)});
+                               s.text.size(), max_length_)});
     }
-    if (s.text[0] == '$') return system(s);
+    if (s.text[0] == '$') {
+      system(n, s);
+      return record(n);
+    }
     std::vector<Word> words;
     if (auto f = read_words(s.text, s.cols, words)) return fail(*f);
     const Modal before = state_;
@@ -68,6 +74,7 @@ class Preparer {
     out.text += s.blanked + appended(acc, before);
     out.text += '\n';
     if (acc.program_end) ended_ = true;
+    record(n);
   }
 
   bool failed() const { return failed_; }
@@ -91,20 +98,39 @@ class Preparer {
     out.diags.push_back({code, core::Severity::Warning, at, std::move(message)});
   }
 
-  void system(const StrippedLine& s) {
+  // What the soft-limit check needs from this line on.
+  void record(std::uint32_t n) {
+    out.facts.record(n, {Travel::of(settings_), state_.tool_length_mm});
+  }
+
+  void system(std::uint32_t n, const StrippedLine& s) {
     SystemResult r = system_command(d_, options_, s.text, s.cols, state_, settings_);
     for (std::string& w : r.warnings)
       warn(core::Code::GrblWarning, s.cols.front(), std::move(w));
     if (r.failure) return fail(*r.failure);
     if (r.restore_modes && !restore_.modes && !restore_.motion) restore_.before = state_;
     if (r.restore_modes) restore_.modes = restore_.motion = true;
+    if (r.reset) {
+      // Grbl's G0 goes on the next line moving with the modal motion: a G0
+      // of its own is a move to where the tool is for the interpreter.
+      state_ = Modal{};
+      restore_ = Restore{};
+      restore_.motion = true;
+    }
+    if (r.jog) out.facts.jogs.insert(n);
+    if (r.homing) out.facts.homing.insert(n);
     out.text += r.interp_line;
     out.text += '\n';
   }
 
+  // Grbl's LINE_BUFFER_SIZE (config.h) less its terminator.
+  static std::size_t line_length(const OptionValues& o) {
+    const auto it = o.find("line_buffer");
+    return it == o.end() ? kMaxLineLength : std::stoul(it->second) - 1;
+  }
+
   // The words the interpreter's copy of an accepted block needs besides
-  // Grbl's: the modes a jog changed, and Grbl's start-up G0 (the
-  // interpreter starts in G80).
+  // Grbl's: the modes a jog or `$H` changed.
   std::string appended(const Accepted& acc, const Modal& before) {
     std::string extra;
     const double per_unit = before.inch ? 25.4 : 1.0;
@@ -117,10 +143,7 @@ class Preparer {
       }
       restore_.modes = false;
     }
-    const Modal& m = restore_.motion ? restore_.before : before;
-    if (acc.uses_motion && (restore_.motion || !before.motion_given)) {
-      extra += " " + motion_name(m.motion_given ? m.motion : 0);
-    }
+    if (acc.uses_motion && restore_.motion) extra += " " + motion_name(restore_.before.motion);
     if (acc.uses_motion || acc.sets_motion) restore_.motion = false;
     return extra;
   }
@@ -128,6 +151,7 @@ class Preparer {
   const Dialect& d_;
   const OptionValues& options_;
   std::uint32_t file_;
+  std::size_t max_length_;
   core::SourceLoc loc_;
   Modal state_;
   Settings settings_;
@@ -138,11 +162,12 @@ class Preparer {
 };
 
 // Checks what Grbl checks from the position: the arc end on the circle
-// within Grbl's tolerance, a probe going somewhere; and passes the ops on
-// (`forward`) in the run whose lines are all accepted, so nothing is held.
+// within Grbl's tolerance, a probe going somewhere, the soft limits; and
+// passes the ops on (`forward`) in the run whose lines are all accepted, so
+// nothing is held.
 class CheckingSink final : public canon::Sink {
  public:
-  explicit CheckingSink(const core::Vec3& start) : pos_(start) {}
+  CheckingSink(const core::Vec3& start, const MachineFacts& facts) : pos_(start), facts_(facts) {}
 
   std::function<void(const canon::Op&)> forward;
   std::optional<core::Diagnostic> failure;
@@ -155,18 +180,46 @@ class CheckingSink final : public canon::Sink {
       if (known_ && core::norm(p->to - pos_) < 1e-9) {
         fail(op.src, 33, "the probe target is the current position");
       }
+      travel(p->to, op.src);
       known_ = false;  // the probe stops short of its target: the next start is not `to`
       return;
     }
-    if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) moved(t->to);
-    if (const auto* f = std::get_if<canon::Feed>(&op.kind)) moved(f->to);
-    if (const auto* s = std::get_if<canon::Spline>(&op.kind)) moved(s->to);
+    if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) moved(t->to, op.src);
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind)) moved(f->to, op.src);
+    if (const auto* s = std::get_if<canon::Spline>(&op.kind)) {
+      for (const core::Vec3& q : s->points)
+        travel(q, op.src);
+      moved(s->to, op.src);
+    }
   }
 
  private:
-  void moved(const core::Vec3& to) {
+  void moved(const core::Vec3& to, const core::SourceLoc& src) {
+    travel(to, src);
     pos_ = to;
     known_ = true;
+  }
+
+  // Grbl's soft limits (mc_line → limits_soft_check; a jog: jog.c) on the
+  // machine position of a move's end: the op's (work offsets and G92
+  // applied) plus the G43.1 tool length on Z. A jog beyond is refused
+  // (error:15); any other move is alarm 2, which stops the machine.
+  void travel(const core::Vec3& to, const core::SourceLoc& src) {
+    if (failure || facts_.homing.count(src.line)) return;
+    const MachineFacts::From* f = facts_.at(src.line);
+    if (f == nullptr || !f->travel.soft_limits) return;
+    const core::Vec3 machine = to + core::Vec3{0, 0, f->tool_length_mm};
+    const int a = f->travel.beyond(machine);
+    if (a < 0) return;
+    const std::string what = fmt::format(
+        "the machine position {}{:.4f} is outside the travel {:.3f} to 0 ($13{}={}, $20=1)",
+        "XYZ"[a], machine[a], -f->travel.max[a], a, f->travel.max[a]);
+    if (facts_.jogs.count(src.line)) return fail(src, 15, "the jog's target: " + what);
+    failure = core::Diagnostic{
+        core::Code::GrblAlarm, core::Severity::Error, src,
+        fmt::format("grbl ALARM:2 (Soft limit): {}; Grbl stops and locks out every line until "
+                    "a reset and $X or $H, so usina ends the run here",
+                    what)};
   }
 
   void check_arc(const canon::Arc& a, const core::SourceLoc& src) {
@@ -184,8 +237,24 @@ class CheckingSink final : public canon::Sink {
                          "allows 0.005 mm, or 0.1 % of the radius up to 0.5 mm)",
                          delta, r));
       }
+      arc_travel(a, src);
     }
-    moved(a.to);
+    moved(a.to, src);
+  }
+
+  // Grbl cuts an arc into segments within $12 and checks each end.
+  void arc_travel(const canon::Arc& a, const core::SourceLoc& src) {
+    const MachineFacts::From* f = facts_.at(src.line);
+    if (failure || f == nullptr || !f->travel.soft_limits) return;
+    const core::Plane plane = std::fabs(a.normal.z) > 0.5   ? core::Plane::XY
+                              : std::fabs(a.normal.y) > 0.5 ? core::Plane::ZX
+                                                            : core::Plane::YZ;
+    const double sweep =
+        core::arc_sweep(core::in_plane(pos_, plane), core::in_plane(a.to, plane),
+                        core::in_plane(a.center, plane), a.turn > 0, std::abs(a.turn));
+    for (const core::Vec3& q :
+         core::linearize_arc(pos_, a.to, a.center, plane, sweep, f->travel.arc_tolerance))
+      travel(q, src);
   }
 
   void fail(const core::SourceLoc& src, int number, std::string_view detail) {
@@ -194,6 +263,7 @@ class CheckingSink final : public canon::Sink {
   }
 
   core::Vec3 pos_;
+  const MachineFacts& facts_;
   bool known_ = true;
 };
 
@@ -232,7 +302,7 @@ struct Attempt {
   std::optional<core::Diagnostic>
       failure;  // the first line the interpreter or Grbl's geometry refused
 
-  explicit Attempt(const core::Vec3& start) : sink(start) {}
+  Attempt(const core::Vec3& start, const MachineFacts& facts) : sink(start, facts) {}
 };
 
 void run_attempt(RunContext& c, const std::vector<std::pair<int, double>>& params,
@@ -273,11 +343,12 @@ bool Runner::run(std::uint32_t file) {
   std::vector<core::Diagnostic> found;  // the interpreter's errors, one a rerun
   std::uint32_t cut_from = std::numeric_limits<std::uint32_t>::max();
   const bool stop = c_.dialect_options.at("after_error") == "stop";
+  c_.options.start_motion = 0;  // Grbl powers up in G0
   for (int rerun = 0;; ++rerun) {
     Prepared p = prepare(file, refused, cut_from);
     const std::uint32_t copy =
         c_.sources.add(core::SourceFile::from_string(source->name(), std::move(p.text)));
-    Attempt a(c_.options.start);
+    Attempt a(c_.options.start, p.facts);
     run_attempt(c_, params_, copy, a);
     if (a.failure) {
       to_file(a.failure->loc);
@@ -287,8 +358,9 @@ bool Runner::run(std::uint32_t file) {
       // mode or past the rerun limit the program is cut there instead. An
       // error with no line (or a loop that would not end) is reported with
       // this run's trace.
+      const bool alarm = a.failure->code == core::Code::GrblAlarm;
       if (line > 0 && rerun <= kMaxReruns + 1) {
-        if (stop || refused.count(line) || rerun >= kMaxReruns) {
+        if (stop || alarm || refused.count(line) || rerun >= kMaxReruns) {
           cut_from = line;
         } else {
           refused.insert(line);
@@ -314,7 +386,7 @@ bool Runner::run(std::uint32_t file) {
     }
     // The accepted copy once more, its ops streamed to the caller: checking
     // runs keep no ops, so memory stays constant whatever the program's length.
-    Attempt final_run(c_.options.start);
+    Attempt final_run(c_.options.start, p.facts);
     final_run.sink.forward = [&](const canon::Op& op) {
       canon::Op mapped = op;
       if (mapped.src.file == copy) to_file(mapped.src);

@@ -22,6 +22,7 @@ namespace grbl {
 struct Prepared {
   std::string text;                     // one line per line of the program
   std::vector<core::Diagnostic> diags;  // Grbl's errors and usina's warnings, in the program
+  MachineFacts facts;                   // for the soft-limit check of the moves
 };
 
 class Runner final : public ProgramRunner {

@@ -3,7 +3,9 @@
 // interpreter, anything else is error:3.
 #include <charconv>
 #include <cmath>
+#include <iterator>
 #include <set>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -26,15 +28,45 @@ double default_setting(int n) {
   case 0: return 10;
   case 12: return 0.002;
   case 27: return 1.0;
+  case 100:
+  case 101:
+  case 102: return 250.0;  // steps/mm
+  case 110:
+  case 111:
+  case 112: return 500.0;  // mm/min
+  case 130:
+  case 131:
+  case 132: return 200.0;  // mm
   default: return 0.0;
   }
+}
+
+// MAX_STEP_RATE_HZ (config.h; off in the default build): steps/mm × max
+// rate (mm/min) may not pass it × 60. Grbl checks the setting being written
+// against the other one's present value.
+std::optional<Failure> step_rate(int n, double v, std::uint32_t col, const Settings& settings,
+                                 const OptionValues& options) {
+  const auto it = options.find("max_step_rate");
+  if (it == options.end() || it->second == "off") return std::nullopt;
+  const double limit_hz = std::stod(it->second);
+  const bool steps = n >= 100 && n <= 102;
+  if (!steps && !(n >= 110 && n <= 112)) return std::nullopt;
+  const double other = settings.get(steps ? n + 10 : n - 10);
+  if (v * other <= limit_hz * 60.0) return std::nullopt;
+  const double spm = steps ? v : other;
+  const double rate = steps ? other : v;
+  return Failure{12, col,
+                 fmt::format("{} steps/mm at {} mm/min is {:.0f} steps/s, above the build's "
+                             "MAX_STEP_RATE_HZ {}",
+                             spm, rate, spm * rate / 60.0, limit_hz)};
 }
 
 std::string number_text(double v) {
   return fmt::format("{:.12f}", v);  // no exponent: the interpreter reads it back
 }
 
-std::optional<Failure> setting(std::string_view text, std::uint32_t col, Settings& settings) {
+std::optional<Failure> setting(std::string_view text, std::uint32_t col, Settings& settings,
+                               const OptionValues& options) {
   const std::size_t eq = text.find('=');
   int n = -1;
   const auto r = std::from_chars(text.data() + 1, text.data() + eq, n);
@@ -51,10 +83,14 @@ std::optional<Failure> setting(std::string_view text, std::uint32_t col, Setting
   const double v = words[0].value;
   if (v < 0) return Failure{4, col, fmt::format("${}={} must not be negative", n, v)};
   if (n == 0 && v < 3) return Failure{6, col, "$0 (step pulse) must be at least 3 microseconds"};
-  if (n == 20 && v != 0 && settings.get(22) == 0) {
+  if (auto f = step_rate(n, v, col, settings, options)) return f;
+  // Grbl reads the switches as whole numbers: $20=0.5 is off.
+  const double whole = std::trunc(v);
+  if (n == 20 && whole != 0 && settings.get(22) == 0) {
     return Failure{10, col, "$20=1 (soft limits) needs homing enabled ($22=1) first"};
   }
-  settings.values[n] = v;
+  settings.values[n] = (n == 20 || n == 22 || n == 23) ? whole : v;
+  if (n == 22 && whole == 0) settings.values[20] = 0;  // Grbl turns soft limits off with homing
   return std::nullopt;
 }
 
@@ -64,13 +100,21 @@ SystemResult homing(const Modal& state, std::uint32_t col, const Settings& setti
     r.failure = Failure{5, col, "$H with homing disabled ($22=0)"};
     return r;
   }
-  // Grbl's default homing (positive direction, no HOMING_FORCE_SET_ORIGIN)
-  // leaves the machine at minus the pull-off on each axis. The path there is
+  // Grbl's homing (limits.c, no HOMING_FORCE_SET_ORIGIN) leaves each axis
+  // at minus the pull-off, or, on an axis whose $23 bit homes it to the
+  // negative end, at minus its travel plus the pull-off. The path there is
   // unknown: a rapid in machine coordinates stands for it.
-  const double p = settings.get(27) / (state.inch ? 25.4 : 1.0);
-  const std::string v = number_text(-p);
-  r.interp_line = fmt::format("G53 G0 X{0} Y{0} Z{0}", v);
+  const double unit = state.inch ? 25.4 : 1.0;
+  const int negative = static_cast<int>(settings.get(23));
+  const double pull_off = settings.get(27);
+  std::string line = "G53 G0";
+  for (int a = 0; a < 3; ++a) {
+    const double mm = (negative >> a) & 1 ? pull_off - settings.get(130 + a) : -pull_off;
+    line += fmt::format(" {}{}", "XYZ"[a], number_text(mm / unit));
+  }
+  r.interp_line = line;
   r.restore_modes = true;
+  r.homing = true;
   return r;
 }
 
@@ -126,7 +170,54 @@ SystemResult jog(std::string_view text, const std::vector<std::uint32_t>& cols,
   }
   r.interp_line = line;
   r.restore_modes = true;
+  r.jog = true;
   return r;
+}
+
+// $RST=$ (settings), $RST=# (G54-G59, G28, G30 zeroed), $RST=* (both);
+// each ends in a soft reset, which puts the parser in its power-on state
+// (gc_init: G92 and G43.1 cleared, F undefined) and keeps the position.
+SystemResult restore(std::string_view what, std::uint32_t col, Settings& settings) {
+  SystemResult r;
+  if (what != "$" && what != "#" && what != "*") {
+    r.failure = Failure{3, col, "$RST= takes $, # or *"};
+    return r;
+  }
+  if (what != "#") settings = Settings{};
+  if (what != "$") {
+    // The interpreter's parameters: G28 5161, G30 5181, G54..G59 5221 + 20 n.
+    for (int base : {5161, 5181, 5221, 5241, 5261, 5281, 5301, 5321}) {
+      for (int a = 0; a < 3; ++a)
+        r.interp_line += fmt::format("#{}=0 ", base + a);
+    }
+  }
+  r.interp_line += "G54 G17 G21 G90 G94 G49 G92.1 M5 M9";  // G0: grbl_runner.cpp
+  r.reset = true;
+  r.warnings.push_back(
+      fmt::format("$RST={} ends in a soft reset: the modes are Grbl's power-on ones, F is "
+                  "undefined{}",
+                  what, what == "$" ? ", the settings Grbl's defaults" : ", the offsets zero"));
+  return r;
+}
+
+// A start-up block ($Nx=): stored, not run. Grbl checks its length against
+// the EEPROM line (80 bytes with the terminator) before the block itself;
+// with the default 80-byte line buffer a line cannot be that long.
+std::optional<Failure> startup_line(const Dialect& d, const OptionValues& options,
+                                    std::string_view text, const std::vector<std::uint32_t>& cols,
+                                    const Modal& state) {
+  constexpr std::size_t kEepromLine = 80;
+  if (text.size() + 1 > kEepromLine) {
+    return Failure{14, cols.front(),
+                   fmt::format("a start-up line of {} characters; Grbl stores {}", text.size(),
+                               kEepromLine - 1)};
+  }
+  std::vector<Word> words;
+  const std::vector<std::uint32_t> body_cols(cols.begin() + 4, cols.end());
+  if (auto f = read_words(text.substr(4), body_cols, words)) return f;
+  Modal copy = state;
+  Accepted ignored;
+  return check_block(d, options, words, copy, ignored);
 }
 
 bool is_report(std::string_view t) {
@@ -140,35 +231,56 @@ double Settings::get(int n) const {
   return it == values.end() ? default_setting(n) : it->second;
 }
 
+Travel Travel::of(const Settings& s) {
+  Travel t;
+  t.soft_limits = s.get(20) != 0;
+  t.max = {s.get(130), s.get(131), s.get(132)};
+  t.arc_tolerance = s.get(12);
+  return t;
+}
+
+int Travel::beyond(const core::Vec3& machine) const {
+  constexpr double kRoundOff = 1e-6;  // mm: the interpreter's sums, not Grbl's floats
+  for (int a = 0; a < 3; ++a) {
+    if (machine[a] > kRoundOff || machine[a] < -max[a] - kRoundOff) return a;
+  }
+  return -1;
+}
+
+void MachineFacts::record(std::uint32_t line, const From& now) {
+  const From* before = at(line);
+  if (before == nullptr || !(*before == now)) changes[line] = now;
+}
+
+const MachineFacts::From* MachineFacts::at(std::uint32_t line) const {
+  auto it = changes.upper_bound(line);
+  return it == changes.begin() ? nullptr : &std::prev(it)->second;
+}
+
 SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
                             const std::vector<std::uint32_t>& cols, const Modal& state,
                             Settings& settings) {
   SystemResult r;
   const std::uint32_t col = cols.front();
   if (is_report(text)) return r;
-  if (text == "$C" || text == "$SLP" || text == "$RST=$" || text == "$RST=#" || text == "$RST=*") {
+  if (text.substr(0, 5) == "$RST=") return restore(text.substr(5), col, settings);
+  if (text == "$C" || text == "$SLP") {
     r.warnings.push_back(
         fmt::format("{} changes the machine, not the program: usina ignores it", text));
     return r;
   }
   if (text == "$H") return homing(state, col, settings);
   if (text.substr(0, 3) == "$J=") return jog(text, cols, state);
-  if (text.substr(0, 3) == "$I=") return r;  // build info text: stored by Grbl, nothing to run
+  // Build info text: stored by Grbl (1.1h checks no length here, only on
+  // $Nx=), nothing to run.
+  if (text.substr(0, 3) == "$I=") return r;
   if (text.size() >= 4 && text[1] == 'N' && (text[2] == '0' || text[2] == '1') && text[3] == '=') {
-    // A start-up block: checked as a block, run only at the next reset.
-    std::vector<Word> words;
-    const std::vector<std::uint32_t> body_cols(cols.begin() + 4, cols.end());
-    r.failure = read_words(text.substr(4), body_cols, words);
-    if (!r.failure) {
-      Modal copy = state;
-      Accepted ignored;
-      r.failure = check_block(d, options, words, copy, ignored);
-    }
+    r.failure = startup_line(d, options, text, cols, state);
     return r;
   }
   if (text.size() >= 2 && text[1] >= '0' && text[1] <= '9' &&
       text.find('=') != std::string_view::npos) {
-    r.failure = setting(text, col, settings);
+    r.failure = setting(text, col, settings, options);
     return r;
   }
   if (text.substr(0, 2) == "$J") {

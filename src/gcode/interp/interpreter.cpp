@@ -20,6 +20,7 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
   // Programs start in mm whatever the machine's units, as LinuxCNC's
   // stand-alone interpreter does (the conformance traces depend on it).
   state_.units = core::LengthUnit::Mm;
+  state_.motion = options_.start_motion;
   set_xyz(state_.pos, options_.start);
 }
 

@@ -40,6 +40,9 @@ struct InterpOptions {
   ToolTable tools;
   std::string offset_file;  // fanuc: the H and D offset registers (docs/fanuc.md)
   core::Vec3 start{};       // where the tool is when the program starts (usina draw --start)
+  // The motion mode at the start, in tenths: LinuxCNC's G80; a controller
+  // that powers up in another (Grbl: G0) sets it.
+  GCode start_motion = 800;
 };
 
 struct BlockWords;

@@ -1,0 +1,183 @@
+// The grbl dialect's machine: Grbl's power-on G0 (an interpreter start
+// option, not a patch of the text), soft limits (alarm 2, machine position =
+// program + offsets + G43.1), homing with $23, and $RST= as Grbl's soft reset.
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "canon/toolpath.hpp"
+#include "core/source.hpp"
+#include "gcode/dialect.hpp"
+#include "gcode/interp/interpreter.hpp"
+
+namespace usina::gcode {
+namespace {
+
+struct Run {
+  core::SourceManager sources;
+  core::DiagnosticList diags;
+  canon::Toolpath path;
+  bool ok = false;
+
+  std::vector<const core::Diagnostic*> with(core::Code c) const {
+    std::vector<const core::Diagnostic*> out;
+    for (const core::Diagnostic& d : diags.all())
+      if (d.code == c) out.push_back(&d);
+    return out;
+  }
+
+  std::vector<std::pair<std::string, core::Vec3>> moves() const {
+    std::vector<std::pair<std::string, core::Vec3>> out;
+    for (const canon::Op& op : path.ops()) {
+      if (!canon::is_motion(op.kind)) continue;
+      core::Vec3 to;
+      std::visit(
+          [&](const auto& o) {
+            if constexpr (requires { o.to; }) to = o.to;
+          },
+          op.kind);
+      out.emplace_back(canon::op_name(op.kind), to);
+    }
+    return out;
+  }
+};
+
+std::unique_ptr<Run> run_grbl(const std::string& text, const std::vector<std::string>& opts = {}) {
+  auto r = std::make_unique<Run>();
+  const std::uint32_t id = r->sources.add(core::SourceFile::from_string("t.nc", text));
+  const Dialect* d = find_dialect("grbl");
+  EXPECT_NE(d, nullptr);
+  OptionValues values;
+  EXPECT_FALSE(resolve_options(*d, opts, values).has_value());
+  auto runner = d->make_runner(RunContext{r->sources, {}, std::move(values), r->path, r->diags});
+  r->ok = runner->run(id);
+  return r;
+}
+
+void expect_at(const core::Vec3& got, const core::Vec3& want) {
+  EXPECT_NEAR(got.x, want.x, 1e-6);
+  EXPECT_NEAR(got.y, want.y, 1e-6);
+  EXPECT_NEAR(got.z, want.z, 1e-6);
+}
+
+const std::string kSoftLimits = "$22=1\n$20=1\n";
+
+TEST(InterpStartMotion, IsAnOption) {
+  // A general start option: G80 by default, anything a controller powers up in.
+  for (const auto& [mode, kind] : {std::pair<GCode, const char*>{0, "traverse"}, {10, "feed"}}) {
+    core::SourceManager sources;
+    core::DiagnosticList diags;
+    canon::Toolpath path;
+    InterpOptions o;
+    o.start_motion = mode;
+    Interpreter interp(sources, o, path, diags);
+    EXPECT_TRUE(interp.run(sources.add(core::SourceFile::from_string("t.ngc", "F100 X5\nM2\n"))));
+    ASSERT_FALSE(path.ops().empty());
+    EXPECT_EQ(canon::op_name(path.ops().front().kind), std::string(kind));
+  }
+  core::SourceManager sources;
+  core::DiagnosticList diags;
+  canon::Toolpath path;
+  Interpreter interp(sources, InterpOptions{}, path, diags);
+  EXPECT_FALSE(interp.run(sources.add(core::SourceFile::from_string("t.ngc", "X5\nM2\n"))));
+}
+
+TEST(GrblMachine, PowersUpInG0WithoutTouchingTheText) {
+  auto r = run_grbl("G43.1 Z1\nX10 Y5\nG53 Z-1\n");
+  EXPECT_TRUE(r->ok);
+  const auto m = r->moves();
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].first, "traverse");
+  expect_at(m[0].second, {10, 5, -1});  // the tool tip: 1 mm below machine Z0
+}
+
+TEST(GrblMachine, SoftLimitIsAlarm2AndEndsTheRun) {
+  for (const char* mode : {"after_error=continue", "after_error=stop"}) {
+    auto r = run_grbl(kSoftLimits + "G0 X-5\nG0 X1\nG0 X-10\nG1 X\n", {mode});
+    EXPECT_FALSE(r->ok) << mode;
+    const auto alarms = r->with(core::Code::GrblAlarm);
+    ASSERT_EQ(alarms.size(), 1u) << mode;
+    EXPECT_EQ(alarms[0]->loc.line, 4u);
+    EXPECT_NE(alarms[0]->message.find("grbl ALARM:2 (Soft limit)"), std::string::npos);
+    EXPECT_TRUE(r->with(core::Code::GrblError).empty()) << mode;  // line 6 is never read
+    ASSERT_EQ(r->moves().size(), 1u) << mode;                     // the move before only
+    expect_at(r->moves()[0].second, {-5, 0, 0});
+  }
+}
+
+TEST(GrblMachine, SoftLimitsUseTheMachinePosition) {
+  // Work offsets, G92 and G43.1 move the machine position; G53 is machine.
+  auto fine = run_grbl(kSoftLimits +
+                       "G10 L2 P1 X-100 Y-100 Z-50\nG0 X50 Y50 Z0\nG92 X0\nG0 X-100\nG43.1 Z10\nG0 "
+                       "Z-10\nG53 G0 X-200 Y-200 Z-200\n");
+  EXPECT_TRUE(fine->ok);
+  EXPECT_EQ(fine->moves().size(), 4u);
+  for (const char* beyond : {"G0 X101", "G0 Z51", "G43.1 Z60\nG0 Z-5", "G53 G0 Y-200.01",
+                             "G92 X0\nG0 X1", "G1 Y-101 F100"}) {
+    auto r = run_grbl(kSoftLimits + "G10 L2 P1 X-100 Y-100 Z-50\n" + beyond + "\n");
+    EXPECT_EQ(r->with(core::Code::GrblAlarm).size(), 1u) << beyond;
+  }
+  // Soft limits off, or turned off with homing ($22=0): no check.
+  for (const char* setup : {"", "$22=1\n$20=1\n$22=0\n", "$22=1\n$20=1\n$20=0\n"}) {
+    auto r = run_grbl(std::string(setup) + "G0 X10\n");
+    EXPECT_TRUE(r->ok) << setup;
+  }
+  // $130: the travel.
+  auto wide = run_grbl(kSoftLimits + "$130=300\nG0 X-300\n");
+  EXPECT_TRUE(wide->ok);
+  auto narrow = run_grbl(kSoftLimits + "$131=10\nG0 Y-10.5\n");
+  EXPECT_EQ(narrow->with(core::Code::GrblAlarm).size(), 1u);
+}
+
+TEST(GrblMachine, ArcsAreCheckedAlongTheirSegments) {
+  // Both ends inside; the clockwise arc bulges over Y0, the other way not.
+  auto over = run_grbl(kSoftLimits + "G0 X-20 Y-1\nG2 X-10 Y-1 R5 F100\n");
+  ASSERT_EQ(over->with(core::Code::GrblAlarm).size(), 1u);
+  EXPECT_EQ(over->with(core::Code::GrblAlarm)[0]->loc.line, 4u);
+  auto under = run_grbl(kSoftLimits + "G0 X-20 Y-1\nG3 X-10 Y-1 R5 F100\n");
+  EXPECT_TRUE(under->ok);
+  // A probe's target too.
+  auto probe = run_grbl(kSoftLimits + "G38.3 Z1 F100\n");
+  EXPECT_EQ(probe->with(core::Code::GrblAlarm).size(), 1u);
+}
+
+TEST(GrblMachine, HomingIsNotCheckedAndFollows23) {
+  // $23 bit set: that axis homes to its negative end: -travel + pull-off.
+  auto r = run_grbl(kSoftLimits + "$23=5\n$130=300\n$H\nG0 X-1\n");
+  EXPECT_TRUE(r->ok);
+  const auto m = r->moves();
+  ASSERT_EQ(m.size(), 2u);
+  expect_at(m[0].second, {-299, -1, -199});
+}
+
+TEST(GrblMachine, ResetZeroesOffsetsAndRestoresPowerOnModes) {
+  // $RST=#: G54 and the G28 position zero for the rest of the run.
+  auto g54 = run_grbl("G10 L2 P1 X10\nG0 X0\n$RST=#\nG0 X0\n");
+  ASSERT_EQ(g54->moves().size(), 2u);
+  expect_at(g54->moves()[0].second, {10, 0, 0});
+  expect_at(g54->moves()[1].second, {0, 0, 0});
+  auto g28 = run_grbl("G0 X5 Y5\nG28.1\nG0 X1\n$RST=*\nG28\n");
+  ASSERT_FALSE(g28->moves().empty());
+  expect_at(g28->moves().back().second, {0, 0, 0});
+  // Every $RST is a soft reset: G90, G92 and G43.1 cleared, F undefined.
+  auto modes = run_grbl("G91 G1 X1 F100\n$RST=$\nG0 X1\nG1 X2\n");
+  ASSERT_EQ(modes->moves().size(), 2u);
+  expect_at(modes->moves()[1].second, {1, 0, 0});
+  const auto e = modes->with(core::Code::GrblError);
+  ASSERT_EQ(e.size(), 1u);
+  EXPECT_EQ(e[0]->loc.line, 4u);
+  EXPECT_NE(e[0]->message.find("error:22"), std::string::npos);
+  auto g92 = run_grbl("G92 X5\nG0 X0\n$RST=$\nG0 X0\n");
+  ASSERT_EQ(g92->moves().size(), 2u);
+  expect_at(g92->moves()[0].second, {-5, 0, 0});
+  expect_at(g92->moves()[1].second, {0, 0, 0});
+  // $RST=$ restores the settings: soft limits off again.
+  auto settings = run_grbl(kSoftLimits + "$RST=$\nG0 X10\n");
+  EXPECT_TRUE(settings->ok);
+}
+
+}  // namespace
+}  // namespace usina::gcode
