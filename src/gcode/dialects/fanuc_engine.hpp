@@ -134,11 +134,12 @@ class Engine final : public ProgramRunner, private VariableSource {
   // Transformations (fanuc_transform.cpp).
   bool transform_codes(const TapeBlock& b, Words& w);
   bool transform_words(const TapeBlock& b, Words& w);
-  void reset_program_point();
+  void reset_program_point(std::optional<core::Plane> plane = std::nullopt);
   core::Vec3 actual_xyz() const;
+  core::Plane block_plane(const Words& w) const;
   void polar_point(const std::array<std::optional<NcWord>, 3>& axis, bool incremental,
-                   core::Vec3& p);
-  bool transformed_arc(const TapeBlock& b, Words& w,
+                   core::Plane plane, core::Vec3& p);
+  bool transformed_arc(const TapeBlock& b, Words& w, core::Plane plane,
                        const std::array<std::optional<NcWord>, 3>& centre, core::Vec3 start_prog);
   bool rotation_start(Words& w, core::Vec3 here);
 

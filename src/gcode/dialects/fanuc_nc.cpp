@@ -321,7 +321,8 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
       x->letter = 'P';
     }
   }
-  int motion = interp_.state().motion;
+  // The interpreter never enters G76/G87 (fine_boring writes its moves).
+  int motion = cycle_ == 760 || cycle_ == 870 ? cycle_ : interp_.state().motion;
   bool starts = false;
   for (const NcWord& g : w.list)
     starts = starts || (g.letter == 'G' && !g.taken && is_cycle(tenths(g.value)));

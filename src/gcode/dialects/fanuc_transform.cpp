@@ -46,6 +46,14 @@ core::Vec3 rotate_in(core::Vec3 p, core::Vec3 c, core::Plane plane, double deg) 
 
 }  // namespace
 
+// The plane a block works in: its own G17/G18/G19 comes first.
+core::Plane Engine::block_plane(const Words& w) const {
+  if (w.has_g(170)) return core::Plane::XY;
+  if (w.has_g(180)) return core::Plane::ZX;
+  if (w.has_g(190)) return core::Plane::YZ;
+  return interp_.state().plane;
+}
+
 bool Transform::affects(int axis) const {
   const auto i = static_cast<std::size_t>(axis);
   return mirror[i] || (scaling && scale[axis] != 1.0) || (rotation && in_plane(axis, rot_plane));
@@ -93,9 +101,9 @@ core::Vec3 Engine::actual_xyz() const {
   return {p[0] / per, p[1] / per, p[2] / per};
 }
 
-void Engine::reset_program_point() {
+void Engine::reset_program_point(std::optional<core::Plane> plane) {
   prog_ = xf_.inverse(actual_xyz());
-  polar_plane_ = interp_.state().plane;
+  polar_plane_ = plane.value_or(interp_.state().plane);
   if (polar_) {
     const core::Vec2 v = core::in_plane(prog_, polar_plane_);
     polar_r_ = std::hypot(v.x, v.y);
@@ -169,7 +177,7 @@ bool Engine::transform_codes(const TapeBlock& b, Words& w) {
     if (!rotation_start(w, here)) return false;
     changed = true;
   }
-  if (changed) reset_program_point();
+  if (changed) reset_program_point(block_plane(w));
   return true;
 }
 
@@ -178,7 +186,7 @@ bool Engine::transform_codes(const TapeBlock& b, Words& w) {
 // parameter 5400 RIN = 1 an R in G91 adds to the angle in force.
 bool Engine::rotation_start(Words& w, core::Vec3 here) {
   w.take_g(680);
-  const core::Plane plane = interp_.state().plane;
+  const core::Plane plane = block_plane(w);
   const core::PlaneAxes a = core::axes_of(plane);
   Transform unrotated = xf_;
   unrotated.rotation = false;
@@ -202,8 +210,7 @@ bool Engine::rotation_start(Words& w, core::Vec3 here) {
 // the current point; otherwise from the work zero. An angle in G91 adds to
 // the angle of the current point.
 void Engine::polar_point(const std::array<std::optional<NcWord>, 3>& axis, bool incremental,
-                         core::Vec3& p) {
-  const core::Plane plane = interp_.state().plane;
+                         core::Plane plane, core::Vec3& p) {
   const core::PlaneAxes a = core::axes_of(plane);
   const auto& radius = axis[static_cast<std::size_t>(a.first)];
   const auto& angle_word = axis[static_cast<std::size_t>(a.second)];
@@ -230,7 +237,7 @@ bool Engine::transform_words(const TapeBlock& b, Words& w) {
   if (!xf_.active() && !polar_) return true;
   for (int g : {40, 100, 280, 290, 300, 520, 530, 920})
     if (w.has_g(g)) return true;
-  const core::Plane plane = interp_.state().plane;
+  const core::Plane plane = block_plane(w);
   const core::PlaneAxes pa = core::axes_of(plane);
   // Copies: words are appended below, which moves the list.
   std::array<std::optional<NcWord>, 3> axis, centre;
@@ -254,7 +261,7 @@ bool Engine::transform_words(const TapeBlock& b, Words& w) {
     return error(core::Code::NotAllowedInMode, b, 0,
                  "an arc outside the plane of the G68 rotation (Fanuc alarm 144)");
   }
-  if (polar_ && plane != polar_plane_) reset_program_point();
+  if (polar_ && plane != polar_plane_) reset_program_point(plane);
   const bool incremental = w.has_g(910) || (interp_.state().incremental && !w.has_g(900));
   const core::Vec3 actual = actual_xyz();
   for (std::size_t i = 0; i < 3; ++i)  // untransformed axes follow the interpreter
@@ -266,7 +273,7 @@ bool Engine::transform_words(const TapeBlock& b, Words& w) {
     if (axis[i] && !(polar_ && in_plane(n, plane)))
       p[n] = incremental ? p[n] + axis[i]->value : axis[i]->value;
   }
-  if (polar_) polar_point(axis, incremental, p);
+  if (polar_) polar_point(axis, incremental, plane, p);
   prog_ = p;
   if (const NcWord* l = w.find('L'); l != nullptr && incremental && is_cycle(cycle_))
     prog_ = start_prog + (p - start_prog) * static_cast<double>(std::lround(l->value));
@@ -278,15 +285,14 @@ bool Engine::transform_words(const TapeBlock& b, Words& w) {
     w.take(kAxes[i]);
     w.list.push_back({kAxes[i], out, out, false, false, false, 0});
   }
-  return !arc || transformed_arc(b, w, centre, start_prog);
+  return !arc || transformed_arc(b, w, plane, centre, start_prog);
 }
 
 // The direction, centre and radius of an arc under the transformations.
 // Under G16 an arc takes its radius as R.
-bool Engine::transformed_arc(const TapeBlock& b, Words& w,
+bool Engine::transformed_arc(const TapeBlock& b, Words& w, core::Plane plane,
                              const std::array<std::optional<NcWord>, 3>& centre,
                              core::Vec3 start_prog) {
-  const core::Plane plane = interp_.state().plane;
   const core::PlaneAxes pa = core::axes_of(plane);
   const auto first = static_cast<std::size_t>(pa.first),
              second = static_cast<std::size_t>(pa.second);
