@@ -30,7 +30,14 @@ const Dialect& fanuc_dialect() {
         "increments (0.001 mm, 0.0001 in; parameter 3401 DPI = 0)"},
        {"program_digits",
         {"4", "8"},
-        "4: M98 P30010 is O0010 three times; 8: P is the program number"}},
+        "4: M98 P30010 is O0010 three times; 8: P is the program number"},
+       {"rotation_incremental",
+        {"0", "1"},
+        "G68 R in G91: 0 = always absolute, 1 = adds to the angle in force (parameter 5400 "
+        "RIN)"},
+       {"scaling_axes",
+        {"xy", "xyz"},
+        "the axes G51 P scales (parameter 5401 SCLx); I J K scale any axis"}},
       &make};
   return d;
 }

@@ -57,6 +57,8 @@ Engine::Engine(RunContext& c)
       interp_(c.sources, std::move(c.options), c.sink, c.diags) {
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
+  rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";
+  scale_z_by_p_ = c.dialect_options["scaling_axes"] == "xyz";
   locals_.push_back(vacant_locals());
   if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
 }

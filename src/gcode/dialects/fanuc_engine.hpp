@@ -44,21 +44,30 @@ struct Words {
   void take(char letter);
 };
 
-// The transformations of the XY plane, applied to programmed points in
-// the order mirror, scaling, rotation (docs/fanuc.md §7).
+// The transformations, applied to programmed points in the order mirror,
+// scaling, rotation (docs/fanuc.md §7): mirror and scaling per axis X Y Z,
+// the rotation in the plane it was commanded in. One mirrored axis of the
+// rotation plane turns the rotation the other way (the part is mirrored
+// whole), and the rotation centre is mirrored and scaled with the part.
 struct Transform {
-  bool mirror_x = false, mirror_y = false;
-  double mirror_cx = 0, mirror_cy = 0;
+  std::array<bool, 3> mirror{};
+  core::Vec3 mirror_c{};
   bool scaling = false;
-  double scale_cx = 0, scale_cy = 0, scale_x = 1, scale_y = 1;
+  core::Vec3 scale_c{}, scale{1, 1, 1};
   bool rotation = false;
-  double rot_cx = 0, rot_cy = 0, rot_deg = 0;
+  core::Plane rot_plane = core::Plane::XY;
+  core::Vec3 rot_c{};  // programmed; its plane axes are the centre
+  double rot_deg = 0;
 
-  bool active() const { return mirror_x || mirror_y || scaling || rotation; }
+  bool mirrored() const { return mirror[0] || mirror[1] || mirror[2]; }
 
-  core::Vec2 apply(core::Vec2 p) const;
-  core::Vec2 inverse(core::Vec2 q) const;
-  bool reverses() const;  // arcs and sides swap
+  bool active() const { return mirrored() || scaling || rotation; }
+
+  bool affects(int axis) const;  // the axis' value may change
+  core::Vec3 mirror_scale(core::Vec3 p) const;
+  core::Vec3 apply(core::Vec3 p) const;
+  core::Vec3 inverse(core::Vec3 q) const;
+  bool reverses(core::Plane plane) const;  // arcs and sides swap
 };
 
 std::array<Value, 34> vacant_locals();
@@ -112,6 +121,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool nc_block(const TapeBlock& b);
   bool read_words(const TapeBlock& b, Words& w);
   void decimal_point(const TapeBlock& b, Words& w);
+  double least_increment(char letter, const Words& w) const;
   bool macro_call(const TapeBlock& b, Words& w);
   bool fanuc_codes(const TapeBlock& b, Words& w);
   bool convert_codes(const TapeBlock& b, Words& w);
@@ -124,8 +134,14 @@ class Engine final : public ProgramRunner, private VariableSource {
   // Transformations (fanuc_transform.cpp).
   bool transform_codes(const TapeBlock& b, Words& w);
   bool transform_words(const TapeBlock& b, Words& w);
-  void reset_program_point();
-  core::Vec2 actual_xy() const;
+  void reset_program_point(std::optional<core::Plane> plane = std::nullopt);
+  core::Vec3 actual_xyz() const;
+  core::Plane block_plane(const Words& w) const;
+  void polar_point(const std::array<std::optional<NcWord>, 3>& axis, bool incremental,
+                   core::Plane plane, core::Vec3& p);
+  bool transformed_arc(const TapeBlock& b, Words& w, core::Plane plane,
+                       const std::array<std::optional<NcWord>, 3>& centre, core::Vec3 start_prog);
+  bool rotation_start(Words& w, core::Vec3 here);
 
   // Offset registers (fanuc_offsets.cpp).
   bool read_offsets(const std::string& path);
@@ -182,15 +198,20 @@ class Engine final : public ProgramRunner, private VariableSource {
   std::optional<double> cycle_r_, cycle_z_, cycle_p_;
 
   struct FineBoring {
-    std::optional<double> r, z, initial;
+    std::optional<double> initial;  // R and Z are cycle_r_ and cycle_z_
     double q = 0, p = 0, f = 0;
-    bool to_r = false;
   } g76_;
 
+  bool fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Vec2 first, core::Vec2 step,
+                         long repeats);
+
   Transform xf_;
+  bool rotation_incremental_ = false;  // parameter 5400 RIN
+  bool scale_z_by_p_ = false;          // parameter 5401 SCLZ
   bool polar_ = false;
+  core::Plane polar_plane_ = core::Plane::XY;
   double polar_r_ = 0, polar_a_ = 0;
-  core::Vec2 prog_{};  // the programmed point before the transformations
+  core::Vec3 prog_{};  // the programmed point before the transformations
 };
 
 }  // namespace usina::gcode::fanuc

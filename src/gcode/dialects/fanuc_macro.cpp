@@ -43,6 +43,12 @@ double round_half_away(double x) {
   return std::round(x);
 }
 
+double round_to_step(double x, double step) {
+  // 1.2345 / 0.001 is 1234.4999..., so half a step is nudged by 1e-9 steps.
+  const double n = x / step;
+  return round_half_away(n + std::copysign(1e-9, n)) * step;
+}
+
 double atan2_deg(double a, double b) {
   double r = std::atan2(a, b) / kRad;
   if (r < 0) r += 360.0;
@@ -354,7 +360,7 @@ std::optional<Value> MacroReader::function(std::string_view name) {
   } else if (name == "ABS")
     r = std::fabs(x);
   else if (name == "ROUND")
-    r = round_half_away(x);
+    r = round_step_ > 0 ? round_to_step(x, round_step_) : round_half_away(x);
   else if (name == "FIX")
     r = fix(x);
   else if (name == "FUP")

@@ -71,6 +71,10 @@ class MacroReader {
 
   std::nullopt_t fail(core::Code code, std::string message);
 
+  // ROUND in an NC address rounds to the address's least increment
+  // (docs/fanuc.md §4); 0, in macro statements, to an integer.
+  void set_round_step(double step) { round_step_ = step; }
+
  private:
   void blanks();
   std::optional<Value> sum();
@@ -90,6 +94,7 @@ class MacroReader {
   bool had_point_ = false;
   bool literal_ = false;
   bool relation_ = false;
+  double round_step_ = 0.0;
   MacroError err_;
 };
 
@@ -97,7 +102,8 @@ class MacroReader {
 double fix(double x);  // toward zero
 double fup(double x);  // away from zero
 double round_half_away(double x);
-double atan2_deg(double a, double b);  // angle of (b, a), 0 <= r < 360
-double fanuc_mod(double a, double b);  // both rounded to integers; sign of a
+double round_to_step(double x, double step);  // half away from zero
+double atan2_deg(double a, double b);         // angle of (b, a), 0 <= r < 360
+double fanuc_mod(double a, double b);         // both rounded to integers; sign of a
 
 }  // namespace usina::gcode::fanuc

@@ -74,6 +74,19 @@ void Words::take(char letter) {
     if (w.letter == letter) w.taken = true;
 }
 
+// The least input increment of an address (IS-B), what ROUND rounds to in
+// it: 0.001 mm / 0.0001 in for distances, 0.001 deg for A B C, 1 mm/min
+// (0.01 in/min) for F, 1 for the integer addresses.
+double Engine::least_increment(char letter, const Words& w) const {
+  bool inch = interp_.state().units == core::LengthUnit::Inch;
+  if (w.has_g(200)) inch = true;
+  if (w.has_g(210)) inch = false;
+  if (letter == 'A' || letter == 'B' || letter == 'C') return 0.001;
+  if (is_distance(letter)) return inch ? 0.0001 : 0.001;
+  if (letter == 'F') return inch ? 0.01 : 1.0;
+  return 1.0;
+}
+
 bool Engine::read_words(const TapeBlock& b, Words& w) {
   MacroReader r(b.text, *this);
   while (!r.at_end()) {
@@ -88,6 +101,7 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
                    fmt::format("'{}' where a word's letter was expected", b.text[at]));
     }
     r.set_pos(at + 1);
+    r.set_round_step(least_increment(l, w));
     auto v = r.expression();
     if (!v) return macro_error(r, b);
     NcWord word;
@@ -307,7 +321,8 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
       x->letter = 'P';
     }
   }
-  int motion = interp_.state().motion;
+  // The interpreter never enters G76/G87 (fine_boring writes its moves).
+  int motion = cycle_ == 760 || cycle_ == 870 ? cycle_ : interp_.state().motion;
   bool starts = false;
   for (const NcWord& g : w.list)
     starts = starts || (g.letter == 'G' && !g.taken && is_cycle(tenths(g.value)));
@@ -315,9 +330,13 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
     if (g.letter == 'G' && !g.taken &&
         (tenths(g.value) <= 30 || is_cycle(tenths(g.value)) || tenths(g.value) == 800))
       motion = tenths(g.value);
-  if (motion == 800 || motion <= 30) cycle_r_ = cycle_z_ = cycle_p_ = std::nullopt;
+  if (motion == 800 || motion <= 30) {
+    cycle_r_ = cycle_z_ = cycle_p_ = std::nullopt;
+    g76_.initial.reset();
+  }
   if (is_cycle(motion)) {
-    cycle_levels(w, w.has_g(910) || (interp_.state().incremental && !w.has_g(900)));
+    if (motion != 760 && motion != 870)  // fine_boring keeps its levels itself
+      cycle_levels(w, w.has_g(910) || (interp_.state().incremental && !w.has_g(900)));
     if (NcWord* p = w.find('P')) {
       p->value = p->raw / 1000.0;
       cycle_p_ = p->value;
@@ -355,76 +374,80 @@ void Engine::cycle_levels(Words& w, bool incremental) {
   }
 }
 
-// G76 fine boring (docs/fanuc.md §7): feed to Z, dwell, orient, shift Q
-// away from the wall (+X), rapid out, shift back, spindle on. Written as
-// RS274NGC blocks for the interpreter; G90 only for now.
+// G76 fine boring and G87 back boring (docs/fanuc.md §7), written as
+// RS274NGC blocks for the interpreter. R and Z are kept as positions as in
+// the other cycles: in G91, R is the distance from the initial level and Z
+// from the R point, X Y from the current point, and each of the K repeats
+// steps the hole by X Y again (in G90 K bores the same hole K times).
 bool Engine::fine_boring(const TapeBlock& b, Words& w) {
   const int code = w.has_g(870) ? 870 : w.has_g(760) ? 760 : cycle_;
+  // G98/G99 go on to the interpreter, which keeps the return mode.
+  const bool to_r =
+      w.has_g(990) || (interp_.state().retract == RetractMode::RPlane && !w.has_g(980));
+  const bool incremental = w.has_g(910) || (interp_.state().incremental && !w.has_g(900));
+  const core::Vec3 here = actual_xyz();
+  if (!g76_.initial) g76_.initial = here.z;
+  if (NcWord* r = w.find('R')) cycle_r_ = incremental ? *g76_.initial + r->value : r->value;
+  if (NcWord* z = w.find('Z')) {
+    if (incremental && !cycle_r_)
+      return error(core::Code::MissingWord, b, z->pos, "G76/G87 in G91 needs R before Z");
+    cycle_z_ = incremental ? *cycle_r_ + z->value : z->value;
+  }
+  if (NcWord* q = w.find('Q')) g76_.q = std::fabs(q->value);
+  if (NcWord* p = w.find('P')) g76_.p = p->value;  // seconds (convert_codes)
+  if (NcWord* f = w.find('F')) g76_.f = f->value;
+  const NcWord* k = w.find('L');  // K, renamed by convert_codes
+  const long repeats = k != nullptr ? std::lround(k->value) : 1;
+  const bool hole = w.has('X') || w.has('Y');
+  const core::Vec2 step{w.get('X', incremental ? 0.0 : here.x),
+                        w.get('Y', incremental ? 0.0 : here.y)};
+  for (char l : std::string_view("XYZRQPFKL"))
+    w.take(l);
   w.take_g(760);
   w.take_g(870);
-  if (interp_.state().incremental || w.has_g(910)) {
-    return error(core::Code::Unsupported, b, 0,
-                 "G76/G87 under G91 is not implemented in the fanuc dialect yet");
-  }
-  if (NcWord* r = w.find('R')) g76_.r = r->value;
-  if (NcWord* z = w.find('Z')) g76_.z = z->value;
-  if (NcWord* q = w.find('Q')) g76_.q = std::fabs(q->value);
-  if (NcWord* p = w.find('P')) g76_.p = p->raw / 1000.0;
-  if (NcWord* f = w.find('F')) g76_.f = f->value;
-  if (w.has_g(980)) g76_.to_r = false;
-  if (w.has_g(990)) g76_.to_r = true;
-  const double per = core::mm_per(interp_.state().units);
-  if ((cycle_ != 760 && cycle_ != 870) || !g76_.initial)
-    g76_.initial = interp_.state().pos[2] / per;
-  const bool hole = w.has('X') || w.has('Y');
-  const double x = w.get('X', interp_.state().pos[0] / per);
-  const double y = w.get('Y', interp_.state().pos[1] / per);
-  for (char l : std::string_view("XYZRQPFGKL"))
-    w.take(l);
   cycle_ = code;
-  if (code == 870 && g76_.to_r)
+  if (code == 870 && to_r)
     return error(core::Code::NotAllowedInMode, b, 0, "G87 back boring does not take G99");
-  if (!hole) return true;
-  if (!g76_.r || !g76_.z)
+  if (!hole || repeats <= 0) return true;  // K0 keeps the data without boring
+  if (!cycle_r_ || !cycle_z_)
     return error(core::Code::MissingWord, b, 0, "G76 needs R and Z when it starts");
-  const double back = g76_.to_r ? *g76_.r : std::max(*g76_.initial, *g76_.r);
-  const std::string blocks[] = {
-      fmt::format("G0 X{} Y{}", number(x), number(y)),
-      fmt::format("G0 Z{}", number(*g76_.r)),
-      fmt::format("G1 Z{} F{}", number(*g76_.z), number(g76_.f)),
-      fmt::format("G4 P{}", number(g76_.p)),
-      "M19",
-      fmt::format("G0 X{}", number(x + g76_.q)),
-      fmt::format("G0 Z{}", number(back)),
-      fmt::format("G0 X{}", number(x)),
-      "M3",
-  };
-  // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
-  const std::string back_boring[] = {
-      fmt::format("G0 X{} Y{}", number(x), number(y)),
-      "M19",
-      fmt::format("G0 X{}", number(x + g76_.q)),
-      fmt::format("G0 Z{}", number(*g76_.r)),
-      fmt::format("G0 X{}", number(x)),
-      "M3",
-      fmt::format("G1 Z{} F{}", number(*g76_.z), number(g76_.f)),
-      fmt::format("G4 P{}", number(g76_.p)),
-      "M19",
-      fmt::format("G0 X{}", number(x + g76_.q)),
-      fmt::format("G0 Z{}", number(*g76_.initial)),
-      fmt::format("G0 X{}", number(x)),
-      "M3",
-  };
-  if (code == 870) {
-    for (const std::string& text : back_boring) {
-      if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
+  const core::Vec2 first = incremental ? core::Vec2{here.x + step.x, here.y + step.y} : step;
+  return fine_boring_holes(b, code, to_r, first, incremental ? step : core::Vec2{}, repeats);
+}
+
+// The moves of the fine/back boring holes, in G90 whatever the program's
+// mode (restored after).
+bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Vec2 first,
+                               core::Vec2 step, long repeats) {
+  const bool was_incremental = interp_.state().incremental;
+  const double r = *cycle_r_, z = *cycle_z_, top = *g76_.initial, q = g76_.q;
+  const double back = to_r ? r : std::max(top, r);
+  const LinePos where{b.file, b.line, b.line_offset};
+  if (!interp_.run_block("G90", where)) return false;
+  for (long n = 0; n < repeats; ++n) {
+    const double x = first.x + step.x * static_cast<double>(n);
+    const double y = first.y + step.y * static_cast<double>(n);
+    std::vector<std::string> blocks{fmt::format("G0 X{} Y{}", number(x), number(y))};
+    if (code == 760) {
+      blocks.insert(
+          blocks.end(),
+          {fmt::format("G0 Z{}", number(r)), fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
+           fmt::format("G4 P{}", number(g76_.p)), "M19", fmt::format("G0 X{}", number(x + q)),
+           fmt::format("G0 Z{}", number(back)), fmt::format("G0 X{}", number(x)), "M3"});
+    } else {
+      // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
+      blocks.insert(
+          blocks.end(),
+          {"M19", fmt::format("G0 X{}", number(x + q)), fmt::format("G0 Z{}", number(r)),
+           fmt::format("G0 X{}", number(x)), "M3",
+           fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
+           fmt::format("G4 P{}", number(g76_.p)), "M19", fmt::format("G0 X{}", number(x + q)),
+           fmt::format("G0 Z{}", number(top)), fmt::format("G0 X{}", number(x)), "M3"});
     }
-    return true;
+    for (const std::string& text : blocks)
+      if (!interp_.run_block(text, where)) return false;
   }
-  for (const std::string& text : blocks) {
-    if (!interp_.run_block(text, {b.file, b.line, b.line_offset})) return false;
-  }
-  return true;
+  return !was_incremental || interp_.run_block("G91", where);
 }
 
 // Fanuc's G80 is a group of its own: after it (and at power-on) axis words
@@ -452,7 +475,7 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     if (word.letter == 'G') {
       int t = tenths(word.value);
       // One mirrored axis swaps the side of cutter compensation.
-      if (xf_.reverses() && (t == 410 || t == 420 || t == 411 || t == 421))
+      if (xf_.reverses(interp_.state().plane) && (t == 410 || t == 420 || t == 411 || t == 421))
         t = t < 415 ? t + 10 : t - 10;
       text += t % 10 == 0 ? fmt::format("G{} ", t / 10) : fmt::format("G{}.{} ", t / 10, t % 10);
     } else if (word.letter == 'M' || word.letter == 'L') {
