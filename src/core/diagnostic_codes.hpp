@@ -103,4 +103,6 @@
   X(MacroAlarm, E_MACRO_ALARM)                     \
   X(MacroFormat, E_MACRO_FORMAT)                   \
   X(BadLoop, E_BAD_LOOP)                           \
-  X(DialectGuess, N_DIALECT_GUESS)
+  X(DialectGuess, N_DIALECT_GUESS)                 \
+  X(ForbiddenArea, E_FORBIDDEN_AREA)               \
+  X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)

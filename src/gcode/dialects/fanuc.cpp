@@ -30,7 +30,10 @@ const Dialect& fanuc_dialect() {
         "increments (0.001 mm, 0.0001 in; parameter 3401 DPI = 0)"},
        {"program_digits",
         {"4", "8"},
-        "4: M98 P30010 is O0010 three times; 8: P is the program number"}},
+        "4: M98 P30010 is O0010 three times; 8: P is the program number"},
+       {"stroke_area",
+        {"inside", "outside"},
+        "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"}},
       &make};
   return d;
 }
