@@ -63,6 +63,12 @@ TEST(FanucOffsets, G54PIsTheSameAsG541P) {
   expect_end(*r, {-2, 0, 0});
 }
 
+TEST(FanucOffsets, PInAG54BlockWithM98IsTheProgram) {
+  auto r = run_fanuc("%\nO0001\nG10 L20 P1 X9.\nG54 M98 P2\nG0 X0\nM30\nO0002\nG0 Y1.\nM99\n%\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  expect_end(*r, {0, 1, 0});  // G54, not G54.1 P2 (nor P1)
+}
+
 TEST(FanucOffsets, G541WithoutPIsP1) {
   auto r = run_fanuc("G10 L20 P1 Z-5.\nG54.1 G0 Z0\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();

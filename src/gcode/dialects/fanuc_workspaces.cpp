@@ -43,6 +43,7 @@ double Engine::machine_units(int axis, double program_value) const {
 
 // A parameter file's EXT (#5201-) shifts the systems it was read with.
 void Engine::apply_start_external() {
+  if (external_ == Axes{}) return;
   for (long system = 1; system <= 6; ++system) {
     for (int a = 0; a < kAxisCount; ++a) {
       const int n = offset_parameter(system, a);
@@ -75,7 +76,9 @@ bool Engine::load_additional(const TapeBlock& b) {
 // G54.1 P n, or G54 P n: an additional system, given to the interpreter as
 // G59.3. G54-G59 without P leave the additional systems.
 bool Engine::work_codes(const TapeBlock& b, Words& w) {
-  const bool additional = w.has_g(541) || (w.has_g(540) && w.has('P') && !w.has_g(100));
+  // P in a G54 block is G54.1's, unless the block has its own use for P.
+  const bool own_p = w.has_g(100) || w.has_g(40) || w.has_m(98) || w.has_m(99);
+  const bool additional = w.has_g(541) || (w.has_g(540) && w.has('P') && !own_p);
   if (!additional) {
     for (int g = 540; g <= 590; g += 10)
       if (w.has_g(g)) additional_p_ = 0;

@@ -754,7 +754,7 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   p.dwell = v.p;
   p.peck = u.in(v.q);
   p.clearance = modal.peck_clearance / u.mm;
-  p.retract = modal.peck_retract / u.mm;
+  p.retract = modal.peck_retract.value_or(modal.peck_clearance) / u.mm;
   p.spindle = modal.spindle;
   if (auto e = check_plan(p)) return e;
 
