@@ -208,6 +208,8 @@ TEST(FanucOffsets, ParametersUsinaDoesNotModelAreWarned) {
   for (const core::Diagnostic& d : r->diags.all())
     warnings += d.code == Code::ParameterNotModeled ? 1 : 0;
   EXPECT_EQ(warnings, 2);
+  EXPECT_EQ(r->diags.all()[0].loc.line, 2u);
+  EXPECT_EQ(r->diags.all()[0].loc.col, 1u);  // at N1234
   expect_end(*r, {1, 0, 0});
 }
 

@@ -83,10 +83,12 @@ bool Engine::set_fanuc_parameter(const TapeBlock& b, long number, Words& w) {
   const NcWord* axis = w.find('P');
   const bool modeled = number == 5114 || number == 5115 || number == 3401 || number == 1300;
   if (!modeled) {
-    warn(core::Code::ParameterNotModeled, b, 0,
-         fmt::format("parameter {} is not modelled by usina: ignored (it may change what the "
-                     "control does)",
-                     number));
+    // At the block's N, the parameter number.
+    diags_.report({core::Code::ParameterNotModeled, core::Severity::Warning,
+                   core::SourceLoc{b.file, b.line, b.col, 1, b.line_offset},
+                   fmt::format("parameter {} is not modelled by usina: ignored (it may change "
+                               "what the control does)",
+                               number)});
     return true;
   }
   if (axis != nullptr) {
