@@ -455,6 +455,22 @@ EXPLAIN = {
         "reports it and ends the run at that line, whatever `after_error` says.",
         "Move the work offset (G10 L2/L20, G92) or the program so every move stays in the "
         "travel, or correct `$130`-`$132`."),
+    "E_FORBIDDEN_AREA": (
+        "A fanuc program armed stored stroke check 2 (`G22 X Y Z I J K`) and a later move enters "
+        "the forbidden side of that box: its inside, or its outside with parameter 1300 bit 0 "
+        "OUT = 1 (`--dialect-option stroke_area=outside`). The message has the control's alarm: "
+        "OT0502 (+ direction) or OT0503 (- direction) and the axis. Straight moves are checked "
+        "exactly, arcs by chords within 0.001 mm. Also when `G22` arms an area the tool is "
+        "already in. The run stops at that block, as the control stops there.",
+        "Move around the area, or change the G22 corners (they are in the trace's coordinates: "
+        "docs/fanuc.md)."),
+    "W_PARAMETER_NOT_MODELED": (
+        "A fanuc `G10 L50` block sets a parameter usina does not model (it models 5114 and 5115, "
+        "the G73/G83 peck distances; 3401 bit 0 DPI; 1300 bit 0 OUT), or bits of 3401/1300 other "
+        "than bit 0. The value is ignored: the run goes on as if the block were not there, which "
+        "may differ from what the control does.",
+        "Check that the parameter does not change the part; set what usina models with its own "
+        "options."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -1,6 +1,9 @@
 #include "cli/run.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sstream>
@@ -35,6 +38,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--offsets", o.offsets,
                  "fanuc: the offset page (H and D registers) as a TOML file (docs/fanuc.md)");
   app.add_option("--var-file", o.var_file, "LinuxCNC parameter file to start from");
+  app.add_option("--save-vars", o.save_vars,
+                 "write the persistent variables here at the end of the run (rs274ngc: "
+                 "LinuxCNC's 5161-5390; fanuc: #500-#999), also after an error");
   app.add_option(
       "--subroutine-path", o.subroutine_path,
       "folders searched for o<name> call files, separated by ':' (then the program's own)");
@@ -94,6 +100,21 @@ std::vector<std::string> split_path(const std::string& s) {
     start = end + 1;
   }
   return out;
+}
+
+// Written beside the target and renamed, so a reader never sees half a file
+// (as post_output.cpp writes programs).
+bool save_vars(const std::string& path, const std::vector<gcode::VarFileEntry>& entries) {
+  const std::string partial = path + ".partial-" + std::to_string(::getpid());
+  std::ofstream file(partial, std::ios::binary);
+  const std::string text = gcode::write_var_file(entries);
+  const bool written =
+      file && file.write(text.data(), static_cast<std::streamsize>(text.size())) && file.flush();
+  file.close();
+  if (written && std::rename(partial.c_str(), path.c_str()) == 0) return true;
+  std::remove(partial.c_str());
+  fmt::print(stderr, "usina: error: cannot write {}\n", path);
+  return false;
 }
 
 std::string folder_of(const std::string& path) {
@@ -165,7 +186,12 @@ int run_program(const RunOptions& o, canon::Sink& sink,
       gcode::RunContext{sources, std::move(opts), std::move(dialect_options), sink, diags});
   for (const auto& v : vars)
     runner->set_parameter(v.number, v.value);
+  if (!o.save_vars.empty() && !runner->persistent_variables()) {
+    fmt::print(stderr, "usina: error: --save-vars: the {} dialect keeps no variables\n", name);
+    return 2;
+  }
   const bool ok = runner->run(main_id);
+  if (!o.save_vars.empty() && !save_vars(o.save_vars, *runner->persistent_variables())) return 2;
   return ok && diags.errors() == 0 ? 0 : 1;
 }
 

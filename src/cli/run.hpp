@@ -21,7 +21,8 @@ struct RunOptions {
   std::string tool_table;
   std::string machine_units = "mm";
   std::string var_file;
-  std::string offsets;  // fanuc offset registers
+  std::string save_vars;  // the persistent variables written here at the end
+  std::string offsets;    // fanuc offset registers
   std::string subroutine_path;
   double peck_clearance = 1.0;
   long max_iterations = 10'000'000;

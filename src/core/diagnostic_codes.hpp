@@ -104,4 +104,6 @@
   X(MacroFormat, E_MACRO_FORMAT)                   \
   X(BadLoop, E_BAD_LOOP)                           \
   X(DialectGuess, N_DIALECT_GUESS)                 \
-  X(GrblAlarm, E_GRBL_ALARM)
+  X(GrblAlarm, E_GRBL_ALARM)                       \
+  X(ForbiddenArea, E_FORBIDDEN_AREA)               \
+  X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)

@@ -19,6 +19,7 @@
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
 #include "gcode/interp/interpreter.hpp"
+#include "gcode/var_file.hpp"
 
 namespace usina::gcode {
 
@@ -58,6 +59,13 @@ class ProgramRunner {
   virtual void set_parameter(int index, double value) = 0;
   // Runs the program to its end or first error; true when no error.
   virtual bool run(std::uint32_t file) = 0;
+
+  // The variables the control keeps across power-off, as they stand (after
+  // the run, or after its error: the control keeps what was set), for
+  // usina's --save-vars. nullopt: the dialect has none.
+  virtual std::optional<std::vector<VarFileEntry>> persistent_variables() const {
+    return std::nullopt;
+  }
 };
 
 struct RunContext {

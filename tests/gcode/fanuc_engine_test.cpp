@@ -296,8 +296,6 @@ TEST(FanucEngine, MirrorReversesArcs) {
 
 TEST(FanucEngine, CodesNotImplementedSaySo) {
   EXPECT_EQ(run_fanuc("G12.1\nM30\n")->first_error(), Code::Unsupported);
-  EXPECT_EQ(run_fanuc("G54.1 P1\nM30\n")->first_error(), Code::Unsupported);
-  EXPECT_EQ(run_fanuc("G10 L20 P1 X5.\nM30\n")->first_error(), Code::Unsupported);
 }
 
 TEST(FanucEngine, CycleRAndZAreKeptAsPositions) {

@@ -37,7 +37,10 @@ const Dialect& fanuc_dialect() {
         "RIN)"},
        {"scaling_axes",
         {"xy", "xyz"},
-        "the axes G51 P scales (parameter 5401 SCLx); I J K scale any axis"}},
+        "the axes G51 P scales (parameter 5401 SCLx); I J K scale any axis"},
+       {"stroke_area",
+        {"inside", "outside"},
+        "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"}},
       &make};
   return d;
 }

@@ -54,11 +54,14 @@ Engine::Engine(RunContext& c)
     : sources_(c.sources),
       options_(c.options),
       diags_(c.diags),
-      interp_(c.sources, std::move(c.options), c.sink, c.diags) {
+      columns_(c.diags),
+      stroke_(c.sink, c.options.start),
+      interp_(c.sources, std::move(c.options), stroke_, columns_) {
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
   rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";
   scale_z_by_p_ = c.dialect_options["scaling_axes"] == "xyz";
+  stroke_.outside_forbidden = c.dialect_options["stroke_area"] == "outside";
   locals_.push_back(vacant_locals());
   if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
 }
@@ -73,9 +76,34 @@ std::array<Value, 34> vacant_locals() {
 void Engine::set_parameter(int index, double value) {
   if ((index >= 100 && index <= 199) || (index >= 500 && index <= 999)) {
     common_[index] = Value{value};
+  } else if (index >= 5201 && index <= 5209) {
+    external_[static_cast<std::size_t>(index - 5201)] = value;  // EXT, applied at the start
   } else if (index >= 1 && index <= kMaxParameter) {
     interp_.set_parameter(index, value);
   }
+}
+
+// #500-#999 as they stand; a vacant one has no line (a var file holds
+// numbers only).
+std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
+  std::vector<VarFileEntry> out;
+  for (const auto& [index, value] : common_) {
+    if (index >= 500 && index <= 999 && !value.vacant)
+      out.push_back({static_cast<int>(index), value.v});
+  }
+  return out;
+}
+
+void ColumnMap::report(core::Diagnostic d) {
+  if (!spans_.empty() && d.loc.file == file_ && d.loc.line == line_) {
+    for (const Span& s : spans_) {
+      if (d.loc.col >= s.first && d.loc.col <= s.last) {
+        d.loc.col = s.col;
+        break;
+      }
+    }
+  }
+  next_.report(std::move(d));
 }
 
 core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
@@ -83,6 +111,14 @@ core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
   std::uint32_t col = b.col;
   if (b.text.data() >= src.data() && b.text.data() <= src.data() + src.size()) {
     col = static_cast<std::uint32_t>(b.text.data() - src.data() - b.line_offset + pos + 1);
+  } else {
+    // The text is a copy without the block's comments: add back what each
+    // comment before the position took.
+    const std::size_t at = b.text_start + pos;
+    std::size_t extra = 0;
+    for (const auto& [gap, width] : b.gaps)
+      if (gap < at) extra += width;
+    col = static_cast<std::uint32_t>(b.col + at + extra);
   }
   return {b.file, b.line, col, 1, b.line_offset};
 }
@@ -112,11 +148,14 @@ bool Engine::run(std::uint32_t file) {
     const TapeBlock& first = tape_.at(0);
     interp_.run_block("G98", {first.file, first.line, first.line_offset});
   }
-  while (!done_ && !failed_ && !interp_.failed() && !interp_.ended())
+  apply_start_external();
+  while (!done_ && !failed_ && !interp_.failed() && !interp_.ended()) {
     step();
+    if (stroke_violation()) break;
+  }
   const bool ok = !failed_ && !interp_.failed();
   interp_.finish();
-  return ok && !interp_.failed();
+  return !stroke_violation() && ok && !interp_.failed();
 }
 
 bool Engine::end_of_program() {
@@ -129,6 +168,10 @@ bool Engine::end_of_program() {
     return true;
   }
   const TapeBlock& last = tape_.at(pc_ == 0 ? 0 : pc_ - 1);
+  if (parameter_mode_) {
+    return error(core::Code::UnclosedBlock, last, 0,
+                 "the program ends in parameter input mode: G10 L50 without G11");
+  }
   if (!frames_.empty()) {
     return error(core::Code::UnclosedBlock, last, 0,
                  "the subprogram ends without M99 (Fanuc: it would run into the next program)");
@@ -148,6 +191,7 @@ bool Engine::step() {
   ++pc_;
   if (b.program >= 0) o_ = static_cast<double>(b.program);
   if (b.deleted && options_.block_delete) return true;
+  if (parameter_mode_) return parameter_block(b);
   if (b.sequence >= 0) n_ = static_cast<double>(b.sequence);
   if (b.text.empty()) return true;
   const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[0])));

@@ -72,11 +72,84 @@ struct Transform {
 
 std::array<Value, 34> vacant_locals();
 
+// Stored stroke check 2 (G22, docs/fanuc.md §7): sits between the
+// interpreter and the run's sink, follows the tool through every move and,
+// while an area is armed, stops the ops at the first move that enters the
+// forbidden side; the engine reports it at that move's block.
+class StrokeCheck final : public canon::Sink {
+ public:
+  struct Box {
+    core::Vec3 lo, hi;  // trace coordinates, mm
+  };
+
+  struct Violation {
+    core::SourceLoc loc;
+    std::string message;
+  };
+
+  StrokeCheck(canon::Sink& next, core::Vec3 start) : next_(next), at_(start) {}
+
+  void on(const canon::Op& op) override;
+
+  void finish() override { next_.finish(); }
+
+  void arm(Box area) { area_ = area; }
+
+  void disarm() { area_.reset(); }
+
+  bool armed() const { return area_.has_value(); }
+
+  bool outside_forbidden = false;  // parameter 1300 bit 0 OUT
+  // Why `p` is forbidden, or empty when it is allowed.
+  std::optional<std::string> forbidden(core::Vec3 p) const;
+
+  core::Vec3 position() const { return at_; }
+
+  const std::optional<Violation>& violation() const { return violation_; }
+
+ private:
+  std::optional<std::string> segment(core::Vec3 a, core::Vec3 b) const;
+  std::optional<std::string> path(const std::vector<core::Vec3>& points) const;
+  canon::Sink& next_;
+  core::Vec3 at_;
+  std::optional<Box> area_;
+  std::optional<Violation> violation_;
+};
+
+// Points the interpreter's diagnostics about a block the front end rewrote
+// at the Fanuc words they came from: each rewritten word's columns map to
+// its word's column in the program's line.
+class ColumnMap final : public core::DiagnosticSink {
+ public:
+  struct Span {
+    std::uint32_t first = 0, last = 0;  // columns in the rewritten text
+    std::uint32_t col = 0;              // the word's column in the line
+  };
+
+  explicit ColumnMap(core::DiagnosticSink& next) : next_(next) {}
+
+  void report(core::Diagnostic d) override;
+
+  void set(std::uint32_t file, std::uint32_t line, std::vector<Span> spans) {
+    file_ = file;
+    line_ = line;
+    spans_ = std::move(spans);
+  }
+
+  void clear() { spans_.clear(); }
+
+ private:
+  core::DiagnosticSink& next_;
+  std::uint32_t file_ = 0, line_ = 0;
+  std::vector<Span> spans_;
+};
+
 class Engine final : public ProgramRunner, private VariableSource {
  public:
   explicit Engine(RunContext& c);
   void set_parameter(int index, double value) override;
   bool run(std::uint32_t file) override;
+  std::optional<std::vector<VarFileEntry>> persistent_variables() const override;
 
  private:
   struct Loop {
@@ -155,6 +228,36 @@ class Engine final : public ProgramRunner, private VariableSource {
   int comp_side_ = 40;
   long h_register_ = 0, d_register_ = 0;
 
+  // Work coordinate systems: G54.1 P1-P48 kept here and selected through
+  // the interpreter's G59.3 slot (Fanuc has no G59.1-G59.3), the external
+  // work offset added to every system (fanuc_workspaces.cpp).
+  bool work_codes(const TapeBlock& b, Words& w);
+  bool work_offset(const TapeBlock& b, Words& w, long l);
+  bool additional_offset(const TapeBlock& b, Words& w);
+  bool external_offset(const TapeBlock& b, const Axes& value, const std::array<bool, 9>& given);
+  bool load_additional(const TapeBlock& b);
+  bool reselect(const TapeBlock& b);
+  void apply_start_external();
+  double program_units(int axis, double machine_value) const;
+  double machine_units(int axis, double program_value) const;
+  std::optional<double> work_variable(long index) const;
+  std::optional<bool> write_work_variable(long index, double v, const TapeBlock& b);
+  std::array<Axes, 49> additional_{};  // G54.1 P1-P48, machine units ([0] unused)
+  Axes external_{};                    // EXT (#5201-), machine units
+  long additional_p_ = 0;              // the active G54.1 P; 0 under G54-G59
+
+  // G10 L50 ... G11 programmable parameter input (fanuc_parameters.cpp).
+  bool parameter_block(const TapeBlock& b);
+  bool set_fanuc_parameter(const TapeBlock& b, long number, Words& w);
+  std::optional<double> parameter_length(const TapeBlock& b, const NcWord& r);
+  std::optional<long> parameter_bits(const TapeBlock& b, long number, const NcWord& r);
+  bool parameter_mode_ = false;
+
+  // G22/G23 stored stroke check 2 (fanuc_stroke.cpp).
+  bool stroke_codes(const TapeBlock& b, Words& w);
+  bool stroke_violation();
+  bool reported_stroke_ = false;
+
   // Variables (fanuc_vars.cpp).
   std::optional<Value> read(long index, MacroError& err) override;
   bool write(long index, Value v, const TapeBlock& b, std::size_t pos);
@@ -170,6 +273,8 @@ class Engine final : public ProgramRunner, private VariableSource {
   core::SourceManager& sources_;
   InterpOptions options_;
   core::DiagnosticSink& diags_;
+  ColumnMap columns_;   // the interpreter's diagnostics go through it
+  StrokeCheck stroke_;  // and its ops through this
   Interpreter interp_;
   bool dpi_fanuc_ = false;  // decimal_point=fanuc
   int program_digits_ = 4;

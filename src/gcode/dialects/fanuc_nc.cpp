@@ -262,8 +262,6 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
   };
 
   static constexpr Missing kMissing[] = {
-      {541, "G54.1 (additional work coordinate systems)"},
-      {220, "G22 (stored stroke check)"},
       {121, "G12.1 (polar interpolation)"},
   };
   for (const Missing& m : kMissing) {
@@ -279,32 +277,11 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
     if (t <= 30 || is_cycle(t) || t == 800) cycle_ = t;  // the last motion of groups 1 and 9
     if (t == 430 || t == 490) length_mode_ = t;
   }
+  if (!stroke_codes(b, w) || !work_codes(b, w)) return false;
   if (w.has_g(100)) {
     const long l = std::lround(w.get('L', 0));
     if (l >= 10 && l <= 13) return write_register(b, w, l);
-    if (l != 2) {
-      return error(core::Code::Unsupported, b, 0,
-                   fmt::format("G10 L{} (Fanuc offset registers) is not implemented in the fanuc "
-                               "dialect yet; G10 L2 is",
-                               l));
-    }
-    const long p = std::lround(w.get('P', 0));
-    if (p < 1 || p > 6) {
-      return error(core::Code::BadWordValue, b, 0,
-                   "G10 L2 P takes 1..6 (G54..G59); P0 (external offset) is not implemented");
-    }
-    const bool incremental = w.has_g(910) || (interp_.state().incremental && !w.has_g(900));
-    if (incremental) {
-      // Fanuc: G10 in G91 adds to the offset (LinuxCNC always sets it).
-      const double per = core::mm_per(interp_.state().units);
-      for (NcWord& word : w.list) {
-        const std::size_t a = std::string_view(kAxisLetters).find(word.letter);
-        if (word.taken || word.vacant || a == std::string_view::npos) continue;
-        const double stored =
-            interp_.parameters().get(static_cast<int>(5201 + 20 * p + static_cast<long>(a)));
-        word.value += (a >= 3 && a <= 5) ? stored : stored / per;
-      }
-    }
+    return work_offset(b, w, l);  // L2, L20, L50 (fanuc_workspaces.cpp)
   }
   return true;
 }
@@ -470,8 +447,10 @@ void Engine::group_one_motion(Words& w) {
 bool Engine::hand_over(const TapeBlock& b, Words& w) {
   const core::SourceLoc loc = loc_of(b, 0);
   std::string text(loc.col > 1 ? loc.col - 1 : 0, ' ');
+  std::vector<ColumnMap::Span> spans;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
+    spans.push_back({static_cast<std::uint32_t>(text.size() + 1), 0, loc_of(b, word.pos).col});
     if (word.letter == 'G') {
       int t = tenths(word.value);
       // One mirrored axis swaps the side of cutter compensation.
@@ -483,8 +462,14 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     } else {
       text += fmt::format("{}{} ", word.letter, number(word.value));
     }
+    spans.back().last = static_cast<std::uint32_t>(text.size());
   }
-  return interp_.run_block(text, {b.file, b.line, b.line_offset});
+  // The interpreter's diagnostics point at the Fanuc words, not at the
+  // rewritten text's columns.
+  columns_.set(b.file, b.line, std::move(spans));
+  const bool ok = interp_.run_block(text, {b.file, b.line, b.line_offset});
+  columns_.clear();
+  return ok;
 }
 
 }  // namespace usina::gcode::fanuc

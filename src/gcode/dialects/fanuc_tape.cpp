@@ -69,6 +69,7 @@ std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
   std::string_view comment;
   std::string cleaned;
   bool has_comment = false;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
   auto end_block = [&](std::size_t stop) {
     std::string_view raw =
         has_comment ? std::string_view(cleaned) : text.substr(start, stop - start);
@@ -108,6 +109,8 @@ std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
     while (!rest.empty() && blank(rest.back()))
       rest.remove_suffix(1);
     if (has_comment) {
+      b.text_start = static_cast<std::uint32_t>(rest.data() - raw.data());
+      b.gaps = gaps;
       stripped_.emplace_back(rest);
       rest = stripped_.back();
     }
@@ -117,6 +120,7 @@ std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
     cleaned.clear();
     has_comment = false;
     comment = {};
+    gaps.clear();
   };
   for (; i < text.size(); ++i) {
     const char c = text[i];
@@ -137,8 +141,12 @@ std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
       if (!has_comment) cleaned.assign(text.substr(start, i - start));
       if (comment.empty()) comment = text.substr(i + 1, stop - i - 1);
       has_comment = true;
+      const std::size_t last =
+          (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
+      gaps.emplace_back(static_cast<std::uint32_t>(cleaned.size()),
+                        static_cast<std::uint32_t>(last - i));
       cleaned += ' ';
-      i = (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
+      i = last;
       continue;
     }
     if (c == '%') {

@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace usina::gcode::fanuc {
@@ -23,6 +24,12 @@ struct TapeBlock {
   long sequence = -1;        // N number, -1 when none
   bool deleted = false;      // '/' at the start
   long program = -1;         // O number when the block starts a program
+  // A block with a comment has its text copied without it: where `text`
+  // started in the block (from `col`), and each comment's place in that
+  // copy with the characters it took beyond its one blank, so a position
+  // in `text` finds its column again.
+  std::uint32_t text_start = 0;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
 };
 
 class Tape {

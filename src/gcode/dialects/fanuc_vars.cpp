@@ -60,7 +60,10 @@ double Engine::modal_group(int group) const {
   case 11: return xf_.scaling ? 51 : 50;
   case 12: return modal_call_ ? 66 : 67;
   case 13: return s.css ? 96 : 97;
-  case 14: return s.coord_system <= 6 ? 53 + s.coord_system : 59 + (s.coord_system - 6) / 10.0;
+  case 4: return stroke_.armed() ? 22 : 23;
+  case 14:
+    if (additional_p_ != 0) return 54.1;
+    return s.coord_system <= 6 ? 53 + s.coord_system : 59 + (s.coord_system - 6) / 10.0;
   case 15: return g_number(s.path_mode);
   case 16: return xf_.rotation ? 68 : 69;
   case 17: return polar_ ? 16 : 15;
@@ -98,10 +101,7 @@ std::optional<double> Engine::system_variable(long index) const {
     default: return length(ai, s.tool_offset[a]);
     }
   }
-  if (index >= 5201 && index <= 5205) return 0.0;  // external work offset: usina has none
-  if (index >= 5221 && index <= 5329 && block >= 1 && block <= 9)
-    return interp_.parameters().get(static_cast<int>(index));
-  return std::nullopt;
+  return work_variable(index);  // #4130, EXT, G54-G59, G54.1
 }
 
 bool Engine::write(long index, Value v, const TapeBlock& b, std::size_t pos) {
@@ -124,14 +124,7 @@ bool Engine::write(long index, Value v, const TapeBlock& b, std::size_t pos) {
                    fmt::format("#3006 stop: {}", b.comment)});
     return true;
   }
-  const auto block = static_cast<int>(index % 20);
-  if (index >= 5221 && index <= 5329 && block >= 1 && block <= 9) {
-    // A work offset: through G10 L2 so the interpreter applies it.
-    const long system = (index - 5201) / 20;
-    return interp_.run_block(
-        fmt::format("G10 L2 P{} {}{:.10f}", system, kAxisLetters[block - 1], v.v),
-        {b.file, b.line, b.line_offset});
-  }
+  if (auto written = write_work_variable(index, v.v, b)) return *written;
   return error(core::Code::ReadOnlyParameter, b, pos,
                index == 0
                    ? std::string("#0 is always vacant; it cannot be written (Fanuc alarm 116)")

@@ -1,5 +1,7 @@
 // The rs274ngc dialect: LinuxCNC's language, run by the interpreter of
 // interp/ whose G/M table is interp/codes.cpp (g_group, m_group).
+#include <set>
+
 #include "gcode/dialect.hpp"
 
 namespace usina::gcode {
@@ -9,12 +11,39 @@ class Rs274Runner final : public ProgramRunner {
  public:
   explicit Rs274Runner(RunContext& c) : interp_(c.sources, std::move(c.options), c.sink, c.diags) {}
 
-  void set_parameter(int index, double value) override { interp_.set_parameter(index, value); }
+  void set_parameter(int index, double value) override {
+    interp_.set_parameter(index, value);
+    from_file_.insert(index);
+  }
 
   bool run(std::uint32_t file) override { return interp_.run(file); }
 
+  // LinuxCNC's save_parameters(): its required parameters (homes, G92, the
+  // selected system, the nine work systems) and every number the parameter
+  // file it started from held.
+  std::optional<std::vector<VarFileEntry>> persistent_variables() const override {
+    std::set<int> numbers = from_file_;
+    for (int base : {5160, 5180}) {
+      for (int a = 1; a <= 9; ++a)
+        numbers.insert(base + a);
+    }
+    for (int n = 5210; n <= 5220; ++n)
+      numbers.insert(n);
+    for (int system = 1; system <= 9; ++system) {
+      for (int k = 1; k <= 10; ++k)
+        numbers.insert(5200 + 20 * system + k);
+    }
+    std::vector<VarFileEntry> out;
+    for (int n : numbers) {
+      if (n >= kMinVarFileParameter && n <= kMaxVarFileParameter)
+        out.push_back({n, interp_.parameters().get(n)});
+    }
+    return out;
+  }
+
  private:
   Interpreter interp_;
+  std::set<int> from_file_;
 };
 
 std::unique_ptr<ProgramRunner> make(RunContext context) {

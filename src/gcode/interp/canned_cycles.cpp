@@ -123,7 +123,7 @@ struct DrillPlan {
   bool raise = false;           // rapid up to R first: the initial level is below it
   double middle = 0;            // G87: top of the back bore
   double off_a = 0, off_b = 0;  // G87: offsets of the tool's way in
-  double dwell = 0, peck = 0, clearance = 0;
+  double dwell = 0, peck = 0, clearance = 0, retract = 0;
   long repeats = 1;
   SpindleDir spindle = SpindleDir::Off;
 };
@@ -377,12 +377,12 @@ void g81_g82(Mover& m, const DrillPlan& p, double a, double b) {
   m.traverse(a, b, p.clear);
 }
 
-// G73 chip breaking: back off by the peck clearance after each peck (_g73).
+// G73 chip breaking: back off by the peck retract after each peck (_g73).
 void g73(Mover& m, const DrillPlan& p, double a, double b) {
   double d = p.r - p.peck;
   while (d > p.bottom) {
     m.feed(a, b, d);
-    m.traverse(a, b, d + p.clearance);
+    m.traverse(a, b, d + p.retract);
     d -= p.peck;
   }
   m.feed(a, b, p.bottom);
@@ -754,6 +754,7 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   p.dwell = v.p;
   p.peck = u.in(v.q);
   p.clearance = modal.peck_clearance / u.mm;
+  p.retract = modal.peck_retract.value_or(modal.peck_clearance) / u.mm;
   p.spindle = modal.spindle;
   if (auto e = check_plan(p)) return e;
 

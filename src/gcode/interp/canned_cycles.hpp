@@ -44,6 +44,8 @@ struct CycleModal {
   bool motion_mode_changed = true;
   canon::SpindleDir spindle = canon::SpindleDir::Off;
   double peck_clearance = 1.0;  // mm; G73/G83 stop this far above the last peck
+  // mm G73 backs off after each peck; empty: the clearance.
+  std::optional<double> peck_retract;
   // mm per program unit (25.4 under G20): LinuxCNC computes in program units,
   // and so must usina where a comparison decides how many pecks or passes.
   double length_unit = 1.0;

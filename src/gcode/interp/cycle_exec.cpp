@@ -39,6 +39,7 @@ bool Interpreter::cycle(BlockWords& w, GCode g, GCode previous) {
   cm.motion_mode_changed = previous != g;
   cm.spindle = state_.spindle;
   cm.peck_clearance = options_.peck_clearance_mm;
+  cm.peck_retract = options_.peck_retract_mm;
   cm.length_unit = core::mm_per(state_.units);
   cm.diameter_mode = state_.lathe_diameter;
   machine_.set_origin(canon::Origin::Cycle);

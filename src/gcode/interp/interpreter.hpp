@@ -33,6 +33,8 @@ struct InterpOptions {
   long max_total_iterations = 10'000'000;  // all loops of the program together
   int max_call_depth = 200;
   double spline_tolerance_mm = 0.001;
+  // G73's back-off after each peck; empty: peck_clearance_mm.
+  std::optional<double> peck_retract_mm;
   bool block_delete = false;  // '/' blocks skipped (the operator's switch; off as in LinuxCNC)
   // G41/G42 are checked but offset nothing: the moves are the programmed
   // contour (what a part drawing shows), not the tool centre.
@@ -77,6 +79,19 @@ class Interpreter final : private ParameterSource {
   void forget_cycle_level() { cycles_.note_other_motion(); }
 
   std::optional<double> cycle_initial_level() const { return cycles_.initial_level(); }
+
+  // The machine settings of G73's back-off and G83's clearance, changed
+  // during a run (a control's parameters set by the program).
+  void set_peck_distances(double g73_retract_mm, double g83_clearance_mm) {
+    options_.peck_retract_mm = g73_retract_mm;
+    options_.peck_clearance_mm = g83_clearance_mm;
+  }
+
+  double peck_retract_mm() const {
+    return options_.peck_retract_mm.value_or(options_.peck_clearance_mm);
+  }
+
+  double peck_clearance_mm() const { return options_.peck_clearance_mm; }
 
   bool failed() const { return failed_; }
 
