@@ -16,6 +16,7 @@
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
+#include "render_and_discard.hpp"
 
 #ifndef USINA_FUZZ_DIALECT
 #  error "define USINA_FUZZ_DIALECT as the dialect's name, e.g. -DUSINA_FUZZ_DIALECT=\"romi\""
@@ -52,19 +53,6 @@ constexpr const FuzzedOptions* find_fuzzed(std::string_view dialect) {
 constexpr const FuzzedOptions* kFuzzed = find_fuzzed(USINA_FUZZ_DIALECT);
 static_assert(kFuzzed != nullptr, "USINA_FUZZ_DIALECT names no dialect of kFuzzedOptions");
 
-class RenderAndDiscard final : public usina::core::DiagnosticSink {
- public:
-  explicit RenderAndDiscard(const usina::core::SourceManager& sources) : sources_(sources) {}
-
-  void report(usina::core::Diagnostic d) override {
-    const std::string text = usina::core::render(d, sources_);
-    (void)text;
-  }
-
- private:
-  const usina::core::SourceManager& sources_;
-};
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -82,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (gcode::resolve_options(*dialect, given, values)) return 0;
 
   core::SourceManager sources;
-  RenderAndDiscard diags(sources);
+  fuzz::RenderAndDiscard diags(sources);
   std::string text(reinterpret_cast<const char*>(data), size);
   const std::uint32_t id = sources.add(core::SourceFile::from_string("<fuzz>", std::move(text)));
 
