@@ -25,6 +25,9 @@ jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
 targets=(parser interpreter romi fanuc grbl)
+# The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
+# with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
+dialects=" romi fanuc grbl "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -44,7 +47,7 @@ mkdir -p "$out"
   echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined ${FUZZ_EXTRA_FLAGS:-} -I$root/src"
   echo "lflags = -fsanitize=fuzzer,address,undefined"
   echo "rule cxx"
-  echo "  command = \$cxx \$cflags -MMD -MF \$out.d -c \$in -o \$out"
+  echo "  command = \$cxx \$cflags \$defines -MMD -MF \$out.d -c \$in -o \$out"
   echo "  depfile = \$out.d"
   echo "  deps = gcc"
   echo "  description = CXX \$in"
@@ -58,7 +61,12 @@ mkdir -p "$out"
     echo "build $o: cxx $root/$s"
   done
   for t in "${targets[@]}"; do
-    echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
+    if [[ "$dialects" == *" $t "* ]]; then
+      echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_dialect.cpp"
+      echo "  defines = -DUSINA_FUZZ_DIALECT=\\\"$t\\\""
+    else
+      echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
+    fi
     echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o ${objs[*]}"
   done
 } > "$out/build.ninja.new"

@@ -31,6 +31,8 @@ struct Control {
   std::string dwell_word = "P";  // G4 P<s> (LinuxCNC, grbl) or G4 X<s> (Fanuc)
   std::string program_end = "M30";
   void (*header)(BlockOut& out, const PostOptions& options) = nullptr;
+  // After the spindle stop and coolant off, which the writer adds when the
+  // program did not end with them: the end code and what follows it.
   void (*footer)(BlockOut& out, const PostOptions& options) = nullptr;
 };
 

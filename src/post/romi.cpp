@@ -23,9 +23,8 @@ void header(BlockOut& out, const PostOptions& o) {
   out.block("G40");
 }
 
+// The spindle stop and coolant off before it are the writer's (Writer::end).
 void footer(BlockOut& out, const PostOptions&) {
-  out.block("M05");
-  out.block("M09");
   out.block("M02");
 }
 

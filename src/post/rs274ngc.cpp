@@ -19,9 +19,8 @@ void header(BlockOut& out, const PostOptions& o) {
   out.block("G21 G17 G90 G94 G40 G49 G80 G98");
 }
 
+// The spindle stop and coolant off before it are the writer's (Writer::end).
 void footer(BlockOut& out, const PostOptions&) {
-  out.block("M5");
-  out.block("M9");
   out.block("M30");
 }
 

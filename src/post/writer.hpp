@@ -94,6 +94,10 @@ class Writer final : public canon::Sink {
   std::optional<long> speed_;
   canon::SpindleDir dir_ = canon::SpindleDir::Off;
   canon::Coolant coolant_;
+  // The last spindle word written was M5, the last coolant word M9: the end
+  // of the program then writes no second one.
+  bool spindle_stop_written_ = false;
+  bool coolant_off_written_ = false;
   std::optional<double> cycle_z_, cycle_r_, cycle_q_;
   std::string g0_, g1_, g81_, g83_;  // the motion codes as this control writes them
   std::string words_, axes_buf_;     // reused for every straight move

@@ -34,6 +34,7 @@ void Writer::spindle(const canon::Spindle& s) {
   }
   if (s.dir != dir_) {
     dir_ = s.dir;
+    spindle_stop_written_ = s.dir == canon::SpindleDir::Off;
     append(w, code('M',
                    s.dir == canon::SpindleDir::Cw ? 3 : (s.dir == canon::SpindleDir::Ccw ? 4 : 5)));
   }
@@ -45,9 +46,11 @@ void Writer::coolant(const canon::Coolant& c) {
   if ((coolant_.mist && !c.mist) || (coolant_.flood && !c.flood)) {
     out_.block(code('M', 9));
     coolant_ = {};
+    coolant_off_written_ = true;
   }
   if (c.mist && !coolant_.mist) out_.block(code('M', 7));
   if (c.flood && !coolant_.flood) out_.block(code('M', 8));
+  if (c.mist || c.flood) coolant_off_written_ = false;
   coolant_ = c;
 }
 

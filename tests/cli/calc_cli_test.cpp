@@ -1,68 +1,27 @@
 // `usina calc` as a user runs it: seed 004's examples 7.1-7.3 on standard
 // output, in text and JSON, and every bad input as "usina: error:" with exit
 // status 2.
-#include <stdio.h>  // popen, pclose, fileno (POSIX)
-
 #include <array>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
+
+#include "usina_process.hpp"
 
 namespace {
 
 using nlohmann::json;
-
-const std::string kBinary = USINA_BINARY;
+using usina::test::contains;
+using usina::test::usina;
+using Result = usina::test::Run;
 
 const std::string kExample71 = "--pitch 6 --gear-ratio 5 --steps 48 --distance 250 --feed 500";
 const std::string kExample72 =
     "--pitch 6 --gear-ratio 5 --encoder-slots 48 --distance 250 --feed 500";
 const std::string kExample73 =
     "--pitch 6 --gear-ratio 5 --steps 48 --travel 1000 --bits 16 --sigma 0.005";
-
-struct Result {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_all(FILE* f) {
-  std::string s;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0)
-    s.append(buf.data(), n);
-  return s;
-}
-
-// Runs `usina <args>` (a shell word list); standard error goes to a temporary file.
-Result usina(const std::string& args) {
-  Result r;
-  FILE* err = std::tmpfile();
-  EXPECT_NE(err, nullptr);
-  if (err == nullptr) return r;
-  const std::string cmd =
-      "'" + kBinary + "' " + args + " </dev/null 2>&" + std::to_string(fileno(err));
-  FILE* p = popen(cmd.c_str(), "r");
-  EXPECT_NE(p, nullptr) << cmd;
-  if (p != nullptr) {
-    r.out = read_all(p);
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-  }
-  std::rewind(err);
-  r.err = read_all(err);
-  EXPECT_EQ(std::fclose(err), 0);
-  return r;
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
 
 // Runs a subcommand with --format json and parses what it printed.
 json usina_json(const std::string& args) {

@@ -1,121 +1,23 @@
 // The usina command as a user runs it: the built binary, its exit status,
 // what it writes to standard output and standard error.
-#include <stdio.h>
-#include <stdlib.h>
-#include <unistd.h>
+#include <unistd.h>  // unlink
 
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
+
+#include "usina_process.hpp"
 
 namespace {
 
-const std::string kBinary = USINA_BINARY;
+using usina::test::contains;
+using usina::test::lines;
+using usina::test::quote;
+using usina::test::TempDir;
+using usina::test::usina;
+using Result = usina::test::Run;
+
 const std::string kPrograms = std::string(USINA_TEST_DIR) + "/programs/rs274ngc";
-
-// A temporary folder removed with its files when the test ends.
-class TempDir {
- public:
-  TempDir() {
-    char tmpl[] = "/tmp/usina_cli_test_XXXXXX";
-    const char* d = mkdtemp(tmpl);
-    EXPECT_NE(d, nullptr);
-    path_ = d != nullptr ? d : "/tmp";
-  }
-
-  ~TempDir() {
-    for (const std::string& f : files_)
-      ::unlink(f.c_str());
-    ::rmdir(path_.c_str());
-  }
-
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string p = path_ + "/" + name;
-    std::ofstream(p, std::ios::binary) << text;
-    files_.push_back(p);
-    return p;
-  }
-
-  // A path the test may create a file at; removed afterwards.
-  std::string reserve(const std::string& name) {
-    const std::string p = path_ + "/" + name;
-    files_.push_back(p);
-    return p;
-  }
-
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-  std::vector<std::string> files_;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Single-quotes `s` for /bin/sh.
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
-
-struct Result {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-// Runs `usina <args>` with `input` on standard input.
-Result usina(const std::string& args, const std::string& input = "") {
-  TempDir dir;
-  const std::string in = dir.write("stdin", input);
-  const std::string err = dir.reserve("stderr");
-  const std::string cmd = quote(kBinary) + " " + args + " <" + quote(in) + " 2>" + quote(err);
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  EXPECT_NE(p, nullptr) << cmd;
-  if (p == nullptr) return r;
-  char buf[4096];
-  std::size_t n = 0;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0)
-    r.out.append(buf, n);
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-  r.err = slurp(err);
-  return r;
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
-
-std::vector<std::string> lines(const std::string& s) {
-  std::vector<std::string> out;
-  std::istringstream in(s);
-  std::string line;
-  while (std::getline(in, line))
-    out.push_back(line);
-  return out;
-}
 
 // --- version and help -------------------------------------------------------
 
@@ -302,10 +204,7 @@ TEST(CliTrace, ShellSyntaxInASubroutineNameIsNeverRun) {
   const Result r = usina("trace --subroutine-path " + quote(dir.path()) + " " + quote(prog));
   EXPECT_EQ(r.status, 1);
   EXPECT_TRUE(contains(r.err, "[E_UNKNOWN_SUBROUTINE]")) << r.err;
-
-  struct stat st {};
-
-  EXPECT_NE(::stat(marker, &st), 0) << marker << " was created";
+  EXPECT_FALSE(usina::test::exists(marker)) << marker << " was created";
 }
 
 TEST(CliTrace, ToolTableGivesTheDiameter) {

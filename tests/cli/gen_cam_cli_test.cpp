@@ -1,63 +1,22 @@
 // usina gen from-dxf, pocket, profile, drill and engrave as a user runs them:
 // exit status, what the post writes, the diagnostics, and every program read
 // back by usina's own interpreter (`usina check`).
-#include <stdio.h>
-#include <unistd.h>
+#include <unistd.h>  // unlink
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
+
+#include "usina_process.hpp"
 
 namespace {
 
-const std::string kBinary = USINA_BINARY;
+using usina::test::contains;
+using usina::test::count;
+using usina::test::usina;
+using Result = usina::test::Run;
+
 const std::string kDxf = std::string(USINA_TEST_DIR) + "/programs/dxf/";
-
-struct Result {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-// A scratch file name of this test process (ctest runs tests in parallel).
-std::string scratch(const std::string& name) {
-  return ::testing::TempDir() + "usina_gen_" + std::to_string(::getpid()) + "_" + name;
-}
-
-// Runs `usina <args>` (args already quoted for /bin/sh).
-Result usina(const std::string& args) {
-  const std::string err = scratch("stderr");
-  const std::string cmd = "'" + kBinary + "' " + args + " </dev/null 2>'" + err + "'";
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  char buf[4096];
-  std::size_t n = 0;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0)
-    r.out.append(buf, n);
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-  std::ifstream in(err);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  ::unlink(err.c_str());
-  return r;
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
-
-int count(const std::string& s, const std::string& part) {
-  int n = 0;
-  for (auto i = s.find(part); i != std::string::npos; i = s.find(part, i + 1))
-    ++n;
-  return n;
-}
 
 class GenCam : public ::testing::Test {
  protected:
@@ -66,35 +25,36 @@ class GenCam : public ::testing::Test {
   // Generates with `args`, checks success, and reads the program back
   // (usina reads the rs274ngc dialect only: a romi program is not read back).
   std::string generate(const std::string& args, const std::string& ext = "ngc") {
-    const std::string file = scratch("out." + ext);
+    const std::string file = dir_.path("out." + ext);
     const Result r = usina("gen " + args + " -o '" + file + "'");
     EXPECT_EQ(r.status, 0) << r.err;
-    std::ifstream in(file);
-    std::ostringstream ss;
-    ss << in.rdbuf();
+    const std::string program = usina::test::slurp(file);
     if (!contains(args, "--post romi")) {
       const Result check = usina("check '" + file + "'");
       EXPECT_EQ(check.status, 0) << args << "\n" << check.err;
     }
     ::unlink(file.c_str());
-    return ss.str();
+    return program;
   }
 
   // Runs `args` expecting bad input: status 2, `code` on stderr, no program.
   void fails(const std::string& args, const std::string& code) {
-    const std::string file = scratch("fail.ngc");
+    const std::string file = dir_.path("fail.ngc");
     ::unlink(file.c_str());
     const Result r = usina("gen " + args + " -o '" + file + "'");
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_TRUE(contains(r.err, code)) << args << "\n" << r.err;
-    EXPECT_NE(::access(file.c_str(), F_OK), 0) << "a failed run wrote " << file;
+    EXPECT_FALSE(usina::test::exists(file)) << "a failed run wrote " << file;
   }
+
+ private:
+  const usina::test::TempDir dir_;
 };
 
 TEST_F(GenCam, FromDxfKeepsArcsAsG3) {
   const std::string prog =
       generate("from-dxf '" + kDxf + "arcs_bulges.dxf' --layer SLOT --depth 1 --post rs274ngc");
-  EXPECT_EQ(count(prog, "G3"), 2) << prog;
+  EXPECT_EQ(count(prog, "G3"), 2u) << prog;
 }
 
 TEST_F(GenCam, FromDxfErrors) {
@@ -152,7 +112,7 @@ TEST_F(GenCam, ProfileErrors) {
 TEST_F(GenCam, DrillCyclesWhereTheControlHasThem) {
   const std::string prog =
       generate("drill --bolt-circle 0,0,30,6,15 --depth 10 --tool-diameter 8.5 --post fanuc", "nc");
-  EXPECT_EQ(count(prog, "G81"), 1) << prog;  // modal: one G81, six holes
+  EXPECT_EQ(count(prog, "G81"), 1u) << prog;  // modal: one G81, six holes
   EXPECT_TRUE(
       contains(generate("drill --grid 0,0,3,2,10,10 --depth 5 --post rs274ngc --peck 2"), "G83"));
   const std::string grbl = generate("drill --at 1,2 --at 3,4 --depth 5 --post grbl", "gcode");

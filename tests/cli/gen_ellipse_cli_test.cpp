@@ -1,6 +1,8 @@
 // usina gen ellipse-pocket: the golden program per post, the round trip
 // through usina's interpreter in each control's dialect, the input errors.
-#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -37,11 +39,11 @@ TEST(GenEllipseCli, EveryPostWritesItsGoldenProgram) {
 }
 
 TEST(GenEllipseCli, WritesTheOutputFile) {
-  const std::string out = test::temp_path("ellipse.ngc");
+  const test::TempDir dir;
+  const std::string out = dir.path("ellipse.ngc");
   const test::Run r = test::usina(kArgs + " --post rs274ngc -o " + out);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(test::slurp(out), test::slurp(golden(kPosts[0])));
-  std::filesystem::remove(out);
 }
 
 // The rs274ngc program read back moves as the generator's canon does (the

@@ -1,94 +1,24 @@
 // `usina stats` as a user runs it: text and JSON on standard output, the
 // checks on standard error, and every error path with its exit status
 // (0; 1 program error, figures still printed; 2 bad input).
-#include <stdio.h>
-#include <stdlib.h>
-#include <unistd.h>
-
-#include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
+
+#include "usina_process.hpp"
 
 namespace {
 
 using nlohmann::json;
+using usina::test::contains;
+using usina::test::slurp;
+using usina::test::TempDir;
+using usina::test::usina;
+using Result = usina::test::Run;
 
-const std::string kBinary = USINA_BINARY;
 const std::string kExamples = std::string(USINA_TEST_DIR) + "/../examples";
 const std::string kVmc = kExamples + "/machines/small_vmc.toml";
-
-class TempDir {
- public:
-  TempDir() {
-    char tmpl[] = "/tmp/usina_stats_test_XXXXXX";
-    const char* d = mkdtemp(tmpl);
-    EXPECT_NE(d, nullptr);
-    path_ = d != nullptr ? d : "/tmp";
-  }
-
-  ~TempDir() {
-    for (const std::string& f : files_)
-      ::unlink(f.c_str());
-    ::rmdir(path_.c_str());
-  }
-
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string p = path_ + "/" + name;
-    std::ofstream(p, std::ios::binary) << text;
-    files_.push_back(p);
-    return p;
-  }
-
- private:
-  std::string path_;
-  std::vector<std::string> files_;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-struct Result {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-// Runs `usina <args>` with `input` on standard input.
-Result usina(const std::string& args, const std::string& input = "") {
-  TempDir dir;
-  const std::string in = dir.write("stdin", input);
-  const std::string err = dir.write("stderr", "");
-  const std::string cmd = "'" + kBinary + "' " + args + " <'" + in + "' 2>'" + err + "'";
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  EXPECT_NE(p, nullptr) << cmd;
-  if (p == nullptr) return r;
-  char buf[4096];
-  std::size_t n = 0;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0)
-    r.out.append(buf, n);
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-  r.err = slurp(err);
-  return r;
-}
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
 
 json parse(const Result& r) {
   json j = json::parse(r.out, nullptr, /*allow_exceptions=*/false);
@@ -208,7 +138,7 @@ TEST(StatsCli, UnreadableProfileIsBadInput) {
 }
 
 TEST(StatsCli, BadProfileIsBadInputWithItsDiagnostic) {
-  TempDir dir;
+  const TempDir dir;
   std::string text = slurp(kVmc);
   text.replace(text.find("accel = 1500.0"), 14, "accel = \"fast\"");
   const std::string m = dir.write("m.toml", text);
@@ -221,7 +151,7 @@ TEST(StatsCli, BadProfileIsBadInputWithItsDiagnostic) {
 }
 
 TEST(StatsCli, ProfileThatIsNotTomlIsBadInput) {
-  TempDir dir;
+  const TempDir dir;
   const std::string m = dir.write("m.toml", "[machine\n");
   const Result r = usina("stats --machine '" + m + "' -", kSquare);
   EXPECT_EQ(r.status, 2);

@@ -1,15 +1,17 @@
-// Test helpers for the verbs that write programs: run the usina binary,
-// read files, and compare the motion of two traces (spec/trace.md).
+// The one fixture of the CLI tests (tests/cli/*_test.cpp): a scratch folder
+// per test, the usina binary run as a user runs it, files read and written,
+// and the motion of two traces compared (spec/trace.md).
 #pragma once
 
-#include <stdio.h>
-#include <stdlib.h>
+#include <stdio.h>  // popen, pclose (POSIX)
 #include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -25,21 +27,95 @@ inline std::string slurp(const std::string& path) {
   return ss.str();
 }
 
+inline bool exists(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+inline bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
+
+// How many times `part` stands in `s`, overlaps counted.
+inline std::size_t count(const std::string& s, const std::string& part) {
+  std::size_t n = 0;
+  for (std::size_t at = s.find(part); at != std::string::npos; at = s.find(part, at + 1))
+    ++n;
+  return n;
+}
+
+inline std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  std::string line;
+  while (std::getline(in, line))
+    out.push_back(line);
+  return out;
+}
+
+// Single-quotes `s` for /bin/sh.
+inline std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (const char c : s)
+    out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// A scratch folder, /tmp/usina_test_<pid>_<n>, removed with its files when
+// it goes out of scope. The process id keeps the test processes ctest runs
+// in parallel apart; n keeps apart the folders of one process.
+class TempDir {
+ public:
+  TempDir() {
+    static int made = 0;
+    path_ = (std::filesystem::temp_directory_path() /
+             ("usina_test_" + std::to_string(::getpid()) + "_" + std::to_string(++made)))
+                .string();
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);  // left by a crashed process of the same id
+    EXPECT_TRUE(std::filesystem::create_directory(path_, ec)) << path_ << ": " << ec.message();
+  }
+
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+    EXPECT_FALSE(ec) << path_ << ": " << ec.message();
+  }
+
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const std::string& path() const { return path_; }
+
+  // Where the file `name` is (or will be) in the folder.
+  std::string path(const std::string& name) const { return path_ + "/" + name; }
+
+  // Writes `text` to the file `name` and returns its path.
+  std::string write(const std::string& name, const std::string& text) const {
+    const std::string p = path(name);
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+  std::string read(const std::string& name) const { return slurp(path(name)); }
+
+ private:
+  std::string path_;
+};
+
 struct Run {
-  int status = -1;
+  int status = -1;  // the exit status, 128 + the signal when one ended it
   std::string out;
   std::string err;
 };
 
-// A file name under /tmp unique to this process and `tag`; removed at exit of the test.
-inline std::string temp_path(const std::string& tag) {
-  return "/tmp/usina_test_" + std::to_string(::getpid()) + "_" + tag;
-}
-
-// Runs `usina <args>` (args already quoted for /bin/sh).
-inline Run usina(const std::string& args) {
-  const std::string err = temp_path("stderr");
-  const std::string cmd = std::string(USINA_BINARY) + " " + args + " </dev/null 2>" + err;
+// Runs `usina <args>` (args already quoted for /bin/sh) with `input` on
+// standard input; standard output and standard error are kept apart.
+inline Run usina(const std::string& args, const std::string& input = "") {
+  const TempDir io;
+  const std::string in = io.write("stdin", input);
+  const std::string err = io.path("stderr");
+  const std::string cmd = quote(USINA_BINARY) + " " + args + " <" + quote(in) + " 2>" + quote(err);
   Run r;
   FILE* p = popen(cmd.c_str(), "r");
   EXPECT_NE(p, nullptr) << cmd;
@@ -51,7 +127,6 @@ inline Run usina(const std::string& args) {
   const int st = pclose(p);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
   r.err = slurp(err);
-  ::unlink(err.c_str());
   return r;
 }
 

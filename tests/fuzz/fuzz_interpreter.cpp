@@ -12,27 +12,11 @@
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
 #include "gcode/interp/interpreter.hpp"
-
-namespace {
-
-class RenderAndDiscard final : public usina::core::DiagnosticSink {
- public:
-  explicit RenderAndDiscard(const usina::core::SourceManager& sources) : sources_(sources) {}
-
-  void report(usina::core::Diagnostic d) override {
-    const std::string text = usina::core::render(d, sources_);
-    (void)text;
-  }
-
- private:
-  const usina::core::SourceManager& sources_;
-};
-
-}  // namespace
+#include "render_and_discard.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   usina::core::SourceManager sources;
-  RenderAndDiscard diags(sources);
+  usina::fuzz::RenderAndDiscard diags(sources);
   std::string text(reinterpret_cast<const char*>(data), size);
   const std::uint32_t id =
       sources.add(usina::core::SourceFile::from_string("<fuzz>", std::move(text)));

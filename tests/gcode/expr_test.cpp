@@ -73,90 +73,79 @@ std::pair<std::string_view, std::uint32_t> error_of(const std::string& expr,
 
 // --- arithmetic and functions ----------------------------------------------
 
-TEST(Expr, TrigonometryIsInDegrees) {
-  EXPECT_NEAR(value_of("SIN[30]"), 0.5, 1e-12);
-  EXPECT_NEAR(value_of("COS[60]"), 0.5, 1e-12);
-  EXPECT_NEAR(value_of("TAN[45]"), 1.0, 1e-12);
-  EXPECT_NEAR(value_of("ASIN[1]"), 90.0, 1e-12);
-  EXPECT_NEAR(value_of("ACOS[0]"), 90.0, 1e-12);
-  EXPECT_NEAR(value_of("ACOS[-1]"), 180.0, 1e-12);
-  EXPECT_NEAR(value_of("ATAN[1]/[1]"), 45.0, 1e-12);
-}
+// An expression and the value it must have; `tol` 0 asks for the exact value.
+struct ValueCase {
+  const char* what;  // the rule the row checks
+  const char* expr;
+  double want;
+  double tol;
+};
 
-TEST(Expr, AtanOfTwoArgumentsKeepsTheQuadrant) {
-  EXPECT_NEAR(value_of("ATAN[1]/[-1]"), 135.0, 1e-12);
-  EXPECT_NEAR(value_of("ATAN[-1]/[-1]"), -135.0, 1e-12);
-  EXPECT_NEAR(value_of("ATAN[-1]/[1]"), -45.0, 1e-12);
-  EXPECT_NEAR(value_of("ATAN[1]/[0]"), 90.0, 1e-12);
-}
+constexpr ValueCase kValueCases[] = {
+    {"trigonometry is in degrees", "SIN[30]", 0.5, 1e-12},
+    {"trigonometry is in degrees", "COS[60]", 0.5, 1e-12},
+    {"trigonometry is in degrees", "TAN[45]", 1.0, 1e-12},
+    {"trigonometry is in degrees", "ASIN[1]", 90.0, 1e-12},
+    {"trigonometry is in degrees", "ACOS[0]", 90.0, 1e-12},
+    {"trigonometry is in degrees", "ACOS[-1]", 180.0, 1e-12},
+    {"trigonometry is in degrees", "ATAN[1]/[1]", 45.0, 1e-12},
+    {"ATAN of two arguments keeps the quadrant", "ATAN[1]/[-1]", 135.0, 1e-12},
+    {"ATAN of two arguments keeps the quadrant", "ATAN[-1]/[-1]", -135.0, 1e-12},
+    {"ATAN of two arguments keeps the quadrant", "ATAN[-1]/[1]", -45.0, 1e-12},
+    {"ATAN of two arguments keeps the quadrant", "ATAN[1]/[0]", 90.0, 1e-12},
+    // LinuxCNC interp_execute.cc: fmod, then + |b| when negative.
+    {"MOD takes the divisor's magnitude, never negative", "[7 MOD 3]", 1.0, 0},
+    {"MOD takes the divisor's magnitude, never negative", "[-7 MOD 3]", 2.0, 0},
+    {"MOD takes the divisor's magnitude, never negative", "[-7 MOD -3]", 2.0, 0},
+    {"MOD takes the divisor's magnitude, never negative", "[7 MOD -3]", 1.0, 0},
+    {"MOD takes the divisor's magnitude, never negative", "[6 MOD 3]", 0.0, 0},
+    {"MOD takes the divisor's magnitude, never negative", "[5.5 MOD 2]", 1.5, 1e-12},
+    // LinuxCNC TOLERANCE_EQUAL = 0.0001.
+    {"EQ and NE compare within 0.0001", "[1 EQ 1.00005]", 1.0, 0},
+    {"EQ and NE compare within 0.0001", "[1 EQ 1.0002]", 0.0, 0},
+    {"EQ and NE compare within 0.0001", "[1 NE 1.00005]", 0.0, 0},
+    {"EQ and NE compare within 0.0001", "[1 NE 1.0002]", 1.0, 0},
+    {"ordering comparisons are exact", "[1 GT 1.00005]", 0.0, 0},
+    {"ordering comparisons are exact", "[1.00005 GT 1]", 1.0, 0},
+    {"ordering comparisons are exact", "[2 GE 2]", 1.0, 0},
+    {"ordering comparisons are exact", "[2 LT 2]", 0.0, 0},
+    {"ordering comparisons are exact", "[2 LE 2]", 1.0, 0},
+    {"ordering comparisons are exact", "[1 LT 2]", 1.0, 0},
+    {"logical operators treat non-zero as true", "[2 AND 3]", 1.0, 0},
+    {"logical operators treat non-zero as true", "[2 AND 0]", 0.0, 0},
+    {"logical operators treat non-zero as true", "[0 OR 0]", 0.0, 0},
+    {"logical operators treat non-zero as true", "[0 OR -1]", 1.0, 0},
+    {"logical operators treat non-zero as true", "[1 XOR 1]", 0.0, 0},
+    {"logical operators treat non-zero as true", "[1 XOR 0]", 1.0, 0},
+    {"ROUND halves away from zero", "ROUND[2.5]", 3.0, 0},
+    {"ROUND halves away from zero", "ROUND[-2.5]", -3.0, 0},
+    {"ROUND halves away from zero", "ROUND[0.4999]", 0.0, 0},
+    {"ROUND halves away from zero", "ROUND[1.5]", 2.0, 0},
+    {"FIX rounds down, FUP rounds up", "FIX[1.9]", 1.0, 0},
+    {"FIX rounds down, FUP rounds up", "FIX[-1.5]", -2.0, 0},
+    {"FIX rounds down, FUP rounds up", "FUP[1.2]", 2.0, 0},
+    {"FIX rounds down, FUP rounds up", "FUP[-1.5]", -1.0, 0},
+    {"FIX rounds down, FUP rounds up", "FIX[3]", 3.0, 0},
+    {"FIX rounds down, FUP rounds up", "FUP[3]", 3.0, 0},
+    {"EXP, LN, SQRT, ABS", "EXP[1]", 2.718281828459045, 1e-15},  // e
+    {"EXP, LN, SQRT, ABS", "LN[EXP[2]]", 2.0, 1e-12},
+    {"EXP, LN, SQRT, ABS", "SQRT[2.25]", 1.5, 0},
+    {"EXP, LN, SQRT, ABS", "SQRT[0]", 0.0, 0},
+    {"EXP, LN, SQRT, ABS", "ABS[-3.5]", 3.5, 0},
+    {"a negative base to an integer power", "[-2 ** 3]", -8.0, 0},
+    {"a negative base to an integer power", "[2 ** -1]", 0.5, 0},
+    {"division is floating point", "[1/4]", 0.25, 0},
+};
 
-TEST(Expr, ModResultTakesTheDivisorsMagnitudeNeverNegative) {
-  // LinuxCNC interp_execute.cc: fmod, then + |b| when negative.
-  EXPECT_EQ(value_of("[7 MOD 3]"), 1.0);
-  EXPECT_EQ(value_of("[-7 MOD 3]"), 2.0);
-  EXPECT_EQ(value_of("[-7 MOD -3]"), 2.0);
-  EXPECT_EQ(value_of("[7 MOD -3]"), 1.0);
-  EXPECT_EQ(value_of("[6 MOD 3]"), 0.0);
-  EXPECT_NEAR(value_of("[5.5 MOD 2]"), 1.5, 1e-12);
-}
-
-TEST(Expr, EqAndNeCompareWithinOneTenThousandth) {
-  // LinuxCNC TOLERANCE_EQUAL = 0.0001.
-  EXPECT_EQ(value_of("[1 EQ 1.00005]"), 1.0);
-  EXPECT_EQ(value_of("[1 EQ 1.0002]"), 0.0);
-  EXPECT_EQ(value_of("[1 NE 1.00005]"), 0.0);
-  EXPECT_EQ(value_of("[1 NE 1.0002]"), 1.0);
-}
-
-TEST(Expr, OrderingComparisonsAreExact) {
-  EXPECT_EQ(value_of("[1 GT 1.00005]"), 0.0);
-  EXPECT_EQ(value_of("[1.00005 GT 1]"), 1.0);
-  EXPECT_EQ(value_of("[2 GE 2]"), 1.0);
-  EXPECT_EQ(value_of("[2 LT 2]"), 0.0);
-  EXPECT_EQ(value_of("[2 LE 2]"), 1.0);
-  EXPECT_EQ(value_of("[1 LT 2]"), 1.0);
-}
-
-TEST(Expr, LogicalOperatorsTreatNonZeroAsTrue) {
-  EXPECT_EQ(value_of("[2 AND 3]"), 1.0);
-  EXPECT_EQ(value_of("[2 AND 0]"), 0.0);
-  EXPECT_EQ(value_of("[0 OR 0]"), 0.0);
-  EXPECT_EQ(value_of("[0 OR -1]"), 1.0);
-  EXPECT_EQ(value_of("[1 XOR 1]"), 0.0);
-  EXPECT_EQ(value_of("[1 XOR 0]"), 1.0);
-}
-
-TEST(Expr, RoundHalvesAwayFromZero) {
-  EXPECT_EQ(value_of("ROUND[2.5]"), 3.0);
-  EXPECT_EQ(value_of("ROUND[-2.5]"), -3.0);
-  EXPECT_EQ(value_of("ROUND[0.4999]"), 0.0);
-  EXPECT_EQ(value_of("ROUND[1.5]"), 2.0);
-}
-
-TEST(Expr, FixRoundsDownFupRoundsUp) {
-  EXPECT_EQ(value_of("FIX[1.9]"), 1.0);
-  EXPECT_EQ(value_of("FIX[-1.5]"), -2.0);
-  EXPECT_EQ(value_of("FUP[1.2]"), 2.0);
-  EXPECT_EQ(value_of("FUP[-1.5]"), -1.0);
-  EXPECT_EQ(value_of("FIX[3]"), 3.0);
-  EXPECT_EQ(value_of("FUP[3]"), 3.0);
-}
-
-TEST(Expr, ExpLnSqrtAbs) {
-  EXPECT_NEAR(value_of("EXP[1]"), std::exp(1.0), 1e-15);
-  EXPECT_NEAR(value_of("LN[EXP[2]]"), 2.0, 1e-12);
-  EXPECT_EQ(value_of("SQRT[2.25]"), 1.5);
-  EXPECT_EQ(value_of("SQRT[0]"), 0.0);
-  EXPECT_EQ(value_of("ABS[-3.5]"), 3.5);
-}
-
-TEST(Expr, PowerWithNegativeBaseAndIntegerExponent) {
-  EXPECT_EQ(value_of("[-2 ** 3]"), -8.0);
-  EXPECT_EQ(value_of("[2 ** -1]"), 0.5);
-}
-
-TEST(Expr, DivisionIsFloatingPoint) {
-  EXPECT_EQ(value_of("[1/4]"), 0.25);
+TEST(Expr, OperatorsAndFunctionsGiveTheirValues) {
+  for (const ValueCase& c : kValueCases) {
+    SCOPED_TRACE(std::string(c.what) + ": " + c.expr);
+    if (c.tol == 0) {
+      EXPECT_EQ(value_of(c.expr), c.want);
+    } else {
+      EXPECT_NEAR(value_of(c.expr), c.want, c.tol);
+    }
+  }
 }
 
 // --- parameters -------------------------------------------------------------
@@ -240,69 +229,60 @@ TEST(NormaliseName, LowerCaseWithoutBlanks) {
 
 // --- errors: code and column ------------------------------------------------
 
-TEST(ExprError, DivisionByZero) {
-  EXPECT_EQ(error_of("[1/0]").first, core::code_name(Code::DivisionByZero));
+// An expression that must fail with `code`, at column `col` of the line
+// "X" + expr (0: the column is not checked).
+struct ErrorCase {
+  const char* what;  // the rule the row checks
+  const char* expr;
+  Code code;
+  std::uint32_t col;
+};
+
+constexpr ErrorCase kErrorCases[] = {
+    {"division by zero", "[1/0]", Code::DivisionByZero, 0},
+    {"division by a zero parameter", "[5/#3]", Code::DivisionByZero, 0},
+    {"MOD by zero", "[5 MOD 0]", Code::DivisionByZero, 0},
+    {"a negative base to a fractional power", "[-8 ** 0.5]", Code::DomainError, 0},
+    // Regression (a bug the tests found, fixed): a binary operator's error points at the token
+    // after its right operand (the ']' or the next operator), not at the operator. Expected:
+    // `X[1/0]` reports column 4 (the '/'); actual: column 6 (the ']'). The parser gave a Binary
+    // node the column of the lookahead at the time it reduced.
+    {"a binary operator's error points at the operator", "[1/0]", Code::DivisionByZero, 4},
+    {"a binary operator's error points at the operator", "[1/0+5]", Code::DivisionByZero, 4},
+    {"a binary operator's error points at the operator", "[5 MOD 0]", Code::DivisionByZero, 5},
+    {"a binary operator's error points at the operator", "[-8**0.5]", Code::DomainError, 5},
+    {"SQRT of a negative points at the function", "[1+SQRT[-1]]", Code::DomainError, 5},
+    {"LN of zero", "LN[0]", Code::DomainError, 2},
+    {"LN of a negative", "LN[-1]", Code::DomainError, 2},
+    {"ACOS outside -1..1", "ACOS[1.5]", Code::DomainError, 2},
+    {"ASIN outside -1..1", "ASIN[-1.01]", Code::DomainError, 2},
+    {"an undefined named parameter points at the hash", "[2*#<nope>]", Code::UndefinedParameter, 5},
+    {"parameter number zero", "#0", Code::ParameterOutOfRange, 2},
+    {"a parameter number above the last", "[1+#5603]", Code::ParameterOutOfRange, 5},
+    {"a parameter number not an integer", "#[1.5]", Code::ParameterOutOfRange, 2},
+    {"a negative parameter number", "#-2", Code::ParameterOutOfRange, 2},
+    {"an infinite result is out of range", "[10**400]", Code::NumberOutOfRange, 0},
+    {"an infinite result is out of range", "EXP[1000]", Code::NumberOutOfRange, 0},
+    {"an error inside a function's argument stops evaluation", "SIN[#<undefined>]",
+     Code::UndefinedParameter, 0},
+    {"an error inside a function's argument stops evaluation", "ATAN[1]/[1/0]",
+     Code::DivisionByZero, 0},
+};
+
+TEST(ExprError, EachErrorHasItsCodeAndColumn) {
+  for (const ErrorCase& c : kErrorCases) {
+    SCOPED_TRACE(std::string(c.what) + ": " + c.expr);
+    const auto [code, col] = error_of(c.expr);
+    EXPECT_EQ(code, core::code_name(c.code));
+    if (c.col != 0) {
+      EXPECT_EQ(col, c.col);
+    }
+  }
 }
 
-TEST(ExprError, DivisionByAZeroParameter) {
-  EXPECT_EQ(error_of("[5/#3]").first, core::code_name(Code::DivisionByZero));
-}
-
-TEST(ExprError, ModByZero) {
-  EXPECT_EQ(error_of("[5 MOD 0]").first, core::code_name(Code::DivisionByZero));
-}
-
-TEST(ExprError, NegativeBaseToAFractionalPower) {
-  EXPECT_EQ(error_of("[-8 ** 0.5]").first, core::code_name(Code::DomainError));
-}
-
-// Regression (a bug the tests found, fixed): a binary operator's error points at the token after
-// its right operand (the ']' or the next operator), not at the operator. Expected: `X[1/0]` reports
-// column 4 (the '/'); actual: column 6 (the ']'). The parser gives a Binary node the column of the
-// lookahead at the time it reduces.
-TEST(ExprError, BinaryErrorPointsAtTheOperator) {
-  EXPECT_EQ(error_of("[1/0]"), std::make_pair(core::code_name(Code::DivisionByZero), 4u));
-  EXPECT_EQ(error_of("[1/0+5]"), std::make_pair(core::code_name(Code::DivisionByZero), 4u));
-  EXPECT_EQ(error_of("[5 MOD 0]"), std::make_pair(core::code_name(Code::DivisionByZero), 5u));
-  EXPECT_EQ(error_of("[-8**0.5]"), std::make_pair(core::code_name(Code::DomainError), 5u));
-}
-
-TEST(ExprError, SqrtOfNegativePointsAtTheFunction) {
-  EXPECT_EQ(error_of("[1+SQRT[-1]]"), std::make_pair(core::code_name(Code::DomainError), 5u));
-}
-
-TEST(ExprError, LnOfZeroAndNegative) {
-  EXPECT_EQ(error_of("LN[0]"), std::make_pair(core::code_name(Code::DomainError), 2u));
-  EXPECT_EQ(error_of("LN[-1]"), std::make_pair(core::code_name(Code::DomainError), 2u));
-}
-
-TEST(ExprError, AcosAndAsinOutsideMinusOneToOne) {
-  EXPECT_EQ(error_of("ACOS[1.5]"), std::make_pair(core::code_name(Code::DomainError), 2u));
-  EXPECT_EQ(error_of("ASIN[-1.01]"), std::make_pair(core::code_name(Code::DomainError), 2u));
-}
-
-TEST(ExprError, UndefinedNamedParameterPointsAtTheHash) {
-  EXPECT_EQ(error_of("[2*#<nope>]"), std::make_pair(core::code_name(Code::UndefinedParameter), 5u));
+TEST(ExprError, UndefinedNamedParameterIsNamedInTheMessage) {
   const Result r = eval("#<Nope>");
   EXPECT_NE(r.err.error.message.find("#<nope>"), std::string::npos) << r.err.error.message;
-}
-
-TEST(ExprError, ParameterNumberZero) {
-  EXPECT_EQ(error_of("#0"), std::make_pair(core::code_name(Code::ParameterOutOfRange), 2u));
-}
-
-TEST(ExprError, ParameterNumberAboveTheLast) {
-  EXPECT_EQ(error_of("[1+#5603]"), std::make_pair(core::code_name(Code::ParameterOutOfRange), 5u));
-}
-
-TEST(ExprError, ParameterNumberNotAnInteger) {
-  EXPECT_EQ(error_of("#[1.5]"), std::make_pair(core::code_name(Code::ParameterOutOfRange), 2u));
-  EXPECT_EQ(error_of("#-2"), std::make_pair(core::code_name(Code::ParameterOutOfRange), 2u));
-}
-
-TEST(ExprError, InfiniteResultIsOutOfRange) {
-  EXPECT_EQ(error_of("[10**400]").first, core::code_name(Code::NumberOutOfRange));
-  EXPECT_EQ(error_of("EXP[1000]").first, core::code_name(Code::NumberOutOfRange));
 }
 
 // Regression (a bug the tests found, fixed): same cause as
@@ -316,11 +296,6 @@ TEST(ExprError, NotANumberAsAParameterIndexIsAnErrorNotARead) {
   const Result r = eval("#[[10**400]-[10**400]]", p);
   EXPECT_FALSE(r.value.has_value());
   EXPECT_EQ(p.last_index, -1) << "numbered() was asked for index " << p.last_index;
-}
-
-TEST(ExprError, ErrorInsideAFunctionArgumentStopsEvaluation) {
-  EXPECT_EQ(error_of("SIN[#<undefined>]").first, core::code_name(Code::UndefinedParameter));
-  EXPECT_EQ(error_of("ATAN[1]/[1/0]").first, core::code_name(Code::DivisionByZero));
 }
 
 }  // namespace

@@ -139,6 +139,27 @@ void expect_error(const Run& r, Code code, std::uint32_t line, std::uint32_t col
   EXPECT_FALSE(d.message.empty());
 }
 
+// A program that must stop at one error: `code` at `line`:`col`.
+struct ErrorCase {
+  const char* what;  // the rule the row checks
+  const char* program;
+  Code code;
+  std::uint32_t line;
+  std::uint32_t col;
+  bool with_tools = false;  // run with tools() in the table
+};
+
+InterpOptions with_tools();
+
+template <std::size_t N>
+void expect_errors(const ErrorCase (&cases)[N]) {
+  for (const ErrorCase& c : cases) {
+    SCOPED_TRACE(std::string(c.what) + ": " + c.program);
+    auto r = run(c.program, c.with_tools ? with_tools() : InterpOptions{});
+    expect_error(*r, c.code, c.line, c.col);
+  }
+}
+
 ToolTable tools() {
   ToolTable t;
   ToolEntry one;
@@ -1518,55 +1539,36 @@ TEST(InterpFanuc, M98OfAMissingProgram) {
 
 // --- unclosed and unmatched control statements -----------------------------
 
-TEST(InterpControl, IfWithoutEndif) {
-  auto r = run("G0 X1\no1 if [0]\nG0 X2\nM2\n");
-  expect_error(*r, Code::UnclosedBlock, 2, 1);
-}
+// Control statements left open, closed without an opening, or failing:
+// each program stops at its one error.
+constexpr ErrorCase kControlErrors[] =
+    {
+        {"if without endif", "G0 X1\no1 if [0]\nG0 X2\nM2\n", Code::UnclosedBlock, 2, 1},
+        {"else of a taken branch without endif", "o1 if [1]\nG0 X1\no1 else\nG0 X2\nM2\n",
+         Code::UnclosedBlock, 3, 1},
+        {"while without endwhile", "o1 while [0]\nG0 X1\nM2\n", Code::UnclosedBlock, 1, 1},
+        {"repeat without endrepeat", "o1 repeat [2]\nG0 X1\nM2\n", Code::UnclosedBlock, 1, 1},
+        {"break outside a loop", "G0 X1\no1 break\nM2\n", Code::UnclosedBlock, 2, 1},
+        // Regression (a bug the tests found, fixed): a closing statement with no opening one is not
+        // E_UNMATCHED_CONTROL: `o1 endwhile` alone is reported as E_UNCLOSED_CONTROL_BLOCK ("o1
+        // endwhile has no while"), and `o1 else` / `o1 endif` without an `o1 if` are accepted
+        // silently (else jumps to the endif; endif does nothing). Expected:
+        // E_UNMATCHED_CONTROL at the stray statement in each case.
+        {"a stray closing statement is unmatched", "G0 X1\no1 endwhile\nM2\n",
+         Code::UnmatchedControl, 2, 1},
+        {"a stray closing statement is unmatched", "o1 endrepeat\nM2\n", Code::UnmatchedControl, 1,
+         1},
+        {"a stray closing statement is unmatched", "o1 else\nG0 X1\no1 endif\nM2\n",
+         Code::UnmatchedControl, 1, 1},
+        {"a stray closing statement is unmatched", "o1 endif\nM2\n", Code::UnmatchedControl, 1, 1},
+        {"an error in a condition is reported", "o1 if [#<undefined> GT 1]\no1 endif\nM2\n",
+         Code::UndefinedParameter, 1, 8},
+        {"an O-word after other text is a syntax error", "G0 X1 o1 if [1]\nM2\n",
+         Code::MisplacedOWord, 1, 7},
+};
 
-TEST(InterpControl, ElseOfATakenBranchWithoutEndif) {
-  auto r = run("o1 if [1]\nG0 X1\no1 else\nG0 X2\nM2\n");
-  expect_error(*r, Code::UnclosedBlock, 3, 1);
-}
-
-TEST(InterpControl, WhileWithoutEndwhile) {
-  auto r = run("o1 while [0]\nG0 X1\nM2\n");
-  expect_error(*r, Code::UnclosedBlock, 1, 1);
-}
-
-TEST(InterpControl, RepeatWithoutEndrepeat) {
-  auto r = run("o1 repeat [2]\nG0 X1\nM2\n");
-  expect_error(*r, Code::UnclosedBlock, 1, 1);
-}
-
-TEST(InterpControl, BreakOutsideALoop) {
-  auto r = run("G0 X1\no1 break\nM2\n");
-  expect_error(*r, Code::UnclosedBlock, 2, 1);
-}
-
-// Regression (a bug the tests found, fixed): a closing statement with no opening one is not
-// E_UNMATCHED_CONTROL: `o1 endwhile` alone is reported as E_UNCLOSED_CONTROL_BLOCK ("o1 endwhile
-// has no while"), and `o1 else` / `o1 endif` without an `o1 if` are accepted
-// silently (else jumps to the endif; endif does nothing). Expected:
-// E_UNMATCHED_CONTROL at the stray statement in each case.
-TEST(InterpControl, StrayClosingStatementsAreUnmatched) {
-  auto endwhile = run("G0 X1\no1 endwhile\nM2\n");
-  expect_error(*endwhile, Code::UnmatchedControl, 2, 1);
-  auto endrepeat = run("o1 endrepeat\nM2\n");
-  expect_error(*endrepeat, Code::UnmatchedControl, 1, 1);
-  auto else_ = run("o1 else\nG0 X1\no1 endif\nM2\n");
-  expect_error(*else_, Code::UnmatchedControl, 1, 1);
-  auto endif = run("o1 endif\nM2\n");
-  expect_error(*endif, Code::UnmatchedControl, 1, 1);
-}
-
-TEST(InterpControl, ErrorInAConditionIsReported) {
-  auto r = run("o1 if [#<undefined> GT 1]\no1 endif\nM2\n");
-  expect_error(*r, Code::UndefinedParameter, 1, 8);
-}
-
-TEST(InterpControl, OWordAfterOtherTextIsASyntaxError) {
-  auto r = run("G0 X1 o1 if [1]\nM2\n");
-  expect_error(*r, Code::MisplacedOWord, 1, 7);
+TEST(InterpControl, UnclosedUnmatchedAndFailedControlStatementsAreErrors) {
+  expect_errors(kControlErrors);
 }
 
 // ============================================================================
@@ -1579,53 +1581,78 @@ TEST(InterpCheck, SyntaxErrorStopsTheRunWithItsPlace) {
   EXPECT_EQ(r->kinds(), "traverse");
 }
 
-TEST(InterpCheck, UnknownGCode) {
-  auto r = run("G0 X1\nG0 G12 X2\nM2\n");
-  expect_error(*r, Code::UnknownGCode, 2, 4);
-}
+// Bad blocks: each program stops at its one error, with the code, line and
+// column the row gives.
+constexpr ErrorCase kBlockErrors[] = {
+    {"unknown G code", "G0 X1\nG0 G12 X2\nM2\n", Code::UnknownGCode, 2, 4},
+    {"G code with too many decimals", "G1.55\nM2\n", Code::UnknownGCode, 1, 1},
+    {"negative G code", "G-1\nM2\n", Code::UnknownGCode, 1, 1},
+    {"unknown M code", "M3 M200\nM2\n", Code::UnknownMCode, 1, 4},
+    {"fractional M code", "M3.5\nM2\n", Code::UnknownMCode, 1, 1},
+    {"two motion codes", "G0 G1 X1 F1\nM2\n", Code::ModalGroupConflict, 1, 4},
+    {"two codes of another modal group", "G20 G21\nM2\n", Code::ModalGroupConflict, 1, 5},
+    {"two codes of another modal group", "G17 G18\nM2\n", Code::ModalGroupConflict, 1, 5},
+    {"two codes of another modal group", "G90 G91\nM2\n", Code::ModalGroupConflict, 1, 5},
+    {"two codes of another modal group", "G54 G55\nM2\n", Code::ModalGroupConflict, 1, 5},
+    {"two codes of another modal group", "M3 M5\nM2\n", Code::ModalGroupConflict, 1, 4},
+    {"two codes of another modal group", "M7 M9\nM2\n", Code::ModalGroupConflict, 1, 4},
+    {"too many user M codes", "M100 M101 M102 M103 M104\nM2\n", Code::ModalGroupConflict, 1, 21},
+    {"repeated word", "G0 X1 X2\nM2\n", Code::RepeatedWord, 1, 7},
+    // A centre word of the wrong plane is an error, at the word: K in a G17
+    // arc, J in G18, I in G19 (LinuxCNC interp_convert.cc, convert_arc:
+    // NCE_K_WORD_GIVEN_FOR_ARC_IN_XY_PLANE and the J/XZ and I/YZ cases).
+    {"a centre word of another plane is unused", "G1 F100\nG17 G2 X10 I5 K1\nM2\n",
+     Code::UnusedWord, 2, 15},
+    {"a centre word of another plane is unused", "G1 F100\nG18 G2 X10 I5 J1\nM2\n",
+     Code::UnusedWord, 2, 15},
+    {"a centre word of another plane is unused", "G1 F100\nG19 G2 Y10 J5 I1\nM2\n",
+     Code::UnusedWord, 2, 15},
+    {"axis words with G80", "G80 X1\nM2\n", Code::AxisWordsConflict, 1, 5},
+    // LinuxCNC starts in G80: a bare X is an error until G0/G1 is given.
+    {"axis words before any motion code", "X1\nM2\n", Code::AxisWordsConflict, 1, 1},
+    {"motion and a non-modal code both using axes", "G92 G1 X1 F1\nM2\n", Code::AxisWordsConflict,
+     1, 1},
+    {"arc radius mismatch", "G1 F100\nG2 X10 Y0 I4\nM2\n", Code::ArcRadiusMismatch, 2, 1},
+    {"arc radius too small", "G1 F100\nG2 X10 R4\nM2\n", Code::ArcRadiusTooSmall, 2, 8},
+    {"an R-format full circle", "G1 F100\nG2 X0 Y0 R5\nM2\n", Code::ArcZeroLength, 2, 10},
+    {"arc with both R and centre", "G1 F100\nG2 X10 R5 I5\nM2\n", Code::ArcMissingCenter, 2, 8},
+    {"arc without centre", "G1 F100\n  G2 X10\nM2\n", Code::ArcMissingCenter, 2, 3},
+    {"arc with its centre at the start", "G1 F100\nG2 X0 Y0 I0 J0\nM2\n", Code::ArcZeroLength, 2,
+     1},
+    {"arc turns P must be a positive integer", "G1 F100\nG2 X0 I5 P0\nM2\n", Code::BadWordValue, 2,
+     10},
+    {"arc turns P must be a positive integer", "G1 F100\nG2 X0 I5 P1.5\nM2\n", Code::BadWordValue,
+     2, 10},
+    {"no feed rate", "G1 X1\nM2\n", Code::NoFeedRate, 1, 1},
+    {"no feed rate", "G0 X1\nG3 X0 Y0 I5\nM2\n", Code::NoFeedRate, 2, 1},
+    {"negative feed or speed", "G1 X1 F-1\nM2\n", Code::BadWordValue, 1, 7},
+    {"negative feed or speed", "M3 S-100\nM2\n", Code::BadWordValue, 1, 4},
+    {"tool number must be a non-negative integer", "T1.5\nM2\n", Code::BadWordValue, 1, 1},
+    {"tool number must be a non-negative integer", "G0 X1 T-1\nM2\n", Code::BadWordValue, 1, 7},
+    {"M6 without a tool", "G0 X1\nM6\nM2\n", Code::MissingWord, 2, 1},
+    {"M61 without Q", "M61\nM2\n", Code::MissingWord, 1, 1},
+    {"dwell without time", "G4\nM2\n", Code::MissingWord, 1, 1},
+    {"dwell without time", "G0 X1 G4 P-1\nM2\n", Code::MissingWord, 1, 7},
+    {"G10 without L or P, or with a bad one", "G10 P1 X1\nM2\n", Code::MissingWord, 1, 1},
+    {"G10 without L or P, or with a bad one", "G10 L2 X1\nM2\n", Code::MissingWord, 1, 1},
+    {"G10 without L or P, or with a bad one", "G10 L2 P10 X1\nM2\n", Code::BadWordValue, 1, 8},
+    {"G10 without L or P, or with a bad one", "G10 L2 P1.5 X1\nM2\n", Code::BadWordValue, 1, 8},
+    {"G10 without L or P, or with a bad one", "G10 L2 P-1 X1\nM2\n", Code::BadWordValue, 1, 8},
+    {"G10 without L or P, or with a bad one", "G10 L3 P1 X1\nM2\n", Code::BadWordValue, 1, 5},
+    {"G92 and G52 need an axis", "G92\nM2\n", Code::MissingWord, 1, 1},
+    {"G92 and G52 need an axis", "G0 X1\nG52\nM2\n", Code::MissingWord, 2, 1},
+    {"G43 with an unknown tool", "G43 H99\nM2\n", Code::UnknownTool, 1, 5, true},
+    {"cutter compensation errors", "G41 D99\nM2\n", Code::UnknownTool, 1, 5, true},
+    {"cutter compensation errors", "G41.1\nM2\n", Code::MissingWord, 1, 1},
+    {"cutter compensation errors", "G19\nG41 D1\nM2\n", Code::CompNotAllowed, 2, 1, true},
+    {"cutter compensation errors", "G41 D1\nG42 D1\nM2\n", Code::CompNotAllowed, 2, 1, true},
+    {"a probe needs a feed", "G38.2 Z-5\nM2\n", Code::NoFeedRate, 1, 1},
+    {"M72 restore without M70 save", "G0 X1\nM72\nM2\n", Code::NotAllowedInMode, 2, 1},
+    {"M73 auto-restore outside a subroutine", "M73\nM2\n", Code::NotAllowedInMode, 1, 1},
+};
 
-TEST(InterpCheck, GCodeWithTooManyDecimals) {
-  auto r = run("G1.55\nM2\n");
-  expect_error(*r, Code::UnknownGCode, 1, 1);
-}
-
-TEST(InterpCheck, NegativeGCode) {
-  auto r = run("G-1\nM2\n");
-  expect_error(*r, Code::UnknownGCode, 1, 1);
-}
-
-TEST(InterpCheck, UnknownMCode) {
-  auto r = run("M3 M200\nM2\n");
-  expect_error(*r, Code::UnknownMCode, 1, 4);
-}
-
-TEST(InterpCheck, FractionalMCode) {
-  auto r = run("M3.5\nM2\n");
-  expect_error(*r, Code::UnknownMCode, 1, 1);
-}
-
-TEST(InterpCheck, TwoMotionCodes) {
-  auto r = run("G0 G1 X1 F1\nM2\n");
-  expect_error(*r, Code::ModalGroupConflict, 1, 4);
-}
-
-TEST(InterpCheck, TwoCodesOfOtherGroups) {
-  expect_error(*run("G20 G21\nM2\n"), Code::ModalGroupConflict, 1, 5);
-  expect_error(*run("G17 G18\nM2\n"), Code::ModalGroupConflict, 1, 5);
-  expect_error(*run("G90 G91\nM2\n"), Code::ModalGroupConflict, 1, 5);
-  expect_error(*run("G54 G55\nM2\n"), Code::ModalGroupConflict, 1, 5);
-  expect_error(*run("M3 M5\nM2\n"), Code::ModalGroupConflict, 1, 4);
-  expect_error(*run("M7 M9\nM2\n"), Code::ModalGroupConflict, 1, 4);
-}
-
-TEST(InterpCheck, TooManyUserMCodes) {
-  auto r = run("M100 M101 M102 M103 M104\nM2\n");
-  expect_error(*r, Code::ModalGroupConflict, 1, 21);
-}
-
-TEST(InterpCheck, RepeatedWord) {
-  auto r = run("G0 X1 X2\nM2\n");
-  expect_error(*r, Code::RepeatedWord, 1, 7);
+TEST(InterpCheck, EachBadBlockIsOneErrorAtItsWord) {
+  expect_errors(kBlockErrors);
 }
 
 TEST(InterpCheck, UnusedWordsAreErrors) {
@@ -1645,136 +1672,15 @@ TEST(InterpCheck, UnusedWordsAreErrors) {
   }
 }
 
-// A centre word of the wrong plane is an error, at the word: K in a G17
-// arc, J in G18, I in G19 (LinuxCNC interp_convert.cc, convert_arc:
-// NCE_K_WORD_GIVEN_FOR_ARC_IN_XY_PLANE and the J/XZ and I/YZ cases).
-TEST(InterpCheck, CentreWordOfAnotherPlaneIsUnused) {
-  expect_error(*run("G1 F100\nG17 G2 X10 I5 K1\nM2\n"), Code::UnusedWord, 2, 15);
-  expect_error(*run("G1 F100\nG18 G2 X10 I5 J1\nM2\n"), Code::UnusedWord, 2, 15);
-  expect_error(*run("G1 F100\nG19 G2 Y10 J5 I1\nM2\n"), Code::UnusedWord, 2, 15);
-}
-
-TEST(InterpCheck, AxisWordsWithG80) {
-  auto r = run("G80 X1\nM2\n");
-  expect_error(*r, Code::AxisWordsConflict, 1, 5);
-}
-
-TEST(InterpCheck, AxisWordsBeforeAnyMotionCode) {
-  // LinuxCNC starts in G80: a bare X is an error until G0/G1 is given.
-  auto r = run("X1\nM2\n");
-  expect_error(*r, Code::AxisWordsConflict, 1, 1);
-}
-
-TEST(InterpCheck, MotionAndANonModalCodeBothUsingAxes) {
-  auto r = run("G92 G1 X1 F1\nM2\n");
-  expect_error(*r, Code::AxisWordsConflict, 1, 1);
-}
-
-TEST(InterpCheck, ArcRadiusMismatch) {
-  auto r = run("G1 F100\nG2 X10 Y0 I4\nM2\n");
-  expect_error(*r, Code::ArcRadiusMismatch, 2, 1);
-}
-
 TEST(InterpCheck, ArcEndSlightlyOffTheCircleIsAccepted) {
   // LinuxCNC accepts a small difference of radii (0.02 mm here).
   RUN_OK(r, "G1 F100\nG2 X10.01 Y0 I5\nM2\n");
   EXPECT_EQ(r->all<Arc>().size(), 1u);
 }
 
-TEST(InterpCheck, ArcRadiusTooSmall) {
-  auto r = run("G1 F100\nG2 X10 R4\nM2\n");
-  expect_error(*r, Code::ArcRadiusTooSmall, 2, 8);
-}
-
-TEST(InterpCheck, RFormatFullCircleIsAnError) {
-  auto r = run("G1 F100\nG2 X0 Y0 R5\nM2\n");
-  expect_error(*r, Code::ArcZeroLength, 2, 10);
-}
-
-TEST(InterpCheck, ArcWithBothRAndCentre) {
-  auto r = run("G1 F100\nG2 X10 R5 I5\nM2\n");
-  expect_error(*r, Code::ArcMissingCenter, 2, 8);
-}
-
-TEST(InterpCheck, ArcWithoutCentre) {
-  auto r = run("G1 F100\n  G2 X10\nM2\n");
-  expect_error(*r, Code::ArcMissingCenter, 2, 3);
-}
-
-TEST(InterpCheck, ArcWithCentreAtTheStart) {
-  auto r = run("G1 F100\nG2 X0 Y0 I0 J0\nM2\n");
-  expect_error(*r, Code::ArcZeroLength, 2, 1);
-}
-
-TEST(InterpCheck, ArcTurnsMustBeAPositiveInteger) {
-  expect_error(*run("G1 F100\nG2 X0 I5 P0\nM2\n"), Code::BadWordValue, 2, 10);
-  expect_error(*run("G1 F100\nG2 X0 I5 P1.5\nM2\n"), Code::BadWordValue, 2, 10);
-}
-
-TEST(InterpCheck, NoFeedRate) {
-  expect_error(*run("G1 X1\nM2\n"), Code::NoFeedRate, 1, 1);
-  expect_error(*run("G0 X1\nG3 X0 Y0 I5\nM2\n"), Code::NoFeedRate, 2, 1);
-}
-
-TEST(InterpCheck, NegativeFeedAndSpeed) {
-  expect_error(*run("G1 X1 F-1\nM2\n"), Code::BadWordValue, 1, 7);
-  expect_error(*run("M3 S-100\nM2\n"), Code::BadWordValue, 1, 4);
-}
-
-TEST(InterpCheck, ToolNumberMustBeANonNegativeInteger) {
-  expect_error(*run("T1.5\nM2\n"), Code::BadWordValue, 1, 1);
-  expect_error(*run("G0 X1 T-1\nM2\n"), Code::BadWordValue, 1, 7);
-}
-
-TEST(InterpCheck, M6WithoutATool) {
-  auto r = run("G0 X1\nM6\nM2\n");
-  expect_error(*r, Code::MissingWord, 2, 1);
-}
-
-TEST(InterpCheck, M61WithoutQ) {
-  auto r = run("M61\nM2\n");
-  expect_error(*r, Code::MissingWord, 1, 1);
-}
-
-TEST(InterpCheck, DwellWithoutTime) {
-  expect_error(*run("G4\nM2\n"), Code::MissingWord, 1, 1);
-  expect_error(*run("G0 X1 G4 P-1\nM2\n"), Code::MissingWord, 1, 7);
-}
-
-TEST(InterpCheck, G10Errors) {
-  expect_error(*run("G10 P1 X1\nM2\n"), Code::MissingWord, 1, 1);
-  expect_error(*run("G10 L2 X1\nM2\n"), Code::MissingWord, 1, 1);
-  expect_error(*run("G10 L2 P10 X1\nM2\n"), Code::BadWordValue, 1, 8);
-  expect_error(*run("G10 L2 P1.5 X1\nM2\n"), Code::BadWordValue, 1, 8);
-  expect_error(*run("G10 L2 P-1 X1\nM2\n"), Code::BadWordValue, 1, 8);
-  expect_error(*run("G10 L3 P1 X1\nM2\n"), Code::BadWordValue, 1, 5);
-}
-
-TEST(InterpCheck, G92AndG52NeedAnAxis) {
-  expect_error(*run("G92\nM2\n"), Code::MissingWord, 1, 1);
-  expect_error(*run("G0 X1\nG52\nM2\n"), Code::MissingWord, 2, 1);
-}
-
-TEST(InterpCheck, G43WithAnUnknownTool) {
-  auto r = run("G43 H99\nM2\n", with_tools());
-  expect_error(*r, Code::UnknownTool, 1, 5);
-}
-
 TEST(InterpCheck, G43ForTheEmptySpindleIsNoOffset) {
   RUN_OK(r, "G43\n#1=#<_tool_offset>\nM2\n", with_tools());
   EXPECT_DOUBLE_EQ(r->param(1), 0.0);
-}
-
-TEST(InterpCheck, CutterCompensationErrors) {
-  expect_error(*run("G41 D99\nM2\n", with_tools()), Code::UnknownTool, 1, 5);
-  expect_error(*run("G41.1\nM2\n"), Code::MissingWord, 1, 1);
-  expect_error(*run("G19\nG41 D1\nM2\n", with_tools()), Code::CompNotAllowed, 2, 1);
-  expect_error(*run("G41 D1\nG42 D1\nM2\n", with_tools()), Code::CompNotAllowed, 2, 1);
-}
-
-TEST(InterpCheck, ProbeNeedsAFeed) {
-  auto r = run("G38.2 Z-5\nM2\n");
-  expect_error(*r, Code::NoFeedRate, 1, 1);
 }
 
 TEST(InterpCheck, ProbeReachesItsTargetAndRecordsIt) {
@@ -1792,16 +1698,6 @@ TEST(InterpCheck, ModalStateSaveAndRestore) {
   RUN_OK(r, "M70\nG20 G91\nM72\n#1=#<_metric>\n#2=#<_absolute>\nM2\n");
   EXPECT_DOUBLE_EQ(r->param(1), 1.0);
   EXPECT_DOUBLE_EQ(r->param(2), 1.0);
-}
-
-TEST(InterpCheck, RestoreWithoutSave) {
-  auto r = run("G0 X1\nM72\nM2\n");
-  expect_error(*r, Code::NotAllowedInMode, 2, 1);
-}
-
-TEST(InterpCheck, AutoRestoreOutsideASubroutine) {
-  auto r = run("M73\nM2\n");
-  expect_error(*r, Code::NotAllowedInMode, 1, 1);
 }
 
 TEST(InterpCheck, ErrorStopsTheRunAndNothingAfterItIsEmitted) {
@@ -1825,32 +1721,20 @@ TEST(InterpCheck, FailedBlockChangesNoModalState) {
 
 // --- splines: their errors --------------------------------------------------
 
-TEST(InterpSpline, G5OutsideXyPlane) {
-  expect_error(*run("G1 F10\nG18 G5 X1 I1 J1 P1 Q1\nM2\n"), Code::NotAllowedInMode, 2, 1);
-}
+// G5, G5.1 and G5.2 blocks that are refused.
+constexpr ErrorCase kSplineErrors[] = {
+    {"G5 outside the XY plane", "G1 F10\nG18 G5 X1 I1 J1 P1 Q1\nM2\n", Code::NotAllowedInMode, 2,
+     1},
+    {"G5 with Z", "G1 F10\nG5 X1 Z1 I1 J1 P1 Q1\nM2\n", Code::SplineBadValue, 2, 1},
+    {"G5 needs P and Q", "G1 F10\nG5 X1 I1 J1 P1\nM2\n", Code::MissingWord, 2, 1},
+    {"G5 needs I and J together", "G1 F10\nG5 X1 I1 P1 Q1\nM2\n", Code::MissingWord, 2, 1},
+    {"G5 without IJ must follow another G5", "G1 F10\nG5 X1 P1 Q1\nM2\n", Code::MissingWord, 2, 1},
+    {"G5.1 needs I or J", "G1 F10\nG5.1 X1\nM2\n", Code::MissingWord, 2, 1},
+    {"G5.2 with a negative weight", "G1 F10\nG5.2 X1 Y1 P-1 L3\nM2\n", Code::SplineBadValue, 2, 12},
+};
 
-TEST(InterpSpline, G5WithZ) {
-  expect_error(*run("G1 F10\nG5 X1 Z1 I1 J1 P1 Q1\nM2\n"), Code::SplineBadValue, 2, 1);
-}
-
-TEST(InterpSpline, G5NeedsPAndQ) {
-  expect_error(*run("G1 F10\nG5 X1 I1 J1 P1\nM2\n"), Code::MissingWord, 2, 1);
-}
-
-TEST(InterpSpline, G5NeedsIAndJTogether) {
-  expect_error(*run("G1 F10\nG5 X1 I1 P1 Q1\nM2\n"), Code::MissingWord, 2, 1);
-}
-
-TEST(InterpSpline, G5WithoutIjMustFollowAnotherG5) {
-  expect_error(*run("G1 F10\nG5 X1 P1 Q1\nM2\n"), Code::MissingWord, 2, 1);
-}
-
-TEST(InterpSpline, G51NeedsIOrJ) {
-  expect_error(*run("G1 F10\nG5.1 X1\nM2\n"), Code::MissingWord, 2, 1);
-}
-
-TEST(InterpSpline, G52NegativeWeight) {
-  expect_error(*run("G1 F10\nG5.2 X1 Y1 P-1 L3\nM2\n"), Code::SplineBadValue, 2, 12);
+TEST(InterpSpline, BadSplinesAreErrors) {
+  expect_errors(kSplineErrors);
 }
 
 TEST(InterpSpline, G5EndsAtItsEndPoint) {

@@ -61,8 +61,6 @@ TEST(Post, Rs274ngcGolden) {
             "G0 Z5\n"
             "M9\n"
             "M5\n"
-            "M5\n"
-            "M9\n"
             "M30\n");
 }
 
@@ -100,6 +98,49 @@ TEST(Post, RomiNumbersBlocksAndWritesAbsoluteCentres) {
   EXPECT_THAT(text, HasSubstr(" G03 X30 Y10 I20 J10#\n"));  // centre (20,10) absolute
   EXPECT_THAT(text, HasSubstr(" G02 X40 Y0 I30 J0#\n"));
   EXPECT_THAT(text, testing::EndsWith("M02#\n"));
+}
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1))
+    ++n;
+  return n;
+}
+
+// A program ends with one spindle stop and one coolant off: its own when it
+// stopped them last (a generator's program does), the footer's otherwise.
+TEST(Post, ProgramEndsWithOneSpindleStopAndOneCoolantOff) {
+  struct Case {
+    const char* post;
+    const char* stop;  // M5 as a whole block of this control
+    const char* off;   // M9 likewise
+  };
+
+  constexpr Case kPosts[] = {{"rs274ngc", "\nM5\n", "\nM9\n"},
+                             {"grbl", "\nM5\n", "\nM9\n"},
+                             {"fanuc", "\nM05\n", "\nM09\n"},
+                             {"romi", " M05#", " M09#"}};
+  const auto on = op(canon::Spindle{1000, canon::SpindleDir::Cw});
+  const auto stop = op(canon::Spindle{0, canon::SpindleDir::Off});
+  const auto flood = op(canon::Coolant{false, true});
+  const auto dry = op(canon::Coolant{});
+  const auto move = op(canon::Traverse{{1, 2, 3}});
+  const auto end = op(canon::ProgramEnd{});
+  for (const Case& c : kPosts) {
+    SCOPED_TRACE(c.post);
+    core::DiagnosticList diags;
+    const std::string stopped = test::post_text({on, flood, move, dry, stop, end}, c.post, diags);
+    EXPECT_EQ(occurrences(stopped, c.stop), 1u) << stopped;
+    EXPECT_EQ(occurrences(stopped, c.off), 1u) << stopped;
+    const std::string left_on = test::post_text({on, flood, move, end}, c.post, diags);
+    EXPECT_EQ(occurrences(left_on, c.stop), 1u) << left_on;
+    EXPECT_EQ(occurrences(left_on, c.off), 1u) << left_on;
+    EXPECT_LT(left_on.rfind(c.stop), left_on.rfind(c.off)) << left_on;  // M5 M9, then the end
+    // Stopped and started again: a second stop at the end.
+    const std::string restarted = test::post_text({on, move, stop, on, move, end}, c.post, diags);
+    EXPECT_EQ(occurrences(restarted, c.stop), 2u) << restarted;
+    EXPECT_FALSE(diags.has_errors());
+  }
 }
 
 TEST(Post, NumbersUseTheControlsDecimals) {

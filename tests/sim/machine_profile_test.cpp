@@ -89,64 +89,54 @@ TEST(MachineProfile, OptionalSectionsDefaultToZero) {
   EXPECT_DOUBLE_EQ(p->axes[0].jerk, 0.0);
 }
 
-void expect_error(const std::string& text, const std::string& fragment, std::uint32_t line) {
-  core::DiagnosticList diags;
-  auto p = read_machine_profile(text, 3, diags);
-  EXPECT_FALSE(p.has_value()) << fragment;
-  ASSERT_FALSE(diags.all().empty()) << fragment;
-  const core::Diagnostic& d = diags.all().front();
-  EXPECT_EQ(d.code, core::Code::BadMachineProfile);
-  EXPECT_EQ(d.loc.file, 3u);
-  EXPECT_NE(d.message.find(fragment), std::string::npos) << d.message;
-  if (line > 0) {
-    EXPECT_EQ(d.loc.line, line) << d.message;
+// kMinimal with `find` replaced by `replacement` (the whole text when `find`
+// is null) must be refused with a message holding `fragment`, at `line` of
+// the file (0: the line is not checked).
+struct BadProfile {
+  const char* what;  // the rule the row checks
+  const char* find;
+  const char* replacement;
+  const char* fragment;
+  std::uint32_t line;
+};
+
+constexpr BadProfile kBadProfiles[] = {
+    {"not TOML at all", nullptr, "[machine\nname = 1\n", "not valid TOML", 1},
+    {"a missing axis section is named",
+     "[axes.z]\nmin = -10\nmax = 0\nrapid = 1000\nmax_feed = 500\naccel = 100\n", "", "[axes.z]",
+     0},
+    {"a missing key is named", "accel = 100", "", "'accel'", 0},
+    {"a wrong type, at its line", "rapid = 1000", "rapid = \"fast\"", "rapid must be a number", 8},
+    {"a negative rate, at its line", "max_feed = 500", "max_feed = -5", "must not be negative", 9},
+    {"min above max", "min = -10", "min = 20", "min is above max", 0},
+    {"units other than mm and inch", "units = \"mm\"", "units = \"cm\"",
+     "must be \"mm\" or \"inch\"", 4},
+    {"a zero rapid", "rapid = 1000", "rapid = 0", "above zero", 0},
+};
+
+TEST(MachineProfileError, EachBadProfileIsRefusedWithItsMessage) {
+  for (const BadProfile& c : kBadProfiles) {
+    SCOPED_TRACE(c.what);
+    std::string text = c.replacement;
+    if (c.find != nullptr) {
+      text = kMinimal;
+      const std::string find = c.find;
+      const auto at = text.find(find);
+      ASSERT_NE(at, std::string::npos) << find;
+      text.replace(at, find.size(), c.replacement);
+    }
+    core::DiagnosticList diags;
+    auto p = read_machine_profile(text, 3, diags);
+    EXPECT_FALSE(p.has_value());
+    ASSERT_FALSE(diags.all().empty());
+    const core::Diagnostic& d = diags.all().front();
+    EXPECT_EQ(d.code, core::Code::BadMachineProfile);
+    EXPECT_EQ(d.loc.file, 3u);
+    EXPECT_NE(d.message.find(c.fragment), std::string::npos) << d.message;
+    if (c.line > 0) {
+      EXPECT_EQ(d.loc.line, c.line) << d.message;
+    }
   }
-}
-
-TEST(MachineProfileError, NotToml) {
-  expect_error("[machine\nname = 1\n", "not valid TOML", 1);
-}
-
-TEST(MachineProfileError, MissingAxisSection) {
-  std::string text = kMinimal;
-  text = text.substr(0, text.find("[axes.z]"));
-  expect_error(text, "[axes.z]", 0);
-}
-
-TEST(MachineProfileError, MissingKeyNamesIt) {
-  std::string text = kMinimal;
-  text.replace(text.find("accel = 100"), 11, "");
-  expect_error(text, "'accel'", 0);
-}
-
-TEST(MachineProfileError, WrongTypeAtItsLine) {
-  std::string text = kMinimal;
-  text.replace(text.find("rapid = 1000"), 12, "rapid = \"fast\"");
-  expect_error(text, "rapid must be a number", 8);
-}
-
-TEST(MachineProfileError, NegativeRate) {
-  std::string text = kMinimal;
-  text.replace(text.find("max_feed = 500"), 14, "max_feed = -5");
-  expect_error(text, "must not be negative", 9);
-}
-
-TEST(MachineProfileError, MinAboveMax) {
-  std::string text = kMinimal;
-  text.replace(text.find("min = -10"), 9, "min = 20");
-  expect_error(text, "min is above max", 0);
-}
-
-TEST(MachineProfileError, BadUnits) {
-  std::string text = kMinimal;
-  text.replace(text.find("units = \"mm\""), 12, "units = \"cm\"");
-  expect_error(text, "must be \"mm\" or \"inch\"", 4);
-}
-
-TEST(MachineProfileError, ZeroRapid) {
-  std::string text = kMinimal;
-  text.replace(text.find("rapid = 1000"), 12, "rapid = 0");
-  expect_error(text, "above zero", 0);
 }
 
 }  // namespace

@@ -13,8 +13,12 @@
 
 #include <fmt/format.h>
 
+#include "gcode/interp/canned_cycle_parts.hpp"
+
 namespace usina::gcode {
 namespace {
+
+using namespace cycle_parts;
 
 using canon::SpindleDir;
 using core::Code;
@@ -23,12 +27,7 @@ using core::Plane;
 // Limits that keep a hostile block finite (DESIGN.md, "Errors and bad input").
 constexpr double kMaxRepeats = 100000;  // L
 constexpr long kMaxPecks = 100000;      // G73/G83 pecks in one hole
-constexpr long kMaxPasses = 100000;     // G76 passes
 constexpr double kMaxMoves = 4e6;       // moves one block may make
-
-InterpError error(Code code, std::string message) {
-  return {code, std::move(message)};
-}
 
 int g_of(int motion) {
   return motion / 10;
@@ -46,71 +45,6 @@ const char* plane_name(Plane p) {
   }
   return "?";
 }
-
-// LinuxCNC computes in program units; usina holds mm. mm / 25.4 can miss the
-// number LinuxCNC read by an ulp, and then a depth that is an exact multiple
-// of Q gets one peck more or less; 15 significant digits bring it back.
-struct Units {
-  double mm = 1.0;  // mm per program unit
-
-  double in(double v) const {
-    if (mm == 1.0) return v;
-    std::array<char, 40> buf{};
-    const auto res =
-        std::to_chars(buf.data(), buf.data() + buf.size(), v / mm, std::chars_format::general, 15);
-    double u = v / mm;
-    std::from_chars(buf.data(), res.ptr, u);
-    return u;
-  }
-
-  double out(double u) const { return u * mm; }
-
-  // A length for a message, in the program's unit: "0.5 in", "12 mm".
-  std::string show(double v) const {
-    return fmt::format("{:g} {}", in(v), mm == 1.0 ? "mm" : "in");
-  }
-
-  Vec3 in(const Vec3& v) const { return {in(v.x), in(v.y), in(v.z)}; }
-
-  Vec3 out(const Vec3& u) const { return u * mm; }
-};
-
-// A whole number as LinuxCNC reads one (read_integer_value): within 0.0001.
-std::optional<long> whole_number(double v) {
-  if (!(std::abs(v) < 1e9)) return std::nullopt;
-  const double f = std::floor(v);
-  if (v - f > 0.9999) return static_cast<long>(f) + 1;
-  if (v - f > 0.0001) return std::nullopt;
-  return static_cast<long>(f);
-}
-
-// LinuxCNC's cycle_traverse and cycle_feed: (a, b) in the plane, c on its normal.
-class Mover {
- public:
-  Mover(MotionTarget& target, Plane plane, Units units)
-      : target_(target), plane_(plane), units_(units) {}
-
-  Vec3 at(double a, double b, double c) const {
-    return units_.out(core::from_plane({a, b}, c, plane_));
-  }
-
-  void traverse(double a, double b, double c) { target_.traverse(at(a, b, c)); }
-
-  void feed(double a, double b, double c) { target_.feed(at(a, b, c)); }
-
-  void dwell(double s) { target_.dwell(s); }
-
-  void spindle(SpindleDir d) { target_.spindle(d); }
-
-  void hole(double a, double b, double r, double bottom) {
-    target_.hole(at(a, b, r), units_.out(r - bottom));
-  }
-
- private:
-  MotionTarget& target_;
-  Plane plane_;
-  Units units_;
-};
 
 // One block of G73/G74/G81-G89, in program units, named as in convert_cycle_xy.
 struct DrillPlan {
@@ -218,29 +152,6 @@ std::optional<InterpError> resolve_cycle_words(const CycleWords& w, const CycleM
                                "IJK"[n]));
     }
     out.ijk[n] = ijk[n]->value_or(kept[n]);
-  }
-  return std::nullopt;
-}
-
-// LinuxCNC checks the spindle inside each cycle (convert_cycle_g74_g84, _g86, _g87, _g88).
-std::optional<InterpError> check_spindle(int motion, SpindleDir dir) {
-  const int g = g_of(motion);
-  const auto turning = [](SpindleDir d) { return d == SpindleDir::Off ? "stopped" : "turning"; };
-  if (g == 84 && dir != SpindleDir::Cw) {
-    return error(Code::NotAllowedInMode,
-                 fmt::format("G84 taps right-hand: start the spindle clockwise (M3) first; it is "
-                             "{}{}",
-                             turning(dir), dir == SpindleDir::Ccw ? " counter-clockwise" : ""));
-  }
-  if (g == 74 && dir != SpindleDir::Ccw) {
-    return error(Code::NotAllowedInMode,
-                 fmt::format("G74 taps left-hand: start the spindle counter-clockwise (M4) first; "
-                             "it is {}{}",
-                             turning(dir), dir == SpindleDir::Cw ? " clockwise" : ""));
-  }
-  if ((g == 86 || g == 87 || g == 88 || g == 76) && dir == SpindleDir::Off) {
-    return error(Code::NotAllowedInMode,
-                 fmt::format("G{} needs the spindle turning: start it with M3 or M4 first", g));
   }
   return std::nullopt;
 }
@@ -522,162 +433,6 @@ void keep_sticky(CannedCycles::Sticky& sticky, const Resolved& v, int motion) {
   }
 }
 
-// G76 in program units, named as in LinuxCNC's convert_threading_cycle. The
-// drive line is the X where the cycle starts; I is the thread peak's offset
-// from it (negative: external thread), J the first cut's depth beyond the
-// peak, K the full thread depth.
-struct ThreadPlan {
-  bool boring = false;  // I > 0: an internal thread
-  double safe_x = 0, start_y = 0, start_z = 0;
-  double full_dia_depth = 0, start_depth = 0, cut_increment = 0;
-  double full_threadheight = 0, end_depth = 0;
-  double angle = 0;  // compound slide angle, radians, signed by the direction along Z
-  double taper = 0;  // E, signed like the angle
-  double target_z = 0, degression = 1;
-  long spring_passes = 0;
-  bool entry_taper = false, exit_taper = false;
-  Vec3 end;
-};
-
-std::optional<InterpError> read_count(const std::optional<double>& w, char letter, const char* what,
-                                      long& out) {
-  out = 0;
-  if (!w) return std::nullopt;
-  const std::optional<long> n = whole_number(*w);
-  if (!n || *n < 0) {
-    return error(Code::BadWordValue,
-                 fmt::format("G76 {}{:g}: {} must be a whole number, 0 or more", letter, *w, what));
-  }
-  if (*n > kMaxPasses) {
-    return error(Code::TooManyIterations,
-                 fmt::format("G76 {}{:g}: more than {} {}", letter, *w, kMaxPasses, what));
-  }
-  out = *n;
-  return std::nullopt;
-}
-
-// In LinuxCNC's order: words as read, the block's checks, then the cycle's.
-std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleModal& m,
-                                              long& spring, long& tapers) {
-  const Units u{m.length_unit};
-  if (auto e = read_count(w.h, 'H', "the number of spring passes", spring)) return e;
-  if (auto e = read_count(w.l, 'L', "L (taper ends: 1 entry, 2 exit, 3 both)", tapers)) return e;
-  if (!w.p) return error(Code::MissingWord, "G76 needs P, the thread pitch");
-  if (!w.i || !w.j || !w.k) {
-    return error(Code::MissingWord,
-                 fmt::format("G76 needs I, J and K (peak offset, first cut depth, thread depth); "
-                             "{} is missing",
-                             !w.i ? 'I' : (!w.j ? 'J' : 'K')));
-  }
-  if (auto e = check_spindle(m.motion, m.spindle)) return e;
-  if (*w.i == 0) {
-    return error(Code::CycleBadValue,
-                 "G76 I0: the thread peak offset from the drive line must not be 0 (negative for "
-                 "an external thread, positive for an internal one)");
-  }
-  if (*w.j <= 0) {
-    return error(Code::CycleBadValue,
-                 fmt::format("G76 J{:g}: the first cut depth must be greater than 0", u.in(*w.j)));
-  }
-  if (*w.k <= *w.j) {
-    return error(Code::CycleBadValue,
-                 fmt::format("G76 K{:g}: the thread depth must be greater than J{:g}", u.in(*w.k),
-                             u.in(*w.j)));
-  }
-  return std::nullopt;
-}
-
-ThreadPlan plan_thread(const CycleWords& w, const CycleModal& m, Units u, const Vec3& start) {
-  ThreadPlan t;
-  const auto end_of = [&](const std::optional<double>& word, double from) {
-    if (!word) return from;
-    return m.incremental ? from + u.in(*word) : u.in(*word);
-  };
-  t.end = {end_of(w.x, start.x), end_of(w.y, start.y), end_of(w.z, start.z)};
-  const double half = m.diameter_mode ? 2.0 : 1.0;  // G7: I, J, K are on the diameter
-  const double i = u.in(*w.i) / half;
-  const double j = u.in(*w.j) / half;
-  const double k = u.in(*w.k) / half;
-  t.boring = i > 0.0;
-  t.safe_x = start.x;
-  t.start_y = start.y;
-  t.start_z = start.z;
-  t.full_dia_depth = std::abs(i);
-  t.start_depth = std::abs(i) + std::abs(j);
-  t.cut_increment = std::abs(j);
-  t.full_threadheight = std::abs(k);
-  t.end_depth = std::abs(k) + std::abs(i);
-  // LinuxCNC scales by M_PIl / 180 in long double.
-  t.angle = static_cast<double>(static_cast<long double>(w.q.value_or(0.0)) *
-                                (std::numbers::pi_v<long double> / 180.0L));
-  t.taper = std::max(0.0, w.e ? u.in(*w.e) : 0.0);
-  if (t.end.z > t.start_z) {  // cutting towards +Z: the angle and taper turn round
-    t.angle = -t.angle;
-    t.taper = -t.taper;
-  }
-  t.degression = (w.r && *w.r >= 1.0) ? *w.r : 1.0;
-  t.target_z = t.end.z + std::abs(k) * std::tan(t.angle);
-  return t;
-}
-
-// One pass (LinuxCNC threading_pass): back, in (straight or along the entry
-// taper), over to the end (with the exit taper), out.
-void thread_pass(Mover& m, const ThreadPlan& t, double depth, double zoff) {
-  const double back = t.boring ? t.safe_x + depth - t.end_depth : t.safe_x - depth + t.end_depth;
-  const double in = t.boring ? t.safe_x + depth : t.safe_x - depth;
-  const double crest =
-      t.boring ? t.safe_x + depth - t.full_threadheight : t.safe_x - depth + t.full_threadheight;
-  const double y = t.start_y;
-  m.traverse(back, y, t.start_z - zoff);
-  if (t.taper != 0.0 && t.entry_taper) {
-    m.feed(crest, y, t.start_z - zoff);
-    m.feed(in, y, t.start_z - zoff - t.taper);
-  } else {
-    m.traverse(in, y, t.start_z - zoff);
-  }
-  if (t.taper != 0.0 && t.exit_taper) {
-    m.feed(in, y, t.target_z - zoff + t.taper);
-    m.feed(crest, y, t.target_z - zoff);
-  } else {
-    m.feed(in, y, t.target_z - zoff);
-  }
-  m.traverse(back, y, t.target_z - zoff);
-}
-
-// The depth of pass n + 1 after pass n: the cut area stays about the same
-// when the degression R is 2 (depth ~ sqrt(n)), the depth step when R is 1.
-double next_depth(const ThreadPlan& t, long& pass) {
-  ++pass;
-  return t.full_dia_depth +
-         t.cut_increment * std::pow(static_cast<double>(pass), 1.0 / t.degression);
-}
-
-long count_thread_passes(const ThreadPlan& t) {
-  long pass = 1;
-  long n = 0;
-  double depth = t.start_depth;
-  while (depth < t.end_depth && n <= kMaxPasses) {
-    ++n;
-    depth = next_depth(t, pass);
-  }
-  return n + t.spring_passes + 1;
-}
-
-void cut_thread(Mover& m, const ThreadPlan& t) {
-  const double tan_angle = std::tan(t.angle);
-  long pass = 1;
-  double depth = t.start_depth;
-  while (depth < t.end_depth) {
-    thread_pass(m, t, depth, (depth - t.full_dia_depth) * tan_angle);
-    depth = next_depth(t, pass);
-  }
-  // The full depth, once and then once per spring pass.
-  const double zoff = (t.end_depth - t.full_dia_depth) * tan_angle;
-  for (long n = 0; n <= t.spring_passes; ++n)
-    thread_pass(m, t, t.end_depth, zoff);
-  m.traverse(t.end.x, t.end.y, t.end.z);
-}
-
 // NaN or infinity from an expression would make moves to nowhere.
 std::optional<InterpError> check_finite(const CycleWords& w, int motion) {
   const std::array<std::pair<char, const std::optional<double>*>, 14> all{{{'X', &w.x},
@@ -708,6 +463,28 @@ bool is_drilling_cycle(int motion) {
 }
 
 }  // namespace
+
+std::optional<InterpError> cycle_parts::check_spindle(int motion, SpindleDir dir) {
+  const int g = g_of(motion);
+  const auto turning = [](SpindleDir d) { return d == SpindleDir::Off ? "stopped" : "turning"; };
+  if (g == 84 && dir != SpindleDir::Cw) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G84 taps right-hand: start the spindle clockwise (M3) first; it is "
+                             "{}{}",
+                             turning(dir), dir == SpindleDir::Ccw ? " counter-clockwise" : ""));
+  }
+  if (g == 74 && dir != SpindleDir::Ccw) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G74 taps left-hand: start the spindle counter-clockwise (M4) first; "
+                             "it is {}{}",
+                             turning(dir), dir == SpindleDir::Cw ? " clockwise" : ""));
+  }
+  if ((g == 86 || g == 87 || g == 88 || g == 76) && dir == SpindleDir::Off) {
+    return error(Code::NotAllowedInMode,
+                 fmt::format("G{} needs the spindle turning: start it with M3 or M4 first", g));
+  }
+  return std::nullopt;
+}
 
 std::optional<InterpError> CannedCycles::run(const CycleWords& words, const CycleModal& modal,
                                              MotionTarget& target) {
@@ -765,36 +542,6 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   initial_level_ = u.out(initial);
   unit_ = u.mm;
   keep_sticky(sticky_, v, modal.motion);
-  return std::nullopt;
-}
-
-// G76 (LinuxCNC convert_straight / convert_threading_cycle). Its moves are in
-// X and Z whatever the plane; LinuxCNC runs it in G17 as well.
-std::optional<InterpError> CannedCycles::run_threading(const CycleWords& words,
-                                                       const CycleModal& modal,
-                                                       MotionTarget& target) {
-  long spring = 0;
-  long tapers = 0;
-  if (auto e = check_thread_words(words, modal, spring, tapers)) return e;
-  const Units u{modal.length_unit};
-  const Vec3 pos = target.position();
-  const Vec3 pos_u = unit_ == u.mm && pos == end_point_ ? end_point_u_ : u.in(pos);
-  ThreadPlan t = plan_thread(words, modal, u, pos_u);
-  t.spring_passes = spring;
-  t.entry_taper = (tapers & 1) != 0;
-  t.exit_taper = (tapers & 2) != 0;
-  if (count_thread_passes(t) > kMaxPasses) {
-    return error(Code::TooManyIterations,
-                 fmt::format("G76 would cut more than {} passes (degression R{:g} is too large "
-                             "for J and K)",
-                             kMaxPasses, t.degression));
-  }
-  Mover m(target, Plane::XY, u);  // XY: (a, b, c) are (x, y, z)
-  cut_thread(m, t);
-  note_other_motion();  // G76 is not a canned cycle to LinuxCNC's convert_motion
-  end_point_u_ = t.end;
-  end_point_ = u.out(t.end);
-  unit_ = u.mm;
   return std::nullopt;
 }
 
