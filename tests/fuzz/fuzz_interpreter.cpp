@@ -22,8 +22,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sources.add(usina::core::SourceFile::from_string("<fuzz>", std::move(text)));
 
   usina::gcode::InterpOptions opts;
+  // Bounds low enough that a loop-heavy input ends well inside the 5 s hang
+  // limit under ASan on a loaded CI machine (100,000 took 1.5-5 s); all loops
+  // together are bounded, so nested loops end too.
   opts.max_loop_iterations = 10'000;
-  opts.max_total_iterations = 100'000;  // all loops together: nested loops end too
+  opts.max_total_iterations = 20'000;
   opts.max_call_depth = 20;
   // No subroutine path: a fuzzed `o<name> call` must never touch the file system.
   opts.subroutine_path.clear();
