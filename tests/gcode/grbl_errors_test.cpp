@@ -10,43 +10,13 @@
 
 #include <gtest/gtest.h>
 
-#include "canon/toolpath.hpp"
-#include "core/source.hpp"
-#include "gcode/dialect.hpp"
 #include "gcode/dialects/grbl.hpp"
+#include "grbl_test_support.hpp"
 
 namespace usina::gcode {
 namespace {
 
-struct Run {
-  core::SourceManager sources;
-  core::DiagnosticList diags;
-  canon::Toolpath path;
-  bool ok = false;
-
-  // (line, Grbl number) of every E_GRBL, in order.
-  std::vector<std::pair<std::uint32_t, int>> errors() const {
-    std::vector<std::pair<std::uint32_t, int>> out;
-    for (const core::Diagnostic& d : diags.all()) {
-      if (d.code != core::Code::GrblError) continue;
-      const std::size_t at = d.message.find("error:");
-      out.emplace_back(d.loc.line, std::stoi(d.message.substr(at + 6)));
-    }
-    return out;
-  }
-};
-
-std::unique_ptr<Run> run_grbl(const std::string& text, const std::vector<std::string>& opts = {}) {
-  auto r = std::make_unique<Run>();
-  const std::uint32_t id = r->sources.add(core::SourceFile::from_string("t.nc", text));
-  const Dialect* d = find_dialect("grbl");
-  EXPECT_NE(d, nullptr);
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, opts, values).has_value());
-  auto runner = d->make_runner(RunContext{r->sources, {}, std::move(values), r->path, r->diags});
-  r->ok = runner->run(id);
-  return r;
-}
+using testing::run_grbl;
 
 // The Grbl number of the one error `block` raises (after `setup`, which
 // must raise none), or 0.

@@ -8,54 +8,13 @@
 
 #include <gtest/gtest.h>
 
-#include "canon/toolpath.hpp"
-#include "core/source.hpp"
-#include "gcode/dialect.hpp"
 #include "gcode/interp/interpreter.hpp"
+#include "grbl_test_support.hpp"
 
 namespace usina::gcode {
 namespace {
 
-struct Run {
-  core::SourceManager sources;
-  core::DiagnosticList diags;
-  canon::Toolpath path;
-  bool ok = false;
-
-  std::vector<const core::Diagnostic*> with(core::Code c) const {
-    std::vector<const core::Diagnostic*> out;
-    for (const core::Diagnostic& d : diags.all())
-      if (d.code == c) out.push_back(&d);
-    return out;
-  }
-
-  std::vector<std::pair<std::string, core::Vec3>> moves() const {
-    std::vector<std::pair<std::string, core::Vec3>> out;
-    for (const canon::Op& op : path.ops()) {
-      if (!canon::is_motion(op.kind)) continue;
-      core::Vec3 to;
-      std::visit(
-          [&](const auto& o) {
-            if constexpr (requires { o.to; }) to = o.to;
-          },
-          op.kind);
-      out.emplace_back(canon::op_name(op.kind), to);
-    }
-    return out;
-  }
-};
-
-std::unique_ptr<Run> run_grbl(const std::string& text, const std::vector<std::string>& opts = {}) {
-  auto r = std::make_unique<Run>();
-  const std::uint32_t id = r->sources.add(core::SourceFile::from_string("t.nc", text));
-  const Dialect* d = find_dialect("grbl");
-  EXPECT_NE(d, nullptr);
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, opts, values).has_value());
-  auto runner = d->make_runner(RunContext{r->sources, {}, std::move(values), r->path, r->diags});
-  r->ok = runner->run(id);
-  return r;
-}
+using testing::run_grbl;
 
 void expect_at(const core::Vec3& got, const core::Vec3& want) {
   EXPECT_NEAR(got.x, want.x, 1e-6);
