@@ -51,40 +51,49 @@ Kept run_kept(const std::string& dialect, const std::string& text,
 
 // --- G54.1 P1..P48 --------------------------------------------------------
 
-TEST(FanucOffsets, G10L20SetsAnAdditionalSystemAndG541SelectsIt) {
-  auto r = run_fanuc("G10 L20 P1 X10. Y20.\nG90 G54.1 P1 G0 X0 Y0\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {10, 20, 0});
-}
+// Programs that must end at a point: each row names the rule it checks.
+struct EndCase {
+  const char* rule;
+  const char* program;
+  core::Vec3 end;
+};
 
-TEST(FanucOffsets, G54PIsTheSameAsG541P) {
-  auto r = run_fanuc("G10 L20 P48 X-3.\nG54 P48 G0 X1.\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {-2, 0, 0});
+const EndCase kEndCases[] = {
+    {"G10L20SetsAnAdditionalSystemAndG541SelectsIt",
+     "G10 L20 P1 X10. Y20.\nG90 G54.1 P1 G0 X0 Y0\nM30\n",
+     {10, 20, 0}},
+    {"G54PIsTheSameAsG541P", "G10 L20 P48 X-3.\nG54 P48 G0 X1.\nM30\n", {-2, 0, 0}},
+    {"G541WithoutPIsP1", "G10 L20 P1 Z-5.\nG54.1 G0 Z0\nM30\n", {0, 0, -5}},
+    {"G10L20InG91Adds",
+     "G10 L20 P2 X10.\nG91 G10 L20 P2 X5.\nG90 G54.1 P2 G0 X0\nM30\n",
+     {15, 0, 0}},
+    {"ChangingTheActiveSystemTakesEffect",
+     "G54.1 P3 G0 X0\nG10 L20 P3 X7.\nG0 X0\nM30\n",
+     {7, 0, 0}},
+    {"WritingTheActiveSystemsVariableTakesEffect",
+     "G54.1 P5 G0 X0\n#7081 = 3.\nG0 X0\nM30\n",
+     {3, 0, 0}},
+    {"ExternalOffsetShiftsTheAdditionalSystems",
+     "G10 L20 P1 X1.\nG54.1 P1\nG10 L2 P0 X5.\nG0 X0\nM30\n",
+     {6, 0, 0}},
+    {"WorkOffsetVariableKeepsTheExternalOffset",
+     "#5201 = 2.\n#5221 = 10.\nG54 G0 X0\n#1 = #5221\nG0 Y#1\nM30\n",
+     {12, 10, 0}},
+};
+
+TEST(FanucOffsets, EachProgramEndsWhereItsRuleSays) {
+  for (const EndCase& c : kEndCases) {
+    SCOPED_TRACE(c.rule);
+    auto r = run_fanuc(c.program);
+    EXPECT_TRUE(r->ok) << r->first_error_text();
+    expect_end(*r, c.end);
+  }
 }
 
 TEST(FanucOffsets, PInAG54BlockWithM98IsTheProgram) {
   auto r = run_fanuc("%\nO0001\nG10 L20 P1 X9.\nG54 M98 P2\nG0 X0\nM30\nO0002\nG0 Y1.\nM99\n%\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
   expect_end(*r, {0, 1, 0});  // G54, not G54.1 P2 (nor P1)
-}
-
-TEST(FanucOffsets, G541WithoutPIsP1) {
-  auto r = run_fanuc("G10 L20 P1 Z-5.\nG54.1 G0 Z0\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {0, 0, -5});
-}
-
-TEST(FanucOffsets, G10L20InG91Adds) {
-  auto r = run_fanuc("G10 L20 P2 X10.\nG91 G10 L20 P2 X5.\nG90 G54.1 P2 G0 X0\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {15, 0, 0});
-}
-
-TEST(FanucOffsets, ChangingTheActiveSystemTakesEffect) {
-  auto r = run_fanuc("G54.1 P3 G0 X0\nG10 L20 P3 X7.\nG0 X0\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {7, 0, 0});
 }
 
 TEST(FanucOffsets, VariablesReadAndWriteTheAdditionalSystems) {
@@ -99,12 +108,6 @@ TEST(FanucOffsets, VariablesReadAndWriteTheAdditionalSystems) {
   EXPECT_NEAR(r->ends()[1].y, 2.0, 1e-9);   // #7003 = 2
   EXPECT_NEAR(r->ends()[1].z, 54.1, 1e-9);  // G54.1 was active
   EXPECT_NEAR(r->ends()[2].x, 0.0, 1e-9);   // back in G54: #4130 = 0
-}
-
-TEST(FanucOffsets, WritingTheActiveSystemsVariableTakesEffect) {
-  auto r = run_fanuc("G54.1 P5 G0 X0\n#7081 = 3.\nG0 X0\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {3, 0, 0});
 }
 
 TEST(FanucOffsets, AdditionalSystemErrors) {
@@ -138,18 +141,6 @@ TEST(FanucOffsets, ExternalOffsetInG91AddsAndMovesTheActiveSystem) {
   ASSERT_EQ(r->ends().size(), 2u);
   EXPECT_NEAR(r->ends()[0].x, 7.0, 1e-9);
   expect_end(*r, {7, 3, 0});
-}
-
-TEST(FanucOffsets, ExternalOffsetShiftsTheAdditionalSystems) {
-  auto r = run_fanuc("G10 L20 P1 X1.\nG54.1 P1\nG10 L2 P0 X5.\nG0 X0\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {6, 0, 0});
-}
-
-TEST(FanucOffsets, WorkOffsetVariableKeepsTheExternalOffset) {
-  auto r = run_fanuc("#5201 = 2.\n#5221 = 10.\nG54 G0 X0\n#1 = #5221\nG0 Y#1\nM30\n");
-  EXPECT_TRUE(r->ok) << r->first_error_text();
-  expect_end(*r, {12, 10, 0});
 }
 
 TEST(FanucOffsets, ExternalOffsetFromTheParameterFile) {
