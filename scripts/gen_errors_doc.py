@@ -334,9 +334,10 @@ EXPLAIN = {
         "each excursion.",
         "Check the work zero, the machine profile, or move the part."),
     "W_FEED_WITHOUT_RATE": (
-        "`usina stats`: a feed move has no feed rate in mm/min (inverse time `G93` or feed "
-        "per revolution `G95`), so its time cannot be known from the move alone. It is timed "
-        "at the axes' max feed, which makes the cycle time a lower bound.",
+        "`usina stats`: a feed move has no feed rate: feed per revolution `G95` with the "
+        "spindle stopped (a `G93` move's rate is its length over its time, and a `G95` "
+        "move's is F × rpm). It is timed at the axes' max feed, which makes the cycle time a "
+        "lower bound.",
         "Nothing, when the program is meant so; the time reported is the least it can take."),
     "W_FEED_SPINDLE_STOPPED": (
         "`usina stats`: a feed move (`G1`, `G2`, `G3`, a spline or a cycle's feed) runs with "

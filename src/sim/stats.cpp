@@ -93,7 +93,7 @@ void StatsSink::on(const canon::Op& op) {
         if constexpr (std::is_same_v<T, canon::Traverse>) {
           traverse(op, k);
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
-          feed(op, k.to, k.abc, k.f);
+          feed(op, k.to, k.abc, k.f, k.programmed);
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           arc(op, k);
         } else if constexpr (std::is_same_v<T, canon::Spline>) {
@@ -174,15 +174,31 @@ double StatsSink::feed_speed(const canon::Op& op, const AxisShare& share, std::o
   return std::min(*f / 60.0, limit);
 }
 
+// The mm/min a move runs at: its F, or what G93 (the move takes 1/F
+// minutes, whatever its length) or G95 (F mm a spindle revolution) make of it.
+std::optional<double> StatsSink::rate_of(std::optional<double> f,
+                                         const canon::ProgrammedFeed& programmed,
+                                         double length) const {
+  using Mode = canon::ProgrammedFeed::Mode;
+  if (f || programmed.value <= 0.0) return f;
+  if (programmed.mode == Mode::InverseTime && length > 0.0) return length * programmed.value;
+  if (programmed.mode == Mode::PerRevolution && spindle_dir_ != canon::SpindleDir::Off &&
+      spindle_rpm_ > 0.0) {
+    return programmed.value * spindle_rpm_;
+  }
+  return std::nullopt;
+}
+
 void StatsSink::feed(const canon::Op& op, const Vec3& to_xyz, const canon::Abc& abc,
-                     std::optional<double> f) {
+                     std::optional<double> f, const canon::ProgrammedFeed& programmed) {
   const Axes6 to = axes_of(to_xyz, abc);
   Box box;
   box.add(xyz(pos_));
   box.add(to_xyz);
   checks_.travel(op, box.lo, box.hi, to);
   const double length = path_length(pos_, to);
-  const double cruise = feed_speed(op, straight_share(pos_, to, length), f);
+  const double cruise =
+      feed_speed(op, straight_share(pos_, to, length), rate_of(f, programmed, length));
   ToolStats& ts = tool();
   ts.cutting_mm += straight(to, cruise, Cutting);
   ++ts.counts.feeds;
@@ -194,7 +210,7 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   const std::optional<ArcPath> path = arc_path(xyz(pos_), a);
   if (!path) {
     // No radius: the control moves straight to the end.
-    feed(op, a.to, a.abc, a.f);
+    feed(op, a.to, a.abc, a.f, a.programmed);
     --tool().counts.feeds;
     ++tool().counts.arcs;
     return;
@@ -216,9 +232,10 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
       centripetal = std::min(centripetal, machine_.axes[i].accel / in_plane);
     }
   }
-  double cruise = feed_speed(op, share, a.f);
+  const std::optional<double> rate = rate_of(a.f, a.programmed, path->length);
+  double cruise = feed_speed(op, share, rate);
   const double arc_limit = std::sqrt(centripetal * path->radius);  // v²/r ≤ a
-  if (a.f && *a.f > 0.0) {
+  if (rate && *rate > 0.0) {
     checks_.arc_feed(op, path->radius, cruise * 60.0, arc_limit * 60.0, centripetal);
   }
   cruise = std::min(cruise, arc_limit);
@@ -251,7 +268,8 @@ void StatsSink::spline(const canon::Op& op, const canon::Spline& s) {
   const Axes6 to{s.to.x, s.to.y, s.to.z, pos_[3], pos_[4], pos_[5]};
   checks_.travel(op, box.lo, box.hi, to);
   // The spline's feed is checked once, along its chord.
-  const double cruise = feed_speed(op, straight_share(pos_, to, path_length(pos_, to)), s.f);
+  const double cruise = feed_speed(op, straight_share(pos_, to, path_length(pos_, to)),
+                                   rate_of(s.f, s.programmed, length));
   // A spline is one block: the block time limits the whole curve's speed.
   const double spline_cruise = block_limit(length, cruise);
   for (const Vec3& p : s.points) {

@@ -124,7 +124,8 @@ class StatsSink final : public canon::Sink {
   ToolStats& tool() { return tools_[tool_slot_]; }
 
   void traverse(const canon::Op& op, const canon::Traverse& t);
-  void feed(const canon::Op& op, const Vec3& to, const canon::Abc& abc, std::optional<double> f);
+  void feed(const canon::Op& op, const Vec3& to, const canon::Abc& abc, std::optional<double> f,
+            const canon::ProgrammedFeed& programmed);
   void arc(const canon::Op& op, const canon::Arc& a);
   void spline(const canon::Op& op, const canon::Spline& s);
   void probe(const canon::Op& op, const canon::Probe& p);
@@ -135,6 +136,8 @@ class StatsSink final : public canon::Sink {
   double straight(const Axes6& to, double cruise, Kind kind);
   // The cruise speed (mm/s) of a feed at `f` mm/min along `share`, reporting a clamp.
   double feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f);
+  std::optional<double> rate_of(std::optional<double> f, const canon::ProgrammedFeed& programmed,
+                                double length) const;
   double block_limit(double length, double cruise) const;
   void moved_to(const Axes6& to);
 

@@ -81,7 +81,7 @@ void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, co
 void StatsChecks::feed(const canon::Op& op, bool has_rate, bool spindle_running) {
   if (!has_rate) {
     flag(core::Code::FeedWithoutRate, op, !in_no_rate_run_,
-         "feed move without a feed rate in mm/min (inverse time or per revolution): "
+         "feed move without a feed rate (per revolution with the spindle stopped): "
          "timed at the axes' max feed, so the time is a lower bound");
   }
   in_no_rate_run_ = !has_rate;

@@ -302,7 +302,8 @@ TEST(StatsChecks, OverTravelReportsAtMostTheCap) {
   EXPECT_EQ(r.checks.at(core::Code::OverTravel), 24u);  // out and back, 12 times
 }
 
-// No rate (G93/G95): timed at the max feed, 100 mm/s: 100 mm in 1.1 s.
+// No rate (a front end that gives none): timed at the max feed, 100 mm/s:
+// 100 mm in 1.1 s.
 TEST(StatsChecks, FeedWithoutRate) {
   Machine run;
   spindle_on(run);
@@ -315,6 +316,47 @@ TEST(StatsChecks, FeedWithoutRate) {
   EXPECT_NE(d[0]->message.find("timed at the axes' max feed"), std::string::npos);
   EXPECT_EQ(r.checks.at(core::Code::FeedWithoutRate), 2u);
   EXPECT_NEAR(r.total.cutting_s, 2.2, 1e-9);
+}
+
+// G93 F2: 100 mm in 1/2 min, 200 mm/min = 3.333 mm/s: 30 s + v/a
+// (3.333/1000 s). A half circle of radius 5 (15.708 mm) in G93 F6: 10 s.
+TEST(Stats, InverseTimeMovesTakeOneOverF) {
+  using Mode = canon::ProgrammedFeed::Mode;
+  Machine run;
+  spindle_on(run);
+  canon::Feed f = feed_to({100, 0, 0}, std::nullopt);
+  f.programmed = {Mode::InverseTime, 2.0};
+  run(f);
+  canon::Arc a = half_circle({100, 0, 0}, 5, 1, std::nullopt);
+  a.programmed = {Mode::InverseTime, 6.0};
+  run(a);
+  const StatsReport r = run.done();
+  EXPECT_TRUE(run.with(core::Code::FeedWithoutRate).empty());
+  const double v1 = 200.0 / 60.0;
+  const double v2 = 5 * M_PI / 10.0;  // mm/s
+  // Exact stop: each move from rest to rest, plus the spindle's 1 s start-up.
+  EXPECT_NEAR(r.total.exact_stop_s, 1.0 + 30.0 + v1 / kA + 10.0 + v2 / kA, 1e-6);
+  EXPECT_NEAR(r.total.feed.max, 200.0, 1e-9);
+  EXPECT_NEAR(r.total.feed.min, 5 * M_PI * 6.0, 1e-9);  // 15.708 mm in 1/6 min
+}
+
+// G95 F0.1 at 5000 rpm: 500 mm/min; with the spindle stopped there is no rate.
+TEST(Stats, PerRevolutionFeedRunsAtTheSpindleSpeed) {
+  using Mode = canon::ProgrammedFeed::Mode;
+  Machine run;
+  spindle_on(run);
+  canon::Feed f = feed_to({50, 0, 0}, std::nullopt);
+  f.programmed = {Mode::PerRevolution, 0.1};
+  run(f, 2);
+  run(canon::Spindle{0, canon::SpindleDir::Off});
+  canon::Feed g = feed_to({0, 0, 0}, std::nullopt);
+  g.programmed = {Mode::PerRevolution, 0.1};
+  run(g, 4);
+  const StatsReport r = run.done();
+  EXPECT_NEAR(r.total.feed.max, 500.0, 1e-9);
+  const auto d = run.with(core::Code::FeedWithoutRate);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0]->loc.line, 4u);
 }
 
 TEST(StatsChecks, FeedWithTheSpindleStopped) {
