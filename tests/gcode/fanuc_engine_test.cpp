@@ -436,5 +436,15 @@ TEST(FanucEngine, TheG65PocketRunsAndAlarmsWithoutItsDiameter) {
   EXPECT_EQ(r->first_error_text(), "alarm 3001: DIAMETER D MISSING");
 }
 
+TEST(FanucEngine, ACharacterThatIsNoWordIsAnErrorAtItsColumn) {
+  auto r = run_fanuc("G0 X1. $\nM30\n");
+  EXPECT_EQ(r->first_error(), Code::UnexpectedCharacter);
+  for (const core::Diagnostic& d : r->diags.all()) {
+    if (d.code == Code::UnexpectedCharacter) {
+      EXPECT_EQ(d.loc.col, 8u);  // at the '$'
+    }
+  }
+}
+
 }  // namespace
 }  // namespace usina::gcode::fanuc_test

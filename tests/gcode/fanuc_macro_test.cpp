@@ -126,6 +126,8 @@ TEST(FanucMacro, ErrorsHaveCodes) {
   EXPECT_EQ(code("#-1"), core::Code::BadParameterName);
   EXPECT_EQ(code("[1 + 2"), core::Code::UnclosedBracket);
   EXPECT_EQ(code("#2000"), core::Code::ParameterOutOfRange);
+  EXPECT_EQ(code("*5"), core::Code::ExpectedExpression);
+  EXPECT_EQ(code("5 +"), core::Code::ExpectedExpression);
 }
 
 TEST(FanucMacro, IndirectVariable) {
