@@ -471,6 +471,14 @@ EXPLAIN = {
         "may differ from what the control does.",
         "Check that the parameter does not change the part; set what usina models with its own "
         "options."),
+    "W_INCREMENTAL_AFTER_G69": (
+        "A fanuc program cancels a coordinate rotation with `G69` and the first move after it "
+        "that names an axis of the rotation plane is incremental (`G91`). The Fanuc manual "
+        "(16/18-MC B-62764EN p. 354) says the first move command after G69 must be absolute: "
+        "the control may take the increment from the rotated point and end elsewhere. usina "
+        "moves by the increment from where the tool is. G28, G30 and G53 end the check without "
+        "a warning.",
+        "Make the first move after `G69` absolute (`G90 X.. Y..`)."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")
