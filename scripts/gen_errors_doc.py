@@ -466,9 +466,9 @@ EXPLAIN = {
         "docs/fanuc.md)."),
     "W_PARAMETER_NOT_MODELED": (
         "A fanuc `G10 L50` block sets a parameter usina does not model (it models 5114 and 5115, "
-        "the G73/G83 peck distances; 3401 bit 0 DPI; 1300 bit 0 OUT), or bits of 3401/1300 other "
-        "than bit 0. The value is ignored: the run goes on as if the block were not there, which "
-        "may differ from what the control does.",
+        "the G73/G83 peck distances; 3401 bit 0 DPI; 1300 bit 0 OUT; 5101 bits 4-5 RD1 RD2, the "
+        "G76/G87 shift), or other bits of 3401/1300/5101. The value is ignored: the run goes on "
+        "as if the block were not there, which may differ from what the control does.",
         "Check that the parameter does not change the part; set what usina models with its own "
         "options."),
     "W_INCREMENTAL_AFTER_G69": (
