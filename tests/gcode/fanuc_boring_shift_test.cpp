@@ -129,6 +129,15 @@ TEST(FanucBoringShift, MirrorDoesNotReverseTheShift) {
   expect_near(shift_of(*r), {-4.5, 5, -8});
 }
 
+TEST(FanucBoringShift, ScalingDoesNotScaleTheShift) {
+  // G51 P2 about 0 (X Y only): the hole (5, 5) is bored at (10, 10); Q stays 0.5.
+  auto r =
+      run_fanuc("G0 X0 Y0 Z10.\nG51 X0 Y0 P2.\nG98 G76 X5. Y5. Z-8. R2. Q0.5 F60.\nG80\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  expect_near(r->ends()[3], {10, 10, -8});
+  expect_near(shift_of(*r), {10.5, 10, -8});
+}
+
 TEST(FanucBoringShift, OutsideG17IsNotImplemented) {
   auto r = run_fanuc("G0 X0 Y0 Z10.\nG18 G98 G76 X5. Y5. Z-8. R2. Q0.5 F60.\nM30\n");
   EXPECT_EQ(r->first_error(), Code::Unsupported);
