@@ -467,11 +467,19 @@ EXPLAIN = {
         "docs/fanuc.md)."),
     "W_PARAMETER_NOT_MODELED": (
         "A fanuc `G10 L50` block sets a parameter usina does not model (it models 5114 and 5115, "
-        "the G73/G83 peck distances; 3401 bit 0 DPI; 1300 bit 0 OUT), or bits of 3401/1300 other "
-        "than bit 0. The value is ignored: the run goes on as if the block were not there, which "
-        "may differ from what the control does.",
+        "the G73/G83 peck distances; 3401 bit 0 DPI; 1300 bit 0 OUT; 5101 bits 4-5 RD1 RD2, the "
+        "G76/G87 shift), or other bits of 3401/1300/5101. The value is ignored: the run goes on "
+        "as if the block were not there, which may differ from what the control does.",
         "Check that the parameter does not change the part; set what usina models with its own "
         "options."),
+    "W_INCREMENTAL_AFTER_G69": (
+        "A fanuc program cancels a coordinate rotation with `G69` and the first move after it "
+        "that names an axis of the rotation plane is incremental (`G91`). The Fanuc manual "
+        "(16/18-MC B-62764EN p. 354) says the first move command after G69 must be absolute: "
+        "the control may take the increment from the rotated point and end elsewhere. usina "
+        "moves by the increment from where the tool is. G28, G30 and G53 end the check without "
+        "a warning.",
+        "Make the first move after `G69` absolute (`G90 X.. Y..`)."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

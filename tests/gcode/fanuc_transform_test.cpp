@@ -1,7 +1,7 @@
 // The fanuc dialect's geometry: G76/G87 under G91 and K repeats, G16
 // polar coordinates (G91 radius, arcs, the G18/G19 planes), G51/G51.1/G68
 // in every plane, G68's incremental angle (parameter 5400 RIN), mirror
-// reversing G68, and ROUND at an address (docs/fanuc.md §4, §7). Each
+// reversing G68, the warning after G69, and ROUND at an address (docs/fanuc.md §4, §7). Each
 // expected point is worked out by hand in the comment beside it.
 #include <cmath>
 #include <numbers>
@@ -272,6 +272,67 @@ TEST(FanucRotation, ScalingComesFirstAndScalesTheCentre) {
   auto r = run_fanuc("G51 X0 Y0 P2.\nG68 X5. Y0 R90.\nG0 X10. Y0\nM30\n");
   ASSERT_TRUE(r->ok) << r->first_error_text();
   expect_end(*r, {10, 10, 0});
+}
+
+// --- 5b. The first move after G69 ([16MC] p. 354) -----------------------
+
+int after_g69_warnings(const Run& r) {
+  int n = 0;
+  for (const core::Diagnostic& d : r.diags.all())
+    n += d.code == Code::IncrementalAfterG69 ? 1 : 0;
+  return n;
+}
+
+TEST(FanucAfterG69, AnIncrementalFirstMoveIsWarnedAtItsWord) {
+  // Under R90 X10. ends at (0, 10); after G69 usina moves by the increment
+  // from there: (5, 10).
+  auto r = run_fanuc("G68 X0 Y0 R90.\nG0 X10.\nG69\nG91 G0 X5.\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(after_g69_warnings(*r), 1);
+  for (const core::Diagnostic& d : r->diags.all()) {
+    if (d.code != Code::IncrementalAfterG69) continue;
+    EXPECT_EQ(d.severity, core::Severity::Warning);
+    EXPECT_EQ(d.loc.line, 4u);
+    EXPECT_EQ(d.loc.col, 8u);  // at X5.
+  }
+  expect_end(*r, {5, 10, 0});
+}
+
+TEST(FanucAfterG69, AMoveInTheG69BlockIsTheFirstMove) {
+  auto r = run_fanuc("G68 X0 Y0 R90.\nG91 G69 G0 X5.\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(after_g69_warnings(*r), 1);
+}
+
+TEST(FanucAfterG69, AnAbsoluteFirstMoveEndsTheCheck) {
+  auto r = run_fanuc("G68 X0 Y0 R90.\nG0 X10.\nG69\nG90 G0 X1. Y1.\nG91 X5.\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(after_g69_warnings(*r), 0);
+  expect_end(*r, {6, 1, 0});
+}
+
+TEST(FanucAfterG69, G69WithoutARotationIsNotWatched) {
+  auto r = run_fanuc("G90 G17 G69\nG91 G0 X5.\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(after_g69_warnings(*r), 0);
+}
+
+TEST(FanucAfterG69, MovesOutsideThePlaneDoNotDecide) {
+  // G91 Z5. does not name X or Y; the X5. after it is the first move.
+  auto r = run_fanuc("G68 X0 Y0 R90.\nG69\nG91 G0 Z5.\nX5.\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(after_g69_warnings(*r), 1);
+  // G04 X is a dwell, not a move.
+  auto dwell = run_fanuc("G68 X0 Y0 R90.\nG69\nG91 G04 X1.\nG90 G0 X1.\nM30\n");
+  ASSERT_TRUE(dwell->ok) << dwell->first_error_text();
+  EXPECT_EQ(after_g69_warnings(*dwell), 0);
+}
+
+TEST(FanucAfterG69, G28EndsTheCheck) {
+  // G91 G28 X0 Y0 goes to the reference position: the point is known again.
+  auto r = run_fanuc("G68 X0 Y0 R90.\nG69\nG91 G28 X0 Y0\nG0 X5.\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(after_g69_warnings(*r), 0);
 }
 
 // --- 6. ROUND at an address ---------------------------------------------

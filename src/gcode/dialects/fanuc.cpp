@@ -40,7 +40,10 @@ const Dialect& fanuc_dialect() {
         "the axes G51 P scales (parameter 5401 SCLx); I J K scale any axis"},
        {"stroke_area",
         {"inside", "outside"},
-        "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"}},
+        "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"},
+       {"boring_shift",
+        {"+x", "-x", "+y", "-y"},
+        "the G76/G87 shift at the hole bottom, in the machine's axes (parameter 5101 RD1 RD2)"}},
       &make};
   return d;
 }

@@ -62,6 +62,7 @@ Engine::Engine(RunContext& c)
   rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";
   scale_z_by_p_ = c.dialect_options["scaling_axes"] == "xyz";
   stroke_.outside_forbidden = c.dialect_options["stroke_area"] == "outside";
+  g76_.shift = boring_shift_bits(c.dialect_options["boring_shift"]);
   locals_.push_back(vacant_locals());
   if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
 }

@@ -72,6 +72,10 @@ struct Transform {
 
 std::array<Value, 34> vacant_locals();
 
+// The G76/G87 shift of the `boring_shift` option (+x -x +y -y) as the value
+// of parameter 5101 bits 5-4 RD2 RD1 (fanuc_parameters.cpp).
+int boring_shift_bits(std::string_view option);
+
 // Stored stroke check 2 (G22, docs/fanuc.md §7): sits between the
 // interpreter and the run's sink, follows the tool through every move and,
 // while an area is armed, stops the ops at the first move that enters the
@@ -215,6 +219,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool transformed_arc(const TapeBlock& b, Words& w, core::Plane plane,
                        const std::array<std::optional<NcWord>, 3>& centre, core::Vec3 start_prog);
   bool rotation_start(Words& w, core::Vec3 here);
+  void check_after_rotation(const TapeBlock& b, const Words& w);
 
   // Offset registers (fanuc_offsets.cpp).
   bool read_offsets(const std::string& path);
@@ -250,7 +255,8 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool parameter_block(const TapeBlock& b);
   bool set_fanuc_parameter(const TapeBlock& b, long number, Words& w);
   std::optional<double> parameter_length(const TapeBlock& b, const NcWord& r);
-  std::optional<long> parameter_bits(const TapeBlock& b, long number, const NcWord& r);
+  std::optional<long> parameter_bits(const TapeBlock& b, long number, const NcWord& r,
+                                     long modeled);
   bool parameter_mode_ = false;
 
   // G22/G23 stored stroke check 2 (fanuc_stroke.cpp).
@@ -305,6 +311,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   struct FineBoring {
     std::optional<double> initial;  // R and Z are cycle_r_ and cycle_z_
     double q = 0, p = 0, f = 0;
+    int shift = 0;  // parameter 5101 RD2 RD1 (bits 5 4): 0 +X, 1 -X, 2 +Y, 3 -Y in G17
   } g76_;
 
   bool fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Vec2 first, core::Vec2 step,
@@ -317,6 +324,8 @@ class Engine final : public ProgramRunner, private VariableSource {
   core::Plane polar_plane_ = core::Plane::XY;
   double polar_r_ = 0, polar_a_ = 0;
   core::Vec3 prog_{};  // the programmed point before the transformations
+  // After G69 cancelled a rotation: its plane, until the first move in it.
+  std::optional<core::Plane> after_g69_;
 };
 
 }  // namespace usina::gcode::fanuc

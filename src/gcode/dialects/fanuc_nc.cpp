@@ -386,6 +386,8 @@ bool Engine::fine_boring(const TapeBlock& b, Words& w) {
   if (code == 870 && to_r)
     return error(core::Code::NotAllowedInMode, b, 0, "G87 back boring does not take G99");
   if (!hole || repeats <= 0) return true;  // K0 keeps the data without boring
+  if (block_plane(w) != core::Plane::XY)
+    return error(core::Code::Unsupported, b, 0, "G76/G87 outside G17 is not implemented");
   if (!cycle_r_ || !cycle_z_)
     return error(core::Code::MissingWord, b, 0, "G76 needs R and Z when it starts");
   const core::Vec2 first = incremental ? core::Vec2{here.x + step.x, here.y + step.y} : step;
@@ -399,27 +401,30 @@ bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Ve
   const bool was_incremental = interp_.state().incremental;
   const double r = *cycle_r_, z = *cycle_z_, top = *g76_.initial, q = g76_.q;
   const double back = to_r ? r : std::max(top, r);
+  // Parameter 5101 RD2 RD1: +X -X +Y -Y, in the machine's axes: the
+  // oriented spindle points the tip one way whatever G68/G51.1 do to the
+  // program, so the shift is added after them (the hole is transformed).
+  const double dx = g76_.shift == 0 ? q : g76_.shift == 1 ? -q : 0.0;
+  const double dy = g76_.shift == 2 ? q : g76_.shift == 3 ? -q : 0.0;
   const LinePos where{b.file, b.line, b.line_offset};
   if (!interp_.run_block("G90", where)) return false;
   for (long n = 0; n < repeats; ++n) {
     const double x = first.x + step.x * static_cast<double>(n);
     const double y = first.y + step.y * static_cast<double>(n);
-    std::vector<std::string> blocks{fmt::format("G0 X{} Y{}", number(x), number(y))};
+    const std::string hole = fmt::format("G0 X{} Y{}", number(x), number(y));
+    const std::string shifted = fmt::format("G0 X{} Y{}", number(x + dx), number(y + dy));
+    std::vector<std::string> blocks{hole};
     if (code == 760) {
-      blocks.insert(
-          blocks.end(),
-          {fmt::format("G0 Z{}", number(r)), fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
-           fmt::format("G4 P{}", number(g76_.p)), "M19", fmt::format("G0 X{}", number(x + q)),
-           fmt::format("G0 Z{}", number(back)), fmt::format("G0 X{}", number(x)), "M3"});
+      blocks.insert(blocks.end(), {fmt::format("G0 Z{}", number(r)),
+                                   fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
+                                   fmt::format("G4 P{}", number(g76_.p)), "M19", shifted,
+                                   fmt::format("G0 Z{}", number(back)), hole, "M3"});
     } else {
       // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
-      blocks.insert(
-          blocks.end(),
-          {"M19", fmt::format("G0 X{}", number(x + q)), fmt::format("G0 Z{}", number(r)),
-           fmt::format("G0 X{}", number(x)), "M3",
-           fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
-           fmt::format("G4 P{}", number(g76_.p)), "M19", fmt::format("G0 X{}", number(x + q)),
-           fmt::format("G0 Z{}", number(top)), fmt::format("G0 X{}", number(x)), "M3"});
+      blocks.insert(blocks.end(), {"M19", shifted, fmt::format("G0 Z{}", number(r)), hole, "M3",
+                                   fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
+                                   fmt::format("G4 P{}", number(g76_.p)), "M19", shifted,
+                                   fmt::format("G0 Z{}", number(top)), hole, "M3"});
     }
     for (const std::string& text : blocks)
       if (!interp_.run_block(text, where)) return false;

@@ -3,7 +3,7 @@
 // parameters it models (5114 and 5115, the G73 back-off and G83 clearance;
 // 3401 bit 0 DPI, the decimal-point rule; 1300 bit 0 OUT, the side of the
 // G22 area) and says of any other that it is not modelled, rather than
-// guess.
+// guess. 5101 bits 4-5 RD1 RD2 set the G76/G87 shift direction.
 #include <cmath>
 
 #include <fmt/format.h>
@@ -60,8 +60,10 @@ std::optional<double> Engine::parameter_length(const TapeBlock& b, const NcWord&
   return v * core::mm_per(options_.machine_units);
 }
 
-// A bit parameter: R is the byte, bit 0 its lowest (R1 sets bit 0 alone).
-std::optional<long> Engine::parameter_bits(const TapeBlock& b, long number, const NcWord& r) {
+// A bit parameter: R is the byte, bit 0 its lowest (R1 sets bit 0 alone);
+// bits outside `modeled` are warned.
+std::optional<long> Engine::parameter_bits(const TapeBlock& b, long number, const NcWord& r,
+                                           long modeled) {
   if (!r.integer_literal || r.raw < 0 || r.raw > 255) {
     error(core::Code::BadWordValue, b, r.pos,
           fmt::format("parameter {} is a bit parameter: R takes 0..255 without a decimal point "
@@ -70,10 +72,10 @@ std::optional<long> Engine::parameter_bits(const TapeBlock& b, long number, cons
     return std::nullopt;
   }
   const long bits = std::lround(r.raw);
-  if ((bits & ~1L) != 0) {
+  if ((bits & ~modeled) != 0) {
     warn(core::Code::ParameterNotModeled, b, r.pos,
-         fmt::format("parameter {}: usina models bit 0 only; bits 1-7 ({}) are ignored", number,
-                     bits & ~1L));
+         fmt::format("parameter {}: usina models {} only; the other bits set ({}) are ignored",
+                     number, modeled == 1 ? "bit 0" : "bits 4-5 (RD1 RD2)", bits & ~modeled));
   }
   return bits;
 }
@@ -81,7 +83,8 @@ std::optional<long> Engine::parameter_bits(const TapeBlock& b, long number, cons
 bool Engine::set_fanuc_parameter(const TapeBlock& b, long number, Words& w) {
   const NcWord& r = *w.find('R');
   const NcWord* axis = w.find('P');
-  const bool modeled = number == 5114 || number == 5115 || number == 3401 || number == 1300;
+  const bool modeled =
+      number == 5114 || number == 5115 || number == 3401 || number == 1300 || number == 5101;
   if (!modeled) {
     // At the block's N, the parameter number.
     diags_.report({core::Code::ParameterNotModeled, core::Severity::Warning,
@@ -104,11 +107,20 @@ bool Engine::set_fanuc_parameter(const TapeBlock& b, long number, Words& w) {
     if (number == 5115) interp_.set_peck_distances(interp_.peck_retract_mm(), *mm);
     return true;
   }
-  const auto bits = parameter_bits(b, number, r);
+  const auto bits = parameter_bits(b, number, r, number == 5101 ? 0x30 : 1);
   if (!bits) return false;
+  if (number == 5101) g76_.shift = static_cast<int>((*bits >> 4) & 3);
   if (number == 3401) dpi_fanuc_ = (*bits & 1) == 0;  // DPI = 1: pocket calculator
   if (number == 1300) stroke_.outside_forbidden = (*bits & 1) != 0;
   return true;
+}
+
+// RD2 RD1 = 00 +X, 01 -X, 10 +Y, 11 -Y (in G17; docs/fanuc.md §7).
+int boring_shift_bits(std::string_view option) {
+  if (option == "-x") return 1;
+  if (option == "+y") return 2;
+  if (option == "-y") return 3;
+  return 0;
 }
 
 }  // namespace usina::gcode::fanuc

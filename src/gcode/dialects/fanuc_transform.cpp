@@ -169,6 +169,7 @@ bool Engine::transform_codes(const TapeBlock& b, Words& w) {
   }
   if (w.has_g(690)) {
     w.take_g(690);
+    if (xf_.rotation) after_g69_ = xf_.rot_plane;
     xf_.rotation = false;
     xf_.rot_deg = 0;
     changed = true;
@@ -232,8 +233,39 @@ void Engine::polar_point(const std::array<std::optional<NcWord>, 3>& axis, bool 
   }
 }
 
+// [16MC] p. 354: "the first move command after G69 must be an absolute
+// command". The first move that names an axis of the cancelled rotation's
+// plane decides; G28/G30 (to the reference position) and G53 (machine
+// coordinates) end the watch too. Blocks that set values rather than move
+// (G04 X, G10, G22, G52, G92) are not moves.
+void Engine::check_after_rotation(const TapeBlock& b, const Words& w) {
+  if (!after_g69_) return;
+  for (int g : {40, 100, 220, 520, 920})
+    if (w.has_g(g)) return;
+  const core::PlaneAxes a = core::axes_of(*after_g69_);
+  const NcWord* word = nullptr;
+  for (const NcWord& n : w.list) {
+    const auto axis = kAxes.find(n.letter);
+    if (!n.taken && !n.vacant && axis != std::string_view::npos &&
+        (static_cast<int>(axis) == a.first || static_cast<int>(axis) == a.second)) {
+      word = &n;
+      break;
+    }
+  }
+  if (word == nullptr) return;
+  after_g69_.reset();
+  for (int g : {280, 300, 530})
+    if (w.has_g(g)) return;
+  if (w.has_g(910) || (interp_.state().incremental && !w.has_g(900))) {
+    warn(core::Code::IncrementalAfterG69, b, word->pos,
+         "the first move after G69 (rotation cancel) is incremental: Fanuc wants it absolute "
+         "(G90), an incremental one may end at a wrong position on the control");
+  }
+}
+
 // The axis words of a move under the transformations.
 bool Engine::transform_words(const TapeBlock& b, Words& w) {
+  check_after_rotation(b, w);
   if (!xf_.active() && !polar_) return true;
   for (int g : {40, 100, 280, 290, 300, 520, 530, 920})
     if (w.has_g(g)) return true;
