@@ -106,4 +106,5 @@
   X(DialectGuess, N_DIALECT_GUESS)                 \
   X(GrblAlarm, E_GRBL_ALARM)                       \
   X(ForbiddenArea, E_FORBIDDEN_AREA)               \
-  X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)
+  X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)  \
+  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)

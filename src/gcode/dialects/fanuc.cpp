@@ -40,7 +40,11 @@ const Dialect& fanuc_dialect() {
         "the axes G51 P scales (parameter 5401 SCLx); I J K scale any axis"},
        {"stroke_area",
         {"inside", "outside"},
-        "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"}},
+        "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"},
+       {"polar_axes",
+        {"XC", "XA", "XB", "YA", "YB", "YC", "ZA", "ZB", "ZC"},
+        "G12.1's linear and rotary axes (parameters 5460/5461): the rotary axis's words are "
+        "the virtual axis in mm"}},
       &make};
   return d;
 }
