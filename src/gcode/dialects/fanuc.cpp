@@ -17,7 +17,7 @@ const Dialect& fanuc_dialect() {
       "fanuc",
       "Fanuc 0i/16i/31i milling with Custom Macro B: ';' and newline end a block, '%' tape, "
       "O1234 programs, #1 variables with vacancy, IF/WHILE/GOTO, M98/M99, G65/G66, G16, G51, "
-      "G51.1, G68",
+      "G51.1, G68, G12.1",
       LexicalRules{"\n;", "( ) anywhere in a block",
                    "#0..#33 local, #100..#199, #500..#999, "
                    "system #1000..",

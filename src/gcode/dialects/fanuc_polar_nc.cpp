@@ -84,9 +84,10 @@ bool Engine::polar_interp_switch(const TapeBlock& b, Words& w, bool on, bool off
     if (word.taken || word.vacant || word.letter == 'N') continue;
     const int t = tenths_of(word.value);
     if (word.letter == 'G' && (t == 121 || t == 1120 || t == 131 || t == 1130)) continue;
-    return error(core::Code::NotAllowedInMode, b, word.pos,
-                 fmt::format("G12.1/G13.1 stand in a block of their own: {} is not allowed here",
-                             word.letter));
+    const std::string name = word.letter == 'G' ? g_text(t) : std::string(1, word.letter);
+    return error(
+        core::Code::NotAllowedInMode, b, word.pos,
+        fmt::format("G12.1/G13.1 stand in a block of their own: {} is not allowed here", name));
   }
   if (on && off) return error(core::Code::NotAllowedInMode, b, 0, "G12.1 and G13.1 in one block");
   w.take_g(121);
@@ -156,8 +157,9 @@ std::optional<core::Vec2> Engine::polar_interp_centre(const TapeBlock& b, Words&
   const double abs_tol = 0.02 * std::sqrt(2.0) / per;
   if (std::fabs(r1 - r2) > abs_tol && std::fabs(r1 - r2) > 0.001 * std::max(r1, r2)) {
     error(core::Code::ArcRadiusMismatch, b, 0,
-          fmt::format("arc end is {} off the circle of radius {} about ({}, {})",
-                      num(std::fabs(r1 - r2)), num(r1), num(centre.x), num(centre.y)));
+          fmt::format("arc end is {:.4f} off the circle of radius {:.4f} about ({:.4f}, {:.4f}) "
+                      "in the G12.1 plane; use R, or correct {}/{}",
+                      std::fabs(r1 - r2), r1, centre.x, centre.y, first, second));
     return std::nullopt;
   }
   return centre;
