@@ -264,6 +264,12 @@ TEST(FanucPolarInterpErrors, BadArcs) {
   EXPECT_EQ(error_of("G12.1\nG2 X10. I0 J0 F100."), Code::ArcZeroLength);
 }
 
+TEST(FanucPolarInterpErrors, AbsurdlyLongMoveIsBounded) {
+  // A full circle of radius 10^10 mm passing 20 mm from the centre: far
+  // more than kMaxPolarPieces moves.
+  EXPECT_EQ(error_of("G12.1\nG2 I-10000000000. F100."), Code::TooManyIterations);
+}
+
 TEST(FanucPolarInterpErrors, NoFeedRate) {
   auto r = run_fanuc("G0 X20. C0\nG12.1\nG1 X10.\nM30\n");
   EXPECT_EQ(r->first_error(), Code::NoFeedRate);

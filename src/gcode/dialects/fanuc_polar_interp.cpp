@@ -130,14 +130,15 @@ bool PolarInterp::split(const VirtualPath& path, const Raw& a, const Raw& b, dou
     out.push_back(b);
     return true;
   }
-  if (depth >= kMaxDepth) return false;
+  if (depth >= kMaxDepth || out.size() >= kMaxPolarPieces) return false;
   const Raw mid = raw(path, (a.t + b.t) / 2);
   return split(path, a, mid, tolerance, depth + 1, out) &&
          split(path, mid, b, tolerance, depth + 1, out);
 }
 
-bool PolarInterp::follow(const VirtualPath& path, double tolerance, std::vector<PolarPoint>& out) {
-  if (path.centre_distance() < tolerance) return false;
+PolarFollow PolarInterp::follow(const VirtualPath& path, double tolerance,
+                                std::vector<PolarPoint>& out) {
+  if (path.centre_distance() < tolerance) return PolarFollow::NearCentre;
   // An arc starts as quarter turns, so a full circle has points to split.
   const int first =
       path.arc ? std::max(1, static_cast<int>(std::ceil(std::fabs(path.sweep) / (kPi / 2) - 1e-9)))
@@ -146,7 +147,7 @@ bool PolarInterp::follow(const VirtualPath& path, double tolerance, std::vector<
   Raw a = raw(path, 0.0);
   for (int k = 1; k <= first; ++k) {
     const Raw b = raw(path, static_cast<double>(k) / first);
-    if (!split(path, a, b, tolerance, 0, raws)) return false;
+    if (!split(path, a, b, tolerance, 0, raws)) return PolarFollow::TooManyPieces;
     a = b;
   }
   double angle = raw(path, 0.0).angle;
@@ -156,7 +157,7 @@ bool PolarInterp::follow(const VirtualPath& path, double tolerance, std::vector<
     out.push_back({r.linear, rotary_, r.t});
   }
   at_ = path.end;
-  return true;
+  return PolarFollow::Ok;
 }
 
 }  // namespace usina::gcode::fanuc

@@ -7,6 +7,7 @@
 // chordal tolerance of the programmed contour.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,12 @@ namespace usina::gcode::fanuc {
 
 // How far the machine path may stray from the programmed contour, mm.
 inline constexpr double kPolarChordTolerance = 0.001;
+// The most machine moves one programmed line or arc may become: a bound
+// for absurd coordinates (a full circle of radius 1 km passing 20 mm from
+// the centre takes ~5·10^4; 10^4 km takes more).
+inline constexpr std::size_t kMaxPolarPieces = 100'000;
+
+enum class PolarFollow { Ok, NearCentre, TooManyPieces };
 
 // The axes of the polar plane (Fanuc parameters 5460 and 5461), as indices
 // into the interpreter's axes (0 X, 1 Y, 2 Z, 3 A, 4 B, 5 C).
@@ -76,9 +83,9 @@ class PolarInterp {
   core::Vec2 point() const { return at_; }
 
   // The machine points of `path` from point() on, within `tolerance`
-  // (program units); false when the path comes within `tolerance` of the
-  // centre, where the angle is undefined.
-  bool follow(const VirtualPath& path, double tolerance, std::vector<PolarPoint>& out);
+  // (program units); NearCentre when the path comes within `tolerance` of
+  // the centre, where the angle is undefined; nothing moves unless Ok.
+  PolarFollow follow(const VirtualPath& path, double tolerance, std::vector<PolarPoint>& out);
 
   // The virtual point the machine position (linear, rotary) stands for.
   core::Vec2 virtual_point(double linear, double rotary) const;

@@ -210,7 +210,14 @@ bool Engine::polar_interp_move(const TapeBlock& b, Words& w) {
     others[i] = std::make_pair(now, incremental ? now + word->value : word->value);
   }
   std::vector<PolarPoint> points;
-  if (!polar_interp_.follow(path, kPolarChordTolerance / per, points)) {
+  const PolarFollow followed = polar_interp_.follow(path, kPolarChordTolerance / per, points);
+  if (followed == PolarFollow::TooManyPieces) {
+    return error(core::Code::TooManyIterations, b, 0,
+                 fmt::format("this G12.1 move would need more than {} machine moves to stay "
+                             "within {} mm of the contour",
+                             kMaxPolarPieces, kPolarChordTolerance));
+  }
+  if (followed == PolarFollow::NearCentre) {
     return error(core::Code::PolarThroughCentre, b, 0,
                  fmt::format("the path passes within {} mm of the polar centre, where the angle "
                              "is undefined and the rotary axis would turn at infinite speed "
