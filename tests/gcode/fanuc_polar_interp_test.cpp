@@ -196,6 +196,15 @@ TEST(FanucPolarInterp, IncrementalAndTheOtherAxesMoveAlong) {
   EXPECT_NEAR(m.back().z, -3, 1e-9);        // G1 Z1. in G91 after G13.1
 }
 
+TEST(FanucPolarInterp, InchVirtualAxis) {
+  // G20: the virtual C is in inches too. (1, 1) in is X = √2 in at 45°.
+  auto r = run_fanuc("G20\nG0 X1. C0\nG12.1\nG1 C1. F10.\nG13.1\nM30\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  const auto& f = r->all<canon::Feed>().back();
+  EXPECT_NEAR(f.to.x, std::sqrt(2.0) * 25.4, 1e-9);
+  EXPECT_NEAR(f.abc[2], 45, 1e-9);
+}
+
 TEST(FanucPolarInterp, OtherPolarAxes) {
   // polar_axes=XB: B carries the virtual axis.
   auto r = run_fanuc("G0 X20. B0\nG12.1\nG1 B5. F100.\nG13.1\nM30\n", {}, {"polar_axes=XB"});
