@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -51,6 +52,29 @@ bool allowed_in_mode(int t) {
   case 950: return true;
   default: return false;
   }
+}
+
+using OtherAxes = std::array<std::optional<std::pair<double, double>>, 6>;  // from, to
+
+// The RS274NGC blocks of the machine moves, absolute (G90); the axes
+// outside the plane (X Y Z A B C order) at their share of the path.
+std::vector<std::string> piece_blocks(const PolarAxes& axes, const std::vector<PolarPoint>& points,
+                                      const OtherAxes& others, const std::string& feed) {
+  static constexpr std::string_view kLetters = "XYZABC";
+  std::vector<std::string> out;
+  for (const PolarPoint& p : points) {
+    std::string text = out.empty() ? "G90 G1" : "G1";
+    text += fmt::format(" {}{} {}{}", axes.linear_letter(), num(p.linear), axes.rotary_letter(),
+                        num(p.rotary));
+    for (std::size_t i = 0; i < others.size(); ++i) {
+      if (!others[i]) continue;
+      const auto [from, to] = *others[i];
+      text += fmt::format(" {}{}", kLetters[i], num(from + (to - from) * p.t));
+    }
+    if (out.empty()) text += feed;
+    out.push_back(std::move(text));
+  }
+  return out;
 }
 
 }  // namespace
@@ -201,7 +225,7 @@ bool Engine::polar_interp_move(const TapeBlock& b, Words& w) {
     path = virtual_arc(from, to, *centre, motion == 30);
   }
   // The axes outside the plane move along, in proportion.
-  std::array<std::optional<std::pair<double, double>>, 6> others{};
+  OtherAxes others{};
   for (std::size_t i = 0; i < kAxes.size(); ++i) {
     const char l = kAxes[i];
     const NcWord* word = w.find(l);
@@ -233,18 +257,8 @@ bool Engine::polar_interp_move(const TapeBlock& b, Words& w) {
   w.take_g(30);
   const bool was_incremental = interp_.state().incremental;
   const LinePos where{b.file, b.line, b.line_offset};
-  bool first = true;
-  for (const PolarPoint& p : points) {
-    std::string text = first ? "G90 G1" : "G1";
-    text += fmt::format(" {}{} {}{}", lin, num(p.linear), rot, num(p.rotary));
-    for (std::size_t i = 0; i < others.size(); ++i)
-      if (others[i])
-        text += fmt::format(" {}{}", kAxes[i],
-                            num(others[i]->first + (others[i]->second - others[i]->first) * p.t));
-    if (first) text += feed;
-    first = false;
+  for (const std::string& text : piece_blocks(polar_axes_, points, others, feed))
     if (!interp_.run_block(text, where)) return false;
-  }
   if (was_incremental && !interp_.run_block("G91", where)) return false;
   if (end) polar_interp_.stop();
   return true;
