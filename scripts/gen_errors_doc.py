@@ -480,6 +480,15 @@ EXPLAIN = {
         "moves by the increment from where the tool is. G28, G30 and G53 end the check without "
         "a warning.",
         "Make the first move after `G69` absolute (`G90 X.. Y..`)."),
+    "E_POLAR_THROUGH_CENTRE": (
+        "In fanuc polar coordinate interpolation (`G12.1`), a line or arc of the virtual plane "
+        "passes within 0.001 mm of the centre (X0 C0). There the angle is undefined: the rotary "
+        "axis would have to turn half a turn in no time. The manual limits the feed to "
+        "F < L x R x pi/180 (L the least distance to the centre, R the rotary axis's maximum "
+        "feed), so L = 0 is the control's excessive-speed alarm (OT0512). Also when the mode "
+        "starts with the tool at the centre and the first move leaves it.",
+        "Keep the contour off the centre (e.g. 0.01 mm beside it), or move through the centre "
+        "outside G12.1."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

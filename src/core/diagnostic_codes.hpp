@@ -107,4 +107,5 @@
   X(GrblAlarm, E_GRBL_ALARM)                       \
   X(ForbiddenArea, E_FORBIDDEN_AREA)               \
   X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)  \
-  X(IncrementalAfterG69, W_INCREMENTAL_AFTER_G69)
+  X(IncrementalAfterG69, W_INCREMENTAL_AFTER_G69)  \
+  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)

@@ -295,7 +295,9 @@ TEST(FanucEngine, MirrorReversesArcs) {
 }
 
 TEST(FanucEngine, CodesNotImplementedSaySo) {
-  EXPECT_EQ(run_fanuc("G12.1\nM30\n")->first_error(), Code::Unsupported);
+  // Cutter compensation in G12.1 mode (fanuc_polar_interp_test.cpp).
+  EXPECT_EQ(run_fanuc("G0 X20. C0\nG12.1\nG1 G41 X10. F100.\nM30\n")->first_error(),
+            Code::Unsupported);
 }
 
 TEST(FanucEngine, CycleRAndZAreKeptAsPositions) {

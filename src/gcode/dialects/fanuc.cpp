@@ -17,7 +17,7 @@ const Dialect& fanuc_dialect() {
       "fanuc",
       "Fanuc 0i/16i/31i milling with Custom Macro B: ';' and newline end a block, '%' tape, "
       "O1234 programs, #1 variables with vacancy, IF/WHILE/GOTO, M98/M99, G65/G66, G16, G51, "
-      "G51.1, G68",
+      "G51.1, G68, G12.1",
       LexicalRules{"\n;", "( ) anywhere in a block",
                    "#0..#33 local, #100..#199, #500..#999, "
                    "system #1000..",
@@ -43,7 +43,11 @@ const Dialect& fanuc_dialect() {
         "the forbidden side of the G22 box: inside or outside (parameter 1300 bit 0 OUT)"},
        {"boring_shift",
         {"+x", "-x", "+y", "-y"},
-        "the G76/G87 shift at the hole bottom, in the machine's axes (parameter 5101 RD1 RD2)"}},
+        "the G76/G87 shift at the hole bottom, in the machine's axes (parameter 5101 RD1 RD2)"},
+       {"polar_axes",
+        {"XC", "XA", "XB", "YA", "YB", "YC", "ZA", "ZB", "ZC"},
+        "G12.1's linear and rotary axes (parameters 5460/5461): the rotary axis's words are "
+        "the virtual axis in mm"}},
       &make};
   return d;
 }

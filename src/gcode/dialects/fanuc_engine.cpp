@@ -63,6 +63,7 @@ Engine::Engine(RunContext& c)
   scale_z_by_p_ = c.dialect_options["scaling_axes"] == "xyz";
   stroke_.outside_forbidden = c.dialect_options["stroke_area"] == "outside";
   g76_.shift = boring_shift_bits(c.dialect_options["boring_shift"]);
+  polar_axes_ = polar_axes_from(c.dialect_options["polar_axes"]).value_or(PolarAxes{});
   locals_.push_back(vacant_locals());
   if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
 }

@@ -15,6 +15,7 @@
 
 #include "gcode/dialect.hpp"
 #include "gcode/dialects/fanuc_macro.hpp"
+#include "gcode/dialects/fanuc_polar_interp.hpp"
 #include "gcode/dialects/fanuc_tape.hpp"
 
 namespace usina::gcode::fanuc {
@@ -220,6 +221,15 @@ class Engine final : public ProgramRunner, private VariableSource {
                        const std::array<std::optional<NcWord>, 3>& centre, core::Vec3 start_prog);
   bool rotation_start(Words& w, core::Vec3 here);
   void check_after_rotation(const TapeBlock& b, const Words& w);
+
+  // G12.1/G13.1 polar coordinate interpolation (fanuc_polar_nc.cpp).
+  bool polar_interp_codes(const TapeBlock& b, Words& w);
+  bool polar_interp_switch(const TapeBlock& b, Words& w, bool on, bool off);
+  bool polar_interp_move(const TapeBlock& b, Words& w);
+  std::optional<core::Vec2> polar_interp_centre(const TapeBlock& b, Words& w, core::Vec2 from,
+                                                core::Vec2 to, bool ccw);
+  PolarAxes polar_axes_;  // polar_axes option (parameters 5460/5461)
+  PolarInterp polar_interp_;
 
   // Offset registers (fanuc_offsets.cpp).
   bool read_offsets(const std::string& path);

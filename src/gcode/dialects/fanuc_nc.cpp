@@ -204,6 +204,7 @@ bool Engine::nc_block(const TapeBlock& b) {
   if (!fanuc_codes(b, w) || !offset_codes(b, w) || !transform_codes(b, w) || !convert_codes(b, w))
     return false;
   if (!transform_words(b, w)) return false;
+  if (polar_interp_.active() && !polar_interp_move(b, w)) return false;
   // M98 / M99 run after the block's other words (the move first).
   std::optional<long> sub, back;
   long times = 1;
@@ -254,22 +255,9 @@ bool Engine::nc_block(const TapeBlock& b) {
   return true;
 }
 
-// Codes Fanuc has and this front end does not run yet: an explicit error.
+// Fanuc's codes the front end keeps track of or runs itself.
 bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
-  struct Missing {
-    int g;
-    const char* what;
-  };
-
-  static constexpr Missing kMissing[] = {
-      {121, "G12.1 (polar interpolation)"},
-  };
-  for (const Missing& m : kMissing) {
-    if (w.has_g(m.g)) {
-      return error(core::Code::Unsupported, b, 0,
-                   fmt::format("{} is not implemented in the fanuc dialect yet", m.what));
-    }
-  }
+  if (!polar_interp_codes(b, w)) return false;  // fanuc_polar_nc.cpp
   for (const NcWord& g : w.list) {
     if (g.letter != 'G' || g.taken) continue;
     const int t = tenths(g.value);

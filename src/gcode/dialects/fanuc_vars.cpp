@@ -67,6 +67,7 @@ double Engine::modal_group(int group) const {
   case 15: return g_number(s.path_mode);
   case 16: return xf_.rotation ? 68 : 69;
   case 17: return polar_ ? 16 : 15;
+  case 21: return polar_interp_.active() ? 12.1 : 13.1;
   case 22: return xf_.mirrored() ? 51.1 : 50.1;
   default: return 0;
   }
