@@ -136,6 +136,17 @@ class Interpreter final : private ParameterSource {
   Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop_back(std::uint32_t e, const OEntry& target, bool after);
+  Flow loop_while(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_repeat(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_end_repeat(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_break(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow leave_loop(const ProgramIndex& idx, std::uint32_t e, std::uint32_t end);
+  Flow missing_loop_end(const OWord& o, const char* what);
+  Flow unmatched_loop_end(const OWord& o, const char* what);
+  std::uint64_t loop_key(std::uint32_t start) const;
+  void open_loop(std::uint32_t start);
+  bool loop_is_open(std::uint32_t start) const;
+  void forget_loop(std::uint32_t start);
   bool count_iteration();
   long total_iterations_ = 0;
   std::optional<bool> condition(const OWord& o);
