@@ -188,6 +188,10 @@ class Interpreter final : private ParameterSource {
   Axes target(const BlockWords& w, bool machine_coords) const;
   bool straight(BlockWords& w, GCode g, const Axes& end);
   bool arc(BlockWords& w, GCode g, const Axes& end);
+  std::optional<Vec2> radius_arc_center(const BlockWords& w, Vec2 start, Vec2 stop, bool ccw,
+                                        char first, char second);
+  std::optional<Vec2> offset_arc_center(const BlockWords& w, GCode g, Vec2 start, Vec2 stop,
+                                        char first, char second);
   bool probe(BlockWords& w, const Axes& end);
   bool cycle(BlockWords& w, GCode g, GCode previous);
   bool spline(BlockWords& w, GCode g, const Axes& end);
