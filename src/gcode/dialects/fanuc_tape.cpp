@@ -46,128 +46,163 @@ void skip_blanks(std::string_view s, std::size_t& i) {
 
 }  // namespace
 
-std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
-  const std::size_t first = blocks_.size();
-  // The tape runs from the line after the first '%' line to the next '%'
-  // (a leader before it is skipped); without a tape after a '%' line, the
-  // file is read whole.
-  std::size_t i = 0;
+// The block being cut from the tape: where it started, and, once a
+// comment was met, its text copied without the comments (so the words
+// around a comment read as one block).
+struct Tape::PendingBlock {
+  std::size_t start = 0;
   std::uint32_t line = 1;
   std::size_t line_start = 0;
-  bool closed = false;
-  const std::size_t mark = first_percent_line(text);
-  if (mark != std::string_view::npos) {
-    const std::size_t after = std::min(text.find('\n', mark), text.size());
-    if (text.find_first_not_of(" \t\r\n%", after) != std::string_view::npos) {
-      line += static_cast<std::uint32_t>(
-          std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(mark), '\n'));
-      line_start = mark;
-      i = after;
-    }
-  }
-  std::size_t start = i;
   std::string_view comment;
   std::string cleaned;
   bool has_comment = false;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
-  auto end_block = [&](std::size_t stop) {
-    std::string_view raw =
-        has_comment ? std::string_view(cleaned) : text.substr(start, stop - start);
-    TapeBlock b;
-    b.file = file;
-    b.line = line;
-    b.line_offset = line_start;
-    b.col = static_cast<std::uint32_t>(start - line_start + 1);
-    b.comment = comment;
-    std::size_t k = 0;
+};
+
+namespace {
+
+// Where a file's tape starts. The tape runs from the line after the first
+// '%' line to the next '%' (a leader before it is skipped); without a tape
+// after a '%' line, the file is read whole.
+Tape::PendingBlock tape_start(std::string_view text, std::size_t& i) {
+  Tape::PendingBlock p;
+  i = 0;
+  const std::size_t mark = first_percent_line(text);
+  if (mark != std::string_view::npos) {
+    const std::size_t after = std::min(text.find('\n', mark), text.size());
+    if (text.find_first_not_of(" \t\r\n%", after) != std::string_view::npos) {
+      p.line += static_cast<std::uint32_t>(
+          std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(mark), '\n'));
+      p.line_start = mark;
+      i = after;
+    }
+  }
+  p.start = i;
+  return p;
+}
+
+// Takes the comment opening at text[open] out of the pending block, leaving
+// one blank in its place; returns the index of its last character.
+std::size_t take_comment(std::string_view text, std::size_t open, Tape::PendingBlock& p) {
+  // Inner '( )' pairs are read as part of the comment (programs quote
+  // settings in comments: "(READ WITH (DPI=0) ...)").
+  std::size_t close = std::string_view::npos;
+  int depth = 1;
+  for (std::size_t k = open + 1; k < text.size() && text[k] != '\n'; ++k) {
+    if (text[k] == '(') ++depth;
+    if (text[k] == ')' && --depth == 0) {
+      close = k;
+      break;
+    }
+  }
+  if (close == std::string_view::npos) close = text.find('\n', open + 1);
+  const std::size_t stop = close == std::string_view::npos ? text.size() : close;
+  if (!p.has_comment) p.cleaned.assign(text.substr(p.start, open - p.start));
+  if (p.comment.empty()) p.comment = text.substr(open + 1, stop - open - 1);
+  p.has_comment = true;
+  const std::size_t last =
+      (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
+  p.gaps.emplace_back(static_cast<std::uint32_t>(p.cleaned.size()),
+                      static_cast<std::uint32_t>(last - open));
+  p.cleaned += ' ';
+  return last;
+}
+
+// Reads a block's head: the '/' of block delete (with its optional switch
+// digit), the O (or ':') program number and the N sequence number, in the
+// order Fanuc allows them; returns where the block's words start.
+std::size_t read_block_head(std::string_view raw, TapeBlock& b) {
+  std::size_t k = 0;
+  skip_blanks(raw, k);
+  if (k < raw.size() && raw[k] == '/') {
+    b.deleted = true;
+    ++k;
+    if (k < raw.size() && std::isdigit(static_cast<unsigned char>(raw[k]))) ++k;
     skip_blanks(raw, k);
-    if (k < raw.size() && raw[k] == '/') {
-      b.deleted = true;
-      ++k;
-      if (k < raw.size() && std::isdigit(static_cast<unsigned char>(raw[k]))) ++k;
-      skip_blanks(raw, k);
+  }
+  if (k < raw.size() && (raw[k] == 'O' || raw[k] == 'o' || raw[k] == ':')) {
+    std::size_t j = k + 1;
+    const long n = digits(raw, j);
+    if (n >= 0) {
+      b.program = n;
+      k = j;
     }
-    if (k < raw.size() && (raw[k] == 'O' || raw[k] == 'o' || raw[k] == ':')) {
-      std::size_t j = k + 1;
-      const long n = digits(raw, j);
-      if (n >= 0) {
-        b.program = n;
-        programs_.emplace(n, blocks_.size());
-        k = j;
-      }
+  }
+  if (k < raw.size() && (raw[k] == 'N' || raw[k] == 'n')) {
+    std::size_t j = k + 1;
+    const long n = digits(raw, j);
+    if (n >= 0) {
+      b.sequence = n;
+      k = j;
     }
-    if (k < raw.size() && (raw[k] == 'N' || raw[k] == 'n')) {
-      std::size_t j = k + 1;
-      const long n = digits(raw, j);
-      if (n >= 0) {
-        b.sequence = n;
-        k = j;
-      }
-    }
-    skip_blanks(raw, k);
-    std::string_view rest = raw.substr(k);
-    while (!rest.empty() && blank(rest.back()))
-      rest.remove_suffix(1);
-    if (has_comment) {
-      b.text_start = static_cast<std::uint32_t>(rest.data() - raw.data());
-      b.gaps = gaps;
-      stripped_.emplace_back(rest);
-      rest = stripped_.back();
-    }
-    b.text = rest;
-    if (!rest.empty() || b.program >= 0 || b.sequence >= 0 || !comment.empty())
-      blocks_.push_back(b);
-    cleaned.clear();
-    has_comment = false;
-    comment = {};
-    gaps.clear();
-  };
+  }
+  skip_blanks(raw, k);
+  return k;
+}
+
+}  // namespace
+
+std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
+  const std::size_t first = blocks_.size();
+  std::size_t i = 0;
+  PendingBlock p = tape_start(text, i);
+  bool closed = false;
   for (; i < text.size(); ++i) {
     const char c = text[i];
     if (c == '(') {
-      // Inner '( )' pairs are read as part of the comment (programs quote
-      // settings in comments: "(READ WITH (DPI=0) ...)").
-      std::size_t close = std::string_view::npos;
-      int depth = 1;
-      for (std::size_t k = i + 1; k < text.size() && text[k] != '\n'; ++k) {
-        if (text[k] == '(') ++depth;
-        if (text[k] == ')' && --depth == 0) {
-          close = k;
-          break;
-        }
-      }
-      if (close == std::string_view::npos) close = text.find('\n', i + 1);
-      const std::size_t stop = close == std::string_view::npos ? text.size() : close;
-      if (!has_comment) cleaned.assign(text.substr(start, i - start));
-      if (comment.empty()) comment = text.substr(i + 1, stop - i - 1);
-      has_comment = true;
-      const std::size_t last =
-          (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
-      gaps.emplace_back(static_cast<std::uint32_t>(cleaned.size()),
-                        static_cast<std::uint32_t>(last - i));
-      cleaned += ' ';
-      i = last;
+      i = take_comment(text, i, p);
       continue;
     }
     if (c == '%') {
-      end_block(i);
+      end_block(file, text, i, p);
       closed = true;
       break;
     }
     if (c == ';' || c == '\n') {
-      end_block(i);
-      start = i + 1;
+      end_block(file, text, i, p);
+      p.start = i + 1;
       if (c == '\n') {
-        ++line;
-        line_start = i + 1;
+        ++p.line;
+        p.line_start = i + 1;
       }
       continue;
     }
-    if (has_comment) cleaned += c;
+    if (p.has_comment) p.cleaned += c;
   }
-  if (!closed && start < text.size()) end_block(text.size());
+  if (!closed && p.start < text.size()) end_block(file, text, text.size(), p);
   files_.push_back({first, blocks_.size(), closed});
   return first;
+}
+
+void Tape::end_block(std::uint32_t file, std::string_view text, std::size_t stop, PendingBlock& p) {
+  std::string_view raw =
+      p.has_comment ? std::string_view(p.cleaned) : text.substr(p.start, stop - p.start);
+  TapeBlock b;
+  b.file = file;
+  b.line = p.line;
+  b.line_offset = p.line_start;
+  b.col = static_cast<std::uint32_t>(p.start - p.line_start + 1);
+  b.comment = p.comment;
+  const std::size_t k = read_block_head(raw, b);
+  if (b.program >= 0) programs_.emplace(b.program, blocks_.size());
+  std::string_view rest = raw.substr(k);
+  while (!rest.empty() && blank(rest.back()))
+    rest.remove_suffix(1);
+  if (p.has_comment) {
+    // The copy dies with the pending block; the tape keeps its own.
+    b.text_start = static_cast<std::uint32_t>(rest.data() - raw.data());
+    b.gaps = p.gaps;
+    stripped_.emplace_back(rest);
+    rest = stripped_.back();
+  }
+  b.text = rest;
+  // Blank lines and stray ';' make no block.
+  if (!rest.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty())
+    blocks_.push_back(b);
+  p.cleaned.clear();
+  p.has_comment = false;
+  p.comment = {};
+  p.gaps.clear();
 }
 
 const Tape::FileSpan& Tape::span_of(std::size_t i) const {

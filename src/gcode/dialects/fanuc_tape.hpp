@@ -37,6 +37,10 @@ class Tape {
   // Appends the blocks of one file; returns the index of its first block.
   std::size_t add_file(std::uint32_t file, std::string_view text);
 
+  // The block add_file is cutting (defined in fanuc_tape.cpp; public only so
+  // the file's helpers can name it).
+  struct PendingBlock;
+
   const TapeBlock& at(std::size_t i) const { return blocks_[i]; }
 
   std::size_t size() const { return blocks_.size(); }
@@ -61,6 +65,8 @@ class Tape {
   };
 
   const FileSpan& span_of(std::size_t i) const;
+  // Cuts the pending block at `stop` and appends it unless it is empty.
+  void end_block(std::uint32_t file, std::string_view text, std::size_t stop, PendingBlock& p);
   std::vector<TapeBlock> blocks_;
   std::vector<FileSpan> files_;
   std::map<long, std::size_t> programs_;

@@ -322,23 +322,30 @@ void run_attempt(RunContext& c, const std::vector<std::pair<int, double>>& param
   }
 }
 
+// Decides what a run's first error does to the next copy: the line is
+// refused once, and the copy run again without it; in stop mode, for an
+// alarm, or past the rerun limit the program is cut there instead. An error
+// with no line (or a loop that would not end) is reported with this run's
+// trace. Returns whether the copy is run again.
+bool refuse_or_cut(const core::Diagnostic& failure, int rerun, bool stop,
+                   std::set<std::uint32_t>& refused, std::uint32_t& cut_from) {
+  const std::uint32_t line = failure.loc.line;
+  const bool alarm = failure.code == core::Code::GrblAlarm;
+  if (line == 0 || rerun > Runner::kMaxReruns + 1) return false;
+  if (stop || alarm || refused.count(line) || rerun >= Runner::kMaxReruns) {
+    cut_from = line;
+  } else {
+    refused.insert(line);
+  }
+  return true;
+}
+
 }  // namespace
 
 bool Runner::run(std::uint32_t file) {
   const core::SourceFile* source = c_.sources.get(file);
   if (source == nullptr) return false;
-  const std::string_view text = source->text();
-  lines_.clear();
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    lines_.push_back({at, text.substr(at, end - at)});
-    at = end + 1;
-  }
-  // Where each op and diagnostic of the copy points: the same line of `file`.
-  auto to_file = [&](core::SourceLoc& loc) {
-    loc.file = file;
-    if (loc.line >= 1 && loc.line <= lines_.size()) loc.line_offset = lines_[loc.line - 1].offset;
-  };
+  split_lines(source->text());
   std::set<std::uint32_t> refused;
   std::vector<core::Diagnostic> found;  // the interpreter's errors, one a rerun
   std::uint32_t cut_from = std::numeric_limits<std::uint32_t>::max();
@@ -351,51 +358,66 @@ bool Runner::run(std::uint32_t file) {
     Attempt a(c_.options.start, p.facts);
     run_attempt(c_, params_, copy, a);
     if (a.failure) {
-      to_file(a.failure->loc);
+      to_file(a.failure->loc, file);
       found.push_back(*a.failure);
-      const std::uint32_t line = a.failure->loc.line;
-      // A line is refused once, and the copy run again without it; in stop
-      // mode or past the rerun limit the program is cut there instead. An
-      // error with no line (or a loop that would not end) is reported with
-      // this run's trace.
-      const bool alarm = a.failure->code == core::Code::GrblAlarm;
-      if (line > 0 && rerun <= kMaxReruns + 1) {
-        if (stop || alarm || refused.count(line) || rerun >= kMaxReruns) {
-          cut_from = line;
-        } else {
-          refused.insert(line);
-        }
-        continue;
-      }
+      if (refuse_or_cut(*a.failure, rerun, stop, refused, cut_from)) continue;
     }
-    for (const core::Diagnostic& d : a.diags.all()) {
-      if (d.severity == core::Severity::Error || d.code == core::Code::NoProgramEnd) continue;
-      p.diags.push_back(d);
-      to_file(p.diags.back().loc);
-    }
-    for (core::Diagnostic& d : found)
-      p.diags.push_back(d);
-    std::stable_sort(p.diags.begin(), p.diags.end(),
-                     [](const core::Diagnostic& x, const core::Diagnostic& y) {
-                       return x.loc.line < y.loc.line;
-                     });
-    bool ok = true;
-    for (core::Diagnostic& d : p.diags) {
-      ok = ok && d.severity != core::Severity::Error;
-      c_.diags.report(std::move(d));
-    }
-    // The accepted copy once more, its ops streamed to the caller: checking
-    // runs keep no ops, so memory stays constant whatever the program's length.
-    Attempt final_run(c_.options.start, p.facts);
-    final_run.sink.forward = [&](const canon::Op& op) {
-      canon::Op mapped = op;
-      if (mapped.src.file == copy) to_file(mapped.src);
-      c_.sink.on(mapped);
-    };
-    run_attempt(c_, params_, copy, final_run);
-    c_.sink.finish();
+    const bool ok = report_diagnostics(file, std::move(p.diags), a.diags, found);
+    stream_accepted(file, copy, p.facts);
     return ok;
   }
+}
+
+void Runner::split_lines(std::string_view text) {
+  lines_.clear();
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    lines_.push_back({at, text.substr(at, end - at)});
+    at = end + 1;
+  }
+}
+
+// Where each op and diagnostic of the copy points: the same line of `file`.
+void Runner::to_file(core::SourceLoc& loc, std::uint32_t file) const {
+  loc.file = file;
+  if (loc.line >= 1 && loc.line <= lines_.size()) loc.line_offset = lines_[loc.line - 1].offset;
+}
+
+// Reports, in line order, the checks' diagnostics, the last run's warnings
+// and notes, and the error that ended each run; returns whether none of
+// them is an error.
+bool Runner::report_diagnostics(std::uint32_t file, std::vector<core::Diagnostic> diags,
+                                const core::DiagnosticList& last_run,
+                                const std::vector<core::Diagnostic>& found) {
+  for (const core::Diagnostic& d : last_run.all()) {
+    if (d.severity == core::Severity::Error || d.code == core::Code::NoProgramEnd) continue;
+    diags.push_back(d);
+    to_file(diags.back().loc, file);
+  }
+  for (const core::Diagnostic& d : found)
+    diags.push_back(d);
+  std::stable_sort(
+      diags.begin(), diags.end(),
+      [](const core::Diagnostic& x, const core::Diagnostic& y) { return x.loc.line < y.loc.line; });
+  bool ok = true;
+  for (core::Diagnostic& d : diags) {
+    ok = ok && d.severity != core::Severity::Error;
+    c_.diags.report(std::move(d));
+  }
+  return ok;
+}
+
+// The accepted copy once more, its ops streamed to the caller: checking
+// runs keep no ops, so memory stays constant whatever the program's length.
+void Runner::stream_accepted(std::uint32_t file, std::uint32_t copy, const MachineFacts& facts) {
+  Attempt final_run(c_.options.start, facts);
+  final_run.sink.forward = [&](const canon::Op& op) {
+    canon::Op mapped = op;
+    if (mapped.src.file == copy) to_file(mapped.src, file);
+    c_.sink.on(mapped);
+  };
+  run_attempt(c_, params_, copy, final_run);
+  c_.sink.finish();
 }
 
 }  // namespace usina::gcode::grbl

@@ -45,6 +45,12 @@ class Runner final : public ProgramRunner {
 
   Prepared prepare(std::uint32_t file, const std::set<std::uint32_t>& refused,
                    std::uint32_t cut_from) const;
+  void split_lines(std::string_view text);
+  void to_file(core::SourceLoc& loc, std::uint32_t file) const;
+  bool report_diagnostics(std::uint32_t file, std::vector<core::Diagnostic> diags,
+                          const core::DiagnosticList& last_run,
+                          const std::vector<core::Diagnostic>& found);
+  void stream_accepted(std::uint32_t file, std::uint32_t copy, const MachineFacts& facts);
 
   const Dialect& dialect_;
   RunContext c_;

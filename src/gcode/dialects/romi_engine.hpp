@@ -255,6 +255,14 @@ class Engine final : public ProgramRunner, private ParameterSource {
   bool ring(Vec2 c, double a, double b, double rr, double z);
   std::optional<double> tool_diameter_from_comments() const;
 
+  // The G26 pocket's steps (romi_pocket.cpp).
+  struct Pocket;
+  bool pocket_allowed();
+  bool read_pocket(Pocket& p);
+  bool check_pocket(const Pocket& p);
+  void emit_pocket_outline(const Pocket& p);
+  bool cut_pocket(const Pocket& p);
+
   const Dialect& dialect_;
   core::SourceManager& sources_;
   InterpOptions options_;

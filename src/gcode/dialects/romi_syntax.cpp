@@ -95,6 +95,9 @@ class Parser {
   void item();
   void parenthesis();
   bool statement(std::size_t close);
+  bool assignment(Statement& st);
+  bool control_statement(Statement& st);
+  void repeat_statement(Statement& st);
   std::optional<double> label(char letter);
 
   ExprRef expr(int depth);
@@ -384,30 +387,44 @@ bool Parser::statement(std::size_t close) {
   st.col = col(i_);
   skip();
   const std::size_t start = i_;
-  auto finish = [&] {
-    if (!error && peek() != '\0')
-      fail(core::Code::UnexpectedCharacter, i_, "text after the statement");
-    end_ = saved_end;
-    i_ = close + 1;
-    if (!error) b_.statements.push_back(st);
-    return true;
-  };
   if (peek() == 'P' && i_ + 1 < end_ && is_digit(s_[i_ + 1])) {
-    auto p = param_index();
-    if (!p) return finish();
-    if (peek() != '=') {
+    if (!assignment(st)) {
       // "(P1 is the radius)": a comment that starts with a parameter's name.
       error.reset();
       i_ = start;
       end_ = saved_end;
       return false;
     }
-    ++i_;
-    st.kind = StmtKind::Assign;
-    st.param = *p;
-    st.expr = expr(0);
-    return finish();
+  } else if (!control_statement(st)) {
+    i_ = start;
+    end_ = saved_end;
+    return false;
   }
+  if (!error && peek() != '\0')
+    fail(core::Code::UnexpectedCharacter, i_, "text after the statement");
+  end_ = saved_end;
+  i_ = close + 1;
+  // A statement with an error is reported, not run.
+  if (!error) b_.statements.push_back(st);
+  return true;
+}
+
+// "P<n> = <expression>"; false when no '=' follows the parameter (the text is
+// a comment).
+bool Parser::assignment(Statement& st) {
+  auto p = param_index();
+  if (!p) return true;
+  if (peek() != '=') return false;
+  ++i_;
+  st.kind = StmtKind::Assign;
+  st.param = *p;
+  st.expr = expr(0);
+  return true;
+}
+
+// IF .. GOTO, GOTO, RPT, CALL, SUB and RET; false when no keyword of theirs
+// starts the text.
+bool Parser::control_statement(Statement& st) {
   if (keyword("IF")) {
     st.kind = StmtKind::IfGoto;
     st.expr = expr(0);
@@ -415,47 +432,50 @@ bool Parser::statement(std::size_t close) {
     if (!error) {
       if (auto n = label('N')) st.label = *n;
     }
-    return finish();
+    return true;
   }
   if (keyword("GOTO")) {
     st.kind = StmtKind::Goto;
     if (auto n = label('N')) st.label = *n;
-    return finish();
+    return true;
   }
   if (keyword("RPT")) {
-    st.kind = StmtKind::Repeat;
-    auto first = label('N');
-    if (first && peek() == ',') {
-      ++i_;
-      auto last = label('N');
-      if (last) {
-        st.label = *first;
-        st.label_end = *last;
-        if (peek() == ',') {
-          ++i_;
-          st.expr = expr(0);
-        }
-      }
-    } else if (first) {
-      fail(core::Code::ExpectedExpression, i_, "RPT needs N<first>, N<last>[, count]");
-    }
-    return finish();
+    repeat_statement(st);
+    return true;
   }
   for (auto [word, kind] : {std::pair{std::string_view("CALL"), StmtKind::Call},
                             std::pair{std::string_view("SUB"), StmtKind::Sub}}) {
     if (keyword(word)) {
       st.kind = kind;
       if (auto n = label(0)) st.label = *n;
-      return finish();
+      return true;
     }
   }
   if (keyword("RET")) {
     st.kind = StmtKind::Return;
-    return finish();
+    return true;
   }
-  i_ = start;
-  end_ = saved_end;
   return false;
+}
+
+// "RPT N<first>, N<last>[, count]": the blocks first..last run again.
+void Parser::repeat_statement(Statement& st) {
+  st.kind = StmtKind::Repeat;
+  auto first = label('N');
+  if (first && peek() == ',') {
+    ++i_;
+    auto last = label('N');
+    if (last) {
+      st.label = *first;
+      st.label_end = *last;
+      if (peek() == ',') {
+        ++i_;
+        st.expr = expr(0);
+      }
+    }
+  } else if (first) {
+    fail(core::Code::ExpectedExpression, i_, "RPT needs N<first>, N<last>[, count]");
+  }
 }
 
 void Parser::parenthesis() {

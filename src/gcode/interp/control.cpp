@@ -108,8 +108,7 @@ bool Interpreter::count_iteration() {
 }
 
 Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, bool after) {
-  const std::uint64_t key = (static_cast<std::uint64_t>(cursor_.file) << 32) | e;
-  if (++iterations_[key] > options_.max_loop_iterations) {
+  if (++iterations_[loop_key(e)] > options_.max_loop_iterations) {
     error(core::Code::TooManyIterations, 0,
           fmt::format("loop o{} ran more than {} times; raise the limit with --max-iterations",
                       target.label, options_.max_loop_iterations));
@@ -120,101 +119,60 @@ Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, 
   return Flow::Jumped;
 }
 
+// A loop's iteration count is kept under its opening entry (in this file)
+// and starts again from zero each time the loop is entered anew. A loop is
+// open from its opening statement until it is left; a closing statement of a
+// loop that is not open is unmatched (no jump back to it).
+std::uint64_t Interpreter::loop_key(std::uint32_t start) const {
+  return (static_cast<std::uint64_t>(cursor_.file) << 32) | start;
+}
+
+void Interpreter::open_loop(std::uint32_t start) {
+  iterations_.try_emplace(loop_key(start), 0);
+}
+
+bool Interpreter::loop_is_open(std::uint32_t start) const {
+  return iterations_.count(loop_key(start)) > 0;
+}
+
+void Interpreter::forget_loop(std::uint32_t start) {
+  iterations_.erase(loop_key(start));
+}
+
+Interpreter::Flow Interpreter::leave_loop(const ProgramIndex& idx, std::uint32_t e,
+                                          std::uint32_t end) {
+  forget_loop(e);
+  jump_to(cursor_.file, idx.at(end), true);
+  return Flow::Jumped;
+}
+
+Interpreter::Flow Interpreter::missing_loop_end(const OWord& o, const char* what) {
+  error(core::Code::UnclosedBlock, o.col,
+        fmt::format("o{} {} has no {}", o.label, okind_name(o.kind), what));
+  return Flow::Error;
+}
+
+Interpreter::Flow Interpreter::unmatched_loop_end(const OWord& o, const char* what) {
+  error(core::Code::UnmatchedControl, o.col,
+        fmt::format("o{} {} with no {} before it", o.label, okind_name(o.kind), what));
+  return Flow::Error;
+}
+
 Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o) {
-  auto missing = [&](const char* what) {
-    error(core::Code::UnclosedBlock, o.col,
-          fmt::format("o{} {} has no {}", o.label, okind_name(o.kind), what));
-    return Flow::Error;
-  };
-  auto unmatched = [&](const char* what) {
-    error(core::Code::UnmatchedControl, o.col,
-          fmt::format("o{} {} with no {} before it", o.label, okind_name(o.kind), what));
-    return Flow::Error;
-  };
-  // A loop's iteration count is kept under its opening entry and starts
-  // again from zero each time the loop is entered anew.
-  auto forget = [&](std::uint32_t start) {
-    iterations_.erase((static_cast<std::uint64_t>(cursor_.file) << 32) | start);
-  };
-  auto leave = [&](std::uint32_t end) {
-    forget(e);
-    jump_to(cursor_.file, idx.at(end), true);
-    return Flow::Jumped;
-  };
-  const OEntry& me = idx.at(e);
-  // A loop is open from its opening statement until it is left; a closing
-  // statement of a loop that is not open is unmatched (no jump back to it).
-  auto key_of = [&](std::uint32_t start) {
-    return (static_cast<std::uint64_t>(cursor_.file) << 32) | start;
-  };
-  auto open = [&](std::uint32_t start) { iterations_.try_emplace(key_of(start), 0); };
-  auto is_open = [&](std::uint32_t start) { return iterations_.count(key_of(start)) > 0; };
   switch (o.kind) {
-  case OKind::Do: open(e); return Flow::Next;
-  case OKind::While: {
-    auto c = condition(o);
-    if (!c) return Flow::Error;
-    if (me.ends_do) {
-      const std::uint32_t start = idx.prev_of(e, {OKind::Do});
-      if (start == kNoEntry || !is_open(start)) return unmatched("do");
-      if (*c) return loop_back(start, idx.at(start), true);
-      forget(start);
-      return Flow::Next;
-    }
-    if (*c) {
-      open(e);
-      return Flow::Next;
-    }
-    const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
-    return end == kNoEntry ? missing("endwhile") : leave(end);
-  }
+  case OKind::Do: open_loop(e); return Flow::Next;
+  case OKind::While: return loop_while(idx, e, o);
   case OKind::EndWhile: {
     const std::uint32_t start = idx.prev_of(e, {OKind::While});
-    if (start == kNoEntry || !is_open(start)) return unmatched("while");
+    if (start == kNoEntry || !loop_is_open(start)) return unmatched_loop_end(o, "while");
     return loop_back(start, idx.at(start), false);
   }
-  case OKind::Repeat: {
-    EvalError err;
-    auto n = gcode::evaluate(block_, o.expr, *this, err);
-    if (!n) {
-      error(err.error, err.col);
-      return Flow::Error;
-    }
-    const std::uint32_t end = idx.next_of(e, {OKind::EndRepeat});
-    if (end == kNoEntry) return missing("endrepeat");
-    if (!(*n < 1e15)) {
-      error(core::Code::BadWordValue, o.col, fmt::format("repeat [{}]: too many repeats", *n));
-      return Flow::Error;
-    }
-    if (*n < 1.0) return leave(end);
-    loops_.push_back({cursor_.file, e, static_cast<long>(*n)});
-    return Flow::Next;
-  }
-  case OKind::EndRepeat: {
-    const std::uint32_t start = idx.prev_of(e, {OKind::Repeat});
-    if (start == kNoEntry || loops_.empty() || loops_.back().entry != start) {
-      return unmatched("repeat");
-    }
-    if (--loops_.back().count > 0) return loop_back(start, idx.at(start), true);
-    loops_.pop_back();
-    forget(start);
-    return Flow::Next;
-  }
-  case OKind::Break: {
-    const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
-    if (end == kNoEntry) return missing("loop end");
-    const OEntry& close = idx.at(end);
-    if (close.kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
-    const std::uint32_t start = close.kind == OKind::EndWhile    ? idx.prev_of(end, {OKind::While})
-                                : close.kind == OKind::EndRepeat ? idx.prev_of(end, {OKind::Repeat})
-                                                                 : idx.prev_of(end, {OKind::Do});
-    if (start != kNoEntry) forget(start);
-    jump_to(cursor_.file, close, true);
-    return Flow::Jumped;
-  }
+  case OKind::Repeat: return loop_repeat(idx, e, o);
+  case OKind::EndRepeat: return loop_end_repeat(idx, e, o);
+  case OKind::Break: return loop_break(idx, e, o);
   case OKind::Continue: {
     const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
-    if (end == kNoEntry) return missing("loop end");
+    if (end == kNoEntry) return missing_loop_end(o, "loop end");
     // The loop's end decides: endwhile goes back to its while, endrepeat
     // counts down, a do-while's while tests its condition.
     jump_to(cursor_.file, idx.at(end), false);
@@ -225,6 +183,72 @@ Interpreter::Flow Interpreter::loop(const ProgramIndex& idx, std::uint32_t e, co
   error(core::Code::UnmatchedControl, o.col,
         fmt::format("unexpected o{} {}", o.label, okind_name(o.kind)));
   return Flow::Error;
+}
+
+// A while either opens a while-endwhile loop or closes a do-while loop.
+Interpreter::Flow Interpreter::loop_while(const ProgramIndex& idx, std::uint32_t e,
+                                          const OWord& o) {
+  auto c = condition(o);
+  if (!c) return Flow::Error;
+  if (idx.at(e).ends_do) {
+    const std::uint32_t start = idx.prev_of(e, {OKind::Do});
+    if (start == kNoEntry || !loop_is_open(start)) return unmatched_loop_end(o, "do");
+    if (*c) return loop_back(start, idx.at(start), true);
+    forget_loop(start);
+    return Flow::Next;
+  }
+  if (*c) {
+    open_loop(e);
+    return Flow::Next;
+  }
+  const std::uint32_t end = idx.next_of(e, {OKind::EndWhile});
+  return end == kNoEntry ? missing_loop_end(o, "endwhile") : leave_loop(idx, e, end);
+}
+
+Interpreter::Flow Interpreter::loop_repeat(const ProgramIndex& idx, std::uint32_t e,
+                                           const OWord& o) {
+  EvalError err;
+  auto n = gcode::evaluate(block_, o.expr, *this, err);
+  if (!n) {
+    error(err.error, err.col);
+    return Flow::Error;
+  }
+  const std::uint32_t end = idx.next_of(e, {OKind::EndRepeat});
+  if (end == kNoEntry) return missing_loop_end(o, "endrepeat");
+  if (!(*n < 1e15)) {
+    error(core::Code::BadWordValue, o.col, fmt::format("repeat [{}]: too many repeats", *n));
+    return Flow::Error;
+  }
+  if (*n < 1.0) return leave_loop(idx, e, end);
+  loops_.push_back({cursor_.file, e, static_cast<long>(*n)});
+  return Flow::Next;
+}
+
+Interpreter::Flow Interpreter::loop_end_repeat(const ProgramIndex& idx, std::uint32_t e,
+                                               const OWord& o) {
+  const std::uint32_t start = idx.prev_of(e, {OKind::Repeat});
+  if (start == kNoEntry || loops_.empty() || loops_.back().entry != start) {
+    return unmatched_loop_end(o, "repeat");
+  }
+  if (--loops_.back().count > 0) return loop_back(start, idx.at(start), true);
+  loops_.pop_back();
+  forget_loop(start);
+  return Flow::Next;
+}
+
+// A break leaves the innermost loop: past its end, with its count dropped.
+Interpreter::Flow Interpreter::loop_break(const ProgramIndex& idx, std::uint32_t e,
+                                          const OWord& o) {
+  const std::uint32_t end = idx.next_of(e, {OKind::EndWhile, OKind::EndRepeat, OKind::While});
+  if (end == kNoEntry) return missing_loop_end(o, "loop end");
+  const OEntry& close = idx.at(end);
+  if (close.kind == OKind::EndRepeat && !loops_.empty()) loops_.pop_back();
+  const std::uint32_t start = close.kind == OKind::EndWhile    ? idx.prev_of(end, {OKind::While})
+                              : close.kind == OKind::EndRepeat ? idx.prev_of(end, {OKind::Repeat})
+                                                               : idx.prev_of(end, {OKind::Do});
+  if (start != kNoEntry) forget_loop(start);
+  jump_to(cursor_.file, close, true);
+  return Flow::Jumped;
 }
 
 std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name) {

@@ -136,6 +136,17 @@ class Interpreter final : private ParameterSource {
   Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop_back(std::uint32_t e, const OEntry& target, bool after);
+  Flow loop_while(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_repeat(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_end_repeat(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow loop_break(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
+  Flow leave_loop(const ProgramIndex& idx, std::uint32_t e, std::uint32_t end);
+  Flow missing_loop_end(const OWord& o, const char* what);
+  Flow unmatched_loop_end(const OWord& o, const char* what);
+  std::uint64_t loop_key(std::uint32_t start) const;
+  void open_loop(std::uint32_t start);
+  bool loop_is_open(std::uint32_t start) const;
+  void forget_loop(std::uint32_t start);
   bool count_iteration();
   long total_iterations_ = 0;
   std::optional<bool> condition(const OWord& o);
@@ -177,6 +188,10 @@ class Interpreter final : private ParameterSource {
   Axes target(const BlockWords& w, bool machine_coords) const;
   bool straight(BlockWords& w, GCode g, const Axes& end);
   bool arc(BlockWords& w, GCode g, const Axes& end);
+  std::optional<Vec2> radius_arc_center(const BlockWords& w, Vec2 start, Vec2 stop, bool ccw,
+                                        char first, char second);
+  std::optional<Vec2> offset_arc_center(const BlockWords& w, GCode g, Vec2 start, Vec2 stop,
+                                        char first, char second);
   bool probe(BlockWords& w, const Axes& end);
   bool cycle(BlockWords& w, GCode g, GCode previous);
   bool spline(BlockWords& w, GCode g, const Axes& end);

@@ -115,9 +115,8 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   const core::PlaneAxes ax = core::axes_of(plane);
   Vec3 start3 = xyz(state_.pos);
   if (auto programmed = comp_.programmed_position()) start3 = *programmed;
-  const Vec3 end3 = xyz(end);
   const Vec2 start = core::in_plane(start3, plane);
-  const Vec2 stop = core::in_plane(end3, plane);
+  const Vec2 stop = core::in_plane(xyz(end), plane);
   const bool ccw = g == 30;
   const char first = "IJK"[ax.first];
   const char second = "IJK"[ax.second];
@@ -136,58 +135,74 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
     if (!p) return false;
     turns = *p;
   }
-  Vec2 center;
-  const double unit_tol = state_.units == core::LengthUnit::Inch ? 0.0005 * 25.4 : 0.001;
-  if (w.has('R')) {
-    if (w.has(first) || w.has(second)) {
-      return error(core::Code::ArcMissingCenter, w.col_of('R'),
-                   "an arc takes R or I/J/K, not both");
-    }
-    const double r = mm(w.get('R'));
-    if (core::distance(start, stop) < 1e-12) {
-      return error(core::Code::ArcZeroLength, w.col_of('R'),
-                   "R-format arc with its end at its start: use I/J/K for a full circle");
-    }
-    auto c = core::arc_center_from_radius(start, stop, r, ccw, unit_tol);
-    if (!c) {
-      return error(core::Code::ArcRadiusTooSmall, w.col_of('R'),
-                   fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm",
-                               std::fabs(r), core::distance(start, stop) / 2));
-    }
-    center = *c;
-  } else {
-    if (!w.has(first) && !w.has(second)) {
-      return error(
-          core::Code::ArcMissingCenter, 0,
-          fmt::format("{} needs the centre ({} and/or {}) or R", g_name(g).data(), first, second));
-    }
-    const Vec2 off{w.has(first) ? mm(w.get(first)) : 0.0, w.has(second) ? mm(w.get(second)) : 0.0};
-    center = state_.arc_absolute ? off : start + off;
-    const double r1 = core::distance(start, center);
-    const double r2 = core::distance(stop, center);
-    // LinuxCNC accepts a small difference (a spiral): up to 2·0.001·√2 in
-    // (2·0.01·√2 mm), or 0.1 % of the larger radius.
-    const double abs_tol =
-        (state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02) * std::sqrt(2.0);
-    const double diff = std::fabs(r1 - r2);
-    if (diff > abs_tol && diff > 0.001 * std::max(r1, r2)) {
-      return error(
-          core::Code::ArcRadiusMismatch, 0,
-          fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius {:.4f} about "
-                      "({:.4f}, {:.4f}); use R, or correct {}/{}",
-                      stop.x, stop.y, std::fabs(r1 - r2), r1, center.x, center.y, first, second));
-    }
-    if (r1 < 1e-9)
-      return error(core::Code::ArcZeroLength, 0,
-                   "arc of zero radius: the centre is at the start point");
-  }
-  Vec3 c3 = core::from_plane(center, start3[ax.axial], plane);
+  const std::optional<Vec2> center = w.has('R')
+                                         ? radius_arc_center(w, start, stop, ccw, first, second)
+                                         : offset_arc_center(w, g, start, stop, first, second);
+  if (!center) return false;
+  Vec3 c3 = core::from_plane(*center, start3[ax.axial], plane);
   if (comp_.active() || !comp_.arc_allowed()) {
     if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, loc_, machine_)) return error(*e);
     return true;
   }
   machine_.arc_axes(end, c3, ccw ? turns : -turns);
   return true;
+}
+
+// The centre of an R-format arc: of the two circles of radius |R| through
+// start and end, the one R's sign picks (core::arc_center_from_radius).
+std::optional<Vec2> Interpreter::radius_arc_center(const BlockWords& w, Vec2 start, Vec2 stop,
+                                                   bool ccw, char first, char second) {
+  const double unit_tol = state_.units == core::LengthUnit::Inch ? 0.0005 * 25.4 : 0.001;
+  if (w.has(first) || w.has(second)) {
+    error(core::Code::ArcMissingCenter, w.col_of('R'), "an arc takes R or I/J/K, not both");
+    return std::nullopt;
+  }
+  const double r = mm(w.get('R'));
+  if (core::distance(start, stop) < 1e-12) {
+    error(core::Code::ArcZeroLength, w.col_of('R'),
+          "R-format arc with its end at its start: use I/J/K for a full circle");
+    return std::nullopt;
+  }
+  auto c = core::arc_center_from_radius(start, stop, r, ccw, unit_tol);
+  if (!c) {
+    error(core::Code::ArcRadiusTooSmall, w.col_of('R'),
+          fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm", std::fabs(r),
+                      core::distance(start, stop) / 2));
+    return std::nullopt;
+  }
+  return *c;
+}
+
+// The centre of a centre-format arc: I J K from the start (or, under G90.1,
+// absolute), checked to lie as far from the end as from the start.
+std::optional<Vec2> Interpreter::offset_arc_center(const BlockWords& w, GCode g, Vec2 start,
+                                                   Vec2 stop, char first, char second) {
+  if (!w.has(first) && !w.has(second)) {
+    error(core::Code::ArcMissingCenter, 0,
+          fmt::format("{} needs the centre ({} and/or {}) or R", g_name(g).data(), first, second));
+    return std::nullopt;
+  }
+  const Vec2 off{w.has(first) ? mm(w.get(first)) : 0.0, w.has(second) ? mm(w.get(second)) : 0.0};
+  const Vec2 center = state_.arc_absolute ? off : start + off;
+  const double r1 = core::distance(start, center);
+  const double r2 = core::distance(stop, center);
+  // LinuxCNC accepts a small difference (a spiral): up to 2·0.001·√2 in
+  // (2·0.01·√2 mm), or 0.1 % of the larger radius.
+  const double abs_tol =
+      (state_.units == core::LengthUnit::Inch ? 0.002 * 25.4 : 0.02) * std::sqrt(2.0);
+  const double diff = std::fabs(r1 - r2);
+  if (diff > abs_tol && diff > 0.001 * std::max(r1, r2)) {
+    error(core::Code::ArcRadiusMismatch, 0,
+          fmt::format("arc end ({:.4f}, {:.4f}) is {:.4f} mm off the circle of radius {:.4f} about "
+                      "({:.4f}, {:.4f}); use R, or correct {}/{}",
+                      stop.x, stop.y, std::fabs(r1 - r2), r1, center.x, center.y, first, second));
+    return std::nullopt;
+  }
+  if (r1 < 1e-9) {
+    error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is at the start point");
+    return std::nullopt;
+  }
+  return center;
 }
 
 bool Interpreter::probe(BlockWords& w, const Axes& end) {
