@@ -15,12 +15,6 @@ namespace {
 using core::Code;
 using core::Vec3;
 
-void expect_near(Vec3 got, Vec3 want) {
-  EXPECT_NEAR(got.x, want.x, 1e-6);
-  EXPECT_NEAR(got.y, want.y, 1e-6);
-  EXPECT_NEAR(got.z, want.z, 1e-6);
-}
-
 // G76 at (5, 5) from the initial level 10, R 2, bottom -8, Q 0.5. The
 // moves: [0] to the start, [1] over the hole, [2] R, [3] bottom, [4] the
 // shift, [5] up to the initial level, [6] back over the hole.

@@ -18,14 +18,6 @@ namespace {
 using core::Code;
 using core::Vec3;
 
-void expect_end(const Run& r, Vec3 want) {
-  ASSERT_FALSE(r.ends().empty());
-  const Vec3 got = r.ends().back();
-  EXPECT_NEAR(got.x, want.x, 1e-6);
-  EXPECT_NEAR(got.y, want.y, 1e-6);
-  EXPECT_NEAR(got.z, want.z, 1e-6);
-}
-
 TEST(FanucEngine, SemicolonEndsABlockAndPercentDelimitsTheTape) {
   auto r = run_fanuc("leader text\n%\nO0001 (MAIN)\nG0 X1. ; G0 Y2.\nM30\n%\ntrailing junk\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();

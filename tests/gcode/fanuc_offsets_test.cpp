@@ -14,14 +14,6 @@ namespace {
 using core::Code;
 using core::Vec3;
 
-void expect_end(const Run& r, Vec3 want) {
-  ASSERT_FALSE(r.ends().empty());
-  const Vec3 got = r.ends().back();
-  EXPECT_NEAR(got.x, want.x, 1e-6);
-  EXPECT_NEAR(got.y, want.y, 1e-6);
-  EXPECT_NEAR(got.z, want.z, 1e-6);
-}
-
 const core::Diagnostic* first_error(const Run& r) {
   for (const core::Diagnostic& d : r.diags.all())
     if (d.severity == core::Severity::Error) return &d;

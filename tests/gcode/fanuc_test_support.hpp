@@ -27,4 +27,17 @@ inline std::unique_ptr<Run> run_fanuc(const std::string& text, InterpOptions opt
   return r;
 }
 
+// A point within 1e-6 mm of `want`, axis by axis.
+inline void expect_near(core::Vec3 got, core::Vec3 want) {
+  EXPECT_NEAR(got.x, want.x, 1e-6);
+  EXPECT_NEAR(got.y, want.y, 1e-6);
+  EXPECT_NEAR(got.z, want.z, 1e-6);
+}
+
+// The last move ends at `want`.
+inline void expect_end(const Run& r, core::Vec3 want) {
+  ASSERT_FALSE(r.ends().empty());
+  expect_near(r.ends().back(), want);
+}
+
 }  // namespace usina::gcode::fanuc_test

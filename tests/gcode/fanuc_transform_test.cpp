@@ -16,17 +16,6 @@ namespace {
 using core::Code;
 using core::Vec3;
 
-void expect_near(Vec3 got, Vec3 want) {
-  EXPECT_NEAR(got.x, want.x, 1e-6);
-  EXPECT_NEAR(got.y, want.y, 1e-6);
-  EXPECT_NEAR(got.z, want.z, 1e-6);
-}
-
-void expect_end(const Run& r, Vec3 want) {
-  ASSERT_FALSE(r.ends().empty());
-  expect_near(r.ends().back(), want);
-}
-
 // The points the tool fed to (the bottoms of bored holes, G1 ends).
 std::vector<Vec3> feeds(const Run& r) {
   std::vector<Vec3> out;

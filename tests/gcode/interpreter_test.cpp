@@ -1541,30 +1541,28 @@ TEST(InterpFanuc, M98OfAMissingProgram) {
 
 // Control statements left open, closed without an opening, or failing:
 // each program stops at its one error.
-constexpr ErrorCase kControlErrors[] =
-    {
-        {"if without endif", "G0 X1\no1 if [0]\nG0 X2\nM2\n", Code::UnclosedBlock, 2, 1},
-        {"else of a taken branch without endif", "o1 if [1]\nG0 X1\no1 else\nG0 X2\nM2\n",
-         Code::UnclosedBlock, 3, 1},
-        {"while without endwhile", "o1 while [0]\nG0 X1\nM2\n", Code::UnclosedBlock, 1, 1},
-        {"repeat without endrepeat", "o1 repeat [2]\nG0 X1\nM2\n", Code::UnclosedBlock, 1, 1},
-        {"break outside a loop", "G0 X1\no1 break\nM2\n", Code::UnclosedBlock, 2, 1},
-        // Regression (a bug the tests found, fixed): a closing statement with no opening one is not
-        // E_UNMATCHED_CONTROL: `o1 endwhile` alone is reported as E_UNCLOSED_CONTROL_BLOCK ("o1
-        // endwhile has no while"), and `o1 else` / `o1 endif` without an `o1 if` are accepted
-        // silently (else jumps to the endif; endif does nothing). Expected:
-        // E_UNMATCHED_CONTROL at the stray statement in each case.
-        {"a stray closing statement is unmatched", "G0 X1\no1 endwhile\nM2\n",
-         Code::UnmatchedControl, 2, 1},
-        {"a stray closing statement is unmatched", "o1 endrepeat\nM2\n", Code::UnmatchedControl, 1,
-         1},
-        {"a stray closing statement is unmatched", "o1 else\nG0 X1\no1 endif\nM2\n",
-         Code::UnmatchedControl, 1, 1},
-        {"a stray closing statement is unmatched", "o1 endif\nM2\n", Code::UnmatchedControl, 1, 1},
-        {"an error in a condition is reported", "o1 if [#<undefined> GT 1]\no1 endif\nM2\n",
-         Code::UndefinedParameter, 1, 8},
-        {"an O-word after other text is a syntax error", "G0 X1 o1 if [1]\nM2\n",
-         Code::MisplacedOWord, 1, 7},
+constexpr ErrorCase kControlErrors[] = {
+    {"if without endif", "G0 X1\no1 if [0]\nG0 X2\nM2\n", Code::UnclosedBlock, 2, 1},
+    {"else of a taken branch without endif", "o1 if [1]\nG0 X1\no1 else\nG0 X2\nM2\n",
+     Code::UnclosedBlock, 3, 1},
+    {"while without endwhile", "o1 while [0]\nG0 X1\nM2\n", Code::UnclosedBlock, 1, 1},
+    {"repeat without endrepeat", "o1 repeat [2]\nG0 X1\nM2\n", Code::UnclosedBlock, 1, 1},
+    {"break outside a loop", "G0 X1\no1 break\nM2\n", Code::UnclosedBlock, 2, 1},
+    // Regression (a bug the tests found, fixed): a closing statement with no opening one is not
+    // E_UNMATCHED_CONTROL: `o1 endwhile` alone is reported as E_UNCLOSED_CONTROL_BLOCK ("o1
+    // endwhile has no while"), and `o1 else` / `o1 endif` without an `o1 if` are accepted
+    // silently (else jumps to the endif; endif does nothing). Expected:
+    // E_UNMATCHED_CONTROL at the stray statement in each case.
+    {"a stray closing statement is unmatched", "G0 X1\no1 endwhile\nM2\n", Code::UnmatchedControl,
+     2, 1},
+    {"a stray closing statement is unmatched", "o1 endrepeat\nM2\n", Code::UnmatchedControl, 1, 1},
+    {"a stray closing statement is unmatched", "o1 else\nG0 X1\no1 endif\nM2\n",
+     Code::UnmatchedControl, 1, 1},
+    {"a stray closing statement is unmatched", "o1 endif\nM2\n", Code::UnmatchedControl, 1, 1},
+    {"an error in a condition is reported", "o1 if [#<undefined> GT 1]\no1 endif\nM2\n",
+     Code::UndefinedParameter, 1, 8},
+    {"an O-word after other text is a syntax error", "G0 X1 o1 if [1]\nM2\n", Code::MisplacedOWord,
+     1, 7},
 };
 
 TEST(InterpControl, UnclosedUnmatchedAndFailedControlStatementsAreErrors) {

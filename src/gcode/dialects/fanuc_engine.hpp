@@ -20,6 +20,10 @@
 
 namespace usina::gcode::fanuc {
 
+// A value as the front end writes it into an RS274NGC word for the
+// interpreter: up to 10 decimals, no trailing zeros ("12.5", "-3", "0").
+std::string word_number(double v);
+
 // One word of an NC block after its value was read.
 struct NcWord {
   char letter = 0;

@@ -25,7 +25,9 @@ bool is_cycle(int g) {
   return g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890);
 }
 
-std::string number(double v) {
+}  // namespace
+
+std::string word_number(double v) {
   if (std::fabs(v) < 5e-11) v = 0;
   std::string s = fmt::format("{:.10f}", v);
   while (!s.empty() && s.back() == '0')
@@ -33,8 +35,6 @@ std::string number(double v) {
   if (!s.empty() && s.back() == '.') s.pop_back();
   return s;
 }
-
-}  // namespace
 
 NcWord* Words::find(char letter) {
   for (NcWord& w : list)
@@ -130,11 +130,12 @@ void Engine::decimal_point(const TapeBlock& b, Words& w) {
       word.value = word.raw * (inch ? 0.0001 : 0.001);
     } else if (!warned_integer_ && word.raw != 0.0) {
       warned_integer_ = true;
-      warn(core::Code::IntegerCoordinate, b, word.pos,
-           fmt::format("{}{} has no decimal point: read as {} {}; a Fanuc control with DPI = 0 "
-                       "reads {} {} (--dialect-option decimal_point=fanuc)",
-                       word.letter, number(word.raw), number(word.raw), inch ? "in" : "mm",
-                       number(word.raw * (inch ? 0.0001 : 0.001)), inch ? "in" : "mm"));
+      warn(
+          core::Code::IntegerCoordinate, b, word.pos,
+          fmt::format("{}{} has no decimal point: read as {} {}; a Fanuc control with DPI = 0 "
+                      "reads {} {} (--dialect-option decimal_point=fanuc)",
+                      word.letter, word_number(word.raw), word_number(word.raw), inch ? "in" : "mm",
+                      word_number(word.raw * (inch ? 0.0001 : 0.001)), inch ? "in" : "mm"));
     }
   }
 }
@@ -399,20 +400,21 @@ bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Ve
   for (long n = 0; n < repeats; ++n) {
     const double x = first.x + step.x * static_cast<double>(n);
     const double y = first.y + step.y * static_cast<double>(n);
-    const std::string hole = fmt::format("G0 X{} Y{}", number(x), number(y));
-    const std::string shifted = fmt::format("G0 X{} Y{}", number(x + dx), number(y + dy));
+    const std::string hole = fmt::format("G0 X{} Y{}", word_number(x), word_number(y));
+    const std::string shifted = fmt::format("G0 X{} Y{}", word_number(x + dx), word_number(y + dy));
     std::vector<std::string> blocks{hole};
     if (code == 760) {
-      blocks.insert(blocks.end(), {fmt::format("G0 Z{}", number(r)),
-                                   fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
-                                   fmt::format("G4 P{}", number(g76_.p)), "M19", shifted,
-                                   fmt::format("G0 Z{}", number(back)), hole, "M3"});
+      blocks.insert(blocks.end(), {fmt::format("G0 Z{}", word_number(r)),
+                                   fmt::format("G1 Z{} F{}", word_number(z), word_number(g76_.f)),
+                                   fmt::format("G4 P{}", word_number(g76_.p)), "M19", shifted,
+                                   fmt::format("G0 Z{}", word_number(back)), hole, "M3"});
     } else {
       // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
-      blocks.insert(blocks.end(), {"M19", shifted, fmt::format("G0 Z{}", number(r)), hole, "M3",
-                                   fmt::format("G1 Z{} F{}", number(z), number(g76_.f)),
-                                   fmt::format("G4 P{}", number(g76_.p)), "M19", shifted,
-                                   fmt::format("G0 Z{}", number(top)), hole, "M3"});
+      blocks.insert(blocks.end(),
+                    {"M19", shifted, fmt::format("G0 Z{}", word_number(r)), hole, "M3",
+                     fmt::format("G1 Z{} F{}", word_number(z), word_number(g76_.f)),
+                     fmt::format("G4 P{}", word_number(g76_.p)), "M19", shifted,
+                     fmt::format("G0 Z{}", word_number(top)), hole, "M3"});
     }
     for (const std::string& text : blocks)
       if (!interp_.run_block(text, where)) return false;
@@ -453,7 +455,7 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     } else if (word.letter == 'M' || word.letter == 'L') {
       text += fmt::format("{}{} ", word.letter, std::lround(word.value));
     } else {
-      text += fmt::format("{}{} ", word.letter, number(word.value));
+      text += fmt::format("{}{} ", word.letter, word_number(word.value));
     }
     spans.back().last = static_cast<std::uint32_t>(text.size());
   }

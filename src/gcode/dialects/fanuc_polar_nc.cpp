@@ -23,15 +23,6 @@ std::string g_text(int t) {
   return t % 10 == 0 ? fmt::format("G{:02}", t / 10) : fmt::format("G{}.{}", t / 10, t % 10);
 }
 
-std::string num(double v) {
-  if (std::fabs(v) < 5e-11) v = 0;
-  std::string s = fmt::format("{:.10f}", v);
-  while (!s.empty() && s.back() == '0')
-    s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
 // The G codes the manual allows in the mode: G01 G02 G03, G04, G09,
 // G40 (G41/G42 are allowed by Fanuc, not implemented here), G65 G66 G67,
 // G90 G91, G94 G95.
@@ -64,12 +55,12 @@ std::vector<std::string> piece_blocks(const PolarAxes& axes, const std::vector<P
   std::vector<std::string> out;
   for (const PolarPoint& p : points) {
     std::string text = out.empty() ? "G90 G1" : "G1";
-    text += fmt::format(" {}{} {}{}", axes.linear_letter(), num(p.linear), axes.rotary_letter(),
-                        num(p.rotary));
+    text += fmt::format(" {}{} {}{}", axes.linear_letter(), word_number(p.linear),
+                        axes.rotary_letter(), word_number(p.rotary));
     for (std::size_t i = 0; i < others.size(); ++i) {
       if (!others[i]) continue;
       const auto [from, to] = *others[i];
-      text += fmt::format(" {}{}", kLetters[i], num(from + (to - from) * p.t));
+      text += fmt::format(" {}{}", kLetters[i], word_number(from + (to - from) * p.t));
     }
     if (out.empty()) text += feed;
     out.push_back(std::move(text));
@@ -157,7 +148,8 @@ std::optional<core::Vec2> Engine::polar_interp_centre(const TapeBlock& b, Words&
     const double radius = std::fabs(r->value), half = d / 2;
     if (radius < half - kPolarChordTolerance / per) {
       error(core::Code::ArcRadiusTooSmall, b, r->pos,
-            fmt::format("R{} is less than half the chord ({})", num(r->value), num(half)));
+            fmt::format("R{} is less than half the chord ({})", word_number(r->value),
+                        word_number(half)));
       return std::nullopt;
     }
     const double h = std::sqrt(std::max(0.0, radius * radius - half * half));
@@ -249,7 +241,7 @@ bool Engine::polar_interp_move(const TapeBlock& b, Words& w) {
                              kPolarChordTolerance));
   }
   std::string feed;
-  if (const NcWord* f = w.find('F')) feed = fmt::format(" F{}", num(f->value));
+  if (const NcWord* f = w.find('F')) feed = fmt::format(" F{}", word_number(f->value));
   for (char l : std::string_view("XYZABCIJKRF"))
     w.take(l);
   w.take_g(10);
