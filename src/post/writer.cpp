@@ -127,7 +127,11 @@ void Writer::append_axis_words(std::string& w, const Vec3& to, const canon::Abc&
   for (std::size_t i = 0; i < 6; ++i) {
     const double v = i < 3 ? to[static_cast<int>(i)] : abc[i - 3];
     if (i >= 3 && !control_.rotary_axes) {
-      if (out_.rounded(v) != 0.0) unsupported(op, "a rotary axis move");
+      // Remembered though never written, so that each move of the axis is
+      // reported once, not every later move that leaves it where it is.
+      const double r = out_.rounded(v);
+      if (r != axes_[i].value_or(0.0)) unsupported(op, "a rotary axis move");
+      axes_[i] = r;
       continue;
     }
     const double r = out_.rounded(v);

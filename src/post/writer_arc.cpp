@@ -35,9 +35,7 @@ void Writer::arc(const canon::Arc& a, const canon::Op& op) {
   const int plane = plane_of(a.normal);
   if (plane == 0) return unsupported(op, "an arc whose axis is not X, Y or Z");
   if (!pos_known_) return unsupported(op, "an arc before the first positioning move");
-  if (!control_.rotary_axes &&
-      (out_.rounded(a.abc[0]) != 0 || out_.rounded(a.abc[1]) != 0 || out_.rounded(a.abc[2]) != 0))
-    return unsupported(op, "a rotary axis move");
+  if (!control_.rotary_axes && moves_rotary(a.abc)) return unsupported(op, "a rotary axis move");
   const core::Plane p = core_plane(plane);
   const int axial = core::axes_of(p).axial;
   // turn > 0 is counter-clockwise seen from the normal's tip; G3 is

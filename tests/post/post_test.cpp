@@ -219,5 +219,18 @@ TEST(Post, RoundTripThroughTheInterpreter) {
   test::expect_same_path(ops, test::interpret(text), 1e-4);
 }
 
+TEST(Post, ARotaryMoveIsReportedOnceNotForEveryLaterMove) {
+  core::DiagnosticList diags;
+  test::post_text({op(canon::Traverse{{0, 0, 5}}), op(canon::Feed{{10, 0, 0}, 100.0, {90, 0, 0}}),
+                   op(canon::Feed{{20, 0, 0}, 100.0, {90, 0, 0}}),
+                   op(canon::Arc{{30, 0, 0}, {25, 0, 0}, {0, 0, 1}, 1, 100.0, {90, 0, 0}}),
+                   op(canon::Feed{{40, 0, 0}, 100.0, {0, 0, 0}})},
+                  "grbl", diags);
+  // Two moves of A: to 90, and back to 0.
+  EXPECT_EQ(diags.all().size(), 2u);
+  for (const core::Diagnostic& d : diags.all())
+    EXPECT_EQ(d.code, core::Code::Unsupported);
+}
+
 }  // namespace
 }  // namespace usina
