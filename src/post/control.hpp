@@ -28,11 +28,10 @@ struct Control {
   int line_number_width = 0;         // zero-padded N words ("N0010")
   bool always_line_numbers = false;
   bool tool_change_m6 = true;
-  std::string dwell_word = "P";  // G4 P<s> (LinuxCNC, grbl) or G4 X<s> (Fanuc)
-  std::string program_end = "M30";
+  std::string dwell_word = "P";     // G4 P<s> (LinuxCNC, grbl) or G4 X<s> (Fanuc)
+  std::string program_end = "M30";  // after the spindle stop and coolant off
   void (*header)(BlockOut& out, const PostOptions& options) = nullptr;
-  // After the spindle stop and coolant off, which the writer adds when the
-  // program did not end with them: the end code and what follows it.
+  // What follows the program end (Fanuc's closing '%'); none for most.
   void (*footer)(BlockOut& out, const PostOptions& options) = nullptr;
 };
 

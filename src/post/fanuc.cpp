@@ -18,9 +18,8 @@ void header(BlockOut& out, const PostOptions& o) {
   out.block("G21 G17 G90 G94 G40 G49 G80 G98");
 }
 
-// The spindle stop and coolant off before it are the writer's (Writer::end).
+// The tape's closing '%', after the program end the writer adds.
 void footer(BlockOut& out, const PostOptions&) {
-  out.block("M30");
   out.raw("%");
 }
 

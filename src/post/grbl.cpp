@@ -15,11 +15,6 @@ void header(BlockOut& out, const PostOptions& o) {
   out.block("G21 G17 G90 G94");
 }
 
-// The spindle stop and coolant off before it are the writer's (Writer::end).
-void footer(BlockOut& out, const PostOptions&) {
-  out.block("M30");
-}
-
 }  // namespace
 
 Control grbl_control() {
@@ -31,7 +26,6 @@ Control grbl_control() {
   c.rotary_axes = false;
   c.tool_change_m6 = false;
   c.header = header;
-  c.footer = footer;
   return c;
 }
 

@@ -23,11 +23,6 @@ void header(BlockOut& out, const PostOptions& o) {
   out.block("G40");
 }
 
-// The spindle stop and coolant off before it are the writer's (Writer::end).
-void footer(BlockOut& out, const PostOptions&) {
-  out.block("M02");
-}
-
 }  // namespace
 
 Control romi_control() {
@@ -48,7 +43,7 @@ Control romi_control() {
   c.always_line_numbers = true;
   c.dwell_word = "K";
   c.header = header;
-  c.footer = footer;
+  c.program_end = "M02";  // as the seed's program ends
   return c;
 }
 

@@ -19,11 +19,6 @@ void header(BlockOut& out, const PostOptions& o) {
   out.block("G21 G17 G90 G94 G40 G49 G80 G98");
 }
 
-// The spindle stop and coolant off before it are the writer's (Writer::end).
-void footer(BlockOut& out, const PostOptions&) {
-  out.block("M30");
-}
-
 }  // namespace
 
 Control rs274ngc_control() {
@@ -32,7 +27,6 @@ Control rs274ngc_control() {
   c.decimals = 4;
   c.turns_word = true;
   c.header = header;
-  c.footer = footer;
   return c;
 }
 

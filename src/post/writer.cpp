@@ -61,11 +61,12 @@ void Writer::end() {
   cancel_cycle();
   ended_ = true;
   // One spindle stop and one coolant off at the end, whoever asked for them:
-  // the program before (a generator ends with its own spindle stop) or this
-  // footer, for a program that did not.
+  // the program before (a generator ends with its own spindle stop) or the
+  // writer here, for a program that did not.
   if (!spindle_stop_written_) out_.block(code('M', 5));
   if (!coolant_off_written_) out_.block(code('M', 9));
-  control_.footer(out_, options_);
+  out_.block(control_.program_end);
+  if (control_.footer) control_.footer(out_, options_);
 }
 
 void Writer::finish() {

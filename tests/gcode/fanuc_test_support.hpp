@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gcode/dialect.hpp"
@@ -15,24 +16,10 @@ using romi_test::Run;
 
 inline std::unique_ptr<Run> run_fanuc(const std::string& text, InterpOptions opts = {},
                                       const std::vector<std::string>& options = {}) {
-  auto r = std::make_unique<Run>();
-  const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
-  const Dialect* d = find_dialect("fanuc");
-  EXPECT_NE(d, nullptr);
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, options, values).has_value());
-  auto runner =
-      d->make_runner(RunContext{r->sources, std::move(opts), std::move(values), r->path, r->diags});
-  r->ok = runner->run(id);
-  return r;
+  return romi_test::run_in("fanuc", text, std::move(opts), options);
 }
 
-// A point within 1e-6 mm of `want`, axis by axis.
-inline void expect_near(core::Vec3 got, core::Vec3 want) {
-  EXPECT_NEAR(got.x, want.x, 1e-6);
-  EXPECT_NEAR(got.y, want.y, 1e-6);
-  EXPECT_NEAR(got.z, want.z, 1e-6);
-}
+using romi_test::expect_near;
 
 // The last move ends at `want`.
 inline void expect_end(const Run& r, core::Vec3 want) {

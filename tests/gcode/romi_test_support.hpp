@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -66,11 +67,14 @@ struct Run {
   }
 };
 
-inline std::unique_ptr<Run> run_romi(const std::string& text, InterpOptions opts = {},
-                                     const std::vector<std::string>& options = {}) {
+// `text` run by the dialect `name` with `options` (NAME=VALUE); the fanuc
+// tests use it too.
+inline std::unique_ptr<Run> run_in(const char* name, const std::string& text,
+                                   InterpOptions opts = {},
+                                   const std::vector<std::string>& options = {}) {
   auto r = std::make_unique<Run>();
   const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
-  const Dialect* d = find_dialect("romi");
+  const Dialect* d = find_dialect(name);
   EXPECT_NE(d, nullptr);
   OptionValues values;
   EXPECT_FALSE(resolve_options(*d, options, values).has_value());
@@ -78,6 +82,11 @@ inline std::unique_ptr<Run> run_romi(const std::string& text, InterpOptions opts
       d->make_runner(RunContext{r->sources, std::move(opts), std::move(values), r->path, r->diags});
   r->ok = runner->run(id);
   return r;
+}
+
+inline std::unique_ptr<Run> run_romi(const std::string& text, InterpOptions opts = {},
+                                     const std::vector<std::string>& options = {}) {
+  return run_in("romi", text, std::move(opts), options);
 }
 
 inline void expect_near(const Vec3& got, const Vec3& want, double tol = 1e-6) {
