@@ -17,6 +17,8 @@
 
 #include "cli/run.hpp"
 #include "cli/verbs.hpp"
+#include "core/file_ostream.hpp"
+#include "core/output_file.hpp"
 #include "draw/builder.hpp"
 #include "draw/drawing.hpp"
 #include "draw/dxf_writer.hpp"
@@ -33,6 +35,7 @@ enum class Format { Dxf, Svg, Png, Pdf };
 struct DrawOptions {
   RunOptions run;
   std::string output;
+  std::string format;  // empty: from the output's extension
   std::string view = "part";
   std::string start;
   std::string size;
@@ -43,11 +46,7 @@ int fail(std::string_view message) {
   return kBadInput;
 }
 
-std::optional<Format> format_of(const std::string& path) {
-  const std::size_t dot = path.rfind('.');
-  const std::size_t slash = path.rfind('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
-  std::string ext = path.substr(dot + 1);
+std::optional<Format> format_named(std::string ext) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == "dxf") return Format::Dxf;
@@ -55,6 +54,13 @@ std::optional<Format> format_of(const std::string& path) {
   if (ext == "png") return Format::Png;
   if (ext == "pdf") return Format::Pdf;
   return std::nullopt;
+}
+
+std::optional<Format> format_of(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
+  return format_named(path.substr(dot + 1));
 }
 
 // Numbers separated by `sep`; nullopt when any is not a finite number.
@@ -92,23 +98,41 @@ std::optional<draw::PixelSize> parse_size(const std::string& text) {
   return draw::PixelSize{static_cast<int>(w), static_cast<int>(h)};
 }
 
-draw::WriteResult write(const draw::Drawing& drawing, Format format, const std::string& path,
-                        draw::PixelSize size) {
+draw::WriteResult write_stream(const draw::Drawing& drawing, Format format, std::FILE* file,
+                               draw::PixelSize size) {
   switch (format) {
-  case Format::Dxf: return draw::write_dxf_file(drawing, path);
-  case Format::Svg: return draw::write_svg_file(drawing, path);
-  case Format::Png: return draw::write_png_file(drawing, path, size);
-  case Format::Pdf: return draw::write_pdf_file(drawing, path);
+  case Format::Dxf: return draw::write_dxf(drawing, file);
+  case Format::Svg: {
+    core::FileOstream out(file);
+    draw::write_svg(drawing, out);
+    out.flush();
+    return {};
+  }
+  case Format::Png: return draw::write_png(drawing, file, size);
+  case Format::Pdf: return draw::write_pdf(drawing, file);
+  }
+  return tl::unexpected(std::string("unknown format"));
+}
+
+// `-o -` is standard output (main checks that it was written).
+draw::WriteResult write(const draw::Drawing& drawing, Format format, const std::string& path,
+                        draw::PixelSize size, const std::vector<std::string>& inputs) {
+  if (path == "-") return write_stream(drawing, format, stdout, size);
+  switch (format) {
+  case Format::Dxf: return draw::write_dxf_file(drawing, path, inputs);
+  case Format::Svg: return draw::write_svg_file(drawing, path, inputs);
+  case Format::Png: return draw::write_png_file(drawing, path, size, inputs);
+  case Format::Pdf: return draw::write_pdf_file(drawing, path, inputs);
   }
   return tl::unexpected(std::string("unknown format"));
 }
 
 int draw_program(DrawOptions& o) {
-  const auto format = format_of(o.output);
+  const auto format = o.format.empty() ? format_of(o.output) : format_named(o.format);
   if (!format)
     return fail(
         fmt::format("cannot tell the format of '{}': its extension must be .dxf, .svg, "
-                    ".png or .pdf",
+                    ".png or .pdf, or give --format",
                     o.output));
   if (!o.start.empty()) {
     const auto start = parse_start(o.start);
@@ -127,14 +151,18 @@ int draw_program(DrawOptions& o) {
   const draw::View view = o.view == "toolpath" ? draw::View::Toolpath : draw::View::Part;
   // The part view shows the programmed contour, not the compensated tool centre.
   o.run.ignore_cutter_comp = view == draw::View::Part;
+  // Refused before the program runs: nothing is read into a file being written.
+  const std::vector<std::string> inputs = input_paths(o.run);
+  for (const std::string& input : inputs)
+    if (auto ok = core::check_not_input(o.output, input); !ok) return fail(ok.error());
   draw::Drawing drawing;
   draw::DrawingBuilder builder(drawing, view, o.run.start);
   const int status = run_program(o.run, builder);
   if (status == kBadInput) return status;
   builder.finish();
   // What was drawn before an error is written all the same.
-  if (auto written = write(drawing, *format, o.output, size); !written)
-    return fail(fmt::format("cannot write {}: {}", o.output, written.error()));
+  if (auto written = write(drawing, *format, o.output, size, inputs); !written)
+    return fail(written.error());
   return status;
 }
 
@@ -144,8 +172,12 @@ void add_draw(CLI::App& app) {
   auto opts = std::make_shared<DrawOptions>();
   CLI::App* cmd = app.add_subcommand("draw", "draw a program as DXF, SVG, PNG or PDF");
   add_run_options(*cmd, opts->run);
-  cmd->add_option("-o,--output", opts->output, "the drawing: OUT.dxf, OUT.svg, OUT.png or OUT.pdf")
+  cmd->add_option("-o,--output", opts->output,
+                  "the drawing: OUT.dxf, OUT.svg, OUT.png or OUT.pdf ('-': standard output)")
       ->required();
+  cmd->add_option("--format", opts->format,
+                  "dxf, svg, png or pdf (default: the output's extension)")
+      ->check(CLI::IsMember({"dxf", "svg", "png", "pdf"}));
   cmd->add_option("--view", opts->view,
                   "part: the programmed contour, holes and pockets; toolpath: every move by tool")
       ->check(CLI::IsMember({"part", "toolpath"}))

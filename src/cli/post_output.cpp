@@ -1,12 +1,12 @@
 #include "cli/post_output.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
+
+#include "core/file_ostream.hpp"
+#include "core/output_file.hpp"
 
 namespace usina::cli {
 
@@ -31,6 +31,15 @@ void add_post_options(CLI::App& app, PostOutput& o) {
       ->check(CLI::PositiveNumber);
 }
 
+namespace {
+
+int unknown_post(const std::string& name) {
+  fmt::print(stderr, "usina: error: unknown post '{}'\n", name);
+  return 2;
+}
+
+}  // namespace
+
 void PostDiagnostics::report(core::Diagnostic d) {
   if (d.severity == core::Severity::Error) ++errors_;
   static const core::SourceManager kNone;
@@ -38,45 +47,50 @@ void PostDiagnostics::report(core::Diagnostic d) {
   std::fwrite(text.data(), 1, text.size(), stderr);
 }
 
-int write_program(const PostOutput& o,
-                  const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
-  // A file is written beside its name and renamed once the program is good,
-  // so a failed run leaves no file and a big program is never held in
-  // memory; standard output is held, as it cannot be taken back.
-  const bool to_stdout = o.out == "-";
-  const std::string partial = o.out + ".partial-" + std::to_string(::getpid());
+namespace {
+
+// Standard output cannot be taken back, so the program is held until it is
+// good, then written.
+int write_to_stdout(const PostOutput& o,
+                    const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
   std::ostringstream held;
-  std::ofstream file;
-  if (!to_stdout) {
-    file.open(partial, std::ios::binary);
-    if (!file) {
-      fmt::print(stderr, "usina: error: cannot write {}\n", o.out);
-      return 2;
-    }
-  }
-  std::ostream& text = to_stdout ? static_cast<std::ostream&>(held) : file;
   PostDiagnostics post_diags;
-  auto sink = post::make_post(o.post, text, o.options, post_diags);
-  if (!sink) {
-    fmt::print(stderr, "usina: error: unknown post '{}'\n", o.post);
-    if (!to_stdout) std::remove(partial.c_str());
-    return 2;
-  }
+  auto sink = post::make_post(o.post, held, o.options, post_diags);
+  if (!sink) return unknown_post(o.post);
   int status = produce(*sink, post_diags);
   sink->finish();  // a post's finish is idempotent; a generator need not call it
   if (status == 0 && post_diags.errors() > 0) status = 1;
-  if (to_stdout) {
-    if (status == 0) fmt::print("{}", held.str());
-    return status;
-  }
-  const bool written = static_cast<bool>(file.flush());
-  file.close();
-  if (status == 0 && (!written || std::rename(partial.c_str(), o.out.c_str()) != 0)) {
-    fmt::print(stderr, "usina: error: cannot write {}\n", o.out);
-    status = 2;
-  }
-  if (status != 0) std::remove(partial.c_str());
+  if (status == 0) fmt::print("{}", held.str());
   return status;
+}
+
+}  // namespace
+
+int write_program(const PostOutput& o,
+                  const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
+  if (o.out == "-") return write_to_stdout(o, produce);
+  // Written to a temporary beside the target and put in place only when the
+  // program is good (core::OutputFile), so a failed run leaves nothing and a
+  // big program is never held in memory.
+  auto file = core::OutputFile::open(o.out, o.inputs);
+  if (!file) {
+    fmt::print(stderr, "usina: error: {}\n", file.error());
+    return 2;
+  }
+  core::FileOstream text(file->stream());
+  PostDiagnostics post_diags;
+  auto sink = post::make_post(o.post, text, o.options, post_diags);
+  if (!sink) return unknown_post(o.post);
+  int status = produce(*sink, post_diags);
+  sink->finish();
+  if (status == 0 && post_diags.errors() > 0) status = 1;
+  if (status != 0) return status;  // the temporary goes with `file`
+  text.flush();
+  if (auto committed = file->commit(); !committed) {
+    fmt::print(stderr, "usina: error: {}\n", committed.error());
+    return 2;
+  }
+  return 0;
 }
 
 }  // namespace usina::cli

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,7 @@ struct PostOutput {
   std::string post;
   std::string out = "-";
   post::PostOptions options;
+  std::vector<std::string> inputs;  // files the verb reads: never the output
 };
 
 void add_post_options(CLI::App& app, PostOutput& o);

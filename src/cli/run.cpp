@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/output_file.hpp"
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
 #include "gcode/dialect_guess.hpp"
@@ -54,6 +55,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->capture_default_str();
   app.add_flag("--block-delete", o.block_delete,
                "skip the blocks that start with '/' (the switch on)");
+}
+
+std::vector<std::string> input_paths(const RunOptions& o) {
+  return {o.file, o.tool_table, o.var_file, o.offsets};
 }
 
 namespace {
@@ -102,19 +107,19 @@ std::vector<std::string> split_path(const std::string& s) {
   return out;
 }
 
-// Written beside the target and renamed, so a reader never sees half a file
-// (as post_output.cpp writes programs).
-bool save_vars(const std::string& path, const std::vector<gcode::VarFileEntry>& entries) {
-  const std::string partial = path + ".partial-" + std::to_string(::getpid());
-  std::ofstream file(partial, std::ios::binary);
-  const std::string text = gcode::write_var_file(entries);
-  const bool written =
-      file && file.write(text.data(), static_cast<std::streamsize>(text.size())) && file.flush();
-  file.close();
-  if (written && std::rename(partial.c_str(), path.c_str()) == 0) return true;
-  std::remove(partial.c_str());
-  fmt::print(stderr, "usina: error: cannot write {}\n", path);
-  return false;
+// The parameter file the run started from may be written back (LinuxCNC
+// keeps its parameter file so); no other input may.
+std::vector<std::string> save_vars_inputs(const RunOptions& o) {
+  std::vector<std::string> inputs = input_paths(o);
+  std::erase(inputs, o.var_file);
+  return inputs;
+}
+
+bool save_vars(const RunOptions& o, const std::vector<gcode::VarFileEntry>& entries) {
+  const auto written =
+      core::write_file(o.save_vars, gcode::write_var_file(entries), save_vars_inputs(o));
+  if (!written) fmt::print(stderr, "usina: error: --save-vars: {}\n", written.error());
+  return static_cast<bool>(written);
 }
 
 std::string folder_of(const std::string& path) {
@@ -127,6 +132,14 @@ std::string folder_of(const std::string& path) {
 int run_program(const RunOptions& o, canon::Sink& sink,
                 const std::function<void(const core::SourceManager&)>& on_sources,
                 core::DiagnosticSink* observer) {
+  if (!o.save_vars.empty()) {
+    for (const std::string& input : save_vars_inputs(o)) {
+      if (auto ok = core::check_not_input(o.save_vars, input); !ok) {
+        fmt::print(stderr, "usina: error: --save-vars: {}\n", ok.error());
+        return 2;
+      }
+    }
+  }
   core::SourceManager sources;
   if (on_sources) on_sources(sources);
   StderrDiagnostics diags(sources, observer);
@@ -191,7 +204,7 @@ int run_program(const RunOptions& o, canon::Sink& sink,
     return 2;
   }
   const bool ok = runner->run(main_id);
-  if (!o.save_vars.empty() && !save_vars(o.save_vars, *runner->persistent_variables())) return 2;
+  if (!o.save_vars.empty() && !save_vars(o, *runner->persistent_variables())) return 2;
   return ok && diags.errors() == 0 ? 0 : 1;
 }
 

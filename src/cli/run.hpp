@@ -34,6 +34,10 @@ struct RunOptions {
 
 void add_run_options(CLI::App& app, RunOptions& o);
 
+// The files a run reads that were named on the command line (an output may
+// not be one of them).
+std::vector<std::string> input_paths(const RunOptions& o);
+
 // Interprets the program into `sink`, printing diagnostics to stderr.
 // Returns the exit status: 0, 1 when the program has an error, 2 when the
 // input cannot be read.

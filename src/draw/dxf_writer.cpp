@@ -97,10 +97,6 @@ class BufferedWriter final : public DL_WriterA {
   mutable fmt::memory_buffer buf_;
 };
 
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
 // Dashes about 1/40 of the drawing's larger side.
 double linetype_scale(const Box& bounds) {
   const double size = std::max(bounds.width(), bounds.height());
@@ -214,14 +210,12 @@ class DxfEntities {
 
 }  // namespace
 
-WriteResult write_dxf_file(const Drawing& drawing, const std::string& path) {
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
-  if (!file) return tl::unexpected(std::string(std::strerror(errno)));
+WriteResult write_dxf(const Drawing& drawing, std::FILE* file) {
   DL_Dxf dxf;
   // DL_Dxf::out() would open the file with dxflib's slow writer; it is
   // called on /dev/null only to set the DXF version the DL_Dxf writes.
   const std::unique_ptr<DL_WriterA> version_only(dxf.out("/dev/null", DL_Codes::AC1015));
-  auto dw = std::make_unique<BufferedWriter>(file.get());
+  auto dw = std::make_unique<BufferedWriter>(file);
   const std::vector<const Layer*> layers = drawing.layers();
   write_header(dxf, *dw, drawing);
   write_tables(dxf, *dw, layers);
@@ -238,11 +232,12 @@ WriteResult write_dxf_file(const Drawing& drawing, const std::string& path) {
   dw->dxfEOF();
   dw->flush();
   dw->close();
-  dw.reset();
-  const bool failed = std::ferror(file.get()) != 0;
-  if (std::fclose(file.release()) != 0 || failed)
-    return tl::unexpected(std::string(std::strerror(errno)));
   return {};
+}
+
+WriteResult write_dxf_file(const Drawing& drawing, const std::string& path,
+                           const std::vector<std::string>& inputs) {
+  return write_to_file(path, inputs, [&](std::FILE* file) { return write_dxf(drawing, file); });
 }
 
 }  // namespace usina::draw

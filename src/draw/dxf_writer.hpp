@@ -11,6 +11,10 @@
 
 namespace usina::draw {
 
-WriteResult write_dxf_file(const Drawing& drawing, const std::string& path);
+WriteResult write_dxf(const Drawing& drawing, std::FILE* file);
+
+// Through core::OutputFile; `inputs` may not be the output.
+WriteResult write_dxf_file(const Drawing& drawing, const std::string& path,
+                           const std::vector<std::string>& inputs = {});
 
 }  // namespace usina::draw

@@ -250,9 +250,16 @@ struct ContextDeleter {
 using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using Context = std::unique_ptr<cairo_t, ContextDeleter>;
 
+// cairo's stream callback: the bytes to the FILE, whose error flag
+// OutputFile::commit() reads.
+cairo_status_t write_bytes(void* file, const unsigned char* data, unsigned int length) {
+  const std::size_t n = std::fwrite(data, 1, length, static_cast<std::FILE*>(file));
+  return n == length ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
 }  // namespace
 
-WriteResult write_png_file(const Drawing& drawing, const std::string& path, PixelSize size) {
+WriteResult write_png(const Drawing& drawing, std::FILE* file, PixelSize size) {
   if (size.width < 1 || size.height < 1 ||
       static_cast<long>(size.width) * size.height > kMaxPngPixels)
     return tl::unexpected(fmt::format("image size {}x{} is out of range (at most {} pixels)",
@@ -266,17 +273,17 @@ WriteResult write_png_file(const Drawing& drawing, const std::string& path, Pixe
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
-  const cairo_status_t s = cairo_surface_write_to_png(surface.get(), path.c_str());
+  const cairo_status_t s = cairo_surface_write_to_png_stream(surface.get(), write_bytes, file);
   if (s != CAIRO_STATUS_SUCCESS) return tl::unexpected(status_text(s));
   return {};
 }
 
-WriteResult write_pdf_file(const Drawing& drawing, const std::string& path) {
+WriteResult write_pdf(const Drawing& drawing, std::FILE* file) {
   const Box box = view_box(drawing.bounds());
   const bool landscape = box.width() >= box.height();
   const double w = landscape ? kA4Long : kA4Short;
   const double h = landscape ? kA4Short : kA4Long;
-  Surface surface(cairo_pdf_surface_create(path.c_str(), w, h));
+  Surface surface(cairo_pdf_surface_create_for_stream(write_bytes, file, w, h));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     return tl::unexpected(status_text(cairo_surface_status(surface.get())));
   {
@@ -290,6 +297,17 @@ WriteResult write_pdf_file(const Drawing& drawing, const std::string& path) {
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     return tl::unexpected(status_text(cairo_surface_status(surface.get())));
   return {};
+}
+
+WriteResult write_png_file(const Drawing& drawing, const std::string& path, PixelSize size,
+                           const std::vector<std::string>& inputs) {
+  return write_to_file(path, inputs,
+                       [&](std::FILE* file) { return write_png(drawing, file, size); });
+}
+
+WriteResult write_pdf_file(const Drawing& drawing, const std::string& path,
+                           const std::vector<std::string>& inputs) {
+  return write_to_file(path, inputs, [&](std::FILE* file) { return write_pdf(drawing, file); });
 }
 
 }  // namespace usina::draw

@@ -18,9 +18,15 @@ struct PixelSize {
 // The most pixels a PNG may have (25 million: 100 MB of image in memory).
 inline constexpr long kMaxPngPixels = 25'000'000;
 
-WriteResult write_png_file(const Drawing& drawing, const std::string& path, PixelSize size);
+WriteResult write_png(const Drawing& drawing, std::FILE* file, PixelSize size);
 
 // An A4 page, landscape when the drawing is wider than tall.
-WriteResult write_pdf_file(const Drawing& drawing, const std::string& path);
+WriteResult write_pdf(const Drawing& drawing, std::FILE* file);
+
+// Through core::OutputFile; `inputs` may not be the output.
+WriteResult write_png_file(const Drawing& drawing, const std::string& path, PixelSize size,
+                           const std::vector<std::string>& inputs = {});
+WriteResult write_pdf_file(const Drawing& drawing, const std::string& path,
+                           const std::vector<std::string>& inputs = {});
 
 }  // namespace usina::draw

@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "core/file_ostream.hpp"
+
 namespace usina::draw {
 namespace {
 
@@ -111,13 +113,14 @@ void write_svg(const Drawing& drawing, std::ostream& out) {
   flush(buf, out);
 }
 
-WriteResult write_svg_file(const Drawing& drawing, const std::string& path) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) return tl::unexpected(std::string(std::strerror(errno)));
-  write_svg(drawing, out);
-  out.flush();
-  if (!out) return tl::unexpected(std::string("write failed"));
-  return {};
+WriteResult write_svg_file(const Drawing& drawing, const std::string& path,
+                           const std::vector<std::string>& inputs) {
+  return write_to_file(path, inputs, [&](std::FILE* file) -> WriteResult {
+    core::FileOstream out(file);
+    write_svg(drawing, out);
+    out.flush();
+    return {};
+  });
 }
 
 }  // namespace usina::draw

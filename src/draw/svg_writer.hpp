@@ -15,7 +15,9 @@ namespace usina::draw {
 
 void write_svg(const Drawing& drawing, std::ostream& out);
 
-WriteResult write_svg_file(const Drawing& drawing, const std::string& path);
+// Through core::OutputFile; `inputs` may not be the output.
+WriteResult write_svg_file(const Drawing& drawing, const std::string& path,
+                           const std::vector<std::string>& inputs = {});
 
 // A number as the SVG and tests see it: at most 4 decimals, no trailing
 // zeros, no "-0".
