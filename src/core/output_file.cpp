@@ -265,6 +265,12 @@ tl::expected<void, std::string> OutputFile::attach(int fd) {
   return {};
 }
 
+std::optional<std::string> OutputFile::write_error() {
+  if (stream_ != nullptr) std::fflush(stream_);
+  if (descriptor_ == nullptr || descriptor_->error == 0) return std::nullopt;
+  return failure(path_, std::strerror(descriptor_->error)).value();
+}
+
 // Flushes and closes the stream (not the descriptor); the error says why a
 // write failed, whenever it did.
 tl::expected<void, std::string> OutputFile::close_stream() {

@@ -15,6 +15,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +53,10 @@ class OutputFile {
   std::FILE* stream() const { return stream_; }
 
   const std::string& path() const { return path_; }
+
+  // Why a write failed ("cannot write PATH: No space left on device"), after
+  // flushing what is buffered; nullopt while every write has succeeded.
+  std::optional<std::string> write_error();
 
   // Flushes, syncs and puts the output in place. An error (a full disk, a
   // device gone) leaves the target as it was when it was a regular file.

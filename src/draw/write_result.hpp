@@ -21,7 +21,10 @@ WriteResult write_to_file(const std::string& path, const std::vector<std::string
                           Write write) {
   auto out = core::OutputFile::open(path, inputs);
   if (!out) return tl::unexpected(out.error());
-  if (WriteResult written = write(out->stream()); !written) return written;
+  const WriteResult written = write(out->stream());
+  // A writer that stopped on a failed write (cairo's "error while writing")
+  // gets the reason the file gives; the target stays as it was either way.
+  if (!written) return tl::unexpected(out->write_error().value_or(written.error()));
   return out->commit();
 }
 
