@@ -5,6 +5,8 @@
 
 #include <fmt/compile.h>
 
+#include "core/text.hpp"
+
 namespace usina::canon {
 namespace {
 
@@ -79,17 +81,27 @@ void feed(Out out, const std::optional<double>& f) {
   }
 }
 
+// A JSON string of program text. Valid UTF-8 is copied; a byte that is not
+// is read as Latin-1 (ISO 8859-1, the encoding of older controls' files:
+// "(caf\xe9)" becomes "café"), so the line is always valid JSON
+// (spec/trace.md).
 void json_string(Out out, std::string_view s) {
   fmt::format_to(out, FMT_COMPILE("\""));
-  for (const char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
     const auto u = static_cast<unsigned char>(c);
+    const std::size_t n = core::utf8_sequence_at(s, i);
     if (c == '"' || c == '\\') {
       fmt::format_to(out, FMT_COMPILE("\\{}"), c);
-    } else if (u < 0x20) {
+    } else if (u < 0x20 || u == 0x7F || n == 0) {
       fmt::format_to(out, FMT_COMPILE("\\u{:04x}"), u);
     } else {
-      *out++ = c;
+      for (std::size_t k = 0; k < n; ++k)
+        *out++ = s[i + k];
+      i += n;
+      continue;
     }
+    ++i;
   }
   fmt::format_to(out, FMT_COMPILE("\""));
 }
@@ -275,7 +287,9 @@ struct TextFields {
     fmt::format_to(out, FMT_COMPILE(" {} segments, depth {:g}"), m.outline.segs.size(), m.depth);
   }
 
-  void operator()(const Comment& m) const { fmt::format_to(out, FMT_COMPILE(" {}"), m.text); }
+  void operator()(const Comment& m) const {
+    fmt::format_to(out, FMT_COMPILE(" {}"), core::printable(m.text));
+  }
 
   void operator()(const ProgramEnd&) const {}
 };
@@ -304,7 +318,7 @@ void TraceWriter::on(const Op& op) {
   if (format_ == TraceFormat::Jsonl) {
     write_json(out, op, file);
   } else {
-    if (!file.empty()) fmt::format_to(out, FMT_COMPILE("{}:"), file);
+    if (!file.empty()) fmt::format_to(out, FMT_COMPILE("{}:"), core::printable(file));
     fmt::format_to(out, FMT_COMPILE("{:>5}:{:<3} {:<8}"), op.src.line, op.src.col,
                    op_name(op.kind));
     std::visit(TextFields{out}, op.kind);

@@ -40,13 +40,6 @@ int unknown_post(const std::string& name) {
 
 }  // namespace
 
-void PostDiagnostics::report(core::Diagnostic d) {
-  if (d.severity == core::Severity::Error) ++errors_;
-  static const core::SourceManager kNone;
-  const std::string text = core::render(d, sources_ != nullptr ? *sources_ : kNone);
-  std::fwrite(text.data(), 1, text.size(), stderr);
-}
-
 namespace {
 
 // Standard output cannot be taken back, so the program is held until it is

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "canon/sink.hpp"
+#include "cli/diagnostic_printer.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
 #include "post/post.hpp"
@@ -26,18 +27,7 @@ void add_post_options(CLI::App& app, PostOutput& o);
 
 // The post's diagnostics, rendered on stderr as they come, against the
 // sources of the run that made the ops (when there is one).
-class PostDiagnostics final : public core::DiagnosticSink {
- public:
-  void set_sources(const core::SourceManager* sources) { sources_ = sources; }
-
-  void report(core::Diagnostic d) override;
-
-  int errors() const { return errors_; }
-
- private:
-  const core::SourceManager* sources_ = nullptr;
-  int errors_ = 0;
-};
+using PostDiagnostics = DiagnosticPrinter;
 
 // Runs `produce` (it feeds ops to the sink it is given and returns an exit
 // status) into the chosen post and writes the program to o.out only when

@@ -2,11 +2,11 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
-#include <iostream>
 #include <iterator>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -19,8 +19,18 @@
 
 namespace usina::cli {
 
-void add_run_options(CLI::App& app, RunOptions& o) {
-  app.add_option("file", o.file, "NC program ('-' reads standard input)")->required();
+// CLI11's ranges let NaN through (every comparison with it is false).
+const CLI::Validator kFinite(
+    [](std::string& text) {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      return std::isfinite(v) ? std::string() : "not a finite number: " + text;
+    },
+    "FINITE");
+
+void add_run_options(CLI::App& app, RunOptions& o, RunInput input) {
+  if (input == RunInput::One)
+    app.add_option("file", o.file, "NC program ('-' reads standard input)")->required();
   std::vector<std::string> dialects;
   for (const gcode::Dialect* d : gcode::all_dialects())
     dialects.emplace_back(d->name);
@@ -46,15 +56,19 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       "--subroutine-path", o.subroutine_path,
       "folders searched for o<name> call files, separated by ':' (then the program's own)");
   app.add_option("--peck-clearance", o.peck_clearance, "G73/G83 retract above the last peck, mm")
+      ->check(kFinite & CLI::Range(0.0, 1000.0))
       ->capture_default_str();
   app.add_option("--max-iterations", o.max_iterations,
                  "iterations a loop may run before it is an error")
+      ->check(CLI::Range(1L, 1'000'000'000'000L))
       ->capture_default_str();
   app.add_option("--max-total-iterations", o.max_total_iterations,
                  "loop iterations all loops together may run before it is an error")
+      ->check(CLI::Range(1L, 1'000'000'000'000L))
       ->capture_default_str();
   app.add_flag("--block-delete", o.block_delete,
                "skip the blocks that start with '/' (the switch on)");
+  add_diagnostic_options(app, o.diagnostics);
 }
 
 std::vector<std::string> input_paths(const RunOptions& o) {
@@ -63,34 +77,15 @@ std::vector<std::string> input_paths(const RunOptions& o) {
 
 namespace {
 
-class StderrDiagnostics final : public core::DiagnosticSink {
- public:
-  StderrDiagnostics(const core::SourceManager& sources, core::DiagnosticSink* observer)
-      : sources_(sources), observer_(observer) {}
-
-  void report(core::Diagnostic d) override {
-    if (d.severity == core::Severity::Error) ++errors_;
-    const std::string text = core::render(d, sources_);
-    std::fwrite(text.data(), 1, text.size(), stderr);
-    if (observer_ != nullptr) observer_->report(std::move(d));
-  }
-
-  int errors() const { return errors_; }
-
- private:
-  const core::SourceManager& sources_;
-  core::DiagnosticSink* observer_;
-  int errors_ = 0;
-};
+// What a pipe (standard input, /dev/stdin, a shell's <(...)) may hold: a
+// file is mapped and has no such bound.
+constexpr std::uint64_t kMaxStreamedInput = 1ull << 30;
 
 std::unique_ptr<core::SourceFile> open_input(const std::string& path) {
-  if (path == "-") {
-    std::ostringstream ss;
-    ss << std::cin.rdbuf();
-    return core::SourceFile::from_string("<stdin>", ss.str());
-  }
   std::string err;
-  auto f = core::SourceFile::open(path, err);
+  auto f = path == "-"
+               ? core::SourceFile::open_descriptor(STDIN_FILENO, "<stdin>", err, kMaxStreamedInput)
+               : core::SourceFile::open(path, err, kMaxStreamedInput);
   if (!f) fmt::print(stderr, "usina: error: cannot read {}: {}\n", path, err);
   return f;
 }
@@ -142,7 +137,8 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   }
   core::SourceManager sources;
   if (on_sources) on_sources(sources);
-  StderrDiagnostics diags(sources, observer);
+  DiagnosticPrinter diags(o.diagnostics, observer);
+  diags.set_sources(&sources);
   auto program = open_input(o.file);
   if (!program) return 2;
   const std::uint32_t main_id = sources.add(std::move(program));
@@ -151,8 +147,9 @@ int run_program(const RunOptions& o, canon::Sink& sink,
     const gcode::DialectGuess guess = gcode::guess_dialect(sources.get(main_id)->text());
     name = std::string(guess.dialect);
     if (gcode::find_dialect(name) == nullptr) name = "rs274ngc";
-    fmt::print(stderr, "usina: note: --dialect auto chose {} ({}) [N_DIALECT_GUESS]\n", name,
-               guess.reason);
+    if (!o.diagnostics.quiet && o.diagnostics.print)
+      fmt::print(stderr, "usina: note: --dialect auto chose {} ({}) [N_DIALECT_GUESS]\n", name,
+                 guess.reason);
   }
   const gcode::Dialect* dialect = gcode::find_dialect(name);
   gcode::OptionValues dialect_options;
@@ -165,6 +162,13 @@ int run_program(const RunOptions& o, canon::Sink& sink,
     return 2;
   }
 
+  if (!o.offsets.empty() && name != "fanuc") {
+    fmt::print(stderr,
+               "usina: error: --offsets is the fanuc dialect's offset page; the {} dialect takes "
+               "tool lengths and diameters from --tool-table\n",
+               name);
+    return 2;
+  }
   gcode::InterpOptions opts;
   opts.machine_units = o.machine_units == "inch" ? core::LengthUnit::Inch : core::LengthUnit::Mm;
   opts.peck_clearance_mm = o.peck_clearance;

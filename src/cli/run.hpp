@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "canon/sink.hpp"
+#include "cli/diagnostic_printer.hpp"
 #include "core/source.hpp"
 #include "core/vec3.hpp"
 
@@ -28,11 +29,15 @@ struct RunOptions {
   long max_iterations = 10'000'000;
   long max_total_iterations = 10'000'000;
   bool block_delete = false;
+  DiagnosticOptions diagnostics;
   bool ignore_cutter_comp = false;  // set by a verb (draw --view part), not a flag
   core::Vec3 start{};               // set by a verb (draw --start), not a run option
 };
 
-void add_run_options(CLI::App& app, RunOptions& o);
+// One: the FILE positional is added; Many: the verb adds its own (check).
+enum class RunInput { One, Many };
+
+void add_run_options(CLI::App& app, RunOptions& o, RunInput input = RunInput::One);
 
 // The files a run reads that were named on the command line (an output may
 // not be one of them).

@@ -15,8 +15,15 @@ namespace usina::core {
 
 class SourceFile {
  public:
-  // Maps `path`; nullopt and `error` set when it cannot be read.
-  static std::unique_ptr<SourceFile> open(const std::string& path, std::string& error);
+  // Maps `path`; nullptr and `error` set when it cannot be read. A pipe, a
+  // FIFO or a character device (`-`'s standard input, /dev/stdin, a shell's
+  // <(...)) is read whole when `max_stream_bytes` > 0, up to that many bytes;
+  // with 0, only regular files are read.
+  static std::unique_ptr<SourceFile> open(const std::string& path, std::string& error,
+                                          std::uint64_t max_stream_bytes = 0);
+  // The same for an open descriptor (standard input), named `name`.
+  static std::unique_ptr<SourceFile> open_descriptor(int fd, std::string name, std::string& error,
+                                                     std::uint64_t max_stream_bytes);
   static std::unique_ptr<SourceFile> from_string(std::string name, std::string text);
 
   SourceFile(const SourceFile&) = delete;
@@ -35,6 +42,8 @@ class SourceFile {
 
  private:
   SourceFile() = default;
+  static std::unique_ptr<SourceFile> read_stream(int fd, std::string name, std::string& error,
+                                                 std::uint64_t max_bytes);
   std::string name_;
   std::string owned_;
   void* map_ = nullptr;

@@ -45,11 +45,12 @@ TEST(Cli, TraceHelpListsItsOptions) {
   }
 }
 
-TEST(Cli, CheckHelpHasTheRunOptionsButNoFormat) {
+TEST(Cli, CheckHelpHasTheRunOptionsAndTheDiagnosticsFormat) {
   const Result r = usina("check --help");
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(contains(r.out, "--tool-table")) << r.out;
-  EXPECT_FALSE(contains(r.out, "--format")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--format")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--max-errors")) << r.out;
 }
 
 TEST(Cli, NoVerbIsAnError) {
