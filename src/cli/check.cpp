@@ -1,7 +1,7 @@
 // usina check FILE...: diagnostics only, like a compiler's; exit status 1
 // when a program has an error, 2 when one cannot be read (the worst of the
 // files). --format json prints them for editors and the web page
-// (docs/check.md).
+// (docs/cli.md).
 #include <algorithm>
 #include <memory>
 #include <string>

@@ -1,5 +1,5 @@
 // Every file usina writes goes through here, so that no output destroys what
-// it should not (docs/output.md):
+// it should not (docs/cli.md):
 // - a regular file is written to a new temporary beside it (O_EXCL |
 //   O_NOFOLLOW, a random name), flushed, fsynced and renamed over the target
 //   only when the whole output is good; the target keeps its mode (and, as

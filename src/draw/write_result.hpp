@@ -15,7 +15,7 @@ namespace usina::draw {
 using WriteResult = tl::expected<void, std::string>;
 
 // Runs `write(FILE*)` into `path` through core::OutputFile: the target is
-// replaced only when the whole drawing was written (docs/output.md).
+// replaced only when the whole drawing was written (docs/cli.md).
 template <class Write>
 WriteResult write_to_file(const std::string& path, const std::vector<std::string>& inputs,
                           Write write) {
