@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/validators.hpp"
 #include "core/file_ostream.hpp"
 #include "core/output_file.hpp"
 
@@ -28,7 +29,7 @@ void add_post_options(CLI::App& app, PostOutput& o) {
   app.add_flag("--tool-change", o.options.tool_change,
                "grbl: write T M6 (else a comment and an M0 pause)");
   app.add_option("--peck", o.options.peck, "holes as G83 pecks of this depth, mm (else G81)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
 }
 
 namespace {

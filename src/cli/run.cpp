@@ -2,14 +2,12 @@
 
 #include <unistd.h>
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <iterator>
 
 #include <fmt/format.h>
 
+#include "cli/validators.hpp"
 #include "core/output_file.hpp"
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
@@ -18,15 +16,6 @@
 #include "gcode/var_file.hpp"
 
 namespace usina::cli {
-
-// CLI11's ranges let NaN through (every comparison with it is false).
-const CLI::Validator kFinite(
-    [](std::string& text) {
-      char* end = nullptr;
-      const double v = std::strtod(text.c_str(), &end);
-      return std::isfinite(v) ? std::string() : "not a finite number: " + text;
-    },
-    "FINITE");
 
 void add_run_options(CLI::App& app, RunOptions& o, RunInput input) {
   if (input == RunInput::One)

@@ -30,7 +30,7 @@ void add_trace(CLI::App& app) {
   auto opts = std::make_shared<TraceOptions>();
   CLI::App* cmd = app.add_subcommand("trace", "print the canonical operations of a program");
   add_run_options(*cmd, opts->run);
-  cmd->add_option("--format", opts->format, "jsonl (spec/trace.md) or text")
+  cmd->add_option("--format", opts->format, "jsonl (one operation a line, JSON) or text")
       ->check(CLI::IsMember({"jsonl", "text"}))
       ->capture_default_str();
   cmd->callback([opts] {
