@@ -18,7 +18,7 @@
 
 namespace usina::cli {
 
-// --tool-diameter --feed --plunge-feed --rpm --safe-z --tool
+// --tool-diameter --feed --plunge-feed --rpm --safe-z --tool --max-moves
 void add_cutting_options(CLI::App& cmd, cam::Cutting& c);
 
 // One of --rect W,H (with --corner-radius), --circle R (both about --center
@@ -44,9 +44,11 @@ std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
 
 // Runs `generate` (it returns whether it succeeded, its errors reported)
 // into the post chosen by the PostOutput options; sets the exit status:
-// 0, or 2 when the generator failed (its input was bad).
+// 0, or 2 when the generator failed (a value out of range, a shape the tool
+// cannot cut, too much work: usage errors, docs/gen.md). The generator's
+// own diagnostics read "usina: error: gen NAME: message [CODE]".
 struct PostOutput;
-void run_generator(const PostOutput& out,
+void run_generator(std::string_view name, const PostOutput& out,
                    const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate);
 
 }  // namespace usina::cli

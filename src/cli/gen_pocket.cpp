@@ -32,7 +32,7 @@ void add_gen_pocket(CLI::App& gen) {
   add_cutting_options(*cmd, o->gen.cut);
   add_post_options(*cmd, o->output);
   cmd->callback([o] {
-    run_generator(o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+    run_generator("pocket", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
       const auto paths = shape_paths(o->shape, diags);
       if (!paths) return false;
       const auto shape = cam::pocket_shape(*paths, diags);

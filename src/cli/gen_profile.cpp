@@ -52,7 +52,7 @@ void add_gen_profile(CLI::App& gen) {
   add_post_options(*cmd, o->output);
   cmd->callback([o] {
     o->gen.side = side_of(o->side);
-    run_generator(o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+    run_generator("profile", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
       const auto paths = shape_paths(o->shape, diags);
       return paths && cam::generate_profile(*paths, o->gen, sink, diags);
     });
