@@ -196,7 +196,11 @@ bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
 // swing the tool through the far wall.
 bool check_leads_fit(const Cut& cut, const ProfileOptions& o, core::DiagnosticSink& diags) {
   if (o.lead_radius <= 0.0 || cut.side != ProfileSide::Inside || !cut.path.closed) return true;
-  const Ring room = linearize(cut.path, o.tolerance);
+  // 0.01 mm of slack: near where they touch, the lead arc and the path's
+  // chords cross within the tolerance.
+  const std::vector<Ring> room =
+      offset_rings({to_ring(cut.path, o.tolerance, true)}, 0.01, o.tolerance);
+  if (room.empty()) return true;
   const int side = lead_side(cut.side);
   const Lead in = lead_in(cut.path, o.lead_radius, side);
   const Lead out = lead_out(cut.path, o.lead_radius, side);
@@ -206,7 +210,7 @@ bool check_leads_fit(const Cut& cut, const ProfileOptions& o, core::DiagnosticSi
       linearize({out.from, {{out.to, out.center, out.turn}}, false}, o.tolerance);
   pts.insert(pts.end(), out_pts.begin() + 1, out_pts.end());
   for (const Vec2& q : pts) {
-    if (inside(room, q)) continue;
+    if (inside(room.front(), q)) continue;
     return fail(diags, core::Code::GenBadValue,
                 fmt::format("the lead arc of radius {:g} mm at ({:.4g}, {:.4g}) does not fit "
                             "inside the contour: the tool would cut its far wall; give a "
