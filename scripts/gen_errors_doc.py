@@ -300,8 +300,11 @@ EXPLAIN = {
         "Write the text in plain ASCII (\"Sao Paulo\" for \"São Paulo\")."),
     "E_BAD_TOOL_TABLE": (
         "A line of the tool table given with `--tool-table` cannot be used (no `T` word, a "
-        "value that is not a number or too large, an unknown letter). Some defects are "
-        "warnings only.",
+        "value that is not a number or too large, an unknown letter), or a value is out of its "
+        "range: the diameter `D` from 0 (not known) to 1000 mm, the offsets `X Y Z U V W` "
+        "within ±10000 mm, the angles `A B C I J` within ±360°, the orientation `Q` 0 to 9 "
+        "(NaN and infinity are never numbers). The line is skipped. Some defects are warnings "
+        "only.",
         "Correct the line shown; the format is LinuxCNC's, e.g. `T1 P1 D6.0 Z+10.0 ;end "
         "mill`."),
     # canned cycles and probing
