@@ -21,20 +21,25 @@ inline void warn_deprecated(const std::string& old_name, const std::string& new_
 }
 
 // Adds `old_name` as a hidden option storing into `value`, as `canonical`
-// does; giving both is a usage error.
+// does; giving both is a usage error. (Not CLI11's excludes(): it would
+// print an empty "Excludes:" in the canonical option's help.)
 template <class T>
 CLI::Option* add_deprecated_option(CLI::App& cmd, const std::string& old_name,
                                    CLI::Option* canonical, T& value) {
   const std::string new_name = canonical->get_name();
   CLI::Validator warn(
-      [old_name, new_name](std::string&) {
+      [old_name, new_name, canonical](std::string&) {
+        // Runs once the whole command line is read, so the count is known.
+        if (canonical->count() > 0) {
+          return fmt::format("{} is the old name of {}: give one of them", old_name, new_name);
+        }
         warn_deprecated(old_name, new_name);
         return std::string();
       },
       "");
   warn.application_index(0);  // once, not for each value
   CLI::Option* old = cmd.add_option(old_name, value, "deprecated: " + new_name);
-  old->group("")->excludes(canonical)->check(warn);
+  old->group("")->check(warn);
   return old;
 }
 

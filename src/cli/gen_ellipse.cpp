@@ -51,7 +51,8 @@ void add_pocket_options(CLI::App& cmd, EllipseOptions& o) {
 
 void add_gen_ellipse(CLI::App& gen) {
   auto opts = std::make_shared<EllipseOptions>();
-  CLI::App* cmd = gen.add_subcommand("ellipse-pocket", "elliptical pocket by DDA (seed 002)");
+  CLI::App* cmd = gen.add_subcommand("ellipse-pocket",
+                                     "clear an elliptical pocket: rings by a DDA interpolator");
   add_pocket_options(*cmd, *opts);
   add_post_options(*cmd, opts->output);
   cmd->callback([opts, cmd] {

@@ -25,11 +25,12 @@ struct FromDxfCli {
 void add_gen_from_dxf(CLI::App& gen) {
   auto o = std::make_shared<FromDxfCli>();
   CLI::App* cmd =
-      gen.add_subcommand("from-dxf", "cut a DXF drawing's contours (seed 002, section 4)");
-  CLI::Option* dxf = cmd->add_option("--dxf", o->shape.dxf, "the DXF drawing (required)");
-  // Pocket and profile name their drawing with --dxf; the positional is the
-  // old spelling (docs/gen.md, "Names").
-  cmd->add_option("DRAWING", o->drawing, "deprecated: --dxf")->group("")->excludes(dxf);
+      gen.add_subcommand("from-dxf", "cut the contours of a DXF drawing, arcs kept as arcs");
+  cmd->add_option("--dxf", o->shape.dxf, "the DXF drawing (required)");
+  // Pocket and profile name their drawing with --dxf; a positional is the
+  // old spelling (docs/gen.md, "Names"), taken from the extras so that it
+  // stays out of --help.
+  cmd->allow_extras();
   add_dxf_options(*cmd, o->shape);
   cmd->add_option("--depth", o->gen.depth, "depth below Z0 (the top of the part), mm")
       ->capture_default_str();
@@ -40,8 +41,16 @@ void add_gen_from_dxf(CLI::App& gen) {
       ->capture_default_str();
   add_cutting_options(*cmd, o->gen.cut);
   add_post_options(*cmd, o->output);
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
+    const std::vector<std::string> extras = cmd->remaining();
+    if (extras.size() > 1 || (extras.size() == 1 && extras[0].starts_with("-"))) {
+      throw CLI::ExtrasError(extras);
+    }
+    if (extras.size() == 1) o->drawing = extras[0];
     if (!o->drawing.empty()) {
+      if (!o->shape.dxf.empty()) {
+        throw CLI::ValidationError("DRAWING", "the drawing is given twice (--dxf and before it)");
+      }
       warn_deprecated("the drawing as a positional argument", "--dxf DRAWING");
       o->shape.dxf = o->drawing;
     }
