@@ -517,7 +517,9 @@ EXPLAIN = {
         "smaller tool."),
     "W_GEN_NO_EFFECT": (
         "A value given to a generator changes nothing: a peck (`--peck`) as deep as the hole "
-        "or deeper drills each hole in one feed, as without pecking. The program is written.",
+        "or deeper drills each hole in one feed, as without pecking; `--tab-width` or "
+        "`--tab-height` without `--tabs`; `--corner-radius` without `--rect`; `--center` with "
+        "`--dxf`; `--layer` or `--spline-tolerance` without `--dxf`. The program is written.",
         "Check the value and its units; leave the option out when it is not needed."),
     "W_DEPRECATED_OPTION": (
         "An option of `usina gen` or `usina calc` was given by its old name (`--ae`, `--ap`, "

@@ -90,6 +90,26 @@ void add_shape_options(CLI::App& cmd, ShapeOptions& s) {
   add_dxf_options(cmd, s);
 }
 
+void warn_unused(const CLI::App& cmd, std::initializer_list<const char*> names, bool used,
+                 std::string_view why, core::DiagnosticSink& diags) {
+  if (used) return;
+  for (const char* name : names) {
+    if (cmd.count(name) == 0) continue;
+    diags.report({core::Code::GenNoEffect,
+                  core::Severity::Warning,
+                  {},
+                  fmt::format("{} changes nothing {}", name, why)});
+  }
+}
+
+void warn_unused_shape_options(const CLI::App& cmd, const ShapeOptions& s,
+                               core::DiagnosticSink& diags) {
+  warn_unused(cmd, {"--corner-radius"}, !s.rect.empty(), "without --rect", diags);
+  warn_unused(cmd, {"--center"}, s.dxf.empty(), "with --dxf (the drawing has its own place)",
+              diags);
+  warn_unused(cmd, {"--layer", "--spline-tolerance"}, !s.dxf.empty(), "without --dxf", diags);
+}
+
 std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
                                                   core::DiagnosticSink& diags) {
   const cam::Vec2 c{s.center.at(0), s.center.at(1)};

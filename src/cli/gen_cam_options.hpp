@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,16 @@ struct ShapeOptions {
 void add_shape_options(CLI::App& cmd, ShapeOptions& s);
 // --layer and --spline-tolerance only (from-dxf names its drawing itself).
 void add_dxf_options(CLI::App& cmd, ShapeOptions& s);
+
+// W_GEN_NO_EFFECT for each option of `names` given on `cmd` when `used` is
+// false: an option that changes nothing is said, not silently ignored.
+void warn_unused(const CLI::App& cmd, std::initializer_list<const char*> names, bool used,
+                 std::string_view why, core::DiagnosticSink& diags);
+
+// The same for the shape's options that the shape given does not use
+// (--corner-radius without --rect, --center or --layer with --dxf ...).
+void warn_unused_shape_options(const CLI::App& cmd, const ShapeOptions& s,
+                               core::DiagnosticSink& diags);
 
 // The shape's contours: the rectangle or circle, or the drawing's entities
 // chained; nullopt after an error (reported).

@@ -84,6 +84,16 @@ TEST(GenLimitsCli, APeckDeeperThanTheHoleIsAWarning) {
   EXPECT_THAT(r.out, testing::HasSubstr("G83"));
 }
 
+TEST(GenLimitsCli, AnOptionThatChangesNothingIsAWarning) {
+  const test::Run r = test::usina(
+      "gen profile --circle 10 --depth 2 --tab-width 4 --corner-radius 2 --post grbl");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_THAT(r.err, testing::HasSubstr("--tab-width changes nothing without --tabs"));
+  EXPECT_THAT(r.err, testing::HasSubstr("--corner-radius changes nothing without --rect"));
+  const test::Run quiet = test::usina("gen profile --circle 10 --depth 2 --post grbl");
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+}
+
 TEST(GenLimitsCli, ANegativeToolDiameterInATableIsAnError) {
   const test::TempDir dir;
   const std::string table = dir.write("t.tbl", "T1 P1 D-6\n");
