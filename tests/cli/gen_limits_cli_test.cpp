@@ -85,8 +85,8 @@ TEST(GenLimitsCli, APeckDeeperThanTheHoleIsAWarning) {
 }
 
 TEST(GenLimitsCli, AnOptionThatChangesNothingIsAWarning) {
-  const test::Run r = test::usina(
-      "gen profile --circle 10 --depth 2 --tab-width 4 --corner-radius 2 --post grbl");
+  const test::Run r =
+      test::usina("gen profile --circle 10 --depth 2 --tab-width 4 --corner-radius 2 --post grbl");
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.err, testing::HasSubstr("--tab-width changes nothing without --tabs"));
   EXPECT_THAT(r.err, testing::HasSubstr("--corner-radius changes nothing without --rect"));
