@@ -116,22 +116,21 @@ bool check_closed(const PocketShape& shape, core::DiagnosticSink& diags) {
   return true;
 }
 
-// The moves from above, before any ring is made: a level has at most
-// (half the narrower side − r − allowance) / stepover + 3 rings deep (the
-// core ring and the finishing pass), each no more points than the region's
-// contours plus a full round corner about each.
-double estimate_moves(const PocketShape& shape, Vec2 size, const PocketOptions& o) {
+// The moves of one level from above, before any ring is made (the rings
+// are made once for every level): at most (half the narrower side − r −
+// allowance) / stepover + 3 rings deep (with the core ring and the finishing
+// pass), each no more points than the region's contours plus a full round
+// corner, at the deepest offset, about the outline and each island.
+double estimate_level_moves(const PocketShape& shape, Vec2 size, const PocketOptions& o) {
   const double r = o.cut.tool_diameter / 2.0;
-  const double deep =
-      std::max(0.0, (std::min(size.x, size.y) / 2.0 - r - o.finish_allowance) / o.stepover) + 3;
+  const double inside = std::min(size.x, size.y) / 2.0;
+  const double deep = std::max(0.0, (inside - r - o.finish_allowance) / o.stepover) + 3;
   double points = linearized_points(shape.outline, o.tolerance);
   for (const Path& island : shape.islands)
     points += linearized_points(island, o.tolerance);
-  points +=
-      static_cast<double>(shape.islands.size() + 1) *
-      core::segments_for_tolerance(std::max(size.x, size.y), 2 * std::numbers::pi, o.tolerance);
-  const double levels = std::ceil(o.depth / o.step_down);
-  return levels * deep * (points + 3) + 10;
+  points += static_cast<double>(shape.islands.size() + 1) *
+            core::segments_for_tolerance(inside, 2 * std::numbers::pi, o.tolerance);
+  return deep * (points + 3);
 }
 
 // The moves the rings make: each ring's points and the moves between rings,
@@ -161,8 +160,9 @@ bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::Diagno
                             "would leave ridges between the rings; give at most {:g}",
                             o.stepover, o.cut.tool_diameter, o.cut.tool_diameter));
   }
-  return check_closed(shape, diags) && check_work("the pocket", estimate_moves(shape, size, o),
-                                                  o.cut.max_moves, kLessWork, diags);
+  return check_closed(shape, diags) &&
+         check_work("one level of the pocket", estimate_level_moves(shape, size, o),
+                    o.cut.max_moves, kLessWork, diags);
 }
 
 // Material no pass reaches (docs/cam.md, "Material left"): the finishing

@@ -154,15 +154,32 @@ TEST(PocketLimits, EveryValueIsCheckedAgainstItsRange) {
   }
 }
 
-TEST(PocketLimits, MoreMovesThanTheLimitIsRefused) {
+TEST(PocketLimits, MoreMovesThanTheLimitIsRefusedBeforeAnyIsEmitted) {
   PocketOptions o = pocket_options();
-  o.stepover = 0.05;  // 600 rings of 1 level; then 3000 levels
-  o.step_down = 0.001;
+  o.stepover = 0.05;   // 340 rings
+  o.step_down = 0.01;  // 300 levels: about 800,000 moves
+  o.cut.max_moves = 1e5;
   core::DiagnosticList d;
   canon::Toolpath tp;
   EXPECT_FALSE(generate_pocket(rect(60, 40), o, tp, d));
   EXPECT_EQ(count_code(d, core::Code::GenTooMuchWork), 1) << first_message(d);
+  EXPECT_THAT(first_message(d), ::testing::HasSubstr("the pocket would be about"));
   EXPECT_TRUE(tp.ops().empty());
+  o.cut.max_moves = kDefaultMaxMoves;
+  d.clear();
+  EXPECT_TRUE(generate_pocket(rect(60, 40), o, tp, d)) << first_message(d);
+}
+
+TEST(PocketLimits, RingsTooManyToMakeAreRefusedBeforeTheyAreMade) {
+  // 10,000 rings deep on a 20 m square, each with about 7,000 points of a
+  // round corner: about 70 million points for one level.
+  PocketOptions o = pocket_options();
+  o.stepover = 1;
+  core::DiagnosticList d;
+  canon::Toolpath tp;
+  EXPECT_FALSE(generate_pocket(rect(20000, 20000), o, tp, d));
+  EXPECT_EQ(count_code(d, core::Code::GenTooMuchWork), 1) << first_message(d);
+  EXPECT_THAT(first_message(d), ::testing::HasSubstr("one level of the pocket would be about"));
 }
 
 TEST(ProfileLimits, ALeadArcThatSwingsThroughTheFarWallIsAnError) {

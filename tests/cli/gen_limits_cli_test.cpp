@@ -46,8 +46,10 @@ TEST(GenLimitsCli, WorkBeyondTheLimitIsRefusedAndTheLimitCanBeRaised) {
   EXPECT_EQ(test::usina(kEllipse + " --max-moves 100000").status, 0);
   refused("gen drill --grid 0,0,300,300,1,1 --depth 5 --peck 0.01 --post rs274ngc",
           "E_GEN_TOO_MUCH_WORK");
-  refused("gen pocket --rect 60,40 --depth 20 --stepover 0.05 --step-down 0.01 --post grbl",
-          "E_GEN_TOO_MUCH_WORK");
+  refused(
+      "gen pocket --rect 60,40 --depth 3 --stepover 0.05 --step-down 0.01 --max-moves 100000 "
+      "--post grbl",
+      "E_GEN_TOO_MUCH_WORK");
 }
 
 TEST(GenLimitsCli, PocketWhoseFinishAllowanceLeavesTheCoreStandingIsRefused) {
