@@ -66,7 +66,7 @@ void add_cutting_options(CLI::App& cmd, cam::Cutting& c) {
       ->capture_default_str();
   cmd.add_option("--max-moves", c.max_moves,
                  "refuse to generate more moves than this (about 18 bytes of G-code each)")
-      ->capture_default_str();
+      ->default_str(fmt::format("{:.0f}", c.max_moves));
 }
 
 void add_dxf_options(CLI::App& cmd, ShapeOptions& s) {

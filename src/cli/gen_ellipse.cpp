@@ -27,8 +27,8 @@ void add_pocket_options(CLI::App& cmd, EllipseOptions& o) {
   cmd.add_option("--rx", p.rx, "radius along X, mm")->required();
   cmd.add_option("--ry", p.ry, "radius along Y, mm")->required();
   cmd.add_option("--depth", p.depth, "depth below Z0 (the top of the part), mm")->required();
-  CLI::Option* stepover =
-      cmd.add_option("--stepover", p.ae, "mm between roughing rings, at most the tool diameter");
+  CLI::Option* stepover = cmd.add_option(
+      "--stepover", p.ae, "mm between roughing rings, at most the tool diameter (required)");
   add_deprecated_option(cmd, "--ae", stepover, p.ae);
   CLI::Option* step_down =
       cmd.add_option("--step-down", p.ap, "largest depth of one roughing pass, mm")

@@ -76,7 +76,7 @@ TEST(OptionNames, TheSameOptionHasTheSameDefaultInEveryGenerator) {
     for (const char* option_and_default :
          {"--tool-diameter FLOAT=6 ", "--feed FLOAT=600 ", "--plunge-feed FLOAT=200 ",
           "--rpm FLOAT=10000 ", "--safe-z FLOAT=5 ", "--tool INT:INT in [0 - 99999]=1\n",
-          "--max-moves FLOAT=2e+07 "}) {
+          "--max-moves FLOAT=20000000 "}) {
       EXPECT_THAT(help, testing::HasSubstr(option_and_default));
     }
   }
