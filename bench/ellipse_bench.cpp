@@ -24,7 +24,7 @@ EllipsePocket pocket_200mm() {
   p.ry = 60;
   p.depth = 5;
   p.ap = 5;
-  p.tool_diameter = 10;
+  p.cut.tool_diameter = 10;
   p.ae = 5;
   p.ae_finish = 0.5;
   p.resolution = 0.001;

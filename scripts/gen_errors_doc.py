@@ -272,10 +272,14 @@ EXPLAIN = {
         "Convert the entity to polylines or arcs in the CAD program, explode block "
         "references, or move it to a layer the program does not read."),
     "E_GEN_BAD_VALUE": (
-        "A value given to a generator is out of range: a depth, feed, speed, diameter or "
-        "stepover that is not above zero, a stepover above the tool diameter, tabs as high as "
-        "the cut is deep or too many for the contour, an R plane above the safe Z.",
-        "Give the value the message asks for."),
+        "A value given to a generator is outside its documented range (docs/gen.md, "
+        "\"Ranges\": a length above 0 and at most 100,000 mm, a tool diameter from 0.001 to "
+        "1000 mm, a feed or a spindle speed above 0 and at most 1,000,000, a resolution or "
+        "tolerance from 0.0001 mm), or values that do not go together: a stepover above the "
+        "tool diameter, tabs as high as the cut is deep or too many for the contour, a lead arc "
+        "that does not fit inside the contour, an R plane above the safe Z, a grid spacing of 0, "
+        "a text of spaces only.",
+        "Give the value the message asks for; it says the range."),
     "E_GEN_TOOL_TOO_BIG": (
         "The tool does not fit: a pocket narrower than the tool, or a contour whose offset by "
         "the tool radius vanishes on the side asked for.",
@@ -296,8 +300,11 @@ EXPLAIN = {
         "Write the text in plain ASCII (\"Sao Paulo\" for \"São Paulo\")."),
     "E_BAD_TOOL_TABLE": (
         "A line of the tool table given with `--tool-table` cannot be used (no `T` word, a "
-        "value that is not a number or too large, an unknown letter). Some defects are "
-        "warnings only.",
+        "value that is not a number or too large, an unknown letter), or a value is out of its "
+        "range: the diameter `D` from 0 (not known) to 1000 mm, the offsets `X Y Z U V W` "
+        "within ±10000 mm, the angles `A B C I J` within ±360°, the orientation `Q` 0 to 9 "
+        "(NaN and infinity are never numbers). The line is skipped. Some defects are warnings "
+        "only.",
         "Correct the line shown; the format is LinuxCNC's, e.g. `T1 P1 D6.0 Z+10.0 ;end "
         "mill`."),
     # canned cycles and probing
@@ -489,6 +496,43 @@ EXPLAIN = {
         "starts with the tool at the centre and the first move leaves it.",
         "Keep the contour off the centre (e.g. 0.01 mm beside it), or move through the centre "
         "outside G12.1."),
+    # gen: limits, material left, option names
+    "E_GEN_TOO_MUCH_WORK": (
+        "A generator would make more moves than the limit (`--max-moves`, 20,000,000 by "
+        "default, about 360 MB of G-code): the work is estimated from the parameters before "
+        "anything is generated, so a resolution of 1e-12 mm or a stepover of 1 µm over a large "
+        "pocket is refused at once instead of exhausting the memory. The message gives the "
+        "estimate, the size of G-code it means and the limit.",
+        "Give a coarser `--resolution`, a larger `--stepover` or `--step-down`, fewer holes or "
+        "pecks; or raise the limit with `--max-moves N` when the job is real."),
+    "E_GEN_MATERIAL_LEFT": (
+        "`usina gen pocket` would leave material standing that no pass reaches: the finishing "
+        "pass clears a tool diameter from the walls, and the roughing rings start the finish "
+        "allowance plus a tool radius from them. When the allowance is larger than the tool "
+        "radius, the part of the pocket deeper than a tool diameter from the walls is left "
+        "where the pocket is too narrow for a roughing ring (the core of a small pocket, a "
+        "channel), or everywhere when the allowance is above the tool diameter. The message "
+        "gives the extent of the material left.",
+        "Give a finish allowance of at most the tool radius (then nothing is left), or a "
+        "smaller tool."),
+    "W_GEN_NO_EFFECT": (
+        "A value given to a generator changes nothing: a peck (`--peck`) as deep as the hole "
+        "or deeper drills each hole in one feed, as without pecking; `--tab-width` or "
+        "`--tab-height` without `--tabs`; `--corner-radius` without `--rect`; `--center` with "
+        "`--dxf`; `--layer` or `--spline-tolerance` without `--dxf`. The program is written.",
+        "Check the value and its units; leave the option out when it is not needed."),
+    "W_DEPRECATED_OPTION": (
+        "An option of `usina gen` or `usina calc` was given by its old name (`--ae`, `--ap`, "
+        "`--ae-finish`, `--ap-finish`, `--diameter`, `--speed`, `--teeth`, the drawing of "
+        "`gen from-dxf` as a positional argument). It still works for this release; the table "
+        "of names is in docs/gen.md.",
+        "Use the new name the message gives."),
+    "W_UNKNOWN_PROFILE_KEY": (
+        "A machine profile (`--machine`) has a key usina does not read, e.g. `per_hours` for "
+        "`per_hour`: its value is not used. The message gives the key's line and the nearest "
+        "valid name.",
+        "Correct the key's spelling (the message suggests one), or remove it; docs/stats.md "
+        "lists the keys."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

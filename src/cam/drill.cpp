@@ -29,21 +29,43 @@ void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
   w.rapid(to(o.cut.safe_z));
 }
 
+// The pecks of one hole, as drill_moves makes them (with none: one feed).
+double pecks(const DrillOptions& o) {
+  return o.peck > 0.0 ? std::ceil((o.depth + o.retract) / o.peck) : 1.0;
+}
+
+bool check_ranges(const DrillOptions& o, core::DiagnosticSink& diags) {
+  bool ok = check_cutting(o.cut, diags);
+  ok = check_range("the depth (--depth)", o.depth, kLength, diags) && ok;
+  ok = check_range("the retract height (--retract)", o.retract, kLengthOrZero, diags) && ok;
+  ok = check_range("the peck (--peck)", o.peck, kLengthOrZero, diags) && ok;
+  ok = check_range("the peck clearance", o.peck_clearance, kLengthOrZero, diags) && ok;
+  return ok;
+}
+
+// A peck as deep as the hole drills it in one feed, as G81 does: legal, but
+// rarely what was meant (a peck in the wrong units, the wrong option).
+void warn_peck_unused(const DrillOptions& o, core::DiagnosticSink& diags) {
+  if (o.peck <= 0.0 || o.peck < o.depth + o.retract) return;
+  diags.report({core::Code::GenNoEffect,
+                core::Severity::Warning,
+                {},
+                fmt::format("the peck {:g} mm is not less than the hole's {:g} mm from the R "
+                            "plane to the bottom: each hole is drilled in one feed, as without "
+                            "--peck",
+                            o.peck, o.depth + o.retract)});
+}
+
 bool check_drill(const std::vector<Vec2>& points, const DrillOptions& o,
                  core::DiagnosticSink& diags) {
-  bool ok = check_cutting(o.cut, diags);
-  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
-  ok = check_positive("the retract height", o.retract, "mm", diags, true) && ok;
-  ok = check_positive("the peck", o.peck, "mm", diags, true) && ok;
-  ok = check_positive("the peck clearance", o.peck_clearance, "mm", diags, true) && ok;
-  if (!ok) return false;
+  if (!check_ranges(o, diags)) return false;
   if (o.retract > o.cut.safe_z) {
     return fail(diags, core::Code::GenBadValue,
                 fmt::format("the retract height {:g} mm is above the safe Z {:g} mm; the R "
                             "plane must be at or below the safe Z",
                             o.retract, o.cut.safe_z));
   }
-  if (o.peck > 0.0 && (o.depth + o.retract) / o.peck > 100000.0) {
+  if (pecks(o) > 100000.0) {
     return fail(diags, core::Code::GenBadValue,
                 fmt::format("a peck of {:g} mm makes more than 100000 pecks a hole", o.peck));
   }
@@ -55,6 +77,14 @@ bool check_drill(const std::vector<Vec2>& points, const DrillOptions& o,
   for (const Vec2& p : points) {
     if (!check_point("the hole at", p, diags)) return false;
   }
+  // A post expands a G83 into its pecks for a control without cycles: the
+  // pecks count whatever the form.
+  const double moves = static_cast<double>(points.size()) * (3 * pecks(o) + 4) + 10;
+  if (!check_work("the drilling", moves, o.cut.max_moves, "give a larger peck or fewer holes",
+                  diags)) {
+    return false;
+  }
+  warn_peck_unused(o, diags);
   return true;
 }
 

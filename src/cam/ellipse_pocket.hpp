@@ -6,37 +6,40 @@
 // resolution, and the finishing pass removes ae_finish everywhere.
 #pragma once
 
-#include <optional>
-#include <string>
 #include <vector>
 
+#include "cam/program.hpp"
 #include "canon/sink.hpp"
+#include "core/diagnostic.hpp"
 #include "core/vec3.hpp"
 
 namespace usina::cam {
 
 using core::Vec2;
 
+// The seed's names: ae the stepover, ap the step down (docs/gen.md gives the
+// options' names).
 struct EllipsePocket {
   Vec2 center;
   double rx = 0;
   double ry = 0;
-  double depth = 0;  // below Z0, the top of the part
-  double tool_diameter = 0;
-  double ae = 0;         // stepover of the roughing rings
-  double ap = 0;         // depth of cut of the roughing levels
-  double ae_finish = 0;  // stock the finishing ring removes from the wall
-  double ap_finish = 0;  // depth of the last level
-  double resolution = 0.1;
-  double feed = 300;         // mm/min
-  double plunge_feed = 100;  // mm/min
-  double rpm = 3000;
-  double safe_z = 5;
-  int tool = 1;
+  double depth = 0;         // below Z0, the top of the part
+  double ae = 0;            // stepover of the roughing rings
+  double ap = 1.0;          // depth of cut of the roughing levels
+  double ae_finish = 0.2;   // stock the finishing ring removes from the wall
+  double ap_finish = 0;     // depth of the last level (stock left on the floor)
+  double resolution = 0.1;  // the DDA increment, mm
+  Cutting cut;              // tool, feeds, spindle, safe Z, the bound on moves
 };
 
-// A message for the first thing wrong with `p`, or nothing.
-std::optional<std::string> check(const EllipsePocket& p);
+// Reports every value out of its range, then the first thing that makes the
+// pocket impossible (E_GEN_BAD_VALUE, E_GEN_TOOL_TOO_BIG), then work beyond
+// p.cut.max_moves (E_GEN_TOO_MUCH_WORK); true when the pocket can be made.
+bool check(const EllipsePocket& p, core::DiagnosticSink& diags);
+
+// The moves of a checked pocket, from above (every DDA clock that steps
+// counted as a point), without making any: what check() bounds.
+double estimate_moves(const EllipsePocket& p);
 
 enum class RingKind { Roughing, Transition, Finishing };
 
@@ -61,7 +64,11 @@ EllipsePlan plan(const EllipsePocket& p);
 std::vector<Ring> rings(const EllipsePocket& p, const EllipsePlan& plan);
 
 // The whole program as canon ops: tool, spindle, for each level the rings
-// joined by moves along Y, the retract and the end.
+// joined by moves along Y, the retract and the end. `p` must be checked.
 void generate(const EllipsePocket& p, canon::Sink& sink);
+
+// check(), then generate(); false, with nothing emitted, after an error.
+bool generate_ellipse_pocket(const EllipsePocket& p, canon::Sink& sink,
+                             core::DiagnosticSink& diags);
 
 }  // namespace usina::cam

@@ -39,8 +39,12 @@ Span cap_span(const HersheyFont& font) {
 
 bool layout_text(const HersheyFont& font, const EngraveOptions& o,
                  std::vector<std::vector<Vec2>>& strokes, core::DiagnosticSink& diags) {
-  if (!check_positive("the text height", o.height, "mm", diags)) return false;
+  if (!check_range("the text height (--height)", o.height, kLength, diags)) return false;
   if (o.text.empty()) return fail(diags, core::Code::TextNotInFont, "the text is empty");
+  if (o.text.find_first_not_of(' ') == std::string::npos) {
+    return fail(diags, core::Code::GenBadValue,
+                "the text is only spaces: there is nothing to engrave");
+  }
   if (o.text.size() > static_cast<std::size_t>(kMaxPasses)) {
     return fail(diags, core::Code::GenBadValue,
                 fmt::format("the text has {} characters, more than {}", o.text.size(), kMaxPasses));
@@ -85,10 +89,16 @@ bool layout_text(const HersheyFont& font, const EngraveOptions& o,
 bool generate_engrave(const HersheyFont& font, const EngraveOptions& o, canon::Sink& sink,
                       core::DiagnosticSink& diags) {
   bool ok = check_cutting(o.cut, diags);
-  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
-  ok = check_positive("the text height", o.height, "mm", diags) && ok;
+  ok = check_range("the depth (--depth)", o.depth, kLength, diags) && ok;
+  ok = check_range("the text height (--height)", o.height, kLength, diags) && ok;
   std::vector<std::vector<Vec2>> strokes;
   if (!ok || !layout_text(font, o, strokes, diags)) return false;
+  double moves = 10;
+  for (const auto& stroke : strokes)
+    moves += static_cast<double>(stroke.size()) + 2;
+  if (!check_work("the engraving", moves, o.cut.max_moves, "engrave less text at a time", diags)) {
+    return false;
+  }
   ProgramWriter w(sink, o.cut);
   // The text itself stays out of the comment: a parenthesis in it would end
   // a G-code comment early.

@@ -144,6 +144,21 @@ std::vector<Ring> offset_rings(const std::vector<Ring>& rings, double delta, dou
   return out;
 }
 
+std::vector<Ring> difference(const std::vector<Ring>& subject, const std::vector<Ring>& clip) {
+  cl::Clipper c;
+  for (const Ring& r : subject)
+    c.AddPath(to_clipper(r), cl::ptSubject, true);
+  for (const Ring& r : clip)
+    c.AddPath(to_clipper(r), cl::ptClip, true);
+  cl::Paths solution;
+  c.Execute(cl::ctDifference, solution, cl::pftEvenOdd, cl::pftEvenOdd);
+  std::vector<Ring> out;
+  for (const cl::Path& p : solution) {
+    if (p.size() >= 3) out.push_back(to_mm(p));
+  }
+  return out;
+}
+
 Ring to_ring(const Path& p, double tolerance, bool ccw) {
   Ring r = linearize(p, tolerance);
   if (r.size() > 1 && core::distance(r.front(), r.back()) < 1.0 / kClipperScale) r.pop_back();

@@ -27,6 +27,10 @@ using Ring = std::vector<Vec2>;
 // `tolerance`. What vanishes is left out; a ring may split in several.
 std::vector<Ring> offset_rings(const std::vector<Ring>& rings, double delta, double tolerance);
 
+// The area of `subject` outside `clip` (both sets of rings, even-odd:
+// outer boundaries and holes in either orientation).
+std::vector<Ring> difference(const std::vector<Ring>& subject, const std::vector<Ring>& clip);
+
 // A closed path's points as a ring with the given orientation.
 Ring to_ring(const Path& p, double tolerance, bool ccw);
 

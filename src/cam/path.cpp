@@ -64,6 +64,21 @@ std::vector<Vec2> linearize(const Path& p, double tolerance) {
   return pts;
 }
 
+double linearized_points(const Path& p, double tolerance) {
+  double n = 1.0;
+  for (std::size_t i = 0; i < p.segs.size(); ++i) {
+    const PathSegment& s = p.segs[i];
+    if (!s.center) {
+      n += 1.0;
+      continue;
+    }
+    const Vec2 from = segment_start(p, i);
+    n += core::segments_for_tolerance(core::distance(from, *s.center),
+                                      std::fabs(segment_sweep(from, s)), tolerance);
+  }
+  return n;
+}
+
 PathSegment bulge_segment(Vec2 from, Vec2 to, double bulge) {
   const double chord = core::distance(from, to);
   if (bulge == 0.0 || chord == 0.0) return {to, std::nullopt, 0};

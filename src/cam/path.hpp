@@ -49,6 +49,9 @@ double path_length(const Path& p);
 // split into chords within `tolerance` of the arc.
 std::vector<Vec2> linearize(const Path& p, double tolerance);
 
+// How many points linearize() would make, without making them.
+double linearized_points(const Path& p, double tolerance);
+
 // The arc of a DXF polyline vertex's bulge (tan of a quarter of the included
 // angle, positive counter-clockwise; DXF reference, LWPOLYLINE group 42) from
 // `from` to `to`. A zero bulge is a straight segment.

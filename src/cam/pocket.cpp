@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include <fmt/format.h>
+
+#include "core/arc.hpp"
 
 namespace usina::cam {
 namespace {
@@ -64,40 +67,39 @@ class PocketWriter {
   const std::vector<Ring>& walls_;
 };
 
-// The rings are at most the outline's half width over the stepover.
-bool check_rings(const Path& outline, const PocketOptions& o, core::DiagnosticSink& diags) {
+// The outline's extent: its bounding box's width and height.
+Vec2 extent(const Path& outline) {
   Vec2 lo = outline.start;
   Vec2 hi = outline.start;
   for (const Vec2& p : linearize(outline, 0.01)) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  const double half = std::max(hi.x - lo.x, hi.y - lo.y) / 2.0;
+  return hi - lo;
+}
+
+// The rings are at most the outline's half width over the stepover.
+bool check_rings(Vec2 size, const PocketOptions& o, core::DiagnosticSink& diags) {
+  const double half = std::max(size.x, size.y) / 2.0;
   if (half / o.stepover <= kMaxPasses) return true;
   return fail(diags, core::Code::GenBadValue,
               fmt::format("a stepover of {:g} mm makes more than {} rings in a pocket {:g} mm "
-                          "across",
+                          "across; give a larger stepover",
                           o.stepover, kMaxPasses, 2 * half));
 }
 
-bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::DiagnosticSink& diags) {
+bool check_ranges(const PocketOptions& o, core::DiagnosticSink& diags) {
   bool ok = check_cutting(o.cut, diags);
-  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
-  ok = check_positive("the step down", o.step_down, "mm", diags) && ok;
-  ok = check_positive("the stepover", o.stepover, "mm", diags) && ok;
-  ok = check_positive("the finish allowance", o.finish_allowance, "mm", diags, true) && ok;
-  ok = check_positive("the tolerance", o.tolerance, "mm", diags) && ok;
-  if (!ok) return false;
-  std::vector<Path> all{shape.outline};
-  all.insert(all.end(), shape.islands.begin(), shape.islands.end());
-  if (!check_extent(all, diags) || !check_passes(o.depth, o.step_down, diags)) return false;
-  if (!check_rings(shape.outline, o, diags)) return false;
-  if (o.stepover > o.cut.tool_diameter) {
-    return fail(diags, core::Code::GenBadValue,
-                fmt::format("the stepover {:g} mm is more than the tool diameter {:g} mm, which "
-                            "would leave ridges between the rings; give at most {:g}",
-                            o.stepover, o.cut.tool_diameter, o.cut.tool_diameter));
-  }
+  ok = check_range("the depth (--depth)", o.depth, kLength, diags) && ok;
+  ok = check_range("the step down (--step-down)", o.step_down, kLength, diags) && ok;
+  ok = check_range("the stepover (--stepover)", o.stepover, kLength, diags) && ok;
+  ok = check_range("the finish allowance (--finish-allowance)", o.finish_allowance, kLengthOrZero,
+                   diags) &&
+       ok;
+  return check_range("the tolerance", o.tolerance, kTolerance, diags) && ok;
+}
+
+bool check_closed(const PocketShape& shape, core::DiagnosticSink& diags) {
   if (!shape.outline.closed) {
     return fail(diags, core::Code::GenOpenOutline,
                 fmt::format("the pocket's outline (from ({:g}, {:g})) is not closed; a pocket "
@@ -112,6 +114,92 @@ bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::Diagno
     }
   }
   return true;
+}
+
+// The moves of one level from above, before any ring is made (the rings
+// are made once for every level): at most (half the narrower side − r −
+// allowance) / stepover + 3 rings deep (with the core ring and the finishing
+// pass), each no more points than the region's contours plus a full round
+// corner, at the deepest offset, about the outline and each island.
+double estimate_level_moves(const PocketShape& shape, Vec2 size, const PocketOptions& o) {
+  const double r = o.cut.tool_diameter / 2.0;
+  const double inside = std::min(size.x, size.y) / 2.0;
+  const double deep = std::max(0.0, (inside - r - o.finish_allowance) / o.stepover) + 3;
+  double points = linearized_points(shape.outline, o.tolerance);
+  for (const Path& island : shape.islands)
+    points += linearized_points(island, o.tolerance);
+  points += static_cast<double>(shape.islands.size() + 1) *
+            core::segments_for_tolerance(inside, 2 * std::numbers::pi, o.tolerance);
+  return deep * (points + 3);
+}
+
+// The moves the rings make: each ring's points and the moves between rings,
+// at every level.
+double ring_moves(const PocketRings& rings, const PocketOptions& o) {
+  double level = 0;
+  for (const auto* set : {&rings.roughing, &rings.finish}) {
+    for (const Ring& ring : *set)
+      level += static_cast<double>(ring.size()) + 3;
+  }
+  return std::ceil(o.depth / o.step_down) * level + 10;
+}
+
+constexpr std::string_view kLessWork =
+    "give a larger stepover or step down, or cut the pocket in parts";
+
+bool check_pocket(const PocketShape& shape, const PocketOptions& o, core::DiagnosticSink& diags) {
+  if (!check_ranges(o, diags)) return false;
+  std::vector<Path> all{shape.outline};
+  all.insert(all.end(), shape.islands.begin(), shape.islands.end());
+  if (!check_extent(all, diags) || !check_passes(o.depth, o.step_down, diags)) return false;
+  const Vec2 size = extent(shape.outline);
+  if (!check_rings(size, o, diags)) return false;
+  if (o.stepover > o.cut.tool_diameter) {
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("the stepover {:g} mm is more than the tool diameter {:g} mm, which "
+                            "would leave ridges between the rings; give at most {:g}",
+                            o.stepover, o.cut.tool_diameter, o.cut.tool_diameter));
+  }
+  return check_closed(shape, diags) &&
+         check_work("one level of the pocket", estimate_level_moves(shape, size, o),
+                    o.cut.max_moves, kLessWork, diags);
+}
+
+// Material no pass reaches (docs/cam.md, "Material left"): the finishing
+// pass runs a tool radius from the walls and clears a tool diameter from
+// them; the roughing clears what is within a tool radius of the region
+// offset by r + allowance. When the allowance is above the tool radius, the
+// region deeper than a tool diameter may be in neither: where the pocket is
+// too narrow for a roughing ring (the core of a small pocket, a channel),
+// or between the two (an allowance above the diameter). 0.01 mm keeps the
+// offsets' chords from counting as material.
+bool check_material_left(const PocketShape& shape, const PocketOptions& o,
+                         core::DiagnosticSink& diags) {
+  const double r = o.cut.tool_diameter / 2.0;
+  if (o.finish_allowance <= r) return true;  // then every point is in one or the other
+  const std::vector<Ring> reg = region(shape, o.tolerance);
+  const std::vector<Ring> deep = offset_rings(reg, -(2 * r + 0.01), o.tolerance);
+  const std::vector<Ring> roughed =
+      offset_rings(offset_rings(reg, -(r + o.finish_allowance), o.tolerance), r, o.tolerance);
+  const std::vector<Ring> left = difference(deep, roughed);
+  if (left.empty()) return true;
+  Vec2 lo = left.front().front();
+  Vec2 hi = lo;
+  double area2 = 0;  // holes run the other way: their area counts negative
+  for (const Ring& ring : left) {
+    area2 += signed_area2(ring);
+    for (const Vec2& p : ring)
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)},
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  return fail(
+      diags, core::Code::GenMaterialLeft,
+      fmt::format("{:.4g} mm² of material, from ({:.3g}, {:.3g}) to ({:.3g}, {:.3g}), "
+                  "would be left standing: the finishing pass clears {:g} mm (a tool "
+                  "diameter) from the walls, and the finish allowance of {:g} mm keeps "
+                  "the roughing rings from reaching it; give a finish allowance of at "
+                  "most {:g} mm (the tool radius)",
+                  std::fabs(area2) / 2, lo.x, lo.y, hi.x, hi.y, 2 * r, o.finish_allowance, r));
 }
 
 }  // namespace
@@ -222,6 +310,10 @@ bool generate_pocket(const PocketShape& shape, const PocketOptions& o, canon::Si
                 fmt::format("a tool of diameter {:g} mm does not fit in the pocket; use a "
                             "smaller tool",
                             o.cut.tool_diameter));
+  }
+  if (!check_material_left(shape, o, diags) ||
+      !check_work("the pocket", ring_moves(rings, o), o.cut.max_moves, kLessWork, diags)) {
+    return false;
   }
   ProgramWriter w(sink, o.cut);
   w.begin(fmt::format("usina gen pocket: depth {:g} mm, stepover {:g} mm", o.depth, o.stepover));

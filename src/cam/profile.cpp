@@ -9,9 +9,13 @@
 
 #include "cam/from_dxf.hpp"
 #include "cam/offset.hpp"
+#include "core/arc.hpp"
 
 namespace usina::cam {
 namespace {
+
+inline constexpr Range kTabCount{0.0, kMaxPasses, true, ""};
+constexpr std::string_view kLessWork = "give a larger step down, or fewer tabs or contours";
 
 Vec2 unit(Vec2 v) {
   const double n = core::norm(v);
@@ -136,20 +140,16 @@ void one_pass(ProgramWriter& w, const Cut& cut, double z, const ProfileOptions& 
   w.retract();
 }
 
-bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
-                   core::DiagnosticSink& diags) {
+bool check_ranges(const ProfileOptions& o, core::DiagnosticSink& diags) {
   bool ok = check_cutting(o.cut, diags);
-  ok = check_positive("the depth", o.depth, "mm", diags) && ok;
-  ok = check_positive("the step down", o.step_down, "mm", diags) && ok;
-  ok = check_positive("the lead radius", o.lead_radius, "mm", diags, true) && ok;
-  ok = check_positive("the tolerance", o.tolerance, "mm", diags) && ok;
-  if (o.tabs.count < 0) {
-    ok = fail(diags, core::Code::GenBadValue,
-              fmt::format("the tab count is {}; give 0 (no tabs) or more", o.tabs.count));
-  }
+  ok = check_range("the depth (--depth)", o.depth, kLength, diags) && ok;
+  ok = check_range("the step down (--step-down)", o.step_down, kLength, diags) && ok;
+  ok = check_range("the lead radius (--lead-radius)", o.lead_radius, kLengthOrZero, diags) && ok;
+  ok = check_range("the tolerance", o.tolerance, kTolerance, diags) && ok;
+  ok = check_range("the tab count (--tabs)", o.tabs.count, kTabCount, diags) && ok;
   if (o.tabs.count > 0) {
-    ok = check_positive("the tab width", o.tabs.width, "mm", diags) && ok;
-    ok = check_positive("the tab height", o.tabs.height, "mm", diags) && ok;
+    ok = check_range("the tab width (--tab-width)", o.tabs.width, kLength, diags) && ok;
+    ok = check_range("the tab height (--tab-height)", o.tabs.height, kLength, diags) && ok;
     if (ok && o.tabs.height >= o.depth) {
       ok = fail(diags, core::Code::GenBadValue,
                 fmt::format("the tab height {:g} mm is not below the depth {:g} mm; tabs are "
@@ -157,12 +157,26 @@ bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
                             o.tabs.height, o.depth));
     }
   }
-  if (!ok || !check_extent(contours, diags) || !check_passes(o.depth, o.step_down, diags)) {
+  return ok;
+}
+
+// The moves of one contour's passes, from above, before it is offset: its
+// points (arcs in chords), a full round corner, the leads and the tabs'
+// rises and falls, at every level.
+double estimate_moves(const std::vector<Path>& contours, const ProfileOptions& o) {
+  const double corner =
+      core::segments_for_tolerance(o.cut.tool_diameter / 2.0, 2 * std::numbers::pi, o.tolerance);
+  double pass = 0;
+  for (const Path& c : contours)
+    pass += linearized_points(c, o.tolerance) + corner + 4.0 * o.tabs.count + 8;
+  return std::ceil(o.depth / o.step_down) * pass + 10;
+}
+
+bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
+                   core::DiagnosticSink& diags) {
+  if (!check_ranges(o, diags) || !check_extent(contours, diags) ||
+      !check_passes(o.depth, o.step_down, diags)) {
     return false;
-  }
-  if (o.tabs.count > kMaxPasses) {
-    return fail(diags, core::Code::GenBadValue,
-                fmt::format("{} tabs are more than {}", o.tabs.count, kMaxPasses));
   }
   const bool needs_closed = o.side == ProfileSide::Outside || o.side == ProfileSide::Inside ||
                             o.side == ProfileSide::Auto;
@@ -174,7 +188,36 @@ bool check_profile(const std::vector<Path>& contours, const ProfileOptions& o,
                               c.start.x, c.start.y));
     }
   }
-  return ok;
+  return check_work("the profile", estimate_moves(contours, o), o.cut.max_moves, kLessWork, diags);
+}
+
+// The lead arcs of a cut inside a closed contour stay inside its tool path
+// (where the tool centre may be): a lead radius bigger than the room would
+// swing the tool through the far wall.
+bool check_leads_fit(const Cut& cut, const ProfileOptions& o, core::DiagnosticSink& diags) {
+  if (o.lead_radius <= 0.0 || cut.side != ProfileSide::Inside || !cut.path.closed) return true;
+  // 0.01 mm of slack: near where they touch, the lead arc and the path's
+  // chords cross within the tolerance.
+  const std::vector<Ring> room =
+      offset_rings({to_ring(cut.path, o.tolerance, true)}, 0.01, o.tolerance);
+  if (room.empty()) return true;
+  const int side = lead_side(cut.side);
+  const Lead in = lead_in(cut.path, o.lead_radius, side);
+  const Lead out = lead_out(cut.path, o.lead_radius, side);
+  std::vector<Vec2> pts = linearize({in.from, {{in.to, in.center, in.turn}}, false}, o.tolerance);
+  pts.pop_back();  // on the path
+  const std::vector<Vec2> out_pts =
+      linearize({out.from, {{out.to, out.center, out.turn}}, false}, o.tolerance);
+  pts.insert(pts.end(), out_pts.begin() + 1, out_pts.end());
+  for (const Vec2& q : pts) {
+    if (inside(room.front(), q)) continue;
+    return fail(diags, core::Code::GenBadValue,
+                fmt::format("the lead arc of radius {:g} mm at ({:.4g}, {:.4g}) does not fit "
+                            "inside the contour: the tool would cut its far wall; give a "
+                            "smaller --lead-radius",
+                            o.lead_radius, cut.path.start.x, cut.path.start.y));
+  }
+  return true;
 }
 
 bool check_tabs_fit(const Path& p, const ProfileOptions& o, core::DiagnosticSink& diags) {
@@ -274,11 +317,20 @@ bool generate_profile(const std::vector<Path>& contours, const ProfileOptions& o
     for (Path& p : ps) {
       if (!check_tabs_fit(p, o, diags)) return false;
       cuts.push_back({std::move(p), side});
+      if (!check_leads_fit(cuts.back(), o, diags)) return false;
     }
   }
+  std::vector<Path> paths;
+  for (const Cut& cut : cuts)
+    paths.push_back(cut.path);
+  const std::vector<double> levels = depth_levels(o.depth, o.step_down);
+  const double moves =
+      static_cast<double>(levels.size()) *
+          (path_moves(paths) + static_cast<double>(cuts.size()) * (4.0 * o.tabs.count + 4)) +
+      10;
+  if (!check_work("the profile", moves, o.cut.max_moves, kLessWork, diags)) return false;
   ProgramWriter w(sink, o.cut);
   w.begin(fmt::format("usina gen profile: {} contours, depth {:g} mm", cuts.size(), o.depth));
-  const std::vector<double> levels = depth_levels(o.depth, o.step_down);
   for (const Cut& cut : cuts) {
     for (const double z : levels)
       one_pass(w, cut, z, o);

@@ -11,54 +11,16 @@ bool fail(core::DiagnosticSink& diags, core::Code code, std::string message) {
   return false;
 }
 
-bool check_positive(std::string_view what, double value, std::string_view unit,
-                    core::DiagnosticSink& diags, bool zero_ok) {
-  if (std::isfinite(value) && (value > 0.0 || (zero_ok && value == 0.0))) return true;
-  return fail(
-      diags, core::Code::GenBadValue,
-      fmt::format("{} is {:g}{}; it must be a number {} zero", what, value,
-                  unit.empty() ? "" : fmt::format(" {}", unit), zero_ok ? "at or above" : "above"));
-}
-
 bool check_cutting(const Cutting& c, core::DiagnosticSink& diags) {
-  bool ok = check_positive("the tool diameter", c.tool_diameter, "mm", diags);
-  ok = check_positive("the feed", c.feed, "mm/min", diags) && ok;
-  ok = check_positive("the plunge feed", c.plunge_feed, "mm/min", diags) && ok;
-  ok = check_positive("the spindle speed", c.rpm, "rev/min", diags) && ok;
-  ok = check_positive("the safe Z", c.safe_z, "mm", diags) && ok;
-  if (c.tool < 0) {
-    ok = fail(diags, core::Code::GenBadValue,
-              fmt::format("tool number {} is negative; give 0 or more", c.tool));
-  }
+  bool ok =
+      check_range("the tool diameter (--tool-diameter)", c.tool_diameter, kToolDiameter, diags);
+  ok = check_range("the feed (--feed)", c.feed, kFeed, diags) && ok;
+  ok = check_range("the plunge feed (--plunge-feed)", c.plunge_feed, kFeed, diags) && ok;
+  ok = check_range("the spindle speed (--rpm)", c.rpm, kSpindle, diags) && ok;
+  ok = check_range("the safe Z (--safe-z)", c.safe_z, kLength, diags) && ok;
+  ok = check_range("the tool number (--tool)", c.tool, kToolNumber, diags) && ok;
+  ok = check_range("the limit on moves (--max-moves)", c.max_moves, kMaxMovesRange, diags) && ok;
   return ok;
-}
-
-bool check_point(std::string_view what, Vec2 p, core::DiagnosticSink& diags) {
-  if (std::isfinite(p.x) && std::isfinite(p.y) && std::fabs(p.x) <= kMaxCoordinate &&
-      std::fabs(p.y) <= kMaxCoordinate) {
-    return true;
-  }
-  return fail(diags, core::Code::GenBadValue,
-              fmt::format("{} ({:g}, {:g}) is beyond ±{:g} mm of the origin", what, p.x, p.y,
-                          kMaxCoordinate));
-}
-
-bool check_extent(const std::vector<Path>& paths, core::DiagnosticSink& diags) {
-  for (const Path& p : paths) {
-    if (!check_point("a contour's point", p.start, diags)) return false;
-    for (const PathSegment& s : p.segs) {
-      if (!check_point("a contour's point", s.to, diags)) return false;
-      if (s.center && !check_point("an arc's centre", *s.center, diags)) return false;
-    }
-  }
-  return true;
-}
-
-bool check_passes(double depth, double step, core::DiagnosticSink& diags) {
-  if (depth / step <= kMaxPasses) return true;
-  return fail(diags, core::Code::GenBadValue,
-              fmt::format("a depth of {:g} mm in steps of {:g} mm makes more than {} passes", depth,
-                          step, kMaxPasses));
 }
 
 std::vector<double> depth_levels(double depth, double step) {

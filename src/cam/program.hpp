@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cam/limits.hpp"
 #include "cam/path.hpp"
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
@@ -24,25 +25,11 @@ struct Cutting {
   double plunge_feed = 200.0;  // mm/min, down into the work
   double rpm = 10000.0;
   double safe_z = 5.0;  // mm above the top, clear of clamps: every rapid in the plane is here
+  // Not a cutting value but every generator's: the bound on its work (limits.hpp).
+  double max_moves = kDefaultMaxMoves;
 };
 
-// Reports E_GEN_BAD_VALUE for a value that is not a finite number above
-// zero (above or equal when `zero_ok`); returns whether it was good.
-bool check_positive(std::string_view what, double value, std::string_view unit,
-                    core::DiagnosticSink& diags, bool zero_ok = false);
-
-// Limits that keep hostile input finite (DESIGN.md, "Errors and bad input").
-inline constexpr double kMaxCoordinate = 1e5;  // mm from the origin: 100 m
-inline constexpr int kMaxPasses = 10000;       // depth passes, rings, tabs, holes / 10
-
-// E_GEN_BAD_VALUE unless every point of `paths` is within ±kMaxCoordinate.
-bool check_extent(const std::vector<Path>& paths, core::DiagnosticSink& diags);
-bool check_point(std::string_view what, Vec2 p, core::DiagnosticSink& diags);
-
-// E_GEN_BAD_VALUE when depth / step makes more than kMaxPasses passes.
-bool check_passes(double depth, double step, core::DiagnosticSink& diags);
-
-// Every check of `c`; true when all pass.
+// Every check of `c` (the ranges of limits.hpp); true when all pass.
 bool check_cutting(const Cutting& c, core::DiagnosticSink& diags);
 
 // Reports an error of `code` with `message`; returns false (for `return fail(...)`).

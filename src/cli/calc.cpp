@@ -47,6 +47,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/deprecated_option.hpp"
 #include "cli/verbs.hpp"
 
 namespace usina::cli {
@@ -56,19 +57,23 @@ using nlohmann::json;
 
 constexpr int kBadInput = 2;
 
-// A number flag, kept as the text the user typed.
+// A number flag, kept as the text the user typed; `old` is its deprecated
+// spelling, when it has one (docs/gen.md, "Names").
 struct Flag {
   std::string text;
   CLI::Option* option = nullptr;
+  CLI::Option* old = nullptr;
 };
 
 void add_number(CLI::App& cmd, Flag& flag, const std::string& name, const std::string& unit,
-                const std::string& help) {
+                const std::string& help, const std::string& old_name = "") {
   flag.option = cmd.add_option(name, flag.text, help)->type_name(unit);
+  if (!old_name.empty()) flag.old = add_deprecated_option(cmd, old_name, flag.option, flag.text);
 }
 
 void add_format(CLI::App& cmd, std::string& format) {
-  cmd.add_option("--format", format, "text, or json (field names at the top of src/cli/calc.cpp)")
+  cmd.add_option("--format", format,
+                 "text, or json: one object of the calculation's name, inputs and results")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
 }
@@ -85,7 +90,9 @@ class Reader {
 
   bool ok() const { return ok_; }
 
-  static bool given(const Flag& f) { return f.option->count() > 0; }
+  static bool given(const Flag& f) {
+    return f.option->count() + (f.old != nullptr ? f.old->count() : 0) > 0;
+  }
 
   double real(const Flag& f) {
     if (!present(f)) return 0;
@@ -427,10 +434,13 @@ void add_cutting(CLI::App& calc) {
   auto f = std::make_shared<CuttingFlags>();
   CLI::App* cmd = calc.add_subcommand(
       "cutting", "spindle speed from cutting speed, feed rate from chip load (7.1, 7.2)");
-  add_number(*cmd, f->speed, "--speed", "M/MIN", "cutting speed v, m/min (required)");
-  add_number(*cmd, f->diameter, "--diameter", "MM", "cutter diameter D, mm (required)");
-  add_number(*cmd, f->teeth, "--teeth", "N", "teeth of the cutter n_f (with --chip-load)");
-  add_number(*cmd, f->chip_load, "--chip-load", "MM", "chip load f, mm per tooth (with --teeth)");
+  add_number(*cmd, f->speed, "--cutting-speed", "M/MIN", "cutting speed v, m/min (required)",
+             "--speed");
+  add_number(*cmd, f->diameter, "--tool-diameter", "MM", "cutter diameter D, mm (required)",
+             "--diameter");
+  add_number(*cmd, f->teeth, "--flutes", "N", "flutes (teeth) of the cutter n_f (with --chip-load)",
+             "--teeth");
+  add_number(*cmd, f->chip_load, "--chip-load", "MM", "chip load f, mm per tooth (with --flutes)");
   add_format(*cmd, f->format);
   cmd->callback([f] { run_cutting(*f); });
 }
@@ -476,7 +486,8 @@ void add_bcd(CLI::App& calc) {
 
 void add_calc(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
-      "calc", "positioning and cutting calculators of seed 004 (mm, mm/min, rev/min, Hz)");
+      "calc",
+      "positioning and cutting calculators of a CNC axis and a cut (mm, mm/min, rev/min, Hz)");
   cmd->require_subcommand(1);
   add_open_loop(*cmd);
   add_closed_loop(*cmd);

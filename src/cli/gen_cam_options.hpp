@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,7 @@
 
 namespace usina::cli {
 
-// --tool-diameter --feed --plunge-feed --rpm --safe-z --tool
+// --tool-diameter --feed --plunge-feed --rpm --safe-z --tool --max-moves
 void add_cutting_options(CLI::App& cmd, cam::Cutting& c);
 
 // One of --rect W,H (with --corner-radius), --circle R (both about --center
@@ -37,6 +38,16 @@ void add_shape_options(CLI::App& cmd, ShapeOptions& s);
 // --layer and --spline-tolerance only (from-dxf names its drawing itself).
 void add_dxf_options(CLI::App& cmd, ShapeOptions& s);
 
+// W_GEN_NO_EFFECT for each option of `names` given on `cmd` when `used` is
+// false: an option that changes nothing is said, not silently ignored.
+void warn_unused(const CLI::App& cmd, std::initializer_list<const char*> names, bool used,
+                 std::string_view why, core::DiagnosticSink& diags);
+
+// The same for the shape's options that the shape given does not use
+// (--corner-radius without --rect, --center or --layer with --dxf ...).
+void warn_unused_shape_options(const CLI::App& cmd, const ShapeOptions& s,
+                               core::DiagnosticSink& diags);
+
 // The shape's contours: the rectangle or circle, or the drawing's entities
 // chained; nullopt after an error (reported).
 std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
@@ -44,9 +55,11 @@ std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
 
 // Runs `generate` (it returns whether it succeeded, its errors reported)
 // into the post chosen by the PostOutput options; sets the exit status:
-// 0, or 2 when the generator failed (its input was bad).
+// 0, or 2 when the generator failed (a value out of range, a shape the tool
+// cannot cut, too much work: usage errors, docs/gen.md). The generator's
+// own diagnostics read "usina: error: gen NAME: message [CODE]".
 struct PostOutput;
-void run_generator(const PostOutput& out,
+void run_generator(std::string_view name, const PostOutput& out,
                    const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate);
 
 }  // namespace usina::cli

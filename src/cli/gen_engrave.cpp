@@ -37,7 +37,7 @@ void add_gen_engrave(CLI::App& gen) {
   add_post_options(*cmd, o->output);
   cmd->callback([o] {
     o->gen.at = {o->at.at(0), o->at.at(1)};
-    run_generator(o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+    run_generator("engrave", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
       const auto font = cam::read_hershey(cam::hershey_file(o->font), diags);
       return font && cam::generate_engrave(*font, o->gen, sink, diags);
     });

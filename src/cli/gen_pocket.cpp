@@ -31,8 +31,9 @@ void add_gen_pocket(CLI::App& gen) {
       ->capture_default_str();
   add_cutting_options(*cmd, o->gen.cut);
   add_post_options(*cmd, o->output);
-  cmd->callback([o] {
-    run_generator(o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+  cmd->callback([o, cmd] {
+    run_generator("pocket", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+      warn_unused_shape_options(*cmd, o->shape, diags);
       const auto paths = shape_paths(o->shape, diags);
       if (!paths) return false;
       const auto shape = cam::pocket_shape(*paths, diags);

@@ -108,4 +108,10 @@
   X(ForbiddenArea, E_FORBIDDEN_AREA)               \
   X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)  \
   X(IncrementalAfterG69, W_INCREMENTAL_AFTER_G69)  \
-  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)
+  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)    \
+  /* gen: limits, material left, option names */   \
+  X(GenTooMuchWork, E_GEN_TOO_MUCH_WORK)           \
+  X(GenMaterialLeft, E_GEN_MATERIAL_LEFT)          \
+  X(GenNoEffect, W_GEN_NO_EFFECT)                  \
+  X(DeprecatedOption, W_DEPRECATED_OPTION)         \
+  X(UnknownProfileKey, W_UNKNOWN_PROFILE_KEY)

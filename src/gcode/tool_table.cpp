@@ -154,6 +154,48 @@ bool read_real_word(const Line& line, char letter, std::string_view value, doubl
   return false;
 }
 
+// A real word's name in messages and the values it may take, in mm for a
+// length (`length`), degrees otherwise: wide enough for any tool, narrow
+// enough that no offset or diameter is absurd. LinuxCNC checks none of
+// this, but D-6 made holes of diameter -6, and Z1e300 an infinite move.
+struct RealWord {
+  std::string_view what;
+  double min;
+  double max;
+  bool length;
+};
+
+constexpr double kMaxOffset = 10000.0;  // mm: a 10 m tool offset
+constexpr RealWord kOffsetWord{"offset", -kMaxOffset, kMaxOffset, true};
+constexpr RealWord kAngleWord{"angle", -360.0, 360.0, false};
+constexpr RealWord kDiameterWord{"diameter", 0.0, 1000.0, true};
+
+const RealWord& real_word(char letter) {
+  switch (letter) {
+  case 'D': return kDiameterWord;
+  case 'A':
+  case 'B':
+  case 'C':
+  case 'I':
+  case 'J': return kAngleWord;
+  default: return kOffsetWord;
+  }
+}
+
+// The value `v` (as written) of a real word within its range.
+bool check_real_word(const Line& line, char letter, std::string_view value, double v,
+                     double mm_per_unit) {
+  const RealWord& w = real_word(letter);
+  const double scale = w.length ? mm_per_unit : 1.0;
+  if (v * scale >= w.min && v * scale <= w.max) return true;
+  const std::string unit = !w.length ? "degrees" : (mm_per_unit == 1.0 ? "mm" : "machine units");
+  line.report(Severity::Error, value,
+              fmt::format("{} {}{} is out of range; it must be from {:g} to {:g} {}{}", w.what,
+                          letter, value, w.min / scale, w.max / scale, unit,
+                          letter == 'D' && v < 0 ? " (a diameter is not negative)" : ""));
+  return false;
+}
+
 // Stores one word's value in `tool`, lengths scaled to mm.
 bool apply_word(const Line& line, char letter, std::string_view value, double mm_per_unit,
                 ToolEntry& tool) {
@@ -165,6 +207,7 @@ bool apply_word(const Line& line, char letter, std::string_view value, double mm
   }
   double v = 0;
   if (!read_real_word(line, letter, value, v)) return false;
+  if (!check_real_word(line, letter, value, v, mm_per_unit)) return false;
   switch (letter) {
   case 'X': tool.offset.x = v * mm_per_unit; break;
   case 'Y': tool.offset.y = v * mm_per_unit; break;

@@ -1,31 +1,68 @@
 #include "sim/machine_profile.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "core/units.hpp"
+#include "sim/profile_keys.hpp"
 
 namespace usina::sim {
 namespace {
 
 constexpr const char* kAxisNames[] = {"x", "y", "z", "a", "b", "c"};
 
+// The values a key may take, in the file's units ({L}: mm or inch; a rotary
+// axis's lengths are degrees). Wide enough for any real machine, narrow
+// enough that no time computed from them is absurd (docs/stats.md, "Profile
+// keys"). `zero_too` admits 0 below `min` (0 meaning "none").
+struct KeyRange {
+  double min;
+  double max;
+  const char* unit;
+  bool zero_too = false;
+};
+
+constexpr KeyRange kTravel{-1e6, 1e6, "{L}"};
+constexpr KeyRange kRate{1.0, 1e6, "{L}/min"};
+constexpr KeyRange kAccel{1.0, 1e6, "{L}/s²"};
+constexpr KeyRange kJerk{1.0, 1e9, "{L}/s³", true};
+constexpr KeyRange kRpm{1.0, 1e6, "rev/min"};
+constexpr KeyRange kSpindleTime{0.0, 3600.0, "s"};
+constexpr KeyRange kToolChange{0.0, 86400.0, "s"};
+constexpr KeyRange kBlockTime{0.0, 60.0, "s"};
+constexpr KeyRange kCost{0.0, 1e9, "an hour"};
+constexpr KeyRange kDeviation{0.0, 10.0, "{L}"};
+
+std::string unit_text(const char* unit, std::string_view length) {
+  std::string u = unit;
+  if (const auto at = u.find("{L}"); at != std::string::npos) u.replace(at, 3, length);
+  return u;
+}
+
 class Reader {
  public:
   Reader(std::uint32_t file, core::DiagnosticSink& diags) : file_(file), diags_(diags) {}
 
-  void fail(const toml::source_region& where, std::string message) {
-    ok_ = false;
+  void report(core::Code code, core::Severity severity, const toml::source_region& where,
+              std::string message) {
     core::SourceLoc loc{file_, static_cast<std::uint32_t>(where.begin.line),
                         static_cast<std::uint32_t>(where.begin.column), 1, 0};
-    diags_.report({core::Code::BadMachineProfile, core::Severity::Error, loc, std::move(message)});
+    diags_.report({code, severity, loc, std::move(message)});
   }
 
-  // A number at `path` (integers accepted), required or with a default.
-  double number(const toml::table& t, const char* section, const char* key,
-                std::optional<double> fallback, bool non_negative = true) {
+  void fail(const toml::source_region& where, std::string message) {
+    ok_ = false;
+    report(core::Code::BadMachineProfile, core::Severity::Error, where, std::move(message));
+  }
+
+  // The number at `key` of section `t`, within `range`, required or with a
+  // default (a missing key is not checked).
+  double number(const toml::table& t, const std::string& section, const char* key,
+                std::optional<double> fallback, const KeyRange& range) {
     const toml::node* n = t.get(key);
     if (n == nullptr) {
       if (!fallback) fail(t.source(), fmt::format("[{}] needs the key '{}'", section, key));
@@ -36,8 +73,12 @@ class Reader {
       fail(n->source(), fmt::format("[{}] {} must be a number", section, key));
       return 0.0;
     }
-    if (non_negative && *v < 0.0) {
-      fail(n->source(), fmt::format("[{}] {} = {} must not be negative", section, key, *v));
+    const bool in = (*v >= range.min && *v <= range.max) || (range.zero_too && *v == 0.0);
+    if (!in) {
+      const std::string unit = unit_text(range.unit, length_unit_);
+      fail(n->source(),
+           fmt::format("[{}] {} = {:g} is out of range: give {}from {:g} to {:g} {}", section, key,
+                       *v, range.zero_too ? "0 or a number " : "", range.min, range.max, unit));
     }
     return *v;
   }
@@ -55,11 +96,47 @@ class Reader {
     return n->as_table();
   }
 
+  // A warning for each key of `t` usina does not read, with the nearest
+  // valid one; nested sections are walked.
+  void unknown_keys(const toml::table& t, const std::string& section) {
+    const auto keys = profile_keys(section);
+    for (auto&& [key, node] : t) {
+      const std::string_view name = key.str();
+      if (std::find(keys.begin(), keys.end(), name) == keys.end()) {
+        unknown_key(key, section, keys);
+        continue;
+      }
+      // The top level and [axes] hold sections; the others hold values.
+      const toml::table* sub = node.as_table();
+      if (sub != nullptr && (section.empty() || section == "axes")) {
+        unknown_keys(*sub, section.empty() ? std::string(name) : section + "." + std::string(name));
+      }
+    }
+  }
+
+  void set_length_unit(std::string_view unit) { length_unit_ = unit; }
+
   bool ok() const { return ok_; }
 
  private:
+  void unknown_key(const toml::key& key, const std::string& section,
+                   std::span<const std::string_view> keys) {
+    const std::string_view name = key.str();
+    const std::string where =
+        section.empty() ? "at the top of the profile" : fmt::format("in [{}]", section);
+    const std::string_view near = nearest_key(name, keys);
+    std::string known;
+    for (const std::string_view k : keys)
+      known += fmt::format("{}{}", known.empty() ? "" : ", ", k);
+    const std::string hint = near.empty() ? fmt::format("the keys here are {}", known)
+                                          : fmt::format("did you mean `{}`?", near);
+    report(core::Code::UnknownProfileKey, core::Severity::Warning, key.source(),
+           fmt::format("unknown key `{}` {} is not read; {}", name, where, hint));
+  }
+
   std::uint32_t file_;
   core::DiagnosticSink& diags_;
+  std::string length_unit_ = "mm";
   bool ok_ = true;
 };
 
@@ -74,6 +151,7 @@ void read_machine(Reader& r, const toml::table& root, MachineProfile& p) {
            fmt::format("[machine] units = \"{}\": must be \"mm\" or \"inch\"", u));
   }
   p.file_in_inch = u == "inch";
+  r.set_length_unit(p.file_in_inch ? "inch" : "mm");
 }
 
 void read_axis(Reader& r, const toml::table& axes, int i, MachineProfile& p) {
@@ -91,17 +169,38 @@ void read_axis(Reader& r, const toml::table& axes, int i, MachineProfile& p) {
   const std::string section = fmt::format("axes.{}", name);
   // Linear axes scale with the file's units; rotary axes are in degrees.
   const double scale = (i < 3 && p.file_in_inch) ? core::kMmPerInch : 1.0;
+  r.set_length_unit(i >= 3 ? "deg" : (p.file_in_inch ? "inch" : "mm"));
   AxisLimits& a = p.axes[static_cast<std::size_t>(i)];
   a.present = true;
-  a.min = r.number(t, section.c_str(), "min", std::nullopt, false) * scale;
-  a.max = r.number(t, section.c_str(), "max", std::nullopt, false) * scale;
-  a.rapid = r.number(t, section.c_str(), "rapid", std::nullopt) * scale;
-  a.max_feed = r.number(t, section.c_str(), "max_feed", std::nullopt) * scale;
-  a.accel = r.number(t, section.c_str(), "accel", std::nullopt) * scale;
-  a.jerk = r.number(t, section.c_str(), "jerk", 0.0) * scale;
+  a.min = r.number(t, section, "min", std::nullopt, kTravel) * scale;
+  a.max = r.number(t, section, "max", std::nullopt, kTravel) * scale;
+  a.rapid = r.number(t, section, "rapid", std::nullopt, kRate) * scale;
+  a.max_feed = r.number(t, section, "max_feed", std::nullopt, kRate) * scale;
+  a.accel = r.number(t, section, "accel", std::nullopt, kAccel) * scale;
+  a.jerk = r.number(t, section, "jerk", 0.0, kJerk) * scale;
   if (a.min > a.max) r.fail(t.source(), fmt::format("[{}] min is above max", section));
-  if (a.rapid == 0.0 || a.accel == 0.0) {
-    r.fail(t.source(), fmt::format("[{}] rapid and accel must be above zero", section));
+  r.set_length_unit(p.file_in_inch ? "inch" : "mm");
+}
+
+// [spindle], [times], [cost], [planner]: optional, their keys too.
+void read_optional(Reader& r, const toml::table& root, MachineProfile& p) {
+  if (const toml::table* s = r.section(root, "spindle", false)) {
+    // No max_rpm: a change of speed always takes accel_time (stats.cpp).
+    p.spindle_max_rpm =
+        s->get("max_rpm") != nullptr ? r.number(*s, "spindle", "max_rpm", std::nullopt, kRpm) : 0.0;
+    p.spindle_accel_time = r.number(*s, "spindle", "accel_time", 0.0, kSpindleTime);
+  }
+  if (const toml::table* t = r.section(root, "times", false)) {
+    p.tool_change_time = r.number(*t, "times", "tool_change", 0.0, kToolChange);
+    p.block_time = r.number(*t, "times", "block", 0.0, kBlockTime);
+  }
+  if (const toml::table* c = r.section(root, "cost", false)) {
+    p.cost_per_hour = r.number(*c, "cost", "per_hour", 0.0, kCost);
+  }
+  if (const toml::table* pl = r.section(root, "planner", false)) {
+    const double scale = p.file_in_inch ? core::kMmPerInch : 1.0;
+    p.junction_deviation =
+        r.number(*pl, "planner", "junction_deviation", 0.01 / scale, kDeviation) * scale;
   }
 }
 
@@ -118,27 +217,14 @@ std::optional<MachineProfile> read_machine_profile(std::string_view toml_text,
     r.fail(e.source(), fmt::format("not valid TOML: {}", e.description()));
     return std::nullopt;
   }
+  r.unknown_keys(root, "");
   MachineProfile p;
   read_machine(r, root, p);
   if (const toml::table* axes = r.section(root, "axes", true)) {
     for (int i = 0; i < 6; ++i)
       read_axis(r, *axes, i, p);
   }
-  if (const toml::table* s = r.section(root, "spindle", false)) {
-    p.spindle_max_rpm = r.number(*s, "spindle", "max_rpm", 0.0);
-    p.spindle_accel_time = r.number(*s, "spindle", "accel_time", 0.0);
-  }
-  if (const toml::table* t = r.section(root, "times", false)) {
-    p.tool_change_time = r.number(*t, "times", "tool_change", 0.0);
-    p.block_time = r.number(*t, "times", "block", 0.0);
-  }
-  if (const toml::table* c = r.section(root, "cost", false)) {
-    p.cost_per_hour = r.number(*c, "cost", "per_hour", 0.0);
-  }
-  if (const toml::table* pl = r.section(root, "planner", false)) {
-    const double scale = p.file_in_inch ? core::kMmPerInch : 1.0;
-    p.junction_deviation = r.number(*pl, "planner", "junction_deviation", 0.01 / scale) * scale;
-  }
+  read_optional(r, root, p);
   if (!r.ok()) return std::nullopt;
   return p;
 }

@@ -19,7 +19,7 @@ EllipsePocket pocket() {
   p.rx = 30;
   p.ry = 18;
   p.depth = 5;
-  p.tool_diameter = 8;
+  p.cut.tool_diameter = 8;
   p.ae = 3;
   p.ap = 2;
   p.ae_finish = 0.5;
@@ -146,10 +146,14 @@ TEST(EllipsePocket, ChecksTheInput) {
   auto message = [](auto change) {
     EllipsePocket p = pocket();
     change(p);
-    return check(p).value_or("");
+    core::DiagnosticList diags;
+    EXPECT_FALSE(check(p, diags));
+    return diags.all().empty() ? std::string() : diags.all().front().message;
   };
-  EXPECT_EQ(check(pocket()), std::nullopt);
-  EXPECT_THAT(message([](EllipsePocket& p) { p.tool_diameter = 36; }),
+  core::DiagnosticList good;
+  EXPECT_TRUE(check(pocket(), good));
+  EXPECT_TRUE(good.all().empty());
+  EXPECT_THAT(message([](EllipsePocket& p) { p.cut.tool_diameter = 36; }),
               testing::HasSubstr("not narrower than the minor axis"));
   EXPECT_THAT(message([](EllipsePocket& p) { p.ae = 9; }),
               testing::HasSubstr("bigger than the tool"));
@@ -158,13 +162,14 @@ TEST(EllipsePocket, ChecksTheInput) {
   EXPECT_THAT(message([](EllipsePocket& p) { p.resolution = 18; }),
               testing::HasSubstr("not smaller than the radii"));
   EXPECT_THAT(message([](EllipsePocket& p) { p.depth = 0; }),
-              testing::HasSubstr("--depth must be a positive number"));
+              testing::HasSubstr("the depth (--depth) is 0 mm; give a number above 0"));
   EXPECT_THAT(message([](EllipsePocket& p) { p.rx = -1; }), testing::HasSubstr("--rx"));
-  EXPECT_THAT(message([](EllipsePocket& p) { p.ae_finish = -1; }), testing::HasSubstr("0 or more"));
+  EXPECT_THAT(message([](EllipsePocket& p) { p.ae_finish = -1; }),
+              testing::HasSubstr("give a number from 0 to"));
   EXPECT_THAT(message([](EllipsePocket& p) { p.ap_finish = 5; }),
               testing::HasSubstr("not smaller than the depth"));
   // 30 × 18: the wall's radius of curvature at (±30, 0) is 18²/30 = 10.8.
-  EXPECT_THAT(message([](EllipsePocket& p) { p.tool_diameter = 22; }),
+  EXPECT_THAT(message([](EllipsePocket& p) { p.cut.tool_diameter = 22; }),
               testing::HasSubstr("radius of curvature"));
 }
 

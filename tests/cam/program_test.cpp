@@ -34,7 +34,7 @@ TEST(CheckCutting, EveryBadValueIsReported) {
   c.tool = -1;
   EXPECT_FALSE(check_cutting(c, d));
   EXPECT_EQ(testing::count_code(d, core::Code::GenBadValue), 6);
-  EXPECT_NE(d.all()[1].message.find("the feed is -1 mm/min"), std::string::npos);
+  EXPECT_NE(d.all()[1].message.find("the feed (--feed) is -1 mm/min"), std::string::npos);
 }
 
 TEST(ProgramWriter, RapidsOverAtTheSafeZAndRetractsBeforeMovingOn) {

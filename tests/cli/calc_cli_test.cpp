@@ -122,7 +122,8 @@ TEST(CalcCli, PrecisionSaysWhenTheRegisterLimits) {
 }
 
 TEST(CalcCli, CuttingPrintsSpindleSpeedAndFeed) {
-  const Result r = usina("calc cutting --speed 100 --diameter 20 --teeth 4 --chip-load 0.05");
+  const Result r =
+      usina("calc cutting --cutting-speed 100 --tool-diameter 20 --flutes 4 --chip-load 0.05");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "1591.55 rev/min")) << r.out;
   EXPECT_TRUE(contains(r.out, "(eq. 7.1)")) << r.out;
@@ -131,10 +132,10 @@ TEST(CalcCli, CuttingPrintsSpindleSpeedAndFeed) {
 }
 
 TEST(CalcCli, CuttingWithoutTeethHasNoFeed) {
-  const Result r = usina("calc cutting --speed 100 --diameter 20");
+  const Result r = usina("calc cutting --cutting-speed 100 --tool-diameter 20");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_FALSE(contains(r.out, "(eq. 7.2)")) << r.out;
-  const json j = usina_json("calc cutting --speed 100 --diameter 20");
+  const json j = usina_json("calc cutting --cutting-speed 100 --tool-diameter 20");
   EXPECT_EQ(j["calculation"], "cutting");
   EXPECT_NEAR(j["results"]["spindle_rpm"].get<double>(), 1591.55, 0.005);
   EXPECT_TRUE(j["results"]["feed_mm_per_min"].is_null());
@@ -189,11 +190,11 @@ TEST(CalcCli, BadInputIsAnErrorWithStatusTwo) {
       "calc precision --pitch 6 --gear-ratio 5 --steps 48 --travel 1000 --bits 1e3 --sigma 0",
       "calc precision --pitch 6 --gear-ratio 5 --steps 48 --travel 1000 --bits 16 --sigma -1",
       "calc precision --pitch 6 --gear-ratio 5 --steps 48 --travel 0 --bits 16 --sigma 0.005",
-      "calc cutting --speed 0 --diameter 20",
-      "calc cutting --speed 100 --diameter -20",
-      "calc cutting --speed 100 --diameter 20 --teeth 4",
-      "calc cutting --speed 100 --diameter 20 --chip-load 0.05",
-      "calc cutting --speed 100 --diameter 20 --teeth 2.5 --chip-load 0.05",
+      "calc cutting --cutting-speed 0 --tool-diameter 20",
+      "calc cutting --cutting-speed 100 --tool-diameter -20",
+      "calc cutting --cutting-speed 100 --tool-diameter 20 --flutes 4",
+      "calc cutting --cutting-speed 100 --tool-diameter 20 --chip-load 0.05",
+      "calc cutting --cutting-speed 100 --tool-diameter 20 --flutes 2.5 --chip-load 0.05",
       "calc bcd -5",
       "calc bcd 12.5",
       "calc bcd abc",
@@ -239,7 +240,7 @@ TEST(CalcCli, NoNanOrInfinityEverReachesTheOutput) {
   const std::array<const char*, 4> cases = {
       "calc open-loop --pitch 1e-308 --gear-ratio 1e308 --steps 48 --distance 1 --feed 1e308",
       "calc precision --pitch 6 --gear-ratio 5 --steps 48 --travel 1e308 --bits 64 --sigma 1e308",
-      "calc cutting --speed 1e308 --diameter 1e-308 --teeth 4 --chip-load 1",
+      "calc cutting --cutting-speed 1e308 --tool-diameter 1e-308 --flutes 4 --chip-load 1",
       "calc open-loop --pitch 6 --gear-ratio 5 --steps 48 --distance 0 --feed 1",
   };
   for (const std::string c : cases) {

@@ -52,15 +52,16 @@ class GenCam : public ::testing::Test {
 };
 
 TEST_F(GenCam, FromDxfKeepsArcsAsG3) {
-  const std::string prog =
-      generate("from-dxf '" + kDxf + "arcs_bulges.dxf' --layer SLOT --depth 1 --post rs274ngc");
+  const std::string prog = generate("from-dxf --dxf '" + kDxf +
+                                    "arcs_bulges.dxf' --layer SLOT --depth 1 --post rs274ngc");
   EXPECT_EQ(count(prog, "G3"), 2u) << prog;
 }
 
 TEST_F(GenCam, FromDxfErrors) {
-  fails("from-dxf '" + kDxf + "no_such.dxf' --post rs274ngc", "E_DXF_UNREADABLE");
-  fails("from-dxf '" + kDxf + "arcs_bulges.dxf' --layer NONE --post rs274ngc", "E_DXF_NO_ENTITIES");
-  fails("from-dxf '" + kDxf +
+  fails("from-dxf --dxf '" + kDxf + "no_such.dxf' --post rs274ngc", "E_DXF_UNREADABLE");
+  fails("from-dxf --dxf '" + kDxf + "arcs_bulges.dxf' --layer NONE --post rs274ngc",
+        "E_DXF_NO_ENTITIES");
+  fails("from-dxf --dxf '" + kDxf +
             "arcs_bulges.dxf' --layer SLOT --side left --tool-diameter 12 "
             "--post rs274ngc",
         "E_GEN_TOOL_TOO_BIG");

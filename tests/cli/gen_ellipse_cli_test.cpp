@@ -14,8 +14,9 @@ namespace {
 
 const std::string kGolden = std::string(USINA_TEST_DIR) + "/programs/post/ellipse_small.";
 const std::string kArgs =
-    "gen ellipse-pocket --center 10,5 --rx 6 --ry 4 --depth 2 --tool-diameter 3 --ae 1.2 --ap 1 "
-    "--ae-finish 0.3 --ap-finish 0.4 --resolution 1 --feed 400 --plunge-feed 100 --rpm 2000 "
+    "gen ellipse-pocket --center 10,5 --rx 6 --ry 4 --depth 2 --tool-diameter 3 --stepover 1.2 "
+    "--step-down 1 --finish-allowance 0.3 --floor-allowance 0.4 --resolution 1 --feed 400 "
+    "--plunge-feed 100 --rpm 2000 "
     "--safe-z 3 --program-name ellipse_small";
 
 struct Golden {
@@ -70,26 +71,30 @@ TEST(GenEllipseCli, RoundTripInEachDialect) {
 
 TEST(GenEllipseCli, BadInputIsAUsageError) {
   const std::string base =
-      "gen ellipse-pocket --center 0,0 --rx 10 --ry 6 --depth 3 --ap 1 --post grbl ";
+      "gen ellipse-pocket --center 0,0 --rx 10 --ry 6 --depth 3 --step-down 1 --post grbl ";
   const std::pair<std::string, std::string> cases[] = {
-      {"--tool-diameter 12 --ae 2", "not narrower than the minor axis"},
-      {"--tool-diameter 4 --ae 5", "bigger than the tool diameter"},
-      {"--tool-diameter 4 --ae 2 --resolution 6", "not smaller than the radii"},
-      {"--tool-diameter 4 --ae -2", "--ae must be a positive number"},
-      {"--tool-diameter 4 --ae 2 --feed 0", "--feed must be a positive number"},
+      {"--tool-diameter 12 --stepover 2", "not narrower than the minor axis"},
+      {"--tool-diameter 4 --stepover 5", "bigger than the tool diameter"},
+      {"--tool-diameter 4 --stepover 2 --resolution 6", "not smaller than the radii"},
+      {"--tool-diameter 4 --stepover -2", "the stepover (--stepover) is -2 mm; give a number"},
+      {"--tool-diameter 4 --stepover 2 --feed 0", "the feed (--feed) is 0 mm/min; give a number"},
   };
   for (const auto& [args, message] : cases) {
     const test::Run r = test::usina(base + args);
     EXPECT_EQ(r.status, 2) << args;
-    EXPECT_THAT(r.err, testing::StartsWith("usina: error: ellipse-pocket: ")) << args;
+    EXPECT_THAT(r.err, testing::StartsWith("usina: error: gen ellipse-pocket: ")) << args;
     EXPECT_THAT(r.err, testing::HasSubstr(message)) << args;
     EXPECT_TRUE(r.out.empty());
   }
-  EXPECT_NE(test::usina("gen ellipse-pocket --center 1 --rx 10 --ry 6 --depth 3 --ap 1 "
-                        "--tool-diameter 4 --ae 2 --post grbl")
+  EXPECT_NE(test::usina("gen ellipse-pocket --center 1 --rx 10 --ry 6 --depth 3 --step-down 1 "
+                        "--tool-diameter 4 --stepover 2 --post grbl")
                 .status,
             0);                             // --center needs X,Y
   EXPECT_NE(test::usina("gen").status, 0);  // a generator is required
+  const test::Run no_stepover =
+      test::usina("gen ellipse-pocket --rx 10 --ry 6 --depth 3 --post grbl");
+  EXPECT_NE(no_stepover.status, 0);
+  EXPECT_THAT(no_stepover.err, testing::HasSubstr("--stepover"));
 }
 
 }  // namespace

@@ -107,11 +107,12 @@ constexpr BadProfile kBadProfiles[] = {
      0},
     {"a missing key is named", "accel = 100", "", "'accel'", 0},
     {"a wrong type, at its line", "rapid = 1000", "rapid = \"fast\"", "rapid must be a number", 8},
-    {"a negative rate, at its line", "max_feed = 500", "max_feed = -5", "must not be negative", 9},
+    {"a negative rate, at its line", "max_feed = 500", "max_feed = -5",
+     "max_feed = -5 is out of range", 9},
     {"min above max", "min = -10", "min = 20", "min is above max", 0},
     {"units other than mm and inch", "units = \"mm\"", "units = \"cm\"",
      "must be \"mm\" or \"inch\"", 4},
-    {"a zero rapid", "rapid = 1000", "rapid = 0", "above zero", 0},
+    {"a zero rapid", "rapid = 1000", "rapid = 0", "rapid = 0 is out of range", 8},
 };
 
 TEST(MachineProfileError, EachBadProfileIsRefusedWithItsMessage) {
