@@ -136,8 +136,10 @@ std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
   return cam::chain(std::move(*entities));
 }
 
-void run_generator(std::string_view name, const PostOutput& out,
-                   const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate) {
+void run_generator(std::string_view name, PostOutput out,
+                   const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate,
+                   const ShapeOptions* shape) {
+  if (shape != nullptr) out.inputs.push_back(shape->dxf);  // never written over
   set_exit_status(write_program(out, [&](canon::Sink& sink, PostDiagnostics& post_diags) {
     GenDiagnostics diags(name, post_diags);
     return generate(sink, diags) ? 0 : 2;

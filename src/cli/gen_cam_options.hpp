@@ -58,8 +58,11 @@ std::optional<std::vector<cam::Path>> shape_paths(const ShapeOptions& s,
 // 0, or 2 when the generator failed (a value out of range, a shape the tool
 // cannot cut, too much work: usage errors, docs/gen.md). The generator's
 // own diagnostics read "usina: error: gen NAME: message [CODE]".
+// `shape`, when given, names the drawing the generator reads, which the
+// output may never be.
 struct PostOutput;
-void run_generator(std::string_view name, const PostOutput& out,
-                   const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate);
+void run_generator(std::string_view name, PostOutput out,
+                   const std::function<bool(canon::Sink&, core::DiagnosticSink&)>& generate,
+                   const ShapeOptions* shape = nullptr);
 
 }  // namespace usina::cli

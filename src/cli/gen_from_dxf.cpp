@@ -58,10 +58,13 @@ void add_gen_from_dxf(CLI::App& gen) {
     o->gen.side = o->side == "left"    ? cam::Side::Left
                   : o->side == "right" ? cam::Side::Right
                                        : cam::Side::On;
-    run_generator("from-dxf", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
-      const auto paths = shape_paths(o->shape, diags);
-      return paths && cam::generate_from_paths(*paths, o->gen, sink, diags);
-    });
+    run_generator(
+        "from-dxf", o->output,
+        [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+          const auto paths = shape_paths(o->shape, diags);
+          return paths && cam::generate_from_paths(*paths, o->gen, sink, diags);
+        },
+        &o->shape);
   });
 }
 

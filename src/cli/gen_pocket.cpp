@@ -32,13 +32,16 @@ void add_gen_pocket(CLI::App& gen) {
   add_cutting_options(*cmd, o->gen.cut);
   add_post_options(*cmd, o->output);
   cmd->callback([o, cmd] {
-    run_generator("pocket", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
-      warn_unused_shape_options(*cmd, o->shape, diags);
-      const auto paths = shape_paths(o->shape, diags);
-      if (!paths) return false;
-      const auto shape = cam::pocket_shape(*paths, diags);
-      return shape && cam::generate_pocket(*shape, o->gen, sink, diags);
-    });
+    run_generator(
+        "pocket", o->output,
+        [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+          warn_unused_shape_options(*cmd, o->shape, diags);
+          const auto paths = shape_paths(o->shape, diags);
+          if (!paths) return false;
+          const auto shape = cam::pocket_shape(*paths, diags);
+          return shape && cam::generate_pocket(*shape, o->gen, sink, diags);
+        },
+        &o->shape);
   });
 }
 

@@ -52,13 +52,16 @@ void add_gen_profile(CLI::App& gen) {
   add_post_options(*cmd, o->output);
   cmd->callback([o, cmd] {
     o->gen.side = side_of(o->side);
-    run_generator("profile", o->output, [&](canon::Sink& sink, core::DiagnosticSink& diags) {
-      warn_unused_shape_options(*cmd, o->shape, diags);
-      warn_unused(*cmd, {"--tab-width", "--tab-height"}, o->gen.tabs.count > 0, "without --tabs",
-                  diags);
-      const auto paths = shape_paths(o->shape, diags);
-      return paths && cam::generate_profile(*paths, o->gen, sink, diags);
-    });
+    run_generator(
+        "profile", o->output,
+        [&](canon::Sink& sink, core::DiagnosticSink& diags) {
+          warn_unused_shape_options(*cmd, o->shape, diags);
+          warn_unused(*cmd, {"--tab-width", "--tab-height"}, o->gen.tabs.count > 0,
+                      "without --tabs", diags);
+          const auto paths = shape_paths(o->shape, diags);
+          return paths && cam::generate_profile(*paths, o->gen, sink, diags);
+        },
+        &o->shape);
   });
 }
 

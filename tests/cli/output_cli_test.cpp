@@ -33,6 +33,22 @@ TEST(OutputCli, ConvertOntoItsOwnInputIsRefusedBeforeAnythingIsWritten) {
   EXPECT_EQ(slurp(p), kProgram);
 }
 
+TEST(OutputCli, GenOntoItsOwnDrawingIsRefused) {
+  const TempDir dir;
+  const std::string dxf = dir.write(
+      "sq.dxf",
+      "0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC\n0\nEOF\n");
+  const std::string before = slurp(dxf);
+  for (const std::string& verb : std::vector<std::string>{"from-dxf --depth 1", "profile --depth 1",
+                                                          "pocket --depth 1 --stepover 2"}) {
+    const test::Run r =
+        usina("gen " + verb + " --dxf " + quote(dxf) + " --post rs274ngc -o " + quote(dxf));
+    EXPECT_EQ(r.status, 2) << verb << "\n" << r.err;
+    EXPECT_TRUE(contains(r.err, "also an input")) << verb << "\n" << r.err;
+    EXPECT_EQ(slurp(dxf), before) << verb;
+  }
+}
+
 TEST(OutputCli, SaveVarsOntoTheProgramIsRefusedButOntoTheVarFileIsAllowed) {
   const TempDir dir;
   const std::string p = dir.write("p.ngc", "#5161=1\nM2\n");
