@@ -2,8 +2,10 @@
 // jumps and calls (docs/fanuc.md §5, §6).
 #include "gcode/dialects/fanuc_engine.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -117,9 +119,12 @@ core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
     // The text is a copy without the block's comments: add back what each
     // comment before the position took.
     const std::size_t at = b.text_start + pos;
-    std::size_t extra = 0;
-    for (const auto& [gap, width] : b.gaps)
-      if (gap < at) extra += width;
+    // The gaps are in text order with their widths summed: the last one
+    // before the position holds the total (a search, not a walk, so a
+    // block of many comments stays linear).
+    const auto after = std::partition_point(b.gaps.begin(), b.gaps.end(),
+                                            [at](const auto& g) { return g.first < at; });
+    const std::size_t extra = after == b.gaps.begin() ? 0 : std::prev(after)->second;
     col = static_cast<std::uint32_t>(b.col + at + extra);
   }
   return {b.file, b.line, col, 1, b.line_offset};

@@ -203,7 +203,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool nc_block(const TapeBlock& b);
   bool read_words(const TapeBlock& b, Words& w);
   void decimal_point(const TapeBlock& b, Words& w);
-  double least_increment(char letter, const Words& w) const;
+  double least_increment(char letter, bool inch) const;
   bool macro_call(const TapeBlock& b, Words& w);
   bool fanuc_codes(const TapeBlock& b, Words& w);
   bool convert_codes(const TapeBlock& b, Words& w);

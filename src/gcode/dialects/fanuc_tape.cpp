@@ -102,8 +102,10 @@ std::size_t take_comment(std::string_view text, std::size_t open, Tape::PendingB
   p.has_comment = true;
   const std::size_t last =
       (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
+  // Widths are kept summed, so a column is found by a binary search.
+  const std::uint32_t before = p.gaps.empty() ? 0 : p.gaps.back().second;
   p.gaps.emplace_back(static_cast<std::uint32_t>(p.cleaned.size()),
-                      static_cast<std::uint32_t>(last - open));
+                      before + static_cast<std::uint32_t>(last - open));
   p.cleaned += ' ';
   return last;
 }

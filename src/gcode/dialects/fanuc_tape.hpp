@@ -27,7 +27,8 @@ struct TapeBlock {
   // A block with a comment has its text copied without it: where `text`
   // started in the block (from `col`), and each comment's place in that
   // copy with the characters it took beyond its one blank, so a position
-  // in `text` finds its column again.
+  // in `text` finds its column again (the widths summed up to each
+  // comment, in the order of the text).
   std::uint32_t text_start = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
 };
