@@ -108,4 +108,7 @@
   X(ForbiddenArea, E_FORBIDDEN_AREA)               \
   X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)  \
   X(IncrementalAfterG69, W_INCREMENTAL_AFTER_G69)  \
-  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)
+  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)    \
+  /* limits: blocks, operations */                 \
+  X(BlockTooLong, E_BLOCK_TOO_LONG)                \
+  X(TooManyOperations, E_TOO_MANY_OPERATIONS)

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "gcode/program_text.hpp"
+
 namespace usina::gcode::fanuc {
 namespace {
 
@@ -148,7 +150,7 @@ bool Engine::run(std::uint32_t file) {
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr || !offsets_ok_) return false;
   main_file_ = file;
-  tape_.add_file(file, f->text());
+  tape_.add_file(file, f->text(), skip_byte_order_mark(f->text(), file, diags_));
   main_end_ = tape_.size() > 0 ? tape_.program_end(0) : 0;
   if (tape_.size() > 0) {
     // Fanuc's power-on return mode is G98 (LinuxCNC starts in G99).
@@ -196,6 +198,14 @@ bool Engine::step() {
   if (pc_ >= end || pc_ >= tape_.size()) return end_of_program();
   const TapeBlock& b = tape_.at(pc_);
   ++pc_;
+  const std::string_view src = sources_.get(b.file)->text();
+  const std::size_t start = b.line_offset + b.col - 1;
+  if (auto too_long =
+          block_too_long(src.substr(start, b.length), {b.file, b.line, b.col, 1, b.line_offset})) {
+    diags_.report(std::move(*too_long));
+    failed_ = true;
+    return false;
+  }
   if (b.program >= 0) o_ = static_cast<double>(b.program);
   if (b.deleted && options_.block_delete) return true;
   if (parameter_mode_) return parameter_block(b);
@@ -404,7 +414,8 @@ std::size_t Engine::find_program(long number) {
       auto file = core::SourceFile::open(p.string(), why);
       if (!file) continue;
       const std::uint32_t id = sources_.add(std::move(file));
-      const std::size_t first = tape_.add_file(id, sources_.get(id)->text());
+      const std::string_view text = sources_.get(id)->text();
+      const std::size_t first = tape_.add_file(id, text, skip_byte_order_mark(text, id, diags_));
       const std::size_t o = tape_.program(number);
       if (o != Tape::npos) return o;
       if (first < tape_.size()) return first;

@@ -21,6 +21,7 @@ struct TapeBlock {
   std::uint64_t line_offset = 0;
   std::string_view text;     // without '/', the N word and comments
   std::string_view comment;  // the first ( ) comment's text
+  std::size_t length = 0;    // of the block in the file, its head and comments included
   long sequence = -1;        // N number, -1 when none
   bool deleted = false;      // '/' at the start
   long program = -1;         // O number when the block starts a program
@@ -35,8 +36,9 @@ struct TapeBlock {
 
 class Tape {
  public:
-  // Appends the blocks of one file; returns the index of its first block.
-  std::size_t add_file(std::uint32_t file, std::string_view text);
+  // Appends the blocks of one file, read from `from` on (past a byte-order
+  // mark); returns the index of its first block.
+  std::size_t add_file(std::uint32_t file, std::string_view text, std::size_t from = 0);
 
   // The block add_file is cutting (defined in fanuc_tape.cpp; public only so
   // the file's helpers can name it).
