@@ -161,6 +161,7 @@ bool Engine::run(std::uint32_t file) {
   while (!done_ && !failed_ && !interp_.failed() && !interp_.ended()) {
     step();
     if (stroke_violation()) break;
+    if (stroke_.stopped()) failed_ = true;  // the operation budget ran out
   }
   const bool ok = !failed_ && !interp_.failed();
   interp_.finish();

@@ -102,6 +102,8 @@ class StrokeCheck final : public canon::Sink {
 
   void finish() override { next_.finish(); }
 
+  bool stopped() const override { return next_.stopped(); }
+
   void arm(Box area) { area_ = area; }
 
   void disarm() { area_.reset(); }

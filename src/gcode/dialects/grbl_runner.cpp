@@ -185,7 +185,10 @@ class CheckingSink final : public canon::Sink {
   CheckingSink(const core::Vec3& start, const MachineFacts& facts) : pos_(start), facts_(facts) {}
 
   std::function<void(const canon::Op&)> forward;
+  const canon::Sink* downstream = nullptr;  // what `forward` sends to, for stopped()
   std::optional<core::Diagnostic> failure;
+
+  bool stopped() const override { return downstream != nullptr && downstream->stopped(); }
 
   void on(const canon::Op& op) override {
     if (forward) forward(op);
@@ -431,6 +434,7 @@ void Runner::stream_accepted(std::uint32_t file, std::uint32_t copy, const Machi
     if (mapped.src.file == copy) to_file(mapped.src, file);
     c_.sink.on(mapped);
   };
+  final_run.sink.downstream = &c_.sink;
   run_attempt(c_, params_, copy, final_run);
   c_.sink.finish();
 }

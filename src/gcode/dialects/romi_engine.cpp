@@ -135,8 +135,10 @@ bool Engine::run(std::uint32_t file) {
     auto h = handlers().find(c.handler);
     if (h != handlers().end()) (this->*(h->second))(c.code);
   }
-  while (!ended_ && !failed_ && cursor_.offset < sources_.get(file_)->text().size())
+  while (!ended_ && !failed_ && cursor_.offset < sources_.get(file_)->text().size()) {
     step();
+    if (sink_.stopped()) failed_ = true;  // the operation budget ran out
+  }
   if (!failed_ && blend_) {
     loc_ = blend_->loc;
     error(core::Code::BlendNeedsMove, 0,

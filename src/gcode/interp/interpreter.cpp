@@ -76,8 +76,11 @@ bool Interpreter::run(std::uint32_t file) {
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr) return false;
   cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
-  while (!ended_ && !failed_ && !at_eof_)
+  while (!ended_ && !failed_ && !at_eof_) {
     step();
+    // The sink's operation budget ran out (it reported why): end here.
+    if (sink_.stopped()) failed_ = true;
+  }
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);
   }
