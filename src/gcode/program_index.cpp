@@ -59,7 +59,7 @@ ProgramIndex ProgramIndex::build(core::SourceFile& file, std::uint32_t file_id) 
   const std::string_view text = file.text();
   NullDiagnostics quiet;
   Block block;
-  std::uint64_t offset = 0;
+  std::uint64_t offset = byte_order_mark_length(text);
   std::uint32_t line = 1;
   while (offset < text.size()) {
     const LineView lv = line_at(text, offset);

@@ -28,9 +28,18 @@ std::optional<core::Diagnostic> block_too_long(std::string_view block,
   return core::Diagnostic{core::Code::BlockTooLong, core::Severity::Error, at, std::move(message)};
 }
 
+namespace {
+
+constexpr std::string_view kBom = "\xEF\xBB\xBF";
+
+}  // namespace
+
+std::size_t byte_order_mark_length(std::string_view text) {
+  return text.starts_with(kBom) ? kBom.size() : 0;
+}
+
 std::size_t skip_byte_order_mark(std::string_view text, std::uint32_t file,
                                  core::DiagnosticSink& diags) {
-  constexpr std::string_view kBom = "\xEF\xBB\xBF";
   if (!text.starts_with(kBom)) return 0;
   diags.report({core::Code::ByteOrderMark,
                 core::Severity::Warning,

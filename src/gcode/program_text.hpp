@@ -32,5 +32,7 @@ std::optional<core::Diagnostic> block_too_long(std::string_view block,
 // warning says a control may refuse it). Returns the bytes to skip, 0 or 3.
 std::size_t skip_byte_order_mark(std::string_view text, std::uint32_t file,
                                  core::DiagnosticSink& diags);
+// The same without a word: where the text after a mark starts (0 or 3).
+std::size_t byte_order_mark_length(std::string_view text);
 
 }  // namespace usina::gcode

@@ -3,6 +3,10 @@
 // the four dialects' runners.
 #include "gcode/program_text.hpp"
 
+#include <stdlib.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -181,6 +185,54 @@ TEST(ByteOrderMark, OnlyAtTheStartOfTheText) {
   EXPECT_EQ(skip_byte_order_mark("\xEF\xBB\xBFG0", 1, diags), 3u);
   ASSERT_EQ(diags.all().size(), 1u);
   EXPECT_EQ(diags.all()[0].code, core::Code::ByteOrderMark);
+}
+
+// A called file with a mark: written to a scratch folder on the path.
+class SubFolder {
+ public:
+  SubFolder() {
+    char name[] = "/tmp/usina_bom_XXXXXX";
+    const char* made = ::mkdtemp(name);
+    EXPECT_NE(made, nullptr);
+    path_ = made != nullptr ? made : "/tmp";
+  }
+
+  ~SubFolder() { std::filesystem::remove_all(path_); }
+
+  SubFolder(const SubFolder&) = delete;
+  SubFolder& operator=(const SubFolder&) = delete;
+
+  void write(const std::string& name, const std::string& text) const {
+    std::ofstream(path_ + "/" + name, std::ios::binary) << text;
+  }
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+TEST(ByteOrderMark, ACalledFileWithAMarkRunsWithTheWarningInRs274ngcAndFanuc) {
+  const SubFolder dir;
+  dir.write("side.ngc", "\xEF\xBB\xBFo<side> sub\nG0 X2\no<side> endsub\n");
+  dir.write("whole.ngc", "\xEF\xBB\xBFG0 Y3\n");
+  dir.write("O1234.nc", "\xEF\xBB\xBF%\nO1234\nG0 Z4.\nM99\n%\n");
+  InterpOptions opts;
+  opts.subroutine_path = {dir.path()};
+  const auto r = run_in("rs274ngc", "o<side> call\no<whole> call\no<side> call\nM30\n", opts);
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 3u);
+  EXPECT_DOUBLE_EQ(r->ends()[0].x, 2.0);
+  EXPECT_DOUBLE_EQ(r->ends()[1].y, 3.0);
+  int marks = 0;
+  for (const core::Diagnostic& d : r->diags.all())
+    marks += d.code == core::Code::ByteOrderMark ? 1 : 0;
+  EXPECT_EQ(marks, 2);  // once a file, not once a call
+  const auto f = run_in("fanuc", "M98 P1234\nM30\n", opts);
+  EXPECT_TRUE(f->ok) << f->first_error_text();
+  EXPECT_TRUE(f->has(core::Code::ByteOrderMark));
+  ASSERT_EQ(f->ends().size(), 1u);
+  EXPECT_DOUBLE_EQ(f->ends()[0].z, 4.0);
 }
 
 }  // namespace
