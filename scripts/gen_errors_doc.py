@@ -35,7 +35,9 @@ EXPLAIN = {
         "Add `M2` or `M30` as the last block if the program is to run on LinuxCNC."),
     "W_BYTE_ORDER_MARK": (
         "The file starts with a UTF-8 byte-order mark (written by some Windows editors). "
-        "usina skips it; LinuxCNC rejects the file.",
+        "usina skips it in every dialect, with this warning (one rule: the program's meaning is "
+        "plain); LinuxCNC rejects such a file and a Fanuc control may alarm on the bytes, while "
+        "Grbl drops them.",
         "Save the file as plain ASCII or UTF-8 without a byte-order mark."),
     "W_TEXT_AFTER_END": (
         "There is text after the end of the program (`M2`, `M30` or the closing `%`); it is "
@@ -425,7 +427,9 @@ EXPLAIN = {
         "Something in a Grbl file that the firmware takes as a command outside the program: a "
         "real-time character (`?` `~` `!` Ctrl-X, even inside a comment) or a `$C`, `$SLP` "
         "line, which usina leaves out of the trace; or a `$RST=` line, which usina applies (a "
-        "soft reset: Grbl's power-on modes, and zero offsets or default settings).",
+        "soft reset: Grbl's power-on modes, and zero offsets or default settings); or a "
+        "control character (a NUL, ...) inside a line, which Grbl drops as it drops blanks, so "
+        "the characters around it join (`X1`, NUL, `20` reads `X120`), as usina reads it too.",
         "Take the character out of the comment, or the line out of the file, unless it is "
         "meant for the machine."),
     "W_INTEGER_COORDINATE": (
@@ -533,6 +537,23 @@ EXPLAIN = {
         "valid name.",
         "Correct the key's spelling (the message suggests one), or remove it; docs/stats.md "
         "lists the keys."),
+    # limits: blocks, operations
+    "E_BLOCK_TOO_LONG": (
+        "A block (a line, or in fanuc a part of a line up to `;`) is longer than 4096 "
+        "characters, comments included; the same limit in every dialect. Controls hold a few "
+        "hundred characters (LinuxCNC 256, Grbl 80 after blanks and comments are removed), so "
+        "no real program comes near it; a file whose lines end with CR alone (classic Mac OS) "
+        "reads as one long line, and the message says so. Also a block with more than 4096 "
+        "values and operators.",
+        "Split the block, or shorten its comment; convert CR line ends to LF."),
+    "E_TOO_MANY_OPERATIONS": (
+        "The run produced more canonical operations (moves, arcs, tool changes, comments, ...) "
+        "than its budget, 100,000,000 unless `--max-ops` says otherwise; the run stops at the "
+        "block that made the first one beyond, and what came before is written (a trace, a "
+        "drawing). Usually a loop that does not end; a real program of tens of millions of moves "
+        "stays within the default.",
+        "Check the loop's condition; for a program meant to be this long, give a larger "
+        "`--max-ops`."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

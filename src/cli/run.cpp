@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/run_guard.hpp"
 #include "cli/validators.hpp"
 #include "core/output_file.hpp"
 #include "core/source.hpp"
@@ -54,6 +55,11 @@ void add_run_options(CLI::App& app, RunOptions& o, RunInput input) {
   app.add_option("--max-total-iterations", o.max_total_iterations,
                  "loop iterations all loops together may run before it is an error")
       ->check(CLI::Range(1L, 1'000'000'000'000L))
+      ->capture_default_str();
+  app.add_option("--max-ops", o.max_ops,
+                 "operations (moves, arcs, tool changes, ...) one run may produce before it is "
+                 "stopped with an error")
+      ->check(CLI::Range(1LL, 1'000'000'000'000LL))
       ->capture_default_str();
   app.add_flag("--block-delete", o.block_delete,
                "skip the blocks that start with '/' (the switch on)");
@@ -188,8 +194,9 @@ int run_program(const RunOptions& o, canon::Sink& sink,
     if (!read) return 2;
     vars = std::move(*read);
   }
-  auto runner = dialect->make_runner(
-      gcode::RunContext{sources, std::move(opts), std::move(dialect_options), sink, diags});
+  RunGuard guard(sink, diags, static_cast<std::uint64_t>(o.max_ops));  // --max-ops, progress
+  auto runner = dialect->make_runner(gcode::RunContext{
+      sources, std::move(opts), std::move(dialect_options), guard.sink(), guard.diags()});
   for (const auto& v : vars)
     runner->set_parameter(v.number, v.value);
   if (!o.save_vars.empty() && !runner->persistent_variables()) {

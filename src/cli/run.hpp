@@ -28,6 +28,7 @@ struct RunOptions {
   double peck_clearance = 1.0;
   long max_iterations = 10'000'000;
   long max_total_iterations = 10'000'000;
+  long long max_ops = canon::OpBudget::kDefaultMaxOps;  // canon operations one run may produce
   bool block_delete = false;
   DiagnosticOptions diagnostics;
   bool ignore_cutter_comp = false;  // set by a verb (draw --view part), not a flag

@@ -114,4 +114,7 @@
   X(GenMaterialLeft, E_GEN_MATERIAL_LEFT)          \
   X(GenNoEffect, W_GEN_NO_EFFECT)                  \
   X(DeprecatedOption, W_DEPRECATED_OPTION)         \
-  X(UnknownProfileKey, W_UNKNOWN_PROFILE_KEY)
+  X(UnknownProfileKey, W_UNKNOWN_PROFILE_KEY)      \
+  /* limits: blocks, operations */                 \
+  X(BlockTooLong, E_BLOCK_TOO_LONG)                \
+  X(TooManyOperations, E_TOO_MANY_OPERATIONS)

@@ -1,8 +1,14 @@
 #include "draw/builder.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <type_traits>
+#include <unordered_set>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "core/arc.hpp"
 #include "draw/layer_style.hpp"
@@ -30,10 +36,99 @@ constexpr double kHoleMarker = 1.0;
 // Points closer than this are one point (a full circle's start and end).
 constexpr double kSamePoint = 1e-6;
 
+// What a segment, an arc or a circle is, at the SVG's resolution: its
+// layer, its kind and its numbers in units of 0.0001 mm (a line's ends in
+// order, an arc turned counter-clockwise).
+struct DrawnKey {
+  const Layer* layer = nullptr;
+  int kind = 0;
+  std::array<std::int64_t, 6> v{};
+
+  bool operator==(const DrawnKey&) const = default;
+};
+
+struct DrawnKeyHash {
+  std::size_t operator()(const DrawnKey& k) const {
+    std::size_t h = std::hash<const Layer*>{}(k.layer) ^ static_cast<std::size_t>(k.kind);
+    for (const std::int64_t x : k.v)
+      h = (h ^ static_cast<std::size_t>(x)) * 0x100000001b3ULL;
+    return h;
+  }
+};
+
+constexpr double kResolution = 1e-4;  // mm: svg_writer's four decimals
+
+// The grid point of `v`; none for a number too large to draw anyway.
+bool quantize(double v, std::int64_t& out) {
+  if (!std::isfinite(v) || std::fabs(v) > 1e12) return false;
+  out = std::llround(v / kResolution);
+  return true;
+}
+
+bool quantize(Vec2 p, std::int64_t& x, std::int64_t& y) {
+  return quantize(p.x, x) && quantize(p.y, y);
+}
+
+std::optional<DrawnKey> line_key(const Layer& layer, Vec2 a, Vec2 b) {
+  DrawnKey k{&layer, 0, {}};
+  if (!quantize(a, k.v[0], k.v[1]) || !quantize(b, k.v[2], k.v[3])) return std::nullopt;
+  if (std::pair(k.v[2], k.v[3]) < std::pair(k.v[0], k.v[1])) {
+    std::swap(k.v[0], k.v[2]);
+    std::swap(k.v[1], k.v[3]);
+  }
+  return k;
+}
+
+std::optional<DrawnKey> circle_key(const Layer& layer, const Circle& c) {
+  DrawnKey k{&layer, 1, {}};
+  if (!quantize(c.center, k.v[0], k.v[1]) || !quantize(c.radius, k.v[2])) return std::nullopt;
+  return k;
+}
+
+std::optional<DrawnKey> arc_key(const Layer& layer, const Arc& a) {
+  DrawnKey k{&layer, 2, {}};
+  // A clockwise arc from S to E is the counter-clockwise one from E to S.
+  const Vec2 from = a.ccw ? arc_start(a) : arc_end(a);
+  const Vec2 to = a.ccw ? arc_end(a) : arc_start(a);
+  if (!quantize(a.center, k.v[0], k.v[1]) || !quantize(from, k.v[2], k.v[3]) ||
+      !quantize(to, k.v[4], k.v[5]))
+    return std::nullopt;
+  return k;
+}
+
 }  // namespace
 
-DrawingBuilder::DrawingBuilder(Drawing& drawing, View view, core::Vec3 start)
-    : drawing_(drawing), view_(view), pos_(start) {
+// The last DrawLimits::retrace_window things drawn, first in first out: constant memory
+// whatever the program's length.
+class RetraceWindow {
+ public:
+  explicit RetraceWindow(std::size_t size) : ring_(size) { set_.reserve(size); }
+
+  // True when `key` is in the window; else it enters it.
+  bool seen(const std::optional<DrawnKey>& key) {
+    if (!key) return false;
+    if (set_.count(*key) > 0) return true;
+    if (set_.size() == ring_.size()) set_.erase(ring_[next_]);
+    ring_[next_] = *key;
+    next_ = (next_ + 1) % ring_.size();
+    set_.insert(*key);
+    return false;
+  }
+
+ private:
+  std::vector<DrawnKey> ring_;
+  std::size_t next_ = 0;
+  std::unordered_set<DrawnKey, DrawnKeyHash> set_;
+};
+
+DrawingBuilder::~DrawingBuilder() = default;
+
+DrawingBuilder::DrawingBuilder(Drawing& drawing, View view, core::Vec3 start, DrawLimits limits)
+    : drawing_(drawing),
+      view_(view),
+      pos_(start),
+      limits_(limits),
+      drawn_(std::make_unique<RetraceWindow>(std::max<std::size_t>(limits.retrace_window, 1))) {
   // The standard layers exist even when empty, so that every drawing of a
   // view has the same layer table.
   if (view_ == View::Part) {
@@ -45,6 +140,16 @@ DrawingBuilder::DrawingBuilder(Drawing& drawing, View view, core::Vec3 start)
 }
 
 void DrawingBuilder::on(const canon::Op& op) {
+  const bool draws = canon::is_motion(op.kind) || std::holds_alternative<canon::Hole>(op.kind) ||
+                     std::holds_alternative<canon::Pocket>(op.kind);
+  if (draws && !room(op)) {
+    std::visit(
+        [&](const auto& k) {
+          if constexpr (requires { k.to; }) pos_ = k.to;
+        },
+        op.kind);
+    return;
+  }
   std::visit(
       [&](const auto& k) {
         using T = std::decay_t<decltype(k)>;
@@ -68,6 +173,37 @@ void DrawingBuilder::on(const canon::Op& op) {
       op.kind);
 }
 
+bool DrawingBuilder::room(const canon::Op& op) {
+  if (drawing_.entity_count() < limits_.max_entities &&
+      polyline_points_ < limits_.max_polyline_points)
+    return true;
+  if (not_drawn_++ == 0) first_not_drawn_line_ = op.src.line;
+  return false;
+}
+
+std::optional<std::string> DrawingBuilder::limit_note() const {
+  if (not_drawn_ == 0) return std::nullopt;
+  return fmt::format(
+      "the drawing holds {} entities, more than a picture shows: the {} moves from line {} on "
+      "are not drawn (usina trace lists them)",
+      drawing_.entity_count(), not_drawn_, first_not_drawn_line_);
+}
+
+void DrawingBuilder::line(Layer& layer, Vec2 from, Vec2 to) {
+  if (drawn_->seen(line_key(layer, from, to))) return;
+  drawing_.add_line(layer, from, to);
+}
+
+void DrawingBuilder::circle(Layer& layer, const Circle& c) {
+  if (drawn_->seen(circle_key(layer, c))) return;
+  drawing_.add_circle(layer, c);
+}
+
+void DrawingBuilder::polyline(Layer& layer, std::vector<Vec2> points) {
+  polyline_points_ += points.size();
+  drawing_.add_polyline(layer, std::move(points));
+}
+
 Layer* DrawingBuilder::feed_layer(canon::Origin origin) {
   if (view_ == View::Part) {
     if (origin != canon::Origin::Program) return nullptr;
@@ -85,12 +221,12 @@ void DrawingBuilder::traverse(const Vec3& to, canon::Origin origin) {
   // are along the drill's axis, which the plan view does not show): the part
   // view keeps them, as the seed's drawing does; a tool-change excursion not.
   if (view_ == View::Toolpath || origin != canon::Origin::ToolChange)
-    drawing_.add_line(*rapid_, xy(pos_), xy(to));
+    line(*rapid_, xy(pos_), xy(to));
   pos_ = to;
 }
 
 void DrawingBuilder::feed(const Vec3& to, canon::Origin origin) {
-  if (Layer* layer = feed_layer(origin)) drawing_.add_line(*layer, xy(pos_), xy(to));
+  if (Layer* layer = feed_layer(origin)) line(*layer, xy(pos_), xy(to));
   pos_ = to;
 }
 
@@ -110,7 +246,7 @@ void DrawingBuilder::arc(const canon::Arc& a, canon::Origin origin) {
     std::vector<Vec2> points{xy(from)};
     for (const Vec3& p : core::linearize_arc(from, a.to, a.center, plane, sweep, kArcTolerance))
       points.push_back(xy(p));
-    drawing_.add_polyline(*layer, std::move(points));
+    polyline(*layer, std::move(points));
     return;
   }
   // A helix projects to its arc; one that turns more than once, or closes
@@ -120,10 +256,12 @@ void DrawingBuilder::arc(const canon::Arc& a, canon::Origin origin) {
   const Vec2 e = xy(a.to) - c;
   const double radius = core::norm(s);
   if (std::abs(a.turn) > 1 || core::distance(xy(from), xy(a.to)) < kSamePoint) {
-    drawing_.add_circle(*layer, {c, radius});
+    circle(*layer, {c, radius});
     return;
   }
-  drawing_.add_arc(*layer, {c, radius, std::atan2(s.y, s.x), std::atan2(e.y, e.x), ccw});
+  const Arc drawn{c, radius, std::atan2(s.y, s.x), std::atan2(e.y, e.x), ccw};
+  if (drawn_->seen(arc_key(*layer, drawn))) return;
+  drawing_.add_arc(*layer, drawn);
 }
 
 void DrawingBuilder::spline(const canon::Spline& s, canon::Origin origin) {
@@ -135,7 +273,7 @@ void DrawingBuilder::spline(const canon::Spline& s, canon::Origin origin) {
   points.reserve(s.points.size() + 1);
   for (const Vec3& p : s.points)
     points.push_back(xy(p));
-  drawing_.add_polyline(*layer, std::move(points));
+  polyline(*layer, std::move(points));
 }
 
 void DrawingBuilder::hole(const canon::Hole& h) {
@@ -143,12 +281,12 @@ void DrawingBuilder::hole(const canon::Hole& h) {
   Layer& layer = *holes_;
   const Vec2 c = xy(h.at);
   if (h.diameter > 0.0) {
-    drawing_.add_circle(layer, {c, h.diameter / 2.0});
+    circle(layer, {c, h.diameter / 2.0});
     return;
   }
   // No tool diameter known (no tool table, no D): a cross marks the centre.
-  drawing_.add_line(layer, c - Vec2{kHoleMarker, 0.0}, c + Vec2{kHoleMarker, 0.0});
-  drawing_.add_line(layer, c - Vec2{0.0, kHoleMarker}, c + Vec2{0.0, kHoleMarker});
+  line(layer, c - Vec2{kHoleMarker, 0.0}, c + Vec2{kHoleMarker, 0.0});
+  line(layer, c - Vec2{0.0, kHoleMarker}, c + Vec2{0.0, kHoleMarker});
 }
 
 void DrawingBuilder::pocket(const canon::Pocket& p) {

@@ -7,13 +7,16 @@
 #include <fmt/format.h>
 
 #include "gcode/lexer.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode {
 namespace {
 
 // Nested brackets beyond this are an error, not a stack overflow.
 constexpr int kMaxDepth = 64;
-constexpr std::size_t kMaxExprNodes = 4096;
+// A value or an operator takes at least one character: a block within the
+// length limit stays within this.
+constexpr std::size_t kMaxExprNodes = kMaxBlockLength;
 
 struct SyntaxError {
   core::Code code;
@@ -56,7 +59,7 @@ ExprRef Parser::node(ExprNode n) {
   // The evaluator recurses once per operator: a limit keeps a hostile line
   // from exhausting the stack (LinuxCNC's whole line is 255 characters).
   if (block_.exprs.size() >= kMaxExprNodes) {
-    fail(core::Code::ExpectedExpression, n.col > 0 ? n.col - 1 : 0,
+    fail(core::Code::BlockTooLong, n.col > 0 ? n.col - 1 : 0,
          fmt::format("a block with more than {} values and operators", kMaxExprNodes));
     return kNoExpr;
   }

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gcode/parser.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode {
 namespace {
@@ -58,13 +59,15 @@ ProgramIndex ProgramIndex::build(core::SourceFile& file, std::uint32_t file_id) 
   const std::string_view text = file.text();
   NullDiagnostics quiet;
   Block block;
-  std::uint64_t offset = 0;
+  std::uint64_t offset = byte_order_mark_length(text);
   std::uint32_t line = 1;
   while (offset < text.size()) {
     const LineView lv = line_at(text, offset);
-    // Cheap test first: most lines of a long program have no O-word.
-    if (std::memchr(lv.text.data(), 'o', lv.text.size()) != nullptr ||
-        std::memchr(lv.text.data(), 'O', lv.text.size()) != nullptr) {
+    // Cheap test first: most lines of a long program have no O-word. A line
+    // over the block limit is left to the interpreter to report.
+    if (lv.text.size() <= kMaxBlockLength &&
+        (std::memchr(lv.text.data(), 'o', lv.text.size()) != nullptr ||
+         std::memchr(lv.text.data(), 'O', lv.text.size()) != nullptr)) {
       if (starts_with_o(lv.text) && parse_block(lv.text, {file_id, line, offset}, block, quiet) &&
           block.o) {
         OEntry e;

@@ -2,10 +2,14 @@
 // jumps and calls (docs/fanuc.md §5, §6).
 #include "gcode/dialects/fanuc_engine.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iterator>
 
 #include <fmt/format.h>
+
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode::fanuc {
 namespace {
@@ -117,9 +121,12 @@ core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
     // The text is a copy without the block's comments: add back what each
     // comment before the position took.
     const std::size_t at = b.text_start + pos;
-    std::size_t extra = 0;
-    for (const auto& [gap, width] : b.gaps)
-      if (gap < at) extra += width;
+    // The gaps are in text order with their widths summed: the last one
+    // before the position holds the total (a search, not a walk, so a
+    // block of many comments stays linear).
+    const auto after = std::partition_point(b.gaps.begin(), b.gaps.end(),
+                                            [at](const auto& g) { return g.first < at; });
+    const std::size_t extra = after == b.gaps.begin() ? 0 : std::prev(after)->second;
     col = static_cast<std::uint32_t>(b.col + at + extra);
   }
   return {b.file, b.line, col, 1, b.line_offset};
@@ -143,7 +150,7 @@ bool Engine::run(std::uint32_t file) {
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr || !offsets_ok_) return false;
   main_file_ = file;
-  tape_.add_file(file, f->text());
+  tape_.add_file(file, f->text(), skip_byte_order_mark(f->text(), file, diags_));
   main_end_ = tape_.size() > 0 ? tape_.program_end(0) : 0;
   if (tape_.size() > 0) {
     // Fanuc's power-on return mode is G98 (LinuxCNC starts in G99).
@@ -154,6 +161,7 @@ bool Engine::run(std::uint32_t file) {
   while (!done_ && !failed_ && !interp_.failed() && !interp_.ended()) {
     step();
     if (stroke_violation()) break;
+    if (stroke_.stopped()) failed_ = true;  // the operation budget ran out
   }
   const bool ok = !failed_ && !interp_.failed();
   interp_.finish();
@@ -191,6 +199,14 @@ bool Engine::step() {
   if (pc_ >= end || pc_ >= tape_.size()) return end_of_program();
   const TapeBlock& b = tape_.at(pc_);
   ++pc_;
+  const std::string_view src = sources_.get(b.file)->text();
+  const std::size_t start = b.line_offset + b.col - 1;
+  if (auto too_long =
+          block_too_long(src.substr(start, b.length), {b.file, b.line, b.col, 1, b.line_offset})) {
+    diags_.report(std::move(*too_long));
+    failed_ = true;
+    return false;
+  }
   if (b.program >= 0) o_ = static_cast<double>(b.program);
   if (b.deleted && options_.block_delete) return true;
   if (parameter_mode_) return parameter_block(b);
@@ -399,7 +415,8 @@ std::size_t Engine::find_program(long number) {
       auto file = core::SourceFile::open(p.string(), why);
       if (!file) continue;
       const std::uint32_t id = sources_.add(std::move(file));
-      const std::size_t first = tape_.add_file(id, sources_.get(id)->text());
+      const std::string_view text = sources_.get(id)->text();
+      const std::size_t first = tape_.add_file(id, text, skip_byte_order_mark(text, id, diags_));
       const std::size_t o = tape_.program(number);
       if (o != Tape::npos) return o;
       if (first < tape_.size()) return first;

@@ -102,6 +102,8 @@ class StrokeCheck final : public canon::Sink {
 
   void finish() override { next_.finish(); }
 
+  bool stopped() const override { return next_.stopped(); }
+
   void arm(Box area) { area_ = area; }
 
   void disarm() { area_.reset(); }
@@ -203,7 +205,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool nc_block(const TapeBlock& b);
   bool read_words(const TapeBlock& b, Words& w);
   void decimal_point(const TapeBlock& b, Words& w);
-  double least_increment(char letter, const Words& w) const;
+  double least_increment(char letter, bool inch) const;
   bool macro_call(const TapeBlock& b, Words& w);
   bool fanuc_codes(const TapeBlock& b, Words& w);
   bool convert_codes(const TapeBlock& b, Words& w);

@@ -77,10 +77,8 @@ void Words::take(char letter) {
 // The least input increment of an address (IS-B), what ROUND rounds to in
 // it: 0.001 mm / 0.0001 in for distances, 0.001 deg for A B C, 1 mm/min
 // (0.01 in/min) for F, 1 for the integer addresses.
-double Engine::least_increment(char letter, const Words& w) const {
-  bool inch = interp_.state().units == core::LengthUnit::Inch;
-  if (w.has_g(200)) inch = true;
-  if (w.has_g(210)) inch = false;
+// `inch`: the block's units so far (a G20/G21 read before the word counts).
+double Engine::least_increment(char letter, bool inch) const {
   if (letter == 'A' || letter == 'B' || letter == 'C') return 0.001;
   if (is_distance(letter)) return inch ? 0.0001 : 0.001;
   if (letter == 'F') return inch ? 0.01 : 1.0;
@@ -89,6 +87,10 @@ double Engine::least_increment(char letter, const Words& w) const {
 
 bool Engine::read_words(const TapeBlock& b, Words& w) {
   MacroReader r(b.text, *this);
+  // The units the words read so far are in, kept as they come: asking the
+  // list for G20/G21 before each word made a block quadratic in its length.
+  bool inch = interp_.state().units == core::LengthUnit::Inch;
+  bool g20 = false, g21 = false;
   while (!r.at_end()) {
     const std::size_t at = r.pos();
     const char l = r.peek();
@@ -101,7 +103,7 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
                    fmt::format("'{}' where a word's letter was expected", b.text[at]));
     }
     r.set_pos(at + 1);
-    r.set_round_step(least_increment(l, w));
+    r.set_round_step(least_increment(l, !g21 && (g20 || inch)));
     auto v = r.expression();
     if (!v) return macro_error(r, b);
     NcWord word;
@@ -111,6 +113,10 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     word.vacant = v->vacant && r.single_variable();
     word.pos = at;
     w.list.push_back(word);
+    if (l == 'G') {
+      g20 = g20 || tenths(word.value) == 200;
+      g21 = g21 || tenths(word.value) == 210;
+    }
   }
   return true;
 }

@@ -23,10 +23,9 @@ long digits(std::string_view s, std::size_t& i) {
   return v;
 }
 
-// The offset of the first line that starts with '%' (blanks before it
-// allowed), or npos.
-std::size_t first_percent_line(std::string_view text) {
-  std::size_t start = 0;
+// The offset of the first line from `start` on that starts with '%'
+// (blanks before it allowed), or npos.
+std::size_t first_percent_line(std::string_view text, std::size_t start) {
   while (start < text.size()) {
     std::size_t k = start;
     while (k < text.size() && blank(text[k]))
@@ -64,10 +63,11 @@ namespace {
 // Where a file's tape starts. The tape runs from the line after the first
 // '%' line to the next '%' (a leader before it is skipped); without a tape
 // after a '%' line, the file is read whole.
-Tape::PendingBlock tape_start(std::string_view text, std::size_t& i) {
+Tape::PendingBlock tape_start(std::string_view text, std::size_t from, std::size_t& i) {
   Tape::PendingBlock p;
-  i = 0;
-  const std::size_t mark = first_percent_line(text);
+  i = from;
+  p.line_start = from;
+  const std::size_t mark = first_percent_line(text, from);
   if (mark != std::string_view::npos) {
     const std::size_t after = std::min(text.find('\n', mark), text.size());
     if (text.find_first_not_of(" \t\r\n%", after) != std::string_view::npos) {
@@ -102,8 +102,10 @@ std::size_t take_comment(std::string_view text, std::size_t open, Tape::PendingB
   p.has_comment = true;
   const std::size_t last =
       (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
+  // Widths are kept summed, so a column is found by a binary search.
+  const std::uint32_t before = p.gaps.empty() ? 0 : p.gaps.back().second;
   p.gaps.emplace_back(static_cast<std::uint32_t>(p.cleaned.size()),
-                      static_cast<std::uint32_t>(last - open));
+                      before + static_cast<std::uint32_t>(last - open));
   p.cleaned += ' ';
   return last;
 }
@@ -142,10 +144,10 @@ std::size_t read_block_head(std::string_view raw, TapeBlock& b) {
 
 }  // namespace
 
-std::size_t Tape::add_file(std::uint32_t file, std::string_view text) {
+std::size_t Tape::add_file(std::uint32_t file, std::string_view text, std::size_t from) {
   const std::size_t first = blocks_.size();
   std::size_t i = 0;
-  PendingBlock p = tape_start(text, i);
+  PendingBlock p = tape_start(text, std::min(from, text.size()), i);
   bool closed = false;
   for (; i < text.size(); ++i) {
     const char c = text[i];
@@ -183,6 +185,7 @@ void Tape::end_block(std::uint32_t file, std::string_view text, std::size_t stop
   b.line_offset = p.line_start;
   b.col = static_cast<std::uint32_t>(p.start - p.line_start + 1);
   b.comment = p.comment;
+  b.length = stop - p.start;
   const std::size_t k = read_block_head(raw, b);
   if (b.program >= 0) programs_.emplace(b.program, blocks_.size());
   std::string_view rest = raw.substr(k);

@@ -21,21 +21,24 @@ struct TapeBlock {
   std::uint64_t line_offset = 0;
   std::string_view text;     // without '/', the N word and comments
   std::string_view comment;  // the first ( ) comment's text
+  std::size_t length = 0;    // of the block in the file, its head and comments included
   long sequence = -1;        // N number, -1 when none
   bool deleted = false;      // '/' at the start
   long program = -1;         // O number when the block starts a program
   // A block with a comment has its text copied without it: where `text`
   // started in the block (from `col`), and each comment's place in that
   // copy with the characters it took beyond its one blank, so a position
-  // in `text` finds its column again.
+  // in `text` finds its column again (the widths summed up to each
+  // comment, in the order of the text).
   std::uint32_t text_start = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
 };
 
 class Tape {
  public:
-  // Appends the blocks of one file; returns the index of its first block.
-  std::size_t add_file(std::uint32_t file, std::string_view text);
+  // Appends the blocks of one file, read from `from` on (past a byte-order
+  // mark); returns the index of its first block.
+  std::size_t add_file(std::uint32_t file, std::string_view text, std::size_t from = 0);
 
   // The block add_file is cutting (defined in fanuc_tape.cpp; public only so
   // the file's helpers can name it).

@@ -44,9 +44,21 @@ struct StrippedLine {
   std::vector<std::uint32_t> cols;  // 1-based column of each character of text
   std::string blanked;              // the line with what Grbl drops turned to spaces
   std::uint32_t realtime_col = 0;   // first real-time character (? ~ ! ^X), 0 if none
+  std::uint32_t control_col = 0;    // first control character outside comments (NUL...), 0 if none
+  unsigned char control = 0;        // that character
 };
 
 StrippedLine strip_line(std::string_view line);
+
+// Where a program's lines start: Grbl ends a line at LF or CR
+// (protocol_main_loop), so CR LF, LF and CR alone each end one; the
+// offsets of the lines' first bytes, and of each line's end.
+struct LineSpan {
+  std::uint64_t offset = 0;
+  std::size_t length = 0;
+};
+
+std::vector<LineSpan> split_lines(std::string_view text);
 
 // Grbl's LINE_BUFFER_SIZE is 80 with the terminator.
 inline constexpr std::size_t kMaxLineLength = 79;

@@ -1,5 +1,6 @@
 // Grbl's line reader ([proto] of docs/grbl.md): what reaches the parser of a
 // line streamed to the firmware, and the words it is read into.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -35,7 +36,13 @@ StrippedLine strip_line(std::string_view line) {
       if (c == ')') in_parens = false;
       continue;
     }
-    if (c <= ' ' || c == '/') continue;  // blanks, control characters; no block delete
+    // Blanks and control characters are dropped (a NUL too: X1<NUL>20 is
+    // X120 to Grbl); no block delete.
+    if (c < ' ' && c != '\t' && out.control_col == 0) {
+      out.control_col = col;
+      out.control = c;
+    }
+    if (c <= ' ' || c == '/') continue;
     if (c == '(') {
       in_parens = true;
       continue;
@@ -49,6 +56,17 @@ StrippedLine strip_line(std::string_view line) {
     out.text.push_back(up);
     out.cols.push_back(col);
     out.blanked[i] = up;
+  }
+  return out;
+}
+
+std::vector<LineSpan> split_lines(std::string_view text) {
+  std::vector<LineSpan> out;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
+    out.push_back({at, end - at});
+    at = end + 1;
+    if (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ++at;
   }
   return out;
 }

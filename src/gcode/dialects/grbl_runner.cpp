@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "core/arc.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode::grbl {
 namespace {
@@ -40,6 +41,13 @@ class Preparer {
 
   void line(std::uint32_t n, std::uint64_t offset, std::string_view text, bool refused) {
     loc_ = {file_, n, 1, 0, offset};
+    if (!ended_ && !refused) {
+      if (auto too_long = block_too_long(text, loc_)) {
+        out.diags.push_back(std::move(*too_long));
+        failed_ = true;
+        return blank();
+      }
+    }
     const StrippedLine s = strip_line(text);
     if (ended_) {
       if (!s.text.empty() && s.text != "%" && !warned_after_end_) {
@@ -49,6 +57,13 @@ class Preparer {
         warned_after_end_ = true;
       }
       return blank();
+    }
+    if (s.control_col > 0) {
+      warn(core::Code::GrblWarning, s.control_col,
+           fmt::format("control character 0x{:02x}: Grbl drops it as it drops blanks, so the "
+                       "characters around it join (X1, NUL, 20 reads X120); usina reads the line "
+                       "as Grbl does: check the file for damage",
+                       s.control));
     }
     if (s.realtime_col > 0) {
       warn(core::Code::GrblWarning, s.realtime_col,
@@ -170,7 +185,10 @@ class CheckingSink final : public canon::Sink {
   CheckingSink(const core::Vec3& start, const MachineFacts& facts) : pos_(start), facts_(facts) {}
 
   std::function<void(const canon::Op&)> forward;
+  const canon::Sink* downstream = nullptr;  // what `forward` sends to, for stopped()
   std::optional<core::Diagnostic> failure;
+
+  bool stopped() const override { return downstream != nullptr && downstream->stopped(); }
 
   void on(const canon::Op& op) override {
     if (forward) forward(op);
@@ -346,6 +364,9 @@ bool Runner::run(std::uint32_t file) {
   const core::SourceFile* source = c_.sources.get(file);
   if (source == nullptr) return false;
   split_lines(source->text());
+  // Grbl's serial reader throws the mark's bytes away (above 0x7F);
+  // strip_line does the same.
+  skip_byte_order_mark(source->text(), file, c_.diags);
   std::set<std::uint32_t> refused;
   std::vector<core::Diagnostic> found;  // the interpreter's errors, one a rerun
   std::uint32_t cut_from = std::numeric_limits<std::uint32_t>::max();
@@ -370,11 +391,8 @@ bool Runner::run(std::uint32_t file) {
 
 void Runner::split_lines(std::string_view text) {
   lines_.clear();
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    lines_.push_back({at, text.substr(at, end - at)});
-    at = end + 1;
-  }
+  for (const LineSpan& l : grbl::split_lines(text))
+    lines_.push_back({l.offset, text.substr(l.offset, l.length)});
 }
 
 // Where each op and diagnostic of the copy points: the same line of `file`.
@@ -416,6 +434,7 @@ void Runner::stream_accepted(std::uint32_t file, std::uint32_t copy, const Machi
     if (mapped.src.file == copy) to_file(mapped.src, file);
     c_.sink.on(mapped);
   };
+  final_run.sink.downstream = &c_.sink;
   run_attempt(c_, params_, copy, final_run);
   c_.sink.finish();
 }

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "gcode/program_text.hpp"
+
 namespace usina::gcode::romi {
 namespace {
 
@@ -128,17 +130,15 @@ bool Engine::run(std::uint32_t file) {
   if (f == nullptr) return false;
   loc_ = {file, 1, 1, 0, 0};
   machine_.set_source(loc_);
-  if (f->text().substr(0, 3) == "\xEF\xBB\xBF") {
-    note(core::Code::ByteOrderMark, core::Severity::Warning, 1,
-         "UTF-8 byte-order mark at the start of the file ignored");
-    cursor_.offset = 3;
-  }
+  cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
   for (const CodeEntry& c : dialect_.start_codes) {
     auto h = handlers().find(c.handler);
     if (h != handlers().end()) (this->*(h->second))(c.code);
   }
-  while (!ended_ && !failed_ && cursor_.offset < sources_.get(file_)->text().size())
+  while (!ended_ && !failed_ && cursor_.offset < sources_.get(file_)->text().size()) {
     step();
+    if (sink_.stopped()) failed_ = true;  // the operation budget ran out
+  }
   if (!failed_ && blend_) {
     loc_ = blend_->loc;
     error(core::Code::BlendNeedsMove, 0,
@@ -165,6 +165,11 @@ void Engine::step() {
   if (bt.ends_line) {
     ++cursor_.line;
     cursor_.line_start = bt.next;
+  }
+  if (auto too_long = block_too_long(bt.text, {file_, where.line, col, 1, where.offset})) {
+    diags_.report(std::move(*too_long));
+    failed_ = true;
+    return;
   }
   if (!parse_romi_block(bt.text, where, col, block_, diags_)) {
     failed_ = true;

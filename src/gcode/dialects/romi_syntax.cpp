@@ -7,11 +7,13 @@
 
 #include <fmt/format.h>
 
+#include "gcode/program_text.hpp"
+
 namespace usina::gcode::romi {
 namespace {
 
 constexpr int kMaxDepth = 64;
-constexpr std::size_t kMaxNodes = 4096;
+constexpr std::size_t kMaxNodes = kMaxBlockLength;  // one a character at most
 
 bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
@@ -125,7 +127,8 @@ class Parser {
 
 ExprRef Parser::node(ExprNode n) {
   if (b_.base.exprs.size() >= kMaxNodes) {
-    fail(core::Code::ExpectedExpression, i_, "a block with too many values and operators");
+    fail(core::Code::BlockTooLong, i_,
+         fmt::format("a block with more than {} values and operators", kMaxNodes));
     return kNoExpr;
   }
   b_.base.exprs.push_back(n);

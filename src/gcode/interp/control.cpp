@@ -6,6 +6,7 @@
 
 #include "gcode/interp/block_words.hpp"
 #include "gcode/interp/interpreter.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode {
 
@@ -271,6 +272,7 @@ std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name)
     if (!file) continue;
     const std::uint32_t id = sources_.add(std::move(file));
     sub_files_.emplace(name, id);
+    skip_byte_order_mark(sources_.get(id)->text(), id, diags_);  // warned once a file
     return id;
   }
   return std::nullopt;
@@ -333,7 +335,7 @@ Interpreter::Flow Interpreter::call(const OWord& o) {
                 i <= static_cast<int>(args.size()) ? args[static_cast<std::size_t>(i - 1)] : 0.0);
   }
   if (whole_file) {
-    cursor_ = {file, 0, 1};
+    cursor_ = {file, byte_order_mark_length(sources_.get(file)->text()), 1};
   } else {
     jump_to(file, index_of(file).at(entry), true);
   }

@@ -6,6 +6,7 @@
 
 #include "gcode/interp/block_words.hpp"
 #include "gcode/parser.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode {
 
@@ -74,14 +75,12 @@ bool Interpreter::run(std::uint32_t file) {
   }
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr) return false;
-  // UTF-8 byte-order mark: LinuxCNC rejects it; editors on Windows write it.
-  if (f->text().substr(0, 3) == "\xEF\xBB\xBF") {
-    loc_ = {file, 1, 1, 3, 0};
-    warn(core::Code::ByteOrderMark, 1, "UTF-8 byte-order mark at the start of the file ignored");
-    cursor_.offset = 3;
-  }
-  while (!ended_ && !failed_ && !at_eof_)
+  cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
+  while (!ended_ && !failed_ && !at_eof_) {
     step();
+    // The sink's operation budget ran out (it reported why): end here.
+    if (sink_.stopped()) failed_ = true;
+  }
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);
   }
@@ -102,6 +101,11 @@ Interpreter::Flow Interpreter::step() {
   const LinePos where{cursor_.file, cursor_.line, cursor_.offset};
   cursor_.offset = lv.next;
   ++cursor_.line;
+  if (auto too_long = block_too_long(lv.text, {where.file, where.line, 1, 0, where.offset})) {
+    diags_.report(std::move(*too_long));
+    failed_ = true;
+    return Flow::Error;
+  }
   if (!parse_block(lv.text, where, block_, diags_)) {
     failed_ = true;
     return Flow::Error;

@@ -1,0 +1,143 @@
+// The sinks that wrap sinks (canon/sink.hpp): the operation budget of a
+// run, and the progress a long run shows.
+#include "canon/sink.hpp"
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "canon/toolpath.hpp"
+
+namespace usina::canon {
+namespace {
+
+Op move(double x, std::uint32_t line) {
+  return Op{Traverse{{x, 0, 0}}, {1, line, 1, 0, 0}, Origin::Program};
+}
+
+class Finishes final : public Sink {
+ public:
+  void on(const Op&) override { ++ops; }
+
+  void finish() override { finished = true; }
+
+  int ops = 0;
+  bool finished = false;
+};
+
+TEST(OpBudget, PassesTheBudgetThenReportsOnceAndStops) {
+  Finishes out;
+  core::DiagnosticList diags;
+  OpBudget budget(out, 3, diags);
+  for (std::uint32_t i = 1; i <= 10; ++i) {
+    EXPECT_EQ(budget.stopped(), i > 4) << i;
+    budget.on(move(i, i));
+  }
+  budget.finish();
+  EXPECT_EQ(out.ops, 3);
+  EXPECT_TRUE(out.finished);
+  EXPECT_TRUE(budget.stopped());
+  EXPECT_EQ(budget.passed(), 3u);
+  ASSERT_EQ(diags.all().size(), 1u);
+  const core::Diagnostic& d = diags.all()[0];
+  EXPECT_EQ(d.code, core::Code::TooManyOperations);
+  EXPECT_EQ(d.severity, core::Severity::Error);
+  EXPECT_EQ(d.loc.line, 4u);  // the block of the first op beyond
+  EXPECT_NE(d.message.find("3 operations"), std::string::npos) << d.message;
+  EXPECT_NE(d.message.find("--max-ops"), std::string::npos) << d.message;
+}
+
+TEST(OpBudget, ARunWithinItReportsNothing) {
+  Toolpath out;
+  core::DiagnosticList diags;
+  OpBudget budget(out, 2, diags);
+  budget.on(move(1, 1));
+  budget.on(move(2, 2));
+  EXPECT_FALSE(budget.stopped());
+  EXPECT_TRUE(diags.all().empty());
+  EXPECT_EQ(out.ops().size(), 2u);
+}
+
+TEST(OpBudget, WrappingSinksAnswerForTheOneInside) {
+  NullSink null;
+  core::DiagnosticList diags;
+  OpBudget budget(null, 0, diags);
+  Toolpath other;
+  TeeSink tee({&other, &budget});
+  EXPECT_FALSE(tee.stopped());
+  tee.on(move(1, 1));
+  EXPECT_TRUE(tee.stopped());
+  ProgressSink progress(
+      budget, [](std::string_view) {}, 0);
+  EXPECT_TRUE(progress.stopped());
+}
+
+// A clock the test moves by hand.
+struct FakeClock {
+  double now = 100.0;
+};
+
+TEST(ProgressSink, SilentForTheDelayThenAtMostOnceAPeriodThenErased) {
+  Toolpath out;
+  FakeClock clock;
+  std::vector<std::string> shown;
+  ProgressSink progress(
+      out, [&](std::string_view s) { shown.emplace_back(s); }, 1000, ProgressTiming{1.0, 0.5, 1},
+      [&] { return clock.now; });
+  progress.on(move(1, 7));  // 0 s: too soon
+  EXPECT_TRUE(shown.empty());
+  EXPECT_FALSE(progress.showing());
+  clock.now += 1.2;
+  progress.on(move(2, 8));
+  ASSERT_EQ(shown.size(), 1u);
+  EXPECT_EQ(shown[0], "usina: 2 operations of at most 1,000 (--max-ops), line 8, 1 s");
+  EXPECT_TRUE(progress.showing());
+  clock.now += 0.1;  // within the period
+  progress.on(move(3, 9));
+  EXPECT_EQ(shown.size(), 1u);
+  clock.now += 0.5;
+  progress.on(move(4, 9));
+  EXPECT_EQ(shown.size(), 2u);
+  progress.finish();
+  ASSERT_EQ(shown.size(), 3u);
+  EXPECT_EQ(shown[2], "");  // erased at the end
+  EXPECT_FALSE(progress.showing());
+  EXPECT_EQ(out.ops().size(), 4u);  // every op passed on
+}
+
+TEST(ProgressSink, ReadsTheClockOnlyEveryFewOps) {
+  Toolpath out;
+  int reads = 0;
+  ProgressSink progress(
+      out, [](std::string_view) {}, 10, ProgressTiming{0.0, 0.0, 100},
+      [&] {
+        ++reads;
+        return 0.0;
+      });
+  const int at_start = reads;
+  for (std::uint32_t i = 0; i < 1000; ++i)
+    progress.on(move(i, 1));
+  EXPECT_EQ(reads - at_start, 10);
+}
+
+TEST(ProgressSink, NothingToEraseWhenNothingWasShown) {
+  Toolpath out;
+  int calls = 0;
+  ProgressSink progress(
+      out, [&](std::string_view) { ++calls; }, 10);
+  progress.on(move(1, 1));
+  progress.erase();
+  progress.finish();
+  EXPECT_EQ(calls, 0);
+}
+
+TEST(ProgressLine, GroupsThousandsAndLeavesOutAnUnknownLine) {
+  EXPECT_EQ(progress_line(12'345'678, 100'000'000, 4, 12.7),
+            "usina: 12,345,678 operations of at most 100,000,000 (--max-ops), line 4, 12 s");
+  EXPECT_EQ(progress_line(999, 1000, 0, 0.2),
+            "usina: 999 operations of at most 1,000 (--max-ops), 0 s");
+}
+
+}  // namespace
+}  // namespace usina::canon

@@ -1,0 +1,75 @@
+// What Grbl 1.1's line reader (protocol_main_loop) does with the bytes of a
+// line that are not G-code: a control character such as NUL is dropped like
+// a blank (reported), CR ends a line as LF does.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "gcode/dialects/grbl.hpp"
+#include "grbl_test_support.hpp"
+
+namespace usina::gcode {
+namespace {
+
+using testing::run_grbl;
+
+TEST(GrblText, NulInsideALineIsDroppedAsGrblDoesAndReported) {
+  const auto r =
+      run_grbl(std::string("G0 X1\0"
+                           "20\nM30\n",
+                           13));
+  EXPECT_TRUE(r->ok);
+  const auto moves = r->moves();
+  ASSERT_EQ(moves.size(), 1u);
+  EXPECT_DOUBLE_EQ(moves[0].second.x, 120.0);
+  const auto warnings = r->with(core::Code::GrblWarning);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0]->severity, core::Severity::Warning);
+  EXPECT_EQ(warnings[0]->loc.line, 1u);
+  EXPECT_EQ(warnings[0]->loc.col, 6u);
+  EXPECT_NE(warnings[0]->message.find("0x00"), std::string::npos) << warnings[0]->message;
+}
+
+TEST(GrblText, ControlCharacterInACommentOrTabIsNotReported) {
+  const auto r = run_grbl(std::string("G0\tX1 (a\0b)\nM30\n", 16));
+  EXPECT_TRUE(r->ok);
+  EXPECT_FALSE(r->has(core::Code::GrblWarning));
+  EXPECT_EQ(grbl::strip_line(std::string("X1\x01"
+                                         "2",
+                                         4))
+                .control_col,
+            3u);
+  EXPECT_EQ(grbl::strip_line("X1\t2").control_col, 0u);
+}
+
+TEST(GrblText, CrAloneEndsALine) {
+  const auto r = run_grbl("G0 X1\rG0 X2\rG5 X3\rM30\r");
+  const auto moves = r->moves();
+  ASSERT_EQ(moves.size(), 2u);
+  EXPECT_DOUBLE_EQ(moves[1].second.x, 2.0);
+  // G5 is refused on its own line, the third.
+  ASSERT_EQ(r->errors().size(), 1u);
+  EXPECT_EQ(r->errors()[0].first, 3u);
+}
+
+TEST(GrblText, CrLfIsOneLineEnd) {
+  const auto r = run_grbl("G0 X1\r\nG5 X2\r\nM30\r\n");
+  ASSERT_EQ(r->errors().size(), 1u);
+  EXPECT_EQ(r->errors()[0].first, 2u);
+}
+
+TEST(GrblText, SplitLinesAtLfCrAndCrLf) {
+  const auto lines = grbl::split_lines("a\rbb\r\nc\n\nd");
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0].offset, 0u);
+  EXPECT_EQ(lines[0].length, 1u);
+  EXPECT_EQ(lines[1].offset, 2u);
+  EXPECT_EQ(lines[1].length, 2u);
+  EXPECT_EQ(lines[2].offset, 6u);
+  EXPECT_EQ(lines[3].length, 0u);
+  EXPECT_EQ(lines[4].offset, 9u);
+  EXPECT_EQ(lines[4].length, 1u);
+}
+
+}  // namespace
+}  // namespace usina::gcode
