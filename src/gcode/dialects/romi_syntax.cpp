@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "gcode/number_form.hpp"
+
 namespace usina::gcode::romi {
 namespace {
 
@@ -170,6 +172,10 @@ std::optional<double> Parser::number() {
   }
   if (!digits) {
     i_ = start;
+    return std::nullopt;
+  }
+  if (auto why = exponent_out_of_range(s_.substr(0, end_), start, i_)) {
+    fail(core::Code::NumberOutOfRange, start, *why);
     return std::nullopt;
   }
   double v = 0.0;

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "canon/limits.hpp"
 #include "core/units.hpp"
 
 namespace usina::gcode {
@@ -44,6 +47,17 @@ canon::ProgrammedFeed CanonMachine::programmed_feed() const {
 }
 
 void CanonMachine::emit(canon::OpKind kind) {
+  if (faulted_) return;
+  if (auto why = canon::out_of_range(kind)) {
+    faulted_ = true;
+    core::SourceLoc loc = src_;
+    loc.length = 0;
+    diags_.report({core::Code::ValueOutOfRange, core::Severity::Error, loc,
+                   fmt::format("{} (usina's ranges: docs/rs274ngc.md, Numbers); check the "
+                               "values, increments, offsets and scale factors that lead here",
+                               *why)});
+    return;
+  }
   sink_.on(canon::Op{std::move(kind), src_, origin_});
 }
 
