@@ -98,7 +98,7 @@ double Engine::offset_register(bool h, long n, const TapeBlock& b) {
   auto it = table.find(n);
   if (it == table.end()) {
     if (warned_registers_.insert((h ? 1 : -1) * n).second) {
-      warn(core::Code::UnknownTool, b, 0,
+      warn(core::Code::UnknownRegister, b, 0,
            fmt::format("offset register {}{} is not in the offset file (--offsets): taken as 0",
                        h ? 'H' : 'D', n));
     }
