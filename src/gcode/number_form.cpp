@@ -24,6 +24,9 @@ std::optional<std::string> exponent_out_of_range(std::string_view text, std::siz
   while (k < text.size() && is_digit(text[k]))
     ++k;
   if (k == digits) return std::nullopt;
+  while (start < end &&
+         (text[start] == '+' || text[start] == '-' || text[start] == ' ' || text[start] == '\t'))
+    ++start;
   // The literal without the blanks RS274NGC allows inside numbers.
   std::string literal;
   bool nonzero = false;
@@ -34,8 +37,9 @@ std::optional<std::string> exponent_out_of_range(std::string_view text, std::siz
   }
   double v = 0.0;
   const auto r = std::from_chars(literal.data(), literal.data() + literal.size(), v);
-  const bool out =
-      r.ec == std::errc::result_out_of_range || !std::isfinite(v) || (v == 0.0 && nonzero);
+  const bool read = r.ec == std::errc() && r.ptr == literal.data() + literal.size();
+  const bool out = r.ec == std::errc::result_out_of_range ||
+                   (read && (!std::isfinite(v) || (v == 0.0 && nonzero)));
   if (!out) return std::nullopt;
   const auto shown = [](std::string_view s) {
     return s.size() <= 40 ? std::string(s) : fmt::format("{}...", s.substr(0, 37));
