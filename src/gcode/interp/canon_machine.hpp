@@ -3,9 +3,12 @@
 // (the order LinuxCNC's canon layer applies them), each attributed to a block.
 // It is the canon boundary of every G-code dialect: an op with a number out
 // of canon's range (canon/limits.hpp) is not sent but reported
-// (E_VALUE_OUT_OF_RANGE at its block), and the machine sends nothing more:
+// (E_VALUE_OUT_OF_RANGE at its block), as is an arc too flat to tell from a
+// full circle, and the machine sends nothing more:
 // its owner ends the run at the error, as a control stops at an alarm.
 #pragma once
+
+#include <string>
 
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
@@ -70,6 +73,8 @@ class CanonMachine final : public MotionTarget {
   Vec3 to_program(const Vec3& abs) const;
 
  private:
+  // Reports why an op cannot be sent; nothing is sent from then on.
+  void refuse(const std::string& why);
   std::optional<double> feed_rate() const;
   canon::ProgrammedFeed programmed_feed() const;
 
