@@ -219,16 +219,20 @@ bool Interpreter::tool_length(BlockWords& w) {
       for (int a = 0; a < 3; ++a)
         next[static_cast<std::size_t>(a)] += t->offset[a];
     }
-    const std::uint32_t col = w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength];
-    for (int a = 0; a < 3; ++a) {
-      if (!offset_in_range("the tool length offset", kAxisLetters[a],
-                           next[static_cast<std::size_t>(a)], col))
-        return false;
-    }
   } else if (g == 431) {
     for (int a = 0; a < 3; ++a) {
       if (w.has(kAxisLetters[a])) next[static_cast<std::size_t>(a)] = mm(w.get(kAxisLetters[a]));
     }
+  }
+  for (int a = 0; a < 3; ++a) {
+    const char letter = kAxisLetters[a];
+    const std::uint32_t col = g == 431 && w.has(letter) ? w.col_of(letter)
+                              : w.has('H')              ? w.col_of('H')
+                                                        : w.gcol[kGroupToolLength];
+    if (!offset_in_range("the tool length offset", letter, next[static_cast<std::size_t>(a)], col))
+      return false;
+  }
+  if (g == 431) {
     w.clear_letter('X');
     w.clear_letter('Y');
     w.clear_letter('Z');
