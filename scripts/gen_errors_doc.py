@@ -132,8 +132,8 @@ EXPLAIN = {
         "`o<name> call` names a subroutine that is neither defined in the program (`o<name> "
         "sub`) nor found as `<name>.ngc` on the subroutine path; or `M98 P` names a program "
         "number with no `O` block in the file.",
-        "Define the subroutine, or give its folder with `--subroutine-path DIR:DIR`; a "
-        "subroutine name is only a file name: no `/`, no leading `.`."),
+        "Define the subroutine, or give its folder with `--subroutine-path DIR:DIR`. A name "
+        "that cannot be a file name at all is `E_BAD_SUBROUTINE_NAME`."),
     "E_UNCLOSED_CONTROL_BLOCK": (
         "A control block is not closed: `sub` without `endsub`, `if` without `endif`, "
         "`while` without `endwhile`, `repeat` without `endrepeat`, `do` without its "
