@@ -118,13 +118,15 @@ EXPLAIN = {
         "subroutine is not visible in another: use a global `#<_name>`."),
     "E_NUMBER_OUT_OF_RANGE": (
         "A value is infinite or not a number (overflow in an expression, `EXP` of a large "
-        "value, a number too long to represent).",
+        "value, a number too long to represent), or a number is written with an exponent "
+        "beyond what a double holds (`1e400`, `1e-400`; no dialect has exponents, so `1e3` "
+        "reads as 1 and a word `E3`).",
         "Check the arithmetic that produced it; the message gives the value."),
     "E_BAD_VAR_FILE": (
         "A line of the parameter file given with `--var-file` cannot be used: the number is "
         "not an integer or out of range, the value is not a finite number, a parameter "
-        "appears twice, or the numbers do not ascend as LinuxCNC requires. Some defects are "
-        "warnings only.",
+        "appears twice, or the numbers do not ascend as LinuxCNC requires. Lines LinuxCNC "
+        "skips are warnings of their own (`W_VAR_FILE_LINE_SKIPPED`, `W_VAR_FILE_EXTRA_TEXT`).",
         "Correct the line shown; each line is `<number> <value>`, in ascending order of "
         "number."),
     # control flow
@@ -132,8 +134,8 @@ EXPLAIN = {
         "`o<name> call` names a subroutine that is neither defined in the program (`o<name> "
         "sub`) nor found as `<name>.ngc` on the subroutine path; or `M98 P` names a program "
         "number with no `O` block in the file.",
-        "Define the subroutine, or give its folder with `--subroutine-path DIR:DIR`; a "
-        "subroutine name is only a file name: no `/`, no leading `.`."),
+        "Define the subroutine, or give its folder with `--subroutine-path DIR:DIR`. A name "
+        "that cannot be a file name at all is `E_BAD_SUBROUTINE_NAME`."),
     "E_UNCLOSED_CONTROL_BLOCK": (
         "A control block is not closed: `sub` without `endsub`, `if` without `endif`, "
         "`while` without `endwhile`, `repeat` without `endrepeat`, `do` without its "
@@ -159,9 +161,11 @@ EXPLAIN = {
         "needs more, raise the limit with `--max-iterations N`; for a cycle, increase the "
         "peck depth or lower `L`."),
     "E_BAD_SUBROUTINE_NAME": (
-        "A subroutine name that cannot be a file name (it contains `/`, starts with `.` or "
-        "holds a NUL). usina never expands names through a shell, as LinuxCNC's `wordexp` "
-        "does.",
+        "A subroutine called by name (`o<name> call`) is not in the program, and its name "
+        "cannot be the file `<name>.ngc` on the subroutine path: it contains a path separator "
+        "(`/`, or `\\` as on Windows), starts with `.` (`..`, hidden files), holds a control "
+        "byte such as NUL, or is longer than a file name may be. usina never expands names "
+        "through a shell, as LinuxCNC's `wordexp` does.",
         "Use a plain name of letters, digits and `_`."),
     "E_DUPLICATE_SUBROUTINE": (
         "Two subroutines of one program have the same name.",
@@ -305,8 +309,8 @@ EXPLAIN = {
         "value that is not a number or too large, an unknown letter), or a value is out of its "
         "range: the diameter `D` from 0 (not known) to 1000 mm, the offsets `X Y Z U V W` "
         "within ±10000 mm, the angles `A B C I J` within ±360°, the orientation `Q` 0 to 9 "
-        "(NaN and infinity are never numbers). The line is skipped. Some defects are warnings "
-        "only.",
+        "(NaN and infinity are never numbers). The line is skipped. Defects usina can read "
+        "past are warnings of their own (`W_TOOL_WITHOUT_POCKET`, `W_TOOL_REDEFINED`).",
         "Correct the line shown; the format is LinuxCNC's, e.g. `T1 P1 D6.0 Z+10.0 ;end "
         "mill`."),
     # canned cycles and probing
@@ -554,6 +558,40 @@ EXPLAIN = {
         "stays within the default.",
         "Check the loop's condition; for a program meant to be this long, give a larger "
         "`--max-ops`."),
+    # limits: numbers (docs/rs274ngc.md, "Numbers")
+    "E_VALUE_OUT_OF_RANGE": (
+        "A value is beyond usina's range (docs/rs274ngc.md, \"Numbers\"): a word's value beyond "
+        "±1e9 (or an `F` below 1e-6), an arc centre, an offset (`G92`, `G52`, `G10`, a tool "
+        "length) or a position beyond ±1e9 mm, a feed beyond 1e9, a dwell or spindle speed "
+        "beyond 1e9, or an arc whose radius is more than a billion times its chord (it could "
+        "not be told from a full circle). The diagnostic points at the word when one word "
+        "makes the value, otherwise at the block whose move leaves the range (increments "
+        "summed, offsets and scale factors applied). Nothing of the block is sent on: no back "
+        "end ever receives a number out of range, an infinity or NaN.",
+        "Correct the value; for a position built up over many blocks, check the increments "
+        "(`G91`), offsets and scale factors that lead to it. A straight move is `G1`, not an "
+        "arc of huge radius."),
+    "W_UNKNOWN_OFFSET_REGISTER": (
+        "fanuc: an `H` or `D` offset register the program uses is not in the offset file "
+        "given with `--offsets` (or no file was given); usina takes its value as 0, as a "
+        "control with a cleared register would.",
+        "Add the register to the offset file (docs/fanuc.md), or correct `H`/`D`."),
+    "W_VAR_FILE_LINE_SKIPPED": (
+        "A line of the parameter file given with `--var-file` is not `NUMBER VALUE`; LinuxCNC "
+        "skips such lines, and so does usina.",
+        "Remove the line, or write it as `<number> <value>`."),
+    "W_VAR_FILE_EXTRA_TEXT": (
+        "A line of the parameter file has text after the value; it is ignored, as LinuxCNC "
+        "ignores it.",
+        "Remove the text after the value."),
+    "W_TOOL_WITHOUT_POCKET": (
+        "A line of the tool table has no `P` word (pocket), which LinuxCNC requires; usina "
+        "takes pocket 0.",
+        "Add a `P` word, e.g. `T1 P1 D6.0`."),
+    "W_TOOL_REDEFINED": (
+        "A tool number appears on two lines of the tool table; the later line replaces the "
+        "earlier one.",
+        "Keep one line per tool."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -117,4 +117,11 @@
   X(UnknownProfileKey, W_UNKNOWN_PROFILE_KEY)      \
   /* limits: blocks, operations */                 \
   X(BlockTooLong, E_BLOCK_TOO_LONG)                \
-  X(TooManyOperations, E_TOO_MANY_OPERATIONS)
+  X(TooManyOperations, E_TOO_MANY_OPERATIONS)      \
+  /* limits: numbers */                            \
+  X(ValueOutOfRange, E_VALUE_OUT_OF_RANGE)         \
+  X(UnknownRegister, W_UNKNOWN_OFFSET_REGISTER)    \
+  X(VarFileLineSkipped, W_VAR_FILE_LINE_SKIPPED)   \
+  X(VarFileExtraText, W_VAR_FILE_EXTRA_TEXT)       \
+  X(ToolWithoutPocket, W_TOOL_WITHOUT_POCKET)      \
+  X(ToolRedefined, W_TOOL_REDEFINED)

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "core/units.hpp"
+#include "draw/finite.hpp"
 
 namespace usina::draw {
 namespace {
@@ -111,7 +112,7 @@ void write_header(DL_Dxf& dxf, DL_WriterA& dw, const Drawing& drawing) {
   dw.dxfInt(70, 1);  // metric
   dw.dxfString(9, "$LTSCALE");
   dw.dxfReal(40, linetype_scale(drawing.bounds()));
-  const Box box = view_box(drawing.bounds());
+  const Box box = finite_view_box(drawing);
   dw.dxfString(9, "$EXTMIN");
   dw.dxfReal(10, box.min.x);
   dw.dxfReal(20, box.min.y);
@@ -224,7 +225,7 @@ WriteResult write_dxf(const Drawing& drawing, std::FILE* file) {
   for (const Layer* l : layers) {
     DxfEntities entities(dxf, *dw, l->name);
     for (const Entity& e : l->entities)
-      std::visit(entities, e);
+      if (is_finite(e)) std::visit(entities, e);
   }
   dw->sectionEnd();
   dxf.writeObjects(*dw);

@@ -12,6 +12,7 @@
 #include <cairo-pdf.h>
 #include <fmt/format.h>
 
+#include "draw/finite.hpp"
 #include "draw/layer_style.hpp"
 
 namespace usina::draw {
@@ -165,7 +166,8 @@ void draw_pieces(cairo_t* cr, const std::vector<Piece>& pieces, const Frame& fra
   for (const Piece& piece : pieces) {
     set_style(cr, piece.style, f);
     for (std::size_t i = piece.first; i < piece.last; ++i) {
-      std::visit(PathOf{cr, frame}, piece.layer->entities[i]);
+      if (is_finite(piece.layer->entities[i]))
+        std::visit(PathOf{cr, frame}, piece.layer->entities[i]);
       if ((i + 1 - piece.first) % kStrokeBatch == 0) cairo_stroke(cr);
     }
     cairo_stroke(cr);
@@ -226,7 +228,7 @@ void render(cairo_t* cr, const Drawing& drawing, double width, double height, do
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
   const Furniture f = furniture_for(width, height, line_width);
-  const Frame frame(view_box(drawing.bounds()), f.margin, f.margin, width - 2.0 * f.margin,
+  const Frame frame(finite_view_box(drawing), f.margin, f.margin, width - 2.0 * f.margin,
                     height - 2.0 * f.margin - f.band);
   const std::vector<Piece> pieces = pieces_of(drawing);
   draw_pieces(cr, pieces, frame, f);
@@ -279,7 +281,7 @@ WriteResult write_png(const Drawing& drawing, std::FILE* file, PixelSize size) {
 }
 
 WriteResult write_pdf(const Drawing& drawing, std::FILE* file) {
-  const Box box = view_box(drawing.bounds());
+  const Box box = finite_view_box(drawing);
   const bool landscape = box.width() >= box.height();
   const double w = landscape ? kA4Long : kA4Short;
   const double h = landscape ? kA4Short : kA4Long;

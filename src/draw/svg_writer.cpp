@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "core/file_ostream.hpp"
+#include "draw/finite.hpp"
 
 namespace usina::draw {
 namespace {
@@ -80,7 +81,7 @@ std::string svg_number(double v) {
 }
 
 void write_svg(const Drawing& drawing, std::ostream& out) {
-  const Box box = view_box(drawing.bounds());
+  const Box box = finite_view_box(drawing);
   const double w = box.width();
   const double h = box.height();
   const double stroke = std::max(w, h) * kStrokeFraction;
@@ -104,7 +105,7 @@ void write_svg(const Drawing& drawing, std::ostream& out) {
     fmt::format_to(it, ">\n");
     SvgEntities entities(buf);
     for (const Entity& e : layer->entities) {
-      std::visit(entities, e);
+      if (is_finite(e)) std::visit(entities, e);
       if (buf.size() > (1u << 16)) flush(buf, out);
     }
     fmt::format_to(std::back_inserter(buf), "</g>\n");

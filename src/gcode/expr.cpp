@@ -180,7 +180,10 @@ std::optional<double> evaluate(const Block& block, ExprRef ref, const ParameterS
   Evaluator e(block, params, err);
   auto v = e.eval(ref);
   if (v && !std::isfinite(*v)) {
-    err = {{core::Code::NumberOutOfRange, fmt::format("value {} is out of range", *v)},
+    err = {{core::Code::NumberOutOfRange,
+            fmt::format("the value is {}: beyond the largest number (about ±1.8e308) or "
+                        "undefined; check the arithmetic",
+                        *v)},
            block.expr(ref).col};
     return std::nullopt;
   }

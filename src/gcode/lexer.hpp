@@ -51,6 +51,9 @@ class Lexer {
 
   std::string_view text() const { return text_; }
 
+  // Where the next character is, blanks not skipped.
+  std::size_t offset() const { return i_; }
+
  private:
   // Hot: called before every token.
   void skip_blanks() {

@@ -8,6 +8,7 @@
 
 #include "gcode/lexer.hpp"
 #include "gcode/program_text.hpp"
+#include "gcode/number_form.hpp"
 
 namespace usina::gcode {
 namespace {
@@ -35,6 +36,7 @@ class Parser {
   bool fail(core::Code code, std::size_t pos, std::string message);
   ExprRef node(ExprNode n);
   ExprRef real_value(int depth);
+  bool exponent_in_range(std::size_t start);
   ExprRef expression(int depth);
   ExprRef function(std::size_t pos, int depth);
   ExprRef bracketed(int depth);
@@ -240,6 +242,16 @@ ExprRef Parser::function(std::size_t pos, int depth) {
   return kNoExpr;
 }
 
+// "1e400": no dialect has exponents, so it is 1 and a word E400, but the
+// number the user meant is out of any range: say so (a legal "1e3" stays
+// X1 E3, as the control reads it).
+bool Parser::exponent_in_range(std::size_t start) {
+  if (auto why = exponent_out_of_range(lex_.text(), start, lex_.offset())) {
+    return fail(core::Code::NumberOutOfRange, start, *why);
+  }
+  return true;
+}
+
 ExprRef Parser::real_value(int depth) {
   const std::size_t at = lex_.pos();
   if (depth > kMaxDepth) {
@@ -251,14 +263,19 @@ ExprRef Parser::real_value(int depth) {
   if (c == '#') return parameter(depth);
   if (c == '-' || c == '+') {
     lex_.advance();
+    const std::size_t digits = lex_.pos();
     if (auto v = lex_.number()) {
+      if (!exponent_in_range(digits)) return kNoExpr;
       return node({ExprKind::Number, 0, kNoExpr, kNoExpr, c == '-' ? -*v : *v, {}, col(at)});
     }
     const ExprRef inner = real_value(depth + 1);
     if (inner == kNoExpr || c == '+') return inner;
     return node({ExprKind::Negate, 0, inner, kNoExpr, 0.0, {}, col(at)});
   }
-  if (auto v = lex_.number()) return node({ExprKind::Number, 0, kNoExpr, kNoExpr, *v, {}, col(at)});
+  if (auto v = lex_.number()) {
+    if (!exponent_in_range(at)) return kNoExpr;
+    return node({ExprKind::Number, 0, kNoExpr, kNoExpr, *v, {}, col(at)});
+  }
   if (c >= 'A' && c <= 'Z') return function(at, depth + 1);
   if (c >= '0' && c <= '9') {
     fail(core::Code::BadNumber, at, "number with more than 64 characters");

@@ -82,9 +82,11 @@ struct Line {
     return static_cast<std::uint32_t>(part.data() - text.data()) + 1;
   }
 
-  void report(Severity severity, std::string_view at, std::string message) const {
+  // Errors are E_BAD_TOOL_TABLE; each warning has a code of its own.
+  void report(Severity severity, std::string_view at, std::string message,
+              core::Code code = core::Code::BadToolTable) const {
     core::SourceLoc loc{file_id, number, col_of(at), static_cast<std::uint32_t>(at.size()), offset};
-    diags->report({core::Code::BadToolTable, severity, loc, std::move(message)});
+    diags->report({code, severity, loc, std::move(message)});
   }
 };
 
@@ -292,7 +294,8 @@ std::optional<ToolEntry> read_words(const Line& line, std::string_view words, do
     line.report(Severity::Warning, all,
                 fmt::format("tool {} has no P word (pocket), which LinuxCNC requires; pocket 0 "
                             "assumed",
-                            tool.number));
+                            tool.number),
+                core::Code::ToolWithoutPocket);
   }
   return tool;
 }
@@ -341,7 +344,8 @@ std::optional<ToolTable> read_tool_table(const core::SourceFile& file, std::uint
     if (!inserted) {
       line.report(Severity::Warning, trim(words),
                   fmt::format("tool {} is also on line {}; this line replaces it", tool->number,
-                              it->second));
+                              it->second),
+                  core::Code::ToolRedefined);
       it->second = line_number;
     }
     table.set(std::move(*tool));

@@ -56,7 +56,8 @@ inline constexpr int kMaxToolOrientation = 9;
 // Reads `file` (its diagnostics carry `file_id`). Lengths are in the
 // machine's units, `mm_per_unit` mm each (25.4 for an inch machine); they are
 // stored in mm. A bad line is reported (E_BAD_TOOL_TABLE, file:line:col) and
-// skipped; a tool number given twice is a warning and the later line wins.
+// skipped; a tool number given twice is a warning (W_TOOL_REDEFINED) and the
+// later line wins; a line without P, a warning (W_TOOL_WITHOUT_POCKET).
 // nullopt only when lines were bad and no tool was read; a file of blank and
 // comment lines is an empty table. Throws std::invalid_argument when
 // `mm_per_unit` is not a positive finite number (a programmer error).

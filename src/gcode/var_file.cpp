@@ -82,10 +82,12 @@ struct Reader {
   std::vector<std::uint32_t> lines;  // the line of each entry
   std::size_t bad_lines = 0;
 
-  void report(Severity severity, std::string_view at, std::string message) const {
+  // Errors are E_BAD_VAR_FILE; each warning has a code of its own.
+  void report(Severity severity, std::string_view at, std::string message,
+              core::Code code = core::Code::BadVarFile) const {
     const auto col = static_cast<std::uint32_t>(at.data() - text.data()) + 1;
     core::SourceLoc loc{file_id, line, col, static_cast<std::uint32_t>(at.size()), offset};
-    diags->report({core::Code::BadVarFile, severity, loc, std::move(message)});
+    diags->report({code, severity, loc, std::move(message)});
   }
 
   bool fail(std::string_view at, std::string message) {
@@ -121,7 +123,8 @@ bool Reader::read_line() {
   const std::string_view num = f.field[0];
   if (!is_digit(num.front()) && num.front() != '+' && num.front() != '-') {
     report(Severity::Warning, num,
-           "line skipped: it is not 'NUMBER VALUE' (e.g. '5221 0.000000'), and LinuxCNC skips it");
+           "line skipped: it is not 'NUMBER VALUE' (e.g. '5221 0.000000'), and LinuxCNC skips it",
+           core::Code::VarFileLineSkipped);
     ++bad_lines;
     return false;
   }
@@ -147,7 +150,8 @@ bool Reader::read_line() {
     const std::string_view rest =
         text.substr(static_cast<std::size_t>(f.field[2].data() - text.data()));
     report(Severity::Warning, rest,
-           fmt::format("text after the value of parameter {} is ignored", number));
+           fmt::format("text after the value of parameter {} is ignored", number),
+           core::Code::VarFileExtraText);
   }
   entries.push_back({number, value});
   lines.push_back(line);

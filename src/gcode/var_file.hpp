@@ -27,7 +27,8 @@ struct VarFileEntry {
 inline constexpr int kMinVarFileParameter = 1;
 inline constexpr int kMaxVarFileParameter = 5601;
 
-// Reads `file` (its diagnostics carry `file_id`, code E_BAD_VAR_FILE). The
+// Reads `file` (its diagnostics carry `file_id`; errors E_BAD_VAR_FILE,
+// warnings W_VAR_FILE_LINE_SKIPPED and W_VAR_FILE_EXTRA_TEXT). The
 // entries come back in ascending order. A line with an error (a malformed or
 // missing number or value, a number outside 1..5601, a number not above the
 // previous line's, which LinuxCNC refuses) is reported and skipped; a line

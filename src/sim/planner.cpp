@@ -1,6 +1,7 @@
 #include "sim/planner.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sim/planner_geometry.hpp"
 
@@ -15,9 +16,19 @@ AccountTime& Planner::account(std::uint32_t id) {
   return accounts_[id];
 }
 
+void Planner::add_time(double& into, double seconds) {
+  if (seconds >= 0.0 && std::isfinite(seconds) && std::isfinite(into + seconds)) {
+    into += seconds;
+  } else {
+    ++untimed_;
+  }
+}
+
 void Planner::add(const PlannedMove& move) {
-  if (move.length <= 0.0 || move.cruise <= 0.0) return;
-  account(move.account).exact_stop_s += move_time(move.length, 0.0, 0.0, move.cruise, move.kin);
+  // Written so that NaN is left out too.
+  if (!(move.length > 0.0 && move.cruise > 0.0 && std::isfinite(move.length))) return;
+  add_time(account(move.account).exact_stop_s,
+           move_time(move.length, 0.0, 0.0, move.cruise, move.kin));
   if (count_ == ring_.size()) run_oldest();
   double max_entry = 0.0;
   if (moving_) {
@@ -60,8 +71,8 @@ void Planner::plan_backward_forward() {
 void Planner::run_oldest() {
   const Block& b = at(0);
   const double exit = count_ > 1 ? at(1).entry : 0.0;
-  account(b.move.account).lookahead_s +=
-      move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin);
+  add_time(account(b.move.account).lookahead_s,
+           move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin));
   head_ = (head_ + 1) % ring_.size();
   --count_;
 }
@@ -74,10 +85,10 @@ void Planner::stop() {
 
 void Planner::wait(double seconds, std::uint32_t id) {
   stop();
-  if (seconds <= 0.0) return;
+  if (seconds == 0.0) return;
   AccountTime& a = account(id);
-  a.lookahead_s += seconds;
-  a.exact_stop_s += seconds;
+  add_time(a.lookahead_s, seconds);
+  add_time(a.exact_stop_s, seconds);
 }
 
 }  // namespace usina::sim

@@ -60,6 +60,10 @@ class Planner {
   // Time per account; call stop() first to include the buffered blocks.
   const std::vector<AccountTime>& accounts() const { return accounts_; }
 
+  // Moves whose time came out negative, infinite or NaN (a machine profile
+  // out of range): left out of every account, so a total is never one.
+  std::uint64_t untimed() const { return untimed_; }
+
  private:
   struct Block {
     PlannedMove move;
@@ -71,6 +75,8 @@ class Planner {
   Block& at(std::size_t k) { return ring_[(head_ + k) % ring_.size()]; }
 
   void run_oldest();
+  // Adds `seconds` to `into` when it is a time (finite, not negative).
+  void add_time(double& into, double seconds);
   void plan_backward_forward();
   AccountTime& account(std::uint32_t id);
 
@@ -81,6 +87,7 @@ class Planner {
   bool moving_ = false;  // the last block added did not end at rest
   PlannedMove last_;
   std::vector<AccountTime> accounts_;
+  std::uint64_t untimed_ = 0;
 };
 
 }  // namespace usina::sim

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
+#include "canon/limits.hpp"
+
 namespace usina::sim {
 
 namespace {
@@ -80,6 +84,7 @@ StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
                      core::DiagnosticSink& diags)
     : machine_(machine),
       options_(options),
+      diags_(diags),
       checks_(machine_, options.stock_top, options.work_zero, options.max_reports_per_check, diags),
       planner_(PlannerSettings{machine.junction_deviation, options.lookahead}) {
   tools_.emplace_back();
@@ -87,6 +92,16 @@ StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
 }
 
 void StatsSink::on(const canon::Op& op) {
+  // Every front end keeps canon's range (canon/limits.hpp); a back end that
+  // sums times checks it again, so no NaN or infinity enters a total.
+  if (auto why = canon::out_of_range(op.kind)) {
+    if (!refused_) {
+      diags_.report({core::Code::ValueOutOfRange, core::Severity::Error, op.src,
+                     fmt::format("{}: the op is left out of the figures", *why)});
+    }
+    refused_ = true;
+    return;
+  }
   std::visit(
       [&](const auto& k) {
         using T = std::decay_t<decltype(k)>;
@@ -118,6 +133,16 @@ void StatsSink::on(const canon::Op& op) {
 
 void StatsSink::finish() {
   planner_.stop();
+  if (planner_.untimed() > 0 && !reported_untimed_) {
+    reported_untimed_ = true;
+    diags_.report({core::Code::ValueOutOfRange,
+                   core::Severity::Error,
+                   {},
+                   fmt::format("{} moves could not be timed (their time came out infinite or "
+                               "undefined): check the machine profile's accelerations, jerks "
+                               "and rates; the times shown leave them out",
+                               planner_.untimed())});
+  }
 }
 
 // [times] block: a control that processes a block in t s cannot run blocks

@@ -143,6 +143,9 @@ class StatsSink final : public canon::Sink {
 
   MachineProfile machine_;
   StatsOptions options_;
+  core::DiagnosticSink& diags_;
+  bool refused_ = false;  // an op out of canon's range was reported
+  bool reported_untimed_ = false;
   StatsChecks checks_;
   Planner planner_;
   Axes6 pos_{};

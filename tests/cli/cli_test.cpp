@@ -204,7 +204,8 @@ TEST(CliTrace, ShellSyntaxInASubroutineNameIsNeverRun) {
   const std::string prog = dir.write("evil.ngc", "o<$(touch /tmp/usina_pwned)> call\nM2\n");
   const Result r = usina("trace --subroutine-path " + quote(dir.path()) + " " + quote(prog));
   EXPECT_EQ(r.status, 1);
-  EXPECT_TRUE(contains(r.err, "[E_UNKNOWN_SUBROUTINE]")) << r.err;
+  // The '/' of the path makes it no file name at all (issue 11: say why).
+  EXPECT_TRUE(contains(r.err, "[E_BAD_SUBROUTINE_NAME]")) << r.err;
   EXPECT_FALSE(usina::test::exists(marker)) << marker << " was created";
 }
 

@@ -400,7 +400,7 @@ TEST(FanucEngine, OffsetFileErrors) {
   EXPECT_EQ(run_fanuc("M30\n", o)->first_error(), Code::BadToolTable);
   auto missing = run_fanuc("G43 H5\nM30\n");
   EXPECT_TRUE(missing->ok);
-  EXPECT_TRUE(missing->has(Code::UnknownTool));  // warned: taken as 0
+  EXPECT_TRUE(missing->has(Code::UnknownRegister));  // warned: taken as 0
 }
 
 TEST(FanucEngine, MirrorSwapsTheCompensationSide) {

@@ -274,9 +274,11 @@ TEST(FanucPolarInterpErrors, BadArcs) {
 }
 
 TEST(FanucPolarInterpErrors, AbsurdlyLongMoveIsBounded) {
-  // A full circle of radius 10^10 mm passing 20 mm from the centre: far
-  // more than kMaxPolarPieces moves.
-  EXPECT_EQ(error_of("G12.1\nG2 I-10000000000. F100."), Code::TooManyIterations);
+  // A full circle of radius 10^9 mm (the largest in range) passing 20 mm
+  // from the centre: far more than kMaxPolarPieces moves.
+  EXPECT_EQ(error_of("G12.1\nG2 I-1000000000. F100."), Code::TooManyIterations);
+  // Beyond the range of a word's value it is an error before any work.
+  EXPECT_EQ(error_of("G12.1\nG2 I-10000000000. F100."), Code::ValueOutOfRange);
 }
 
 TEST(FanucPolarInterpErrors, NoFeedRate) {

@@ -1448,13 +1448,13 @@ TEST(InterpSub, ShellSyntaxInANameIsNeverRun) {
   InterpOptions o;
   o.subroutine_path = {dir.path(), "."};
   auto r = run("o<$(touch /tmp/usina_pwned)> call\nM2\n", std::move(o));
-  expect_error(*r, Code::UnknownSubroutine, 1, 1);
+  expect_error(*r, Code::BadSubroutineName, 1, 1);  // the '/' of the path
 
   struct stat st {};
 
   EXPECT_NE(::stat(marker, &st), 0) << marker << " was created";
   auto backticks = run("o<`touch /tmp/usina_pwned`> call\nM2\n");
-  expect_error(*backticks, Code::UnknownSubroutine, 1, 1);
+  expect_error(*backticks, Code::BadSubroutineName, 1, 1);
   EXPECT_NE(::stat(marker, &st), 0) << marker << " was created";
 }
 
@@ -1474,9 +1474,9 @@ TEST(InterpSub, NamesCannotLeaveTheSearchPath) {
   InterpOptions o;
   o.subroutine_path = {dir.path()};
   auto r = run("o<.hidden> call\nM2\n", o);
-  expect_error(*r, Code::UnknownSubroutine, 1, 1);
+  expect_error(*r, Code::BadSubroutineName, 1, 1);
   auto up = run("o<../etc/passwd> call\nM2\n", o);
-  expect_error(*up, Code::UnknownSubroutine, 1, 1);
+  expect_error(*up, Code::BadSubroutineName, 1, 1);
 }
 
 TEST(InterpSub, RecursionTooDeep) {

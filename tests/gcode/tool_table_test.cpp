@@ -57,11 +57,12 @@ std::string where(const core::Diagnostic& d) {
 
 // The only diagnostic of `r`, checked for code, severity, place and length.
 const core::Diagnostic& only(const Read& r, Severity severity, std::uint32_t line,
-                             std::uint32_t col, std::uint32_t length) {
+                             std::uint32_t col, std::uint32_t length,
+                             Code code = Code::BadToolTable) {
   static const core::Diagnostic kNone{};
   EXPECT_EQ(r.diags.all().size(), 1u);
   const core::Diagnostic& d = r.diags.all().empty() ? kNone : r.diags.all().front();
-  const core::Diagnostic want{Code::BadToolTable, severity, {kFileId, line, col, length, 0}, ""};
+  const core::Diagnostic want{code, severity, {kFileId, line, col, length, 0}, ""};
   EXPECT_EQ(where(d), where(want)) << d.message;
   return d;
 }
@@ -354,7 +355,7 @@ TEST(ToolTable, EveryErrorOfALineIsReported) {
 TEST(ToolTable, DuplicateToolWarnsAndLaterLineWins) {
   const auto r = read("T1 P1 Z1 ;first\nT2 P2\nT1 P3 Z2 ;second\n");
   ASSERT_TRUE(r->table.has_value());
-  const auto& d = only(*r, Severity::Warning, 3, 1, 8);
+  const auto& d = only(*r, Severity::Warning, 3, 1, 8, Code::ToolRedefined);
   EXPECT_NE(d.message.find("tool 1 is also on line 1"), std::string::npos) << d.message;
   EXPECT_EQ(r->table->size(), 2u);
   const ToolEntry* t = r->table->find(1);
@@ -374,7 +375,7 @@ TEST(ToolTable, ThirdCopyNamesTheLineItReplaces) {
 TEST(ToolTable, MissingPocketWarns) {
   const auto r = read("T4 Z1 D0.5\n");
   ASSERT_TRUE(r->table.has_value());
-  const auto& d = only(*r, Severity::Warning, 1, 1, 10);
+  const auto& d = only(*r, Severity::Warning, 1, 1, 10, Code::ToolWithoutPocket);
   EXPECT_NE(d.message.find("tool 4 has no P word"), std::string::npos) << d.message;
   EXPECT_EQ(r->table->find(4)->pocket, 0);
 }

@@ -47,11 +47,12 @@ std::string where(const core::Diagnostic& d) {
 
 // The only diagnostic of `r`, checked for code, severity, place and length.
 const core::Diagnostic& only(const Read& r, Severity severity, std::uint32_t line,
-                             std::uint32_t col, std::uint32_t length) {
+                             std::uint32_t col, std::uint32_t length,
+                             Code code = Code::BadVarFile) {
   static const core::Diagnostic kNone{};
   EXPECT_EQ(r.diags.all().size(), 1u);
   const core::Diagnostic& d = r.diags.all().empty() ? kNone : r.diags.all().front();
-  const core::Diagnostic want{Code::BadVarFile, severity, {kFileId, line, col, length, 0}, ""};
+  const core::Diagnostic want{code, severity, {kFileId, line, col, length, 0}, ""};
   EXPECT_EQ(where(d), where(want)) << d.message;
   return d;
 }
@@ -103,7 +104,7 @@ TEST(VarFile, ByteOrderMarkIsSkipped) {
 TEST(VarFile, NotAParameterLineIsAWarning) {
   const auto r = read("5161 1\n  # G54 offsets\n");
   EXPECT_EQ(r->entries, (Entries{{5161, 1.0}}));
-  const auto& d = only(*r, Severity::Warning, 2, 3, 1);
+  const auto& d = only(*r, Severity::Warning, 2, 3, 1, Code::VarFileLineSkipped);
   EXPECT_NE(d.message.find("not 'NUMBER VALUE'"), std::string::npos) << d.message;
 }
 
@@ -175,7 +176,7 @@ TEST(VarFile, DuplicateNumberIsAnError) {
 TEST(VarFile, TextAfterValueWarnsAndValueIsKept) {
   const auto r = read("5221 1.5 ; G54 X  \n");
   EXPECT_EQ(r->entries, (Entries{{5221, 1.5}}));
-  const auto& d = only(*r, Severity::Warning, 1, 10, 9);
+  const auto& d = only(*r, Severity::Warning, 1, 10, 9, Code::VarFileExtraText);
   EXPECT_NE(d.message.find("after the value of parameter 5221"), std::string::npos) << d.message;
 }
 

@@ -204,6 +204,8 @@ class Engine final : public ProgramRunner, private VariableSource {
   // NC blocks (fanuc_nc.cpp).
   bool nc_block(const TapeBlock& b);
   bool read_words(const TapeBlock& b, Words& w);
+  bool word_in_range(const TapeBlock& b, char letter, std::size_t at, const MacroReader& r,
+                     const Value& v);
   void decimal_point(const TapeBlock& b, Words& w);
   double least_increment(char letter, bool inch) const;
   bool macro_call(const TapeBlock& b, Words& w);

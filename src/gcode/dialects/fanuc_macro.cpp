@@ -134,6 +134,11 @@ std::optional<double> MacroReader::number() {
     i_ = start;
     return std::nullopt;
   }
+  if (!std::isfinite(v)) {
+    i_ = start;
+    return fail(core::Code::NumberOutOfRange,
+                "a number with more digits than any number holds (beyond 1.8e308)");
+  }
   return v;
 }
 
@@ -163,7 +168,11 @@ std::optional<Value> MacroReader::expression() {
   if (!v) return std::nullopt;
   // One variable reference alone keeps its vacancy; anything else computed
   // from it has vacant read as 0 ([M700] p. 326).
-  (void)start;
+  if (!std::isfinite(v->v)) {
+    i_ = start;
+    return fail(core::Code::NumberOutOfRange,
+                fmt::format("the value is {} (Fanuc alarm 111, calculated data overflow)", v->v));
+  }
   return v;
 }
 

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "gcode/dialects/fanuc_engine.hpp"
+#include "gcode/number_form.hpp"
+#include "gcode/word_range.hpp"
 
 namespace usina::gcode::fanuc {
 namespace {
@@ -85,6 +87,20 @@ double Engine::least_increment(char letter, bool inch) const {
   return 1.0;
 }
 
+// The word's value within usina's range (gcode/word_range.hpp), and a
+// literal not followed by an exponent beyond any number ("X1e400").
+bool Engine::word_in_range(const TapeBlock& b, char letter, std::size_t at, const MacroReader& r,
+                           const Value& v) {
+  if (r.literal()) {
+    if (auto why = exponent_out_of_range(b.text, at + 1, r.pos()))
+      return error(core::Code::NumberOutOfRange, b, at + 1, *why);
+  }
+  if (v.vacant) return true;
+  if (auto why = word_out_of_range(letter, v.v))
+    return error(core::Code::ValueOutOfRange, b, at, *why);
+  return true;
+}
+
 bool Engine::read_words(const TapeBlock& b, Words& w) {
   MacroReader r(b.text, *this);
   // The units the words read so far are in, kept as they come: asking the
@@ -106,6 +122,7 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     r.set_round_step(least_increment(l, !g21 && (g20 || inch)));
     auto v = r.expression();
     if (!v) return macro_error(r, b);
+    if (!word_in_range(b, l, at, r, *v)) return false;
     NcWord word;
     word.letter = l;
     word.value = word.raw = v->v;
@@ -451,6 +468,14 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
   std::vector<ColumnMap::Span> spans;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
+    // Read in range (word_in_range), a value leaves it only by the scaling
+    // or rotation in force: say so at the word, before it becomes text.
+    if (auto why = word_out_of_range(word.letter, word.value)) {
+      return error(core::Code::ValueOutOfRange, b, word.pos,
+                   fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
+                               "G51.1)",
+                               *why));
+    }
     spans.push_back({static_cast<std::uint32_t>(text.size() + 1), 0, loc_of(b, word.pos).col});
     if (word.letter == 'G') {
       int t = tenths(word.value);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gcode/dialects/fanuc_engine.hpp"
+#include "gcode/word_range.hpp"
 
 namespace usina::gcode::fanuc {
 namespace {
@@ -98,7 +99,7 @@ double Engine::offset_register(bool h, long n, const TapeBlock& b) {
   auto it = table.find(n);
   if (it == table.end()) {
     if (warned_registers_.insert((h ? 1 : -1) * n).second) {
-      warn(core::Code::UnknownTool, b, 0,
+      warn(core::Code::UnknownRegister, b, 0,
            fmt::format("offset register {}{} is not in the offset file (--offsets): taken as 0",
                        h ? 'H' : 'D', n));
     }
@@ -122,6 +123,10 @@ bool Engine::offset_codes(const TapeBlock& b, Words& w) {
     // The offset first, in a block of its own: 'G43 H1 Z50.' then moves
     // to Z50 with it, as on the control.
     const double v = length_sign_ * offset_register(true, h_register_, b);
+    if (auto why = word_out_of_range('H', v)) {
+      return error(core::Code::ValueOutOfRange, b, h != nullptr ? h->pos : 0,
+                   fmt::format("the length in offset register H{}: {}", h_register_, *why));
+    }
     if (!interp_.run_block(fmt::format("G43.1 Z{:.10f}", v), {b.file, b.line, b.line_offset}))
       return false;
   }

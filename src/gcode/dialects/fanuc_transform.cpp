@@ -315,7 +315,8 @@ bool Engine::transform_words(const TapeBlock& b, Words& w) {
     const int n = static_cast<int>(i);
     const double out = incremental ? q[n] - actual[n] : q[n];
     w.take(kAxes[i]);
-    w.list.push_back({kAxes[i], out, out, false, false, false, 0});
+    // At the word it came from, for the diagnostics of its value.
+    w.list.push_back({kAxes[i], out, out, false, false, false, axis[i] ? axis[i]->pos : 0});
   }
   return !arc || transformed_arc(b, w, plane, centre, start_prog);
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "gcode/program_text.hpp"
+#include "gcode/word_range.hpp"
 
 namespace usina::gcode::romi {
 namespace {
@@ -56,7 +57,7 @@ Engine::Engine(const Dialect& dialect, RunContext context)
       dialect_options_(std::move(context.dialect_options)),
       sink_(context.sink),
       diags_(context.diags),
-      machine_(context.sink, machine_state_) {
+      machine_(context.sink, machine_state_, context.diags) {
   // Options not given (a runner made without resolve_options): the defaults.
   for (const DialectOption& o : dialect_.options)
     dialect_options_.emplace(std::string(o.name), std::string(o.values.front()));
@@ -138,6 +139,8 @@ bool Engine::run(std::uint32_t file) {
   while (!ended_ && !failed_ && cursor_.offset < sources_.get(file_)->text().size()) {
     step();
     if (sink_.stopped()) failed_ = true;  // the operation budget ran out
+    // The canonical machine refused an op for a number out of range (reported).
+    if (machine_.faulted()) failed_ = true;
   }
   if (!failed_ && blend_) {
     loc_ = blend_->loc;
@@ -147,6 +150,7 @@ bool Engine::run(std::uint32_t file) {
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);
   }
+  if (machine_.faulted()) failed_ = true;
   if (!failed_ && !ended_) {
     loc_ = {file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
     note(core::Code::NoProgramEnd, core::Severity::Warning, 0,
@@ -226,6 +230,9 @@ bool Engine::evaluate_words() {
     auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
                                            : gcode::evaluate(block_.base, w.value, *this, err);
     if (!v) return error(err.error.code, err.col, err.error.message);
+    if (auto why = word_out_of_range(w.letter, *v)) {
+      return error(core::Code::ValueOutOfRange, w.col, *why);
+    }
     if (w.letter == 'G' || w.letter == 'M') {
       const double tenths = std::round(*v * 10.0);
       if (!(*v >= 0 && tenths <= 9990) || std::fabs(*v * 10.0 - tenths) > 1e-6) {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gcode/program_text.hpp"
+#include "gcode/number_form.hpp"
 
 namespace usina::gcode::romi {
 namespace {
@@ -173,6 +174,10 @@ std::optional<double> Parser::number() {
   }
   if (!digits) {
     i_ = start;
+    return std::nullopt;
+  }
+  if (auto why = exponent_out_of_range(s_.substr(0, end_), start, i_)) {
+    fail(core::Code::NumberOutOfRange, start, *why);
     return std::nullopt;
   }
   double v = 0.0;

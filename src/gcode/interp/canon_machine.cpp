@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "canon/limits.hpp"
 #include "core/units.hpp"
 
 namespace usina::gcode {
@@ -43,7 +46,19 @@ canon::ProgrammedFeed CanonMachine::programmed_feed() const {
   return {Mode::PerMinute, feed_};
 }
 
+void CanonMachine::refuse(const std::string& why) {
+  faulted_ = true;
+  core::SourceLoc loc = src_;
+  loc.length = 0;
+  diags_.report({core::Code::ValueOutOfRange, core::Severity::Error, loc,
+                 fmt::format("{} (usina's ranges: docs/rs274ngc.md, Numbers); check the values, "
+                             "increments, offsets and scale factors that lead here",
+                             why)});
+}
+
 void CanonMachine::emit(canon::OpKind kind) {
+  if (faulted_) return;
+  if (auto why = canon::out_of_range(kind)) return refuse(*why);
   sink_.on(canon::Op{std::move(kind), src_, origin_});
 }
 
@@ -70,6 +85,19 @@ void CanonMachine::probe_axes(const Axes& to) {
 
 void CanonMachine::arc_axes(const Axes& to, const Vec3& center, int turn) {
   const core::PlaneAxes ax = core::axes_of(state_->plane);
+  // An arc whose end is apart from its start but which turns less than a
+  // back end can tell from nothing (core::arc_sweep closes it into a full
+  // circle): a radius a billion times its chord.
+  const Vec2 start = core::in_plane(xyz(state_->pos), state_->plane);
+  const Vec2 centre = core::in_plane(center, state_->plane);
+  const double chord = core::distance(start, core::in_plane(xyz(to), state_->plane));
+  const double radius = core::distance(start, centre);
+  if (chord > 1e-6 && chord < 1e-9 * radius) {
+    return refuse(
+        fmt::format("the arc's radius {:g} mm is too large for its chord {:g} mm: it "
+                    "could not be told from a full circle; program a straight move",
+                    radius, chord));
+  }
   Vec3 c = center;
   c[ax.axial] = state_->pos[static_cast<std::size_t>(ax.axial)];  // the start's axial coordinate
   Vec3 normal = core::normal_of(state_->plane);

@@ -1,9 +1,17 @@
 // The interpreter's canonical machine: takes moves in program coordinates and
 // emits canon ops in absolute mm after G92, XY rotation and the work offset
 // (the order LinuxCNC's canon layer applies them), each attributed to a block.
+// It is the canon boundary of every G-code dialect: an op with a number out
+// of canon's range (canon/limits.hpp) is not sent but reported
+// (E_VALUE_OUT_OF_RANGE at its block), as is an arc too flat to tell from a
+// full circle, and the machine sends nothing more:
+// its owner ends the run at the error, as a control stops at an alarm.
 #pragma once
 
+#include <string>
+
 #include "canon/sink.hpp"
+#include "core/diagnostic.hpp"
 #include "gcode/interp/motion.hpp"
 #include "gcode/interp/state.hpp"
 
@@ -11,7 +19,8 @@ namespace usina::gcode {
 
 class CanonMachine final : public MotionTarget {
  public:
-  CanonMachine(canon::Sink& sink, ModalState& state) : sink_(sink), state_(&state) {}
+  CanonMachine(canon::Sink& sink, ModalState& state, core::DiagnosticSink& diags)
+      : sink_(sink), state_(&state), diags_(diags) {}
 
   // The state the machine reads (offsets, feed) and updates (position).
   void bind(ModalState& state) { state_ = &state; }
@@ -42,6 +51,9 @@ class CanonMachine final : public MotionTarget {
 
   const core::SourceLoc& source() const { return src_; }
 
+  // An op was refused for a number out of range (reported already).
+  bool faulted() const { return faulted_; }
+
   // What the ops emitted from now on are for (Origin::Cycle inside a cycle).
   void set_origin(canon::Origin origin) { origin_ = origin; }
 
@@ -61,6 +73,8 @@ class CanonMachine final : public MotionTarget {
   Vec3 to_program(const Vec3& abs) const;
 
  private:
+  // Reports why an op cannot be sent; nothing is sent from then on.
+  void refuse(const std::string& why);
   std::optional<double> feed_rate() const;
   canon::ProgrammedFeed programmed_feed() const;
 
@@ -68,6 +82,8 @@ class CanonMachine final : public MotionTarget {
 
   canon::Sink& sink_;
   ModalState* state_;
+  core::DiagnosticSink& diags_;
+  bool faulted_ = false;
   core::SourceLoc src_;
   canon::Origin origin_ = canon::Origin::Program;
   double hole_diameter_ = 0.0;

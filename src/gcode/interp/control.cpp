@@ -7,8 +7,27 @@
 #include "gcode/interp/block_words.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/program_text.hpp"
+#include "gcode/sub_name.hpp"
 
 namespace usina::gcode {
+namespace {
+
+// A name as a diagnostic can show it: control bytes as \xNN, at most 64 bytes.
+std::string printable(std::string_view name) {
+  std::string out;
+  if (name.size() > 64) return printable(name.substr(0, 61)) + "...";
+  for (const char c : name) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      out += fmt::format("\\x{:02x}", byte);
+    } else {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 const ProgramIndex& Interpreter::index_of(std::uint32_t file) {
   auto it = indexes_.find(file);
@@ -255,12 +274,9 @@ Interpreter::Flow Interpreter::loop_break(const ProgramIndex& idx, std::uint32_t
 std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name) {
   auto cached = sub_files_.find(name);
   if (cached != sub_files_.end()) return cached->second;
-  // The name is only ever a file name: never expanded by a shell (LinuxCNC
-  // passes it to wordexp, which runs $(...)); no folders, no leading dot.
-  if (name.empty() || name.find('/') != std::string::npos || name.front() == '.' ||
-      name.find('\0') != std::string::npos) {
-    return std::nullopt;
-  }
+  // The name is only ever a file name (gcode/sub_name.hpp); call() has
+  // reported why when it is not one.
+  if (subroutine_name_problem(name)) return std::nullopt;
   for (const std::string& dir : options_.subroutine_path) {
     const std::string path = (dir.empty() ? std::string(".") : dir) + "/" + name + ".ngc";
 
@@ -316,6 +332,12 @@ Interpreter::Flow Interpreter::call(const OWord& o) {
   }
   bool whole_file = false;
   if (entry == kNoEntry) {
+    if (auto why = subroutine_name_problem(label)) {
+      error(core::Code::BadSubroutineName, o.col,
+            fmt::format("o<{}> is not in this program and cannot be read from a file: {}",
+                        printable(label), *why));
+      return Flow::Error;
+    }
     auto loaded = load_sub_file(label);
     if (!loaded) {
       error(core::Code::UnknownSubroutine, o.col,

@@ -7,6 +7,7 @@
 #include "gcode/interp/block_words.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/program_text.hpp"
+#include "gcode/word_range.hpp"
 
 namespace usina::gcode {
 
@@ -16,7 +17,7 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
       options_(std::move(options)),
       sink_(sink),
       diags_(diags),
-      machine_(sink, state_),
+      machine_(sink, state_, diags),
       words_(std::make_unique<BlockWords>()) {
   // Programs start in mm whatever the machine's units, as LinuxCNC's
   // stand-alone interpreter does (the conformance traces depend on it).
@@ -78,12 +79,14 @@ bool Interpreter::run(std::uint32_t file) {
   cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
   while (!ended_ && !failed_ && !at_eof_) {
     step();
+    machine_faulted();
     // The sink's operation budget ran out (it reported why): end here.
     if (sink_.stopped()) failed_ = true;
   }
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);
   }
+  machine_faulted();
   if (!failed_ && !ended_) {
     loc_ = {file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
     warn(core::Code::NoProgramEnd, 0,
@@ -128,7 +131,7 @@ Interpreter::Flow Interpreter::step() {
   if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return Flow::Error;
   // The block works on a copy of the modal state: a failed block changes nothing.
   const ModalState before = state_;
-  if (!execute(block_, w)) {
+  if (!execute(block_, w) || machine_faulted()) {
     state_ = before;
     return Flow::Error;
   }
@@ -147,7 +150,7 @@ bool Interpreter::run_block(std::string_view text, const LinePos& where) {
   BlockWords& w = *words_;
   if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return false;
   const ModalState before = state_;
-  if (!execute(block_, w)) {
+  if (!execute(block_, w) || machine_faulted()) {
     state_ = before;
     return false;
   }
@@ -158,8 +161,16 @@ bool Interpreter::finish() {
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);
   }
+  machine_faulted();
   sink_.finish();
   return !failed_;
+}
+
+// The canonical machine refused an op (and reported why): the run stops
+// there, as at any other error.
+bool Interpreter::machine_faulted() {
+  if (machine_.faulted()) failed_ = true;
+  return machine_.faulted();
 }
 
 bool Interpreter::evaluate(const Block& b, BlockWords& w) {
@@ -171,6 +182,9 @@ bool Interpreter::evaluate(const Block& b, BlockWords& w) {
     auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
                                            : gcode::evaluate(b, word.value, *this, err);
     if (!v) return error(err.error, err.col);
+    if (auto why = word_out_of_range(word.letter, *v)) {
+      return error(core::Code::ValueOutOfRange, word.col, *why);
+    }
     if (word.letter == 'G' || word.letter == 'M') {
       // Codes are read in tenths (G38.2 → 382); M codes must be integers.
       const double tenths = std::round(*v * 10.0);

@@ -181,6 +181,7 @@ class Interpreter final : private ParameterSource {
   bool g92(BlockWords& w);
   bool home(BlockWords& w, int g);
   void apply_work_offsets(int n);
+  bool offset_in_range(const char* what, char letter, double value, std::uint32_t col);
   void write_g92_params();
 
   // Motion (motion_exec.cpp).
@@ -188,6 +189,8 @@ class Interpreter final : private ParameterSource {
   Axes target(const BlockWords& w, bool machine_coords) const;
   bool straight(BlockWords& w, GCode g, const Axes& end);
   bool arc(BlockWords& w, GCode g, const Axes& end);
+  bool arc_in_range(const BlockWords& w, Vec2 start, Vec2 stop, Vec2 center, int first_axis,
+                    int second_axis);
   std::optional<Vec2> radius_arc_center(const BlockWords& w, Vec2 start, Vec2 stop, bool ccw,
                                         char first, char second);
   std::optional<Vec2> offset_arc_center(const BlockWords& w, GCode g, Vec2 start, Vec2 stop,
@@ -202,6 +205,7 @@ class Interpreter final : private ParameterSource {
   std::optional<int> whole(const BlockWords& w, char letter, int lo, int hi);
   bool error(core::Code code, std::uint32_t col, std::string message);
   bool error(const InterpError& e, std::uint32_t col = 0);
+  bool machine_faulted();
   void warn(core::Code code, std::uint32_t col, std::string message);
 
   double mm(double program_value) const { return program_value * core::mm_per(state_.units); }

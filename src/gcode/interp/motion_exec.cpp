@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "canon/limits.hpp"
 #include "core/spline.hpp"
 #include "gcode/interp/block_words.hpp"
 #include "gcode/interp/interpreter.hpp"
@@ -138,13 +139,47 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   const std::optional<Vec2> center = w.has('R')
                                          ? radius_arc_center(w, start, stop, ccw, first, second)
                                          : offset_arc_center(w, g, start, stop, first, second);
-  if (!center) return false;
+  if (!center || !arc_in_range(w, start, stop, *center, ax.first, ax.second)) return false;
   Vec3 c3 = core::from_plane(*center, start3[ax.axial], plane);
   if (comp_.active() || !comp_.arc_allowed()) {
     if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, loc_, machine_)) return error(*e);
     return true;
   }
   machine_.arc_axes(end, c3, ccw ? turns : -turns);
+  return true;
+}
+
+// The arc's centre within canon's range, and its angle large enough to
+// tell from a full circle: with a radius a billion times its chord the back
+// ends (core::arc_sweep) would close it into a full turn of that radius.
+// The diagnostic points at R or at the centre word that made it.
+bool Interpreter::arc_in_range(const BlockWords& w, Vec2 start, Vec2 stop, Vec2 center,
+                               int first_axis, int second_axis) {
+  const char first = "IJK"[first_axis];
+  const char second = "IJK"[second_axis];
+  const std::uint32_t col =
+      w.has('R') ? w.col_of('R') : (w.has(first) ? w.col_of(first) : w.col_of(second));
+  const double coords[] = {center.x, center.y};
+  const int axes[] = {first_axis, second_axis};
+  for (int k = 0; k < 2; ++k) {
+    const std::string what = fmt::format("the arc's centre {}", "XYZ"[axes[k]]);
+    if (auto why = canon::length_out_of_range(what.c_str(), coords[k])) {
+      return error(core::Code::ValueOutOfRange, col,
+                   fmt::format("{} (usina's range: docs/rs274ngc.md, Numbers)", *why));
+    }
+  }
+  const double radius = core::distance(start, center);
+  const double chord = core::distance(start, stop);
+  // A centre-format arc whose end is within the geometry tolerance of its
+  // start is a full circle; an R-format arc never is.
+  const bool meant_open = w.has('R') || chord > 1e-6;
+  if (meant_open && chord < 1e-9 * radius) {
+    return error(core::Code::ValueOutOfRange, col,
+                 fmt::format("arc radius {:g} mm is too large for its chord {:g} mm: it turns "
+                             "{:g} rad, which usina cannot tell from a full circle; program a "
+                             "straight move (G1)",
+                             radius, chord, chord / radius));
+  }
   return true;
 }
 

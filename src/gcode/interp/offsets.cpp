@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "canon/limits.hpp"
 #include "gcode/interp/block_words.hpp"
 #include "gcode/interp/interpreter.hpp"
 
@@ -24,6 +25,17 @@ bool is_rotary(int axis) {
 }
 
 }  // namespace
+
+// An offset a block sets (or a tool length it applies) within canon's
+// range, reported at the word it came from: every later move adds it.
+bool Interpreter::offset_in_range(const char* what, char letter, double value, std::uint32_t col) {
+  const std::string name = fmt::format("{} {}", what, letter);
+  if (auto why = canon::length_out_of_range(name.c_str(), value)) {
+    return error(core::Code::ValueOutOfRange, col,
+                 fmt::format("{} (usina's range: docs/rs274ngc.md, Numbers)", *why));
+  }
+  return true;
+}
 
 void Interpreter::apply_work_offsets(int n) {
   const int base = work_offset_base(n);
@@ -71,6 +83,7 @@ bool Interpreter::g92(BlockWords& w) {
       const double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
       // G92: the current point takes the given value. G52: the offset is the value.
       s.g92[i] = g == 920 ? s.pos[i] + old[i] - v : v;
+      if (!offset_in_range("the offset", letter, s.g92[i], w.col_of(letter))) return false;
     }
     params_.set(kG92Enabled, 1.0);
     write_g92_params();
@@ -123,12 +136,18 @@ bool Interpreter::g10(BlockWords& w) {
         continue;
       }
       const double offset = l == 20 ? state_.pos[i] + state_.g5x[i] - value : value;
+      if (!offset_in_range("the work offset", letter, offset, w.col_of(letter))) return false;
       params_.set(base + a, is_rotary(a) ? offset : offset / machine_mm());
     }
     if (linear) {
       Vec3 q = v + xyz(state_.g92);
       const Vec2 r = core::rotate({q.x, q.y}, core::deg_to_rad(params_.get(base + 9)));
       q = {r.x, r.y, q.z};
+      for (int a = 0; a < 3; ++a) {
+        const char letter = kAxisLetters[a];
+        const std::uint32_t col = w.has(letter) ? w.col_of(letter) : w.gcol[kGroupNonModal];
+        if (!offset_in_range("the work offset", letter, abs[a] - q[a], col)) return false;
+      }
       for (int a = 0; a < 3; ++a)
         params_.set(base + a, (abs[a] - q[a]) / machine_mm());
     }
@@ -150,6 +169,7 @@ bool Interpreter::g10(BlockWords& w) {
       t.offset[a] = l == 1 ? v
                            : state_.pos[static_cast<std::size_t>(a)] +
                                  state_.tool_offset[static_cast<std::size_t>(a)] - v;
+      if (!offset_in_range("the tool offset", letter, t.offset[a], w.col_of(letter))) return false;
     }
     options_.tools.set(t);
     return true;
@@ -203,6 +223,16 @@ bool Interpreter::tool_length(BlockWords& w) {
     for (int a = 0; a < 3; ++a) {
       if (w.has(kAxisLetters[a])) next[static_cast<std::size_t>(a)] = mm(w.get(kAxisLetters[a]));
     }
+  }
+  for (int a = 0; a < 3; ++a) {
+    const char letter = kAxisLetters[a];
+    const std::uint32_t col = g == 431 && w.has(letter) ? w.col_of(letter)
+                              : w.has('H')              ? w.col_of('H')
+                                                        : w.gcol[kGroupToolLength];
+    if (!offset_in_range("the tool length offset", letter, next[static_cast<std::size_t>(a)], col))
+      return false;
+  }
+  if (g == 431) {
     w.clear_letter('X');
     w.clear_letter('Y');
     w.clear_letter('Z');

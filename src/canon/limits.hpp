@@ -1,0 +1,41 @@
+// The range of every number a canon op carries (docs/rs274ngc.md, "Numbers"):
+// finite, and within the bounds below. The front ends check it before an op
+// leaves them (CanonMachine), so a back end never sees NaN, an infinity or a
+// length its arithmetic cannot handle; a back end may check it again.
+//
+// Why 1e9: a coordinate of 1e9 mm (1,000 km) is beyond any machine, and a
+// double still resolves 1.2e-7 mm there, finer than usina's 1e-6 mm geometry
+// tolerance (at 1e10 mm the step is 1.9e-6 mm and equal points stop being
+// equal). Squares of such lengths (1e18) and sums of many moves stay far
+// from the double's 1.8e308. The smallest feed keeps a move's time finite:
+// the longest move (a helix of 1e6 turns at 1e9 mm) takes at most ~4e23 s.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "canon/op.hpp"
+
+namespace usina::canon {
+
+inline constexpr double kMaxLength = 1e9;    // mm: coordinates, centres, offsets, sizes
+inline constexpr double kMaxAngle = 1e9;     // degrees: rotary axes A B C
+inline constexpr double kMaxFeed = 1e9;      // mm/min, mm/rev, or 1/min under G93
+inline constexpr double kMinFeed = 1e-6;     // the smallest feed rate that is not 0
+inline constexpr double kMaxSpindle = 1e9;   // rev/min
+inline constexpr double kMaxDwell = 1e9;     // s
+inline constexpr int kMaxTurns = 1'000'001;  // of one arc or helix
+
+// What is wrong with the first number of `op` that is out of range, e.g.
+// "the arc's centre Y (-inf) is not a finite number"; nullopt when every
+// number is in range.
+std::optional<std::string> out_of_range(const OpKind& op);
+
+// A bound as the docs write it: "1e9", "1e-6".
+std::string limit_text(double bound);
+
+// The same check for one value: `what` names it ("X", "the feed rate").
+std::optional<std::string> length_out_of_range(const char* what, double mm);
+std::optional<std::string> feed_out_of_range(const char* what, double rate);
+
+}  // namespace usina::canon

@@ -1,0 +1,19 @@
+// A subroutine called by name (o<name> call) and not defined in the program
+// is read from the file <name>.ngc in a folder of the subroutine path. The
+// name is only ever that file name: never a path, never given to a shell
+// (LinuxCNC passes it to wordexp, which runs $(...)).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace usina::gcode {
+
+// Why `name` cannot be the name of a subroutine file, or nullopt: a path
+// separator ('/', or '\' as on Windows), a leading '.' ('..', hidden
+// files), a control byte (NUL ends a C file name early), or more bytes than
+// a file name may have.
+std::optional<std::string> subroutine_name_problem(std::string_view name);
+
+}  // namespace usina::gcode

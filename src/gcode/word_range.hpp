@@ -1,0 +1,23 @@
+// The range of a word's value (docs/rs274ngc.md, "Numbers"): every dialect
+// checks each word as it is read, so a value no machine could use is an
+// error at the word that holds it, before any arithmetic builds on it.
+// Values computed from in-range words (offsets added, increments summed,
+// scale factors applied) are checked again at the canon boundary
+// (canon/limits.hpp, CanonMachine).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace usina::gcode {
+
+// Bound of every word's value in its program units (mm or inch, degrees,
+// seconds, rev/min): the canon range, so a word within it never overflows
+// what it is multiplied or added into.
+inline constexpr double kMaxWordValue = 1e9;
+
+// Why the value of `letter`'s word is out of range; nullopt when it is in
+// range. G and M words are codes, checked as codes.
+std::optional<std::string> word_out_of_range(char letter, double value);
+
+}  // namespace usina::gcode

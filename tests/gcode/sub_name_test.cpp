@@ -1,0 +1,75 @@
+// A subroutine name is only ever a file name (issue 11: "a '/' in an O-word
+// name says 'unknown subroutine' instead of why").
+#include "gcode/sub_name.hpp"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "romi_test_support.hpp"
+
+namespace usina::gcode {
+namespace {
+
+using core::Code;
+using romi_test::run_in;
+
+TEST(SubroutineName, WhatCannotBeAFileNameIsSaid) {
+  using namespace std::string_literals;
+  EXPECT_EQ(subroutine_name_problem("pocket_2"), std::nullopt);
+  EXPECT_EQ(subroutine_name_problem("$(id)"), std::nullopt);  // never given to a shell
+  EXPECT_NE(subroutine_name_problem("a/b").value_or("").find("'/'"), std::string::npos);
+  EXPECT_NE(subroutine_name_problem("a\\b").value_or("").find("'\\'"), std::string::npos);
+  EXPECT_NE(subroutine_name_problem("..").value_or("").find("'.'"), std::string::npos);
+  EXPECT_NE(subroutine_name_problem(".hidden"), std::nullopt);
+  EXPECT_NE(subroutine_name_problem("a\0b"s).value_or("").find("0x00"), std::string::npos);
+  EXPECT_NE(subroutine_name_problem("a\x1b[2Jb"), std::nullopt);
+  EXPECT_NE(subroutine_name_problem(std::string(252, 'a')), std::nullopt);
+  EXPECT_EQ(subroutine_name_problem(std::string(251, 'a')), std::nullopt);
+}
+
+std::string first_error(const std::string& text, Code& code) {
+  auto r = run_in("rs274ngc", text);
+  for (const core::Diagnostic& d : r->diags.all()) {
+    if (d.severity == core::Severity::Error) {
+      code = d.code;
+      return d.message;
+    }
+  }
+  code = Code::Message;
+  return {};
+}
+
+TEST(SubroutineName, ASlashInACalledNameSaysWhy) {
+  Code code{};
+  const std::string m = first_error("o<a/b> call\nM2\n", code);
+  EXPECT_EQ(code, Code::BadSubroutineName);
+  EXPECT_NE(m.find("contains '/'"), std::string::npos) << m;
+  EXPECT_NE(m.find("not a path"), std::string::npos) << m;
+}
+
+TEST(SubroutineName, OtherEscapesSayWhy) {
+  using namespace std::string_literals;
+  for (const std::string& name : {".."s, "../x"s, "a\\b"s, ".ngc"s, "a\0b"s}) {
+    Code code{};
+    const std::string m = first_error("o<" + name + "> call\nM2\n", code);
+    EXPECT_EQ(code, Code::BadSubroutineName) << name << ": " << m;
+    EXPECT_EQ(m.find('\0'), std::string::npos);  // shown as \x00, not raw
+  }
+}
+
+TEST(SubroutineName, ANameDefinedInTheProgramNeedsNoFile) {
+  // Only a file name is restricted: a subroutine of the program may be named so.
+  auto r = run_in("rs274ngc", "o<a/b> sub\nG0 X1\no<a/b> endsub\no<a/b> call\nM2\n");
+  EXPECT_TRUE(r->ok);
+  EXPECT_FALSE(r->diags.has_errors());
+}
+
+TEST(SubroutineName, AnUnknownPlainNameIsStillUnknown) {
+  Code code{};
+  first_error("o<nothere> call\nM2\n", code);
+  EXPECT_EQ(code, Code::UnknownSubroutine);
+}
+
+}  // namespace
+}  // namespace usina::gcode
