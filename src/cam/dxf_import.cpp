@@ -2,15 +2,22 @@
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstring>
+#include <istream>
 #include <numbers>
+#include <sstream>
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
+#include "cam/dxf_groups.hpp"
 #include "cam/spline_approx.hpp"
 
 namespace usina::cam {
@@ -270,33 +277,96 @@ std::optional<std::vector<Path>> finish(Collector& c, const std::string& name,
   return std::move(c.paths);
 }
 
+std::nullopt_t unreadable(core::DiagnosticSink& diags, const std::string& name,
+                          const std::string& why) {
+  diags.report(
+      {core::Code::DxfUnreadable, core::Severity::Error, {}, fmt::format("{}: {}", name, why)});
+  return std::nullopt;
+}
+
+std::string too_big() {
+  return fmt::format(
+      "larger than {} MiB, more than a part's drawing; usina reads drawings of up "
+      "to {} MiB",
+      kMaxDxfBytes >> 20, kMaxDxfBytes >> 20);
+}
+
+// Reads every byte of `fd` up to kMaxDxfBytes; a pipe or a device is read
+// the same way, so /dev/stdin and process substitution work and /dev/zero ends.
+std::optional<std::string> fd_bytes(int fd, const std::string& file, core::DiagnosticSink& diags) {
+  std::string bytes;
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      return unreadable(diags, file,
+                        fmt::format("cannot read the drawing: {}", std::strerror(errno)));
+    }
+    if (n == 0) return bytes;
+    if (bytes.size() + static_cast<std::size_t>(n) > kMaxDxfBytes) {
+      return unreadable(diags, file, too_big());
+    }
+    bytes.append(buf, static_cast<std::size_t>(n));
+  }
+}
+
+std::optional<std::string> file_bytes(const std::string& file, core::DiagnosticSink& diags) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    return unreadable(diags, file,
+                      fmt::format("cannot open the drawing: {}", std::strerror(errno)));
+  }
+
+  struct stat st {};
+
+  std::optional<std::string> bytes;
+  if (::fstat(fd, &st) != 0) {
+    unreadable(diags, file, fmt::format("cannot read the drawing: {}", std::strerror(errno)));
+  } else if (S_ISDIR(st.st_mode)) {
+    unreadable(diags, file, "a folder, not a drawing");
+  } else if (S_ISREG(st.st_mode) && static_cast<std::uintmax_t>(st.st_size) > kMaxDxfBytes) {
+    unreadable(diags, file, too_big());
+  } else {
+    bytes = fd_bytes(fd, file, diags);
+  }
+  ::close(fd);
+  return bytes;
+}
+
 }  // namespace
+
+std::optional<std::vector<Path>> read_dxf_text(std::string_view text, const std::string& name,
+                                               const DxfOptions& options,
+                                               core::DiagnosticSink& diags) {
+  std::optional<std::string> checked = canonical_dxf(text, name, diags);
+  if (!checked) return std::nullopt;
+  std::istringstream in(std::move(*checked));
+  Collector c(options, name, diags);
+  DL_Dxf dxf;
+  dxf.in(in, &c);  // ends: every line of `in` is within dxflib's limit
+  return finish(c, name, options, diags);
+}
 
 std::optional<std::vector<Path>> read_dxf(std::istream& in, const std::string& name,
                                           const DxfOptions& options, core::DiagnosticSink& diags) {
-  Collector c(options, name, diags);
-  DL_Dxf dxf;
-  if (!dxf.in(in, &c)) {
-    diags.report({core::Code::DxfUnreadable,
-                  core::Severity::Error,
-                  {},
-                  fmt::format("{}: not a readable DXF drawing", name)});
-    return std::nullopt;
+  std::string bytes;
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    if (bytes.size() + static_cast<std::size_t>(in.gcount()) > kMaxDxfBytes) {
+      return unreadable(diags, name, too_big());
+    }
+    bytes.append(buf, static_cast<std::size_t>(in.gcount()));
   }
-  return finish(c, name, options, diags);
+  if (in.bad()) return unreadable(diags, name, "cannot read the drawing");
+  return read_dxf_text(bytes, name, options, diags);
 }
 
 std::optional<std::vector<Path>> read_dxf(const std::string& file, const DxfOptions& options,
                                           core::DiagnosticSink& diags) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    diags.report({core::Code::DxfUnreadable,
-                  core::Severity::Error,
-                  {},
-                  fmt::format("{}: cannot open the drawing", file)});
-    return std::nullopt;
-  }
-  return read_dxf(in, file, options, diags);
+  std::optional<std::string> bytes = file_bytes(file, diags);
+  if (!bytes) return std::nullopt;
+  return read_dxf_text(*bytes, file, options, diags);
 }
 
 }  // namespace usina::cam

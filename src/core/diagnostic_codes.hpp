@@ -108,4 +108,6 @@
   X(ForbiddenArea, E_FORBIDDEN_AREA)               \
   X(ParameterNotModeled, W_PARAMETER_NOT_MODELED)  \
   X(IncrementalAfterG69, W_INCREMENTAL_AFTER_G69)  \
-  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)
+  X(PolarThroughCentre, E_POLAR_THROUGH_CENTRE)   \
+  /* dxf: the reader's checks of a drawing's lines and groups */ \
+  X(DxfMalformed, E_DXF_MALFORMED)
