@@ -24,27 +24,33 @@ cxx="${CXX_FUZZ:-clang++-14}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
-targets=(parser interpreter romi fanuc grbl)
+targets=(parser interpreter romi fanuc grbl dxf)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
+# The targets that read drawings link the cam module and its libraries
+# instead of the gcode module.
+cam_targets=" dxf "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
+cam_flags="$(pkg-config --cflags dxflib polyclipping)" && cam_libs="$(pkg-config --libs dxflib polyclipping)" ||
+  { echo "fuzz.sh: dxflib or polyclipping not found (apt-get install libdxflib-dev libpolyclipping-dev)" >&2; exit 2; }
 
 # The library sources, excluding what src/CMakeLists.txt excludes from the
 # gcode module (work in progress), so the fuzzers build whenever the project does.
 exclude="$(sed -n 's/.*list(FILTER gcode_src EXCLUDE REGEX "\([^"]*\)").*/\1/p' "$root/src/CMakeLists.txt")"
-mapfile -t sources < <(cd "$root" && {
-  ls src/core/*.cpp src/canon/*.cpp
-  find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; }
-} | sort)
+mapfile -t base_sources < <(cd "$root" && ls src/core/*.cpp src/canon/*.cpp | sort)
+mapfile -t gcode_sources < <(cd "$root" &&
+  find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; } | sort)
+mapfile -t cam_sources < <(cd "$root" && ls src/cam/*.cpp | sort)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
+objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
 {
   echo "cxx = $cxx"
-  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined ${FUZZ_EXTRA_FLAGS:-} -I$root/src"
+  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined ${FUZZ_EXTRA_FLAGS:-} -I$root/src $cam_flags"
   echo "lflags = -fsanitize=fuzzer,address,undefined"
   echo "rule cxx"
   echo "  command = \$cxx \$cflags \$defines -MMD -MF \$out.d -c \$in -o \$out"
@@ -52,13 +58,10 @@ mkdir -p "$out"
   echo "  deps = gcc"
   echo "  description = CXX \$in"
   echo "rule link"
-  echo "  command = \$cxx \$lflags \$in -o \$out -lfmt"
+  echo "  command = \$cxx \$lflags \$in -o \$out -lfmt \$libs"
   echo "  description = LINK \$out"
-  objs=()
-  for s in "${sources[@]}"; do
-    o="obj/${s%.cpp}.o"
-    objs+=("$o")
-    echo "build $o: cxx $root/$s"
+  for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}"; do
+    echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
   for t in "${targets[@]}"; do
     if [[ "$dialects" == *" $t "* ]]; then
@@ -67,7 +70,12 @@ mkdir -p "$out"
     else
       echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
     fi
-    echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o ${objs[*]}"
+    if [[ "$cam_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}")"
+      echo "  libs = $cam_libs"
+    else
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${gcode_sources[@]}")"
+    fi
   done
 } > "$out/build.ninja.new"
 # Rewrite only on change, so ninja's incremental state survives.

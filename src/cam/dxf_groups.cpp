@@ -236,6 +236,12 @@ class GroupReader {
                               "characters (AutoCAD writes at most 2,049)",
                               value.size(), kMaxDxfLineLength));
     }
+    if (code == 9 && !value.starts_with('$')) {
+      // dxflib would start an object named by the value: "LINE" would be a line.
+      return fail(lines_.number(), fmt::format("a header variable named \"{}\"; their names (group "
+                                               "9) start with $",
+                                               shown(value)));
+    }
     if (code == 0 || code == 9) {
       if (!close_object()) return false;
       object_.begin(value, lines_.number() - 1);

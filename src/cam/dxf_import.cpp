@@ -30,6 +30,11 @@ bool same_layer(const std::string& a, const std::string& b) {
   });
 }
 
+bool within_range(Vec2 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= kMaxDrawingCoordinate &&
+         std::fabs(v.y) <= kMaxDrawingCoordinate;
+}
+
 double radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;
 }
@@ -188,18 +193,15 @@ class Collector final : public DL_CreationAdapter {
 
   void finish_polyline();
   void finish_spline();
+  std::string spline_beyond_limits(const SplineData& s);
 
   // Takes the entity when every coordinate is a number within
   // kMaxDrawingCoordinate, so that no later stage (Clipper's integer range,
   // arc linearisation) meets a value it cannot take.
   void keep(Path p) {
-    auto ok = [](Vec2 v) {
-      return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= kMaxDrawingCoordinate &&
-             std::fabs(v.y) <= kMaxDrawingCoordinate;
-    };
-    bool good = ok(p.start);
+    bool good = within_range(p.start);
     for (const PathSegment& seg : p.segs)
-      good = good && ok(seg.to) && (!seg.center || ok(*seg.center));
+      good = good && within_range(seg.to) && (!seg.center || within_range(*seg.center));
     if (!good) {
       return warn(fmt::format("a coordinate is not a number or beyond ±{:g} mm; left out",
                               kMaxDrawingCoordinate));
@@ -214,6 +216,8 @@ class Collector final : public DL_CreationAdapter {
   int entity_ = 0;
   std::optional<Poly> poly_;
   std::optional<SplineData> spline_;
+  double spline_work_ = 0;  // (control points × degree)² of the splines so far
+  std::size_t spline_points_ = 0;
 };
 
 void Collector::finish_polyline() {
@@ -237,17 +241,60 @@ void Collector::finish_polyline() {
   if (!path.segs.empty()) keep(std::move(path));
 }
 
+// The chordal tolerance of a spline: the user's, raised to kMinSplineTolerance
+// and to kSplineRelativeTolerance of the control points' extent.
+double spline_tolerance(const std::vector<WeightedPoint>& control, double tolerance) {
+  Vec2 lo = control.front().p;
+  Vec2 hi = lo;
+  for (const WeightedPoint& c : control) {
+    lo = {std::min(lo.x, c.p.x), std::min(lo.y, c.p.y)};
+    hi = {std::max(hi.x, c.p.x), std::max(hi.y, c.p.y)};
+  }
+  return std::max({tolerance, kMinSplineTolerance,
+                   kSplineRelativeTolerance * std::hypot(hi.x - lo.x, hi.y - lo.y)});
+}
+
+// Empty when the spline's control points are within what usina approximates,
+// else why not. Work is (control points × degree)², as core's decomposition
+// into Bézier pieces takes; the budget is the drawing's.
+std::string Collector::spline_beyond_limits(const SplineData& s) {
+  double w_min = 1.0;
+  double w_max = 1.0;
+  for (const WeightedPoint& c : s.control) {
+    if (!within_range(c.p)) {
+      return fmt::format("a control point is not a number or beyond ±{:g} mm",
+                         kMaxDrawingCoordinate);
+    }
+    w_min = std::min(w_min, c.w);
+    w_max = std::max(w_max, c.w);
+  }
+  if (w_min > 0.0 && std::isfinite(w_max) && w_max > kMaxSplineWeightRatio * w_min) {
+    return fmt::format("weights from {:g} to {:g} (usina takes a ratio of up to {:g})", w_min,
+                       w_max, kMaxSplineWeightRatio);
+  }
+  if (s.degree < 1 || s.degree > 25) return {};  // approximate_spline says why
+  const double size = static_cast<double>(s.control.size()) * s.degree;
+  if (spline_work_ + size * size > kMaxSplineWork) {
+    return fmt::format(
+        "of degree {} with {} control points is too large (control points × degree "
+        "up to {:.0f} in one drawing)",
+        s.degree, s.control.size(), std::sqrt(kMaxSplineWork - spline_work_));
+  }
+  spline_work_ += size * size;
+  return {};
+}
+
 void Collector::finish_spline() {
   SplineData s = std::move(*spline_);
   spline_.reset();
   std::vector<Vec2> pts;
   if (!s.control.empty()) {
+    if (const std::string e = spline_beyond_limits(s); !e.empty()) {
+      return warn(fmt::format("SPLINE {}; left out", e));
+    }
     std::string error;
     pts = approximate_spline(s.degree, s.control, s.knots,
-                             options_.spline_tolerance >= kMinSplineTolerance
-                                 ? options_.spline_tolerance
-                                 : kMinSplineTolerance,
-                             error);
+                             spline_tolerance(s.control, options_.spline_tolerance), error);
     if (pts.empty()) return warn(fmt::format("SPLINE {}; left out", error));
   } else if (s.fit.size() >= 2) {
     warn("SPLINE with fit points only: cut through its fit points as straight segments");
@@ -255,6 +302,13 @@ void Collector::finish_spline() {
   } else {
     return warn("SPLINE with neither control points nor fit points; left out");
   }
+  if (spline_points_ + pts.size() > kMaxSplinePoints) {
+    return warn(
+        fmt::format("SPLINE of {} points, more than the {} the splines of a drawing may "
+                    "make (raise --spline-tolerance); left out",
+                    pts.size(), kMaxSplinePoints));
+  }
+  spline_points_ += pts.size();
   Path path{pts.front(), {}, s.closed};
   for (std::size_t i = 1; i < pts.size(); ++i)
     path.segs.push_back({pts[i], std::nullopt, 0});

@@ -24,6 +24,18 @@ inline constexpr double kMaxDrawingCoordinate = 1e5;
 // more chords than a control can follow).
 inline constexpr double kMinSplineTolerance = 1e-4;
 
+// What the splines of one drawing may cost. Their decomposition into Bézier
+// pieces takes time in the square of control points × degree, so the sum of
+// those squares is bounded (one spline of degree 3 may have 2,100 control
+// points); so is the number of points they make. A SPLINE beyond either, or
+// with weights further apart than kMaxSplineWeightRatio, is a warning and is
+// left out. The chordal tolerance is at least kSplineRelativeTolerance of the
+// spline's extent (1 µm for a 1 m curve).
+inline constexpr double kMaxSplineWork = 4e7;
+inline constexpr std::size_t kMaxSplinePoints = 10'000'000;
+inline constexpr double kMaxSplineWeightRatio = 1e6;
+inline constexpr double kSplineRelativeTolerance = 1e-6;
+
 struct DxfOptions {
   std::optional<std::string> layer;  // only this layer (DXF layer names are case-insensitive)
   double spline_tolerance = 0.01;    // mm between a SPLINE and its chords
