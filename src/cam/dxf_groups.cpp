@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include <fmt/format.h>
@@ -28,19 +29,24 @@ std::string_view trimmed(std::string_view s) {
   return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
 
-// A decimal integer of at most 9 digits, blanks around it allowed.
-std::optional<int> integer(std::string_view s) {
+// A decimal integer of at most 18 digits, blanks around it allowed.
+std::optional<long long> integer(std::string_view s) {
   s = trimmed(s);
   const bool minus = !s.empty() && s.front() == '-';
   if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
-  if (s.empty() || s.size() > 9) return std::nullopt;
-  int v = 0;
+  if (s.empty() || s.size() > 18) return std::nullopt;
+  long long v = 0;
   for (const char c : s) {
     if (c < '0' || c > '9') return std::nullopt;
     v = v * 10 + (c - '0');
   }
   return minus ? -v : v;
 }
+
+// Group codes are 0 to 1071 in the DXF reference, negative ones are the
+// API's; a few more digits are harmless to dxflib and keep odd writers read.
+constexpr long long kMinGroupCode = -9999;
+constexpr long long kMaxGroupCode = 9999;
 
 // The lines of the file, numbered from 1. A line ends at LF (CRs before it
 // are dropped, as dxflib drops them); a file without any LF is split at CR
@@ -150,17 +156,19 @@ class ObjectCheck {
 
   std::string count_or_item(const CountRule& r, State& s, int code, std::string_view value) const {
     if (code == r.count_code) {
-      const std::optional<int> n = integer(value);
-      if (!n || *n < 0) {
-        return fmt::format("the {}'s count of {} (group {}) is \"{}\", not a whole number", kind_,
-                           r.items, code, shown(value));
+      const std::optional<long long> n = integer(value);
+      if (!n || *n < 0 || *n > std::numeric_limits<int>::max()) {
+        return fmt::format(
+            "the {}'s count of {} (group {}) is \"{}\", not a whole number from 0 "
+            "to {}",
+            kind_, r.items, code, shown(value), std::numeric_limits<int>::max());
       }
       if (s.counted) return fmt::format("the {} has a second group {}", kind_, code);
       if (s.items > 0) {
         return fmt::format("the {}'s count of {} (group {}) comes after {} of them", kind_, r.items,
                            code, s.items);
       }
-      s = {true, *n, 0};
+      s = {true, static_cast<int>(*n), 0};
     } else if (code == r.item_code) {
       ++s.items;
     } else if (s.items == 0 &&
@@ -209,19 +217,21 @@ class GroupReader {
     std::string_view code_line;
     while (lines_.next(code_line)) {
       const std::size_t at = lines_.number();
-      const std::optional<int> code = integer(code_line);
-      if (!code) {
-        return fail(at, fmt::format("\"{}\" is not a group code (a whole number); the lines of a "
-                                    "DXF file alternate between a group code and its value",
-                                    shown(code_line)));
+      const std::optional<long long> parsed = integer(code_line);
+      if (!parsed || *parsed < kMinGroupCode || *parsed > kMaxGroupCode) {
+        return fail(at,
+                    fmt::format("\"{}\" is not a group code (a whole number, -9999 to 9999); the "
+                                "lines of a DXF file alternate between a group code and its value",
+                                shown(code_line)));
       }
+      const auto code = static_cast<int>(*parsed);
       std::string_view value;
       if (!lines_.next(value)) {
-        return fail(at, fmt::format("group {} has no value line: the file is cut short", *code));
+        return fail(at, fmt::format("group {} has no value line: the file is cut short", code));
       }
-      if (*code == 999) continue;  // a comment: not needed, and dxflib mis-reads some
-      if (!take(*code, value, out)) return false;
-      if ((*code == 0) && value == "EOF") return close_object();
+      if (code == 999) continue;  // a comment: not needed, and dxflib mis-reads some
+      if (!take(code, value, out)) return false;
+      if ((code == 0) && value == "EOF") return close_object();
     }
     if (!close_object()) return false;
     return fail(lines_.number(),
