@@ -18,7 +18,7 @@ using Result = usina::test::Run;
 using usina::test::TempDir;
 
 // Seconds a command may take; a hang ends with status 124 (timeout's).
-constexpr int kTimeLimit = 60;
+constexpr int kTimeLimit = 30;
 
 // `usina <args>` as usina_process.hpp's usina() runs it, under timeout(1);
 // `input` is standard input, through a pipe when `piped`.
