@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -258,7 +258,7 @@ class GroupReader {
     } else if (const std::string e = object_.group(code, value); !e.empty()) {
       return fail(lines_.number() - 1, e);
     }
-    out += fmt::format("{}\n", code);
+    fmt::format_to(std::back_inserter(out), "{}\n", code);
     out.append(value);
     out += '\n';
     if (code == 0 || code == 9) out += object_.reset_counts();
@@ -286,11 +286,11 @@ class GroupReader {
 std::optional<std::string> canonical_dxf(std::string_view bytes, const std::string& name,
                                          core::DiagnosticSink& diags) {
   if (!is_text(bytes, name, diags)) return std::nullopt;
+  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);  // a UTF-8 byte order mark
   if (bytes.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     report(diags, core::Code::DxfUnreadable, name, 1, "the file is empty: not a DXF drawing");
     return std::nullopt;
   }
-  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);  // a UTF-8 byte order mark
   std::string out;
   out.reserve(bytes.size() + bytes.size() / 8);
   GroupReader reader(bytes, name, diags);

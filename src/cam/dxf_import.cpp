@@ -6,13 +6,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <istream>
 #include <numbers>
 #include <sstream>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <sys/stat.h>
@@ -339,44 +340,44 @@ std::nullopt_t unreadable(core::DiagnosticSink& diags, const std::string& name,
 }
 
 std::string too_big() {
-  return fmt::format(
-      "larger than {} MiB, more than a part's drawing; usina reads drawings of up "
-      "to {} MiB",
-      kMaxDxfBytes >> 20, kMaxDxfBytes >> 20);
+  return fmt::format("larger than {} MiB, the most usina reads (a part's drawing is far smaller)",
+                     kMaxDxfBytes >> 20);
+}
+
+std::string reason(int error) {
+  return std::error_code(error, std::generic_category()).message();
 }
 
 // Reads every byte of `fd` up to kMaxDxfBytes; a pipe or a device is read
 // the same way, so /dev/stdin and process substitution work and /dev/zero ends.
 std::optional<std::string> fd_bytes(int fd, const std::string& file, core::DiagnosticSink& diags) {
   std::string bytes;
-  char buf[1 << 16];
+  std::array<char, 1 << 16> buf{};
   for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
+    const ssize_t n = ::read(fd, buf.data(), buf.size());
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) {
-      return unreadable(diags, file,
-                        fmt::format("cannot read the drawing: {}", std::strerror(errno)));
+      return unreadable(diags, file, fmt::format("cannot read the drawing: {}", reason(errno)));
     }
     if (n == 0) return bytes;
     if (bytes.size() + static_cast<std::size_t>(n) > kMaxDxfBytes) {
       return unreadable(diags, file, too_big());
     }
-    bytes.append(buf, static_cast<std::size_t>(n));
+    bytes.append(buf.data(), static_cast<std::size_t>(n));
   }
 }
 
 std::optional<std::string> file_bytes(const std::string& file, core::DiagnosticSink& diags) {
   const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) {
-    return unreadable(diags, file,
-                      fmt::format("cannot open the drawing: {}", std::strerror(errno)));
+    return unreadable(diags, file, fmt::format("cannot open the drawing: {}", reason(errno)));
   }
 
   struct stat st {};
 
   std::optional<std::string> bytes;
   if (::fstat(fd, &st) != 0) {
-    unreadable(diags, file, fmt::format("cannot read the drawing: {}", std::strerror(errno)));
+    unreadable(diags, file, fmt::format("cannot read the drawing: {}", reason(errno)));
   } else if (S_ISDIR(st.st_mode)) {
     unreadable(diags, file, "a folder, not a drawing");
   } else if (S_ISREG(st.st_mode) && static_cast<std::uintmax_t>(st.st_size) > kMaxDxfBytes) {
@@ -405,12 +406,12 @@ std::optional<std::vector<Path>> read_dxf_text(std::string_view text, const std:
 std::optional<std::vector<Path>> read_dxf(std::istream& in, const std::string& name,
                                           const DxfOptions& options, core::DiagnosticSink& diags) {
   std::string bytes;
-  char buf[1 << 16];
-  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+  std::array<char, 1 << 16> buf{};
+  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
     if (bytes.size() + static_cast<std::size_t>(in.gcount()) > kMaxDxfBytes) {
       return unreadable(diags, name, too_big());
     }
-    bytes.append(buf, static_cast<std::size_t>(in.gcount()));
+    bytes.append(buf.data(), static_cast<std::size_t>(in.gcount()));
   }
   if (in.bad()) return unreadable(diags, name, "cannot read the drawing");
   return read_dxf_text(bytes, name, options, diags);

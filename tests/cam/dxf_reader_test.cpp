@@ -2,7 +2,7 @@
 // with a diagnostic naming the file and the line (issue 11, "Time and size").
 #include <unistd.h>
 
-#include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,10 +21,7 @@ struct Read {
   core::DiagnosticList diags;
 
   bool has(core::Code code) const {
-    for (const auto& d : diags.all()) {
-      if (d.code == code) return true;
-    }
-    return false;
+    return std::ranges::any_of(diags.all(), [&](const auto& d) { return d.code == code; });
   }
 
   // The messages, one a line, for failure output and for searching.
@@ -81,7 +78,10 @@ class ScratchFile {
     std::ofstream(path_, std::ios::binary) << bytes;
   }
 
-  ~ScratchFile() { std::remove(path_.c_str()); }
+  ~ScratchFile() {
+    std::error_code ec;
+    std::filesystem::remove(path_, ec);
+  }
 
   const std::string& path() const { return path_; }
 
