@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz/ with clang (ASan + UBSan) into
-# build-fuzz/, replays every regression case of tests/fuzz/regressions/, then
-# runs each fuzzer for SECONDS (default 20) from the seed corpus. Exits 1 when
-# a regression case fails or the fuzzers find a crash, a hang (> 5 s), a leak
-# or undefined behaviour; new crashers are written to tests/fuzz/crashers/.
+# build-fuzz/, replays every regression case of tests/fuzz/regressions/,
+# checks that each target's work grows linearly with long inputs (a long
+# block, a long comment, deep nesting, a big file: tests/fuzz/long_seeds.py
+# and scaling.py), then runs each fuzzer for SECONDS (default 20) from the
+# seed corpus and those long seeds, inputs up to 1 MiB. Exits 1 when a
+# regression case fails, a target's work grows faster than its input, or the
+# fuzzers find a crash, a hang (> 25 s), a leak or undefined behaviour; new
+# crashers are written to tests/fuzz/crashers/.
 #
 #   scripts/fuzz.sh [SECONDS]
 #   scripts/fuzz.sh --build-only               # build build-fuzz/fuzz_* and stop
 #   CXX_FUZZ=clang++-15 scripts/fuzz.sh 60     # another clang
 #   FUZZ_JOBS=1 scripts/fuzz.sh                # run the fuzzers one after the other
+#   FUZZ_TARGETS="dxf fanuc" scripts/fuzz.sh   # only these targets (all are built)
 #   FUZZ_OUT=/tmp/f FUZZ_EXTRA_FLAGS=-fsanitize-recover=undefined scripts/fuzz.sh --build-only
 #                                              # a variant that goes on after known UB
 set -euo pipefail
@@ -24,27 +29,33 @@ cxx="${CXX_FUZZ:-clang++-14}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
-targets=(parser interpreter romi fanuc grbl)
+targets=(parser interpreter romi fanuc grbl dxf)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
+# The targets that read drawings link the cam module and its libraries
+# instead of the gcode module.
+cam_targets=" dxf "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
+cam_flags="$(pkg-config --cflags dxflib polyclipping)" && cam_libs="$(pkg-config --libs dxflib polyclipping)" ||
+  { echo "fuzz.sh: dxflib or polyclipping not found (apt-get install libdxflib-dev libpolyclipping-dev)" >&2; exit 2; }
 
 # The library sources, excluding what src/CMakeLists.txt excludes from the
 # gcode module (work in progress), so the fuzzers build whenever the project does.
 exclude="$(sed -n 's/.*list(FILTER gcode_src EXCLUDE REGEX "\([^"]*\)").*/\1/p' "$root/src/CMakeLists.txt")"
-mapfile -t sources < <(cd "$root" && {
-  ls src/core/*.cpp src/canon/*.cpp
-  find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; }
-} | sort)
+mapfile -t base_sources < <(cd "$root" && ls src/core/*.cpp src/canon/*.cpp | sort)
+mapfile -t gcode_sources < <(cd "$root" &&
+  find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; } | sort)
+mapfile -t cam_sources < <(cd "$root" && ls src/cam/*.cpp | sort)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
+objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
 {
   echo "cxx = $cxx"
-  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined ${FUZZ_EXTRA_FLAGS:-} -I$root/src"
+  echo "cflags = -std=c++20 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined ${FUZZ_EXTRA_FLAGS:-} -I$root/src $cam_flags"
   echo "lflags = -fsanitize=fuzzer,address,undefined"
   echo "rule cxx"
   echo "  command = \$cxx \$cflags \$defines -MMD -MF \$out.d -c \$in -o \$out"
@@ -52,13 +63,10 @@ mkdir -p "$out"
   echo "  deps = gcc"
   echo "  description = CXX \$in"
   echo "rule link"
-  echo "  command = \$cxx \$lflags \$in -o \$out -lfmt"
+  echo "  command = \$cxx \$lflags \$in -o \$out -lfmt \$libs"
   echo "  description = LINK \$out"
-  objs=()
-  for s in "${sources[@]}"; do
-    o="obj/${s%.cpp}.o"
-    objs+=("$o")
-    echo "build $o: cxx $root/$s"
+  for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}"; do
+    echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
   for t in "${targets[@]}"; do
     if [[ "$dialects" == *" $t "* ]]; then
@@ -67,7 +75,12 @@ mkdir -p "$out"
     else
       echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
     fi
-    echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o ${objs[*]}"
+    if [[ "$cam_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}")"
+      echo "  libs = $cam_libs"
+    else
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${gcode_sources[@]}")"
+    fi
   done
 } > "$out/build.ninja.new"
 # Rewrite only on change, so ninja's incremental state survives.
@@ -75,6 +88,9 @@ cmp -s "$out/build.ninja.new" "$out/build.ninja" 2>/dev/null || mv "$out/build.n
 rm -f "$out/build.ninja.new"
 ninja -C "$out" -j "$jobs"
 [[ "$build_only" -eq 1 ]] && exit 0
+if [[ -n "${FUZZ_TARGETS:-}" ]]; then
+  read -r -a targets <<< "$FUZZ_TARGETS"
+fi
 
 failed=0
 
@@ -95,15 +111,40 @@ for t in "${targets[@]}"; do
   done
 done
 
-# 2. Each fuzzer for $seconds (in parallel unless FUZZ_JOBS=1): new inputs go to
-# build-fuzz/corpus/<target>; the checked-in seeds are only read.
+# 2. Long inputs: each family of long_seeds.py at full size and at a quarter;
+# the full one may take at most about four times the quarter's CPU time.
+python3 "$fuzz/long_seeds.py" "$out/long"
+declare -A pid rc
+for t in "${targets[@]}"; do
+  python3 "$fuzz/scaling.py" "$out/fuzz_$t" "$out/long/scaling/$t" > "$out/scaling_$t.log" 2>&1 &
+  pid[$t]=$!
+  if [[ "$jobs" -le 1 ]]; then
+    rc[$t]=0
+    wait "${pid[$t]}" || rc[$t]=$?
+  fi
+done
+for t in "${targets[@]}"; do
+  if [[ -z "${rc[$t]:-}" ]]; then
+    rc[$t]=0
+    wait "${pid[$t]}" || rc[$t]=$?
+  fi
+  cat "$out/scaling_$t.log"
+  [[ "${rc[$t]}" -eq 0 ]] || failed=1
+done
+
+# 3. Each fuzzer for $seconds (in parallel unless FUZZ_JOBS=1): new inputs go to
+# build-fuzz/corpus/<target>; the checked-in seeds and the long ones are only
+# read. Inputs grow to 1 MiB; the hang limit is 25 s (the longest seeds take
+# about 2 s of CPU under ASan: room for a loaded machine, and super-linear
+# work at that size takes minutes).
 mkdir -p "$fuzz/crashers"
+unset pid rc
 declare -A pid rc
 for t in "${targets[@]}"; do
   mkdir -p "$out/corpus/$t"
-  "$out/fuzz_$t" -max_len=4096 -timeout=5 -rss_limit_mb=2048 -max_total_time="$seconds" \
+  "$out/fuzz_$t" -max_len=1048576 -timeout=25 -rss_limit_mb=2048 -max_total_time="$seconds" \
     -dict="$([[ -f "$fuzz/$t.dict" ]] && echo "$fuzz/$t.dict" || echo "$fuzz/gcode.dict")" -artifact_prefix="$fuzz/crashers/$t-" -print_final_stats=1 \
-    "$out/corpus/$t" "$([[ -d "$fuzz/corpus_$t" ]] && echo "$fuzz/corpus_$t" || echo "$fuzz/corpus")" \
+    "$out/corpus/$t" "$([[ -d "$fuzz/corpus_$t" ]] && echo "$fuzz/corpus_$t" || echo "$fuzz/corpus")" "$out/long/fuzz/$t" \
     > "$out/fuzz_$t.log" 2>&1 &
   pid[$t]=$!
   if [[ "$jobs" -le 1 ]]; then

@@ -262,9 +262,18 @@ EXPLAIN = {
         "start from."),
     # cam generators
     "E_DXF_UNREADABLE": (
-        "The drawing given to `usina gen` cannot be opened, or dxflib cannot read it as a DXF "
-        "file.",
+        "The drawing given to `usina gen` cannot be opened or read (a missing file, a folder, "
+        "no permission), is larger than 64 MiB, is empty, or is not a text file (a NUL byte, "
+        "a binary DXF).",
         "Check the path; save the drawing from the CAD program as ASCII DXF (R12 or later)."),
+    "E_DXF_MALFORMED": (
+        "The drawing's lines are not a DXF file's groups: a group code that is not a whole "
+        "number, a value line missing at the end, a line longer than 1,023 characters, no "
+        "`0`/`EOF` group at the end (the file is cut short), or a count that does not match "
+        "what follows it (LWPOLYLINE vertices, group 90; SPLINE knots, control points and fit "
+        "points, groups 72, 73 and 74; LEADER vertices, group 76). The message gives the line.",
+        "Save the drawing again from the CAD program as ASCII DXF; if it was copied or "
+        "downloaded, check that the copy is complete."),
     "E_DXF_NO_ENTITIES": (
         "The drawing has no LINE, ARC, CIRCLE, POLYLINE, LWPOLYLINE or SPLINE to cut, on the "
         "layer chosen with `--layer` or at all (only text, hatches, blocks or ellipses).",

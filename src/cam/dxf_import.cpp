@@ -2,15 +2,23 @@
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <istream>
 #include <numbers>
+#include <sstream>
+#include <system_error>
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
+#include "cam/dxf_groups.hpp"
 #include "cam/spline_approx.hpp"
 
 namespace usina::cam {
@@ -21,6 +29,11 @@ bool same_layer(const std::string& a, const std::string& b) {
     return std::tolower(static_cast<unsigned char>(x)) ==
            std::tolower(static_cast<unsigned char>(y));
   });
+}
+
+bool within_range(Vec2 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= kMaxDrawingCoordinate &&
+         std::fabs(v.y) <= kMaxDrawingCoordinate;
 }
 
 double radians(double degrees) {
@@ -181,18 +194,15 @@ class Collector final : public DL_CreationAdapter {
 
   void finish_polyline();
   void finish_spline();
+  std::string spline_beyond_limits(const SplineData& s);
 
   // Takes the entity when every coordinate is a number within
   // kMaxDrawingCoordinate, so that no later stage (Clipper's integer range,
   // arc linearisation) meets a value it cannot take.
   void keep(Path p) {
-    auto ok = [](Vec2 v) {
-      return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= kMaxDrawingCoordinate &&
-             std::fabs(v.y) <= kMaxDrawingCoordinate;
-    };
-    bool good = ok(p.start);
+    bool good = within_range(p.start);
     for (const PathSegment& seg : p.segs)
-      good = good && ok(seg.to) && (!seg.center || ok(*seg.center));
+      good = good && within_range(seg.to) && (!seg.center || within_range(*seg.center));
     if (!good) {
       return warn(fmt::format("a coordinate is not a number or beyond ±{:g} mm; left out",
                               kMaxDrawingCoordinate));
@@ -207,6 +217,8 @@ class Collector final : public DL_CreationAdapter {
   int entity_ = 0;
   std::optional<Poly> poly_;
   std::optional<SplineData> spline_;
+  double spline_work_ = 0;  // (control points × degree)² of the splines so far
+  std::size_t spline_points_ = 0;
 };
 
 void Collector::finish_polyline() {
@@ -230,17 +242,60 @@ void Collector::finish_polyline() {
   if (!path.segs.empty()) keep(std::move(path));
 }
 
+// The chordal tolerance of a spline: the user's, raised to kMinSplineTolerance
+// and to kSplineRelativeTolerance of the control points' extent.
+double spline_tolerance(const std::vector<WeightedPoint>& control, double tolerance) {
+  Vec2 lo = control.front().p;
+  Vec2 hi = lo;
+  for (const WeightedPoint& c : control) {
+    lo = {std::min(lo.x, c.p.x), std::min(lo.y, c.p.y)};
+    hi = {std::max(hi.x, c.p.x), std::max(hi.y, c.p.y)};
+  }
+  return std::max({tolerance, kMinSplineTolerance,
+                   kSplineRelativeTolerance * std::hypot(hi.x - lo.x, hi.y - lo.y)});
+}
+
+// Empty when the spline's control points are within what usina approximates,
+// else why not. Work is (control points × degree)², as core's decomposition
+// into Bézier pieces takes; the budget is the drawing's.
+std::string Collector::spline_beyond_limits(const SplineData& s) {
+  double w_min = 1.0;
+  double w_max = 1.0;
+  for (const WeightedPoint& c : s.control) {
+    if (!within_range(c.p)) {
+      return fmt::format("a control point is not a number or beyond ±{:g} mm",
+                         kMaxDrawingCoordinate);
+    }
+    w_min = std::min(w_min, c.w);
+    w_max = std::max(w_max, c.w);
+  }
+  if (w_min > 0.0 && std::isfinite(w_max) && w_max > kMaxSplineWeightRatio * w_min) {
+    return fmt::format("weights from {:g} to {:g} (usina takes a ratio of up to {:g})", w_min,
+                       w_max, kMaxSplineWeightRatio);
+  }
+  if (s.degree < 1 || s.degree > 25) return {};  // approximate_spline says why
+  const double size = static_cast<double>(s.control.size()) * s.degree;
+  if (spline_work_ + size * size > kMaxSplineWork) {
+    return fmt::format(
+        "of degree {} with {} control points is too large (control points × degree "
+        "up to {:.0f} in one drawing)",
+        s.degree, s.control.size(), std::sqrt(kMaxSplineWork - spline_work_));
+  }
+  spline_work_ += size * size;
+  return {};
+}
+
 void Collector::finish_spline() {
   SplineData s = std::move(*spline_);
   spline_.reset();
   std::vector<Vec2> pts;
   if (!s.control.empty()) {
+    if (const std::string e = spline_beyond_limits(s); !e.empty()) {
+      return warn(fmt::format("SPLINE {}; left out", e));
+    }
     std::string error;
     pts = approximate_spline(s.degree, s.control, s.knots,
-                             options_.spline_tolerance >= kMinSplineTolerance
-                                 ? options_.spline_tolerance
-                                 : kMinSplineTolerance,
-                             error);
+                             spline_tolerance(s.control, options_.spline_tolerance), error);
     if (pts.empty()) return warn(fmt::format("SPLINE {}; left out", error));
   } else if (s.fit.size() >= 2) {
     warn("SPLINE with fit points only: cut through its fit points as straight segments");
@@ -248,6 +303,13 @@ void Collector::finish_spline() {
   } else {
     return warn("SPLINE with neither control points nor fit points; left out");
   }
+  if (spline_points_ + pts.size() > kMaxSplinePoints) {
+    return warn(
+        fmt::format("SPLINE of {} points, more than the {} the splines of a drawing may "
+                    "make (raise --spline-tolerance); left out",
+                    pts.size(), kMaxSplinePoints));
+  }
+  spline_points_ += pts.size();
   Path path{pts.front(), {}, s.closed};
   for (std::size_t i = 1; i < pts.size(); ++i)
     path.segs.push_back({pts[i], std::nullopt, 0});
@@ -270,33 +332,96 @@ std::optional<std::vector<Path>> finish(Collector& c, const std::string& name,
   return std::move(c.paths);
 }
 
+std::nullopt_t unreadable(core::DiagnosticSink& diags, const std::string& name,
+                          const std::string& why) {
+  diags.report(
+      {core::Code::DxfUnreadable, core::Severity::Error, {}, fmt::format("{}: {}", name, why)});
+  return std::nullopt;
+}
+
+std::string too_big() {
+  return fmt::format("larger than {} MiB, the most usina reads (a part's drawing is far smaller)",
+                     kMaxDxfBytes >> 20);
+}
+
+std::string reason(int error) {
+  return std::error_code(error, std::generic_category()).message();
+}
+
+// Reads every byte of `fd` up to kMaxDxfBytes; a pipe or a device is read
+// the same way, so /dev/stdin and process substitution work and /dev/zero ends.
+std::optional<std::string> fd_bytes(int fd, const std::string& file, core::DiagnosticSink& diags) {
+  std::string bytes;
+  std::array<char, 1 << 16> buf{};
+  for (;;) {
+    const ssize_t n = ::read(fd, buf.data(), buf.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      return unreadable(diags, file, fmt::format("cannot read the drawing: {}", reason(errno)));
+    }
+    if (n == 0) return bytes;
+    if (bytes.size() + static_cast<std::size_t>(n) > kMaxDxfBytes) {
+      return unreadable(diags, file, too_big());
+    }
+    bytes.append(buf.data(), static_cast<std::size_t>(n));
+  }
+}
+
+std::optional<std::string> file_bytes(const std::string& file, core::DiagnosticSink& diags) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    return unreadable(diags, file, fmt::format("cannot open the drawing: {}", reason(errno)));
+  }
+
+  struct stat st {};
+
+  std::optional<std::string> bytes;
+  if (::fstat(fd, &st) != 0) {
+    unreadable(diags, file, fmt::format("cannot read the drawing: {}", reason(errno)));
+  } else if (S_ISDIR(st.st_mode)) {
+    unreadable(diags, file, "a folder, not a drawing");
+  } else if (S_ISREG(st.st_mode) && static_cast<std::uintmax_t>(st.st_size) > kMaxDxfBytes) {
+    unreadable(diags, file, too_big());
+  } else {
+    bytes = fd_bytes(fd, file, diags);
+  }
+  ::close(fd);
+  return bytes;
+}
+
 }  // namespace
+
+std::optional<std::vector<Path>> read_dxf_text(std::string_view text, const std::string& name,
+                                               const DxfOptions& options,
+                                               core::DiagnosticSink& diags) {
+  std::optional<std::string> checked = canonical_dxf(text, name, diags);
+  if (!checked) return std::nullopt;
+  std::istringstream in(std::move(*checked));
+  Collector c(options, name, diags);
+  DL_Dxf dxf;
+  dxf.in(in, &c);  // ends: every line of `in` is within dxflib's limit
+  return finish(c, name, options, diags);
+}
 
 std::optional<std::vector<Path>> read_dxf(std::istream& in, const std::string& name,
                                           const DxfOptions& options, core::DiagnosticSink& diags) {
-  Collector c(options, name, diags);
-  DL_Dxf dxf;
-  if (!dxf.in(in, &c)) {
-    diags.report({core::Code::DxfUnreadable,
-                  core::Severity::Error,
-                  {},
-                  fmt::format("{}: not a readable DXF drawing", name)});
-    return std::nullopt;
+  std::string bytes;
+  std::array<char, 1 << 16> buf{};
+  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
+    if (bytes.size() + static_cast<std::size_t>(in.gcount()) > kMaxDxfBytes) {
+      return unreadable(diags, name, too_big());
+    }
+    bytes.append(buf.data(), static_cast<std::size_t>(in.gcount()));
   }
-  return finish(c, name, options, diags);
+  if (in.bad()) return unreadable(diags, name, "cannot read the drawing");
+  return read_dxf_text(bytes, name, options, diags);
 }
 
 std::optional<std::vector<Path>> read_dxf(const std::string& file, const DxfOptions& options,
                                           core::DiagnosticSink& diags) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    diags.report({core::Code::DxfUnreadable,
-                  core::Severity::Error,
-                  {},
-                  fmt::format("{}: cannot open the drawing", file)});
-    return std::nullopt;
-  }
-  return read_dxf(in, file, options, diags);
+  std::optional<std::string> bytes = file_bytes(file, diags);
+  if (!bytes) return std::nullopt;
+  return read_dxf_text(*bytes, file, options, diags);
 }
 
 }  // namespace usina::cam

@@ -16,6 +16,7 @@
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
+#include "input_limits.hpp"
 #include "render_and_discard.hpp"
 
 #ifndef USINA_FUZZ_DIALECT
@@ -75,8 +76,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint32_t id = sources.add(core::SourceFile::from_string("<fuzz>", std::move(text)));
 
   gcode::InterpOptions opts;
-  opts.max_loop_iterations = 10'000;
-  opts.max_total_iterations = 1'000;
+  opts.max_loop_iterations = fuzz::iterations_for(10'000, size);  // fewer for a long input
+  opts.max_total_iterations = fuzz::iterations_for(1'000, size);
   opts.max_call_depth = 20;
   opts.subroutine_path.clear();  // a fuzzed call must never touch the file system
   if (kFuzzed->comp_bit && (bits & 8u) != 0) opts.ignore_cutter_comp = true;

@@ -12,6 +12,7 @@
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
 #include "gcode/interp/interpreter.hpp"
+#include "input_limits.hpp"
 #include "render_and_discard.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -22,11 +23,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       sources.add(usina::core::SourceFile::from_string("<fuzz>", std::move(text)));
 
   usina::gcode::InterpOptions opts;
-  // Bounds low enough that a loop-heavy input ends well inside the 5 s hang
-  // limit under ASan on a loaded CI machine (100,000 took 1.5-5 s); all loops
-  // together are bounded, so nested loops end too.
-  opts.max_loop_iterations = 10'000;
-  opts.max_total_iterations = 20'000;
+  // Bounds low enough that a loop-heavy input ends well inside the hang limit
+  // under ASan on a loaded CI machine (100,000 took 1.5-5 s); all loops
+  // together are bounded, so nested loops end too; fewer for a long input.
+  opts.max_loop_iterations = usina::fuzz::iterations_for(10'000, size);
+  opts.max_total_iterations = usina::fuzz::iterations_for(20'000, size);
   opts.max_call_depth = 20;
   // No subroutine path: a fuzzed `o<name> call` must never touch the file system.
   opts.subroutine_path.clear();

@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""Long seeds for the fuzz targets, written by scripts/fuzz.sh.
+
+The checked-in seeds are small programs; these reach what they cannot: a long
+block, a long comment, deep nesting, a big file (issue 11: the fuzzers' inputs
+stayed under 1.3 KB, so a DXF line of 1,024 characters and a quadratic fanuc
+block were never met). Each family is written at its full size and at a quarter
+of it, so scripts/fuzz.sh can tell linear work from super-linear work by the
+ratio of the two times (tests/fuzz/scaling.py).
+
+    long_seeds.py OUT_DIR
+
+writes OUT_DIR/scaling/<target>/<family>.<full|quarter>.<ext> for scaling.py
+and OUT_DIR/fuzz/<target>/<family>.<ext>, each under 64 KB, for the fuzzers
+to start from. The output is deterministic; every file is within the
+fuzzers' -max_len (1 MiB).
+"""
+import os
+import sys
+
+MAX_LEN = 1 << 20
+
+
+def repeat_to(unit, size):
+    """`unit` repeated to about `size` bytes (whole units)."""
+    return unit * max(1, size // len(unit))
+
+
+# --- G-code: one text per family, from a size --------------------------------
+
+def moves(n, line, start=""):
+    """`start`, then numbered `line`s (a %-format of i % 97 and i % 89) to about n bytes."""
+    out = [start]
+    size = len(start)
+    i = 0
+    while size < n:
+        out.append(line % (i % 97, i % 89))
+        size += len(out[-1])
+        i += 1
+    return "".join(out)
+
+
+def ngc_families(end="\n", comment=("(", ")"), start="G21 G90 G17", stop="M2", units=""):
+    """Families for rs274ngc-like dialects; `end` ends a block."""
+    open_c, close_c = comment
+    return {
+        # One block of 200 KB: words the parser reads one after the other.
+        "block": lambda n: start + end + "G1 F100 " + repeat_to("X1 Y2 Z3 ", n) + end + stop + end,
+        # A comment of 100 KB inside a block.
+        "comment": lambda n: start + end + "G0 X1 " + open_c + repeat_to("comment ", n) + close_c
+        + end + stop + end,
+        # Brackets nested 10,000 deep (20 KB).
+        "nesting": lambda n: start + end + "G1 F100 X" + "[" * (n // 2) + "1" + "]" * (n // 2)
+        + end + stop + end,
+        # A program of 1 MB: moves, one a block.
+        "program": lambda n: moves(n, "G1 X%%d%s Y%%d%s F600%s" % (units, units, end),
+                                   start + end) + stop + end,
+    }
+
+
+def romi_families():
+    f = ngc_families(end="#\n", comment=(";", ""), start="G71", stop="M02", units=".")
+    f["nesting"] = lambda n: "G71#\nG01 F100 X" + "(" * (n // 2) + "1" + ")" * (n // 2) + "#\nM02#\n"
+    return f
+
+
+def fanuc_families():
+    f = ngc_families(start="%\nO1000\nG21 G90 G17", stop="M30\n%", units=".")
+    return f
+
+
+SIZES = {"block": 200_000, "comment": 100_000, "nesting": 20_000, "program": 1_000_000}
+
+# --- DXF ----------------------------------------------------------------------
+
+
+def pairs(groups):
+    return "".join("%s\n%s\n" % g for g in groups)
+
+
+def entities(body):
+    return "0\nSECTION\n2\nENTITIES\n" + body + "0\nENDSEC\n0\nEOF\n"
+
+
+def dxf_lines(n):
+    unit = pairs([(0, "LINE"), (8, "CUT"), (10, 1), (20, 2), (11, 30), (21, 40)])
+    return entities(repeat_to(unit, n))
+
+
+def dxf_lwpolyline(n):
+    count = n // 20
+    body = pairs([(0, "LWPOLYLINE"), (8, "CUT"), (90, count), (70, 1)])
+    body += "".join(pairs([(10, i % 500), (20, (i * 7) % 300)]) for i in range(count))
+    return entities(body)
+
+
+def dxf_splines(n):
+    unit = pairs([(0, "SPLINE"), (8, "0"), (70, 8), (71, 3), (72, 8), (73, 4), (74, 0)]
+                 + [(40, k) for k in (0, 0, 0, 0, 1, 1, 1, 1)]
+                 + [(10, 0), (20, 0), (10, 10), (20, 20), (10, 30), (20, -20), (10, 40), (20, 0)])
+    return entities(repeat_to(unit, n))
+
+
+def dxf_hatch(n):
+    edges = n // 40
+    body = pairs([(0, "HATCH"), (8, "0"), (2, "X"), (70, 0), (91, 1), (92, 1), (93, edges)])
+    body += "".join(pairs([(72, 1), (10, i), (20, 0), (11, i + 1), (21, 1)]) for i in range(edges))
+    return entities(body + pairs([(0, "LINE"), (8, "0"), (10, 0), (20, 0), (11, 1), (21, 1)]))
+
+
+DXF = {
+    # One value line of 200 KB (dxflib's reader never finished a line of 1 KB).
+    "value": lambda n: entities(pairs([(0, "LINE"), (8, "L" * n), (10, 0), (20, 0), (11, 1),
+                                       (21, 1)])),
+    # A comment of 100 KB, left out before dxflib.
+    "comment": lambda n: pairs([(999, "c" * n)]) + dxf_lines(100),
+    "lines": dxf_lines,
+    "lwpolyline": dxf_lwpolyline,
+    "splines": dxf_splines,
+    "hatch": dxf_hatch,
+}
+DXF_SIZES = {"value": 200_000, "comment": 100_000, "lines": 1_000_000, "lwpolyline": 1_000_000,
+             "splines": 1_000_000, "hatch": 1_000_000}
+
+TARGETS = {
+    "parser": (ngc_families(), SIZES, "ngc"),
+    "interpreter": (ngc_families(), SIZES, "ngc"),
+    "romi": (romi_families(), SIZES, "nc"),
+    "fanuc": (fanuc_families(), SIZES, "nc"),
+    "grbl": (ngc_families(), SIZES, "gcode"),
+    "dxf": (DXF, DXF_SIZES, "dxf"),
+}
+
+
+# The size of the seeds the fuzzers mutate: long enough to pass the limits
+# of a line (1,024 in dxflib, 4,096 values in a block), to nest 10,000 deep
+# and to hold thousands of blocks, short enough that a run of 30 s still makes
+# thousands of inputs (1 MiB seeds made 100 a second).
+FUZZ_SIZE = 64 * 1024
+
+
+def write(path, text):
+    assert len(text) <= MAX_LEN, (path, len(text))
+    with open(path, "w", newline="") as f:
+        f.write(text)
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    for target, (families, sizes, ext) in TARGETS.items():
+        scaling = os.path.join(out, "scaling", target)
+        fuzzing = os.path.join(out, "fuzz", target)
+        os.makedirs(scaling, exist_ok=True)
+        os.makedirs(fuzzing, exist_ok=True)
+        for family, make in families.items():
+            for label, size in (("full", sizes[family]), ("quarter", sizes[family] // 4)):
+                write(os.path.join(scaling, "%s.%s.%s" % (family, label, ext)), make(size))
+            write(os.path.join(fuzzing, "%s.%s" % (family, ext)),
+                  make(min(sizes[family], FUZZ_SIZE - 1024)))
+
+
+if __name__ == "__main__":
+    main()
