@@ -73,3 +73,21 @@ TEST(GrblText, SplitLinesAtLfCrAndCrLf) {
 
 }  // namespace
 }  // namespace usina::gcode
+
+namespace usina::gcode {
+namespace {
+
+// A CR LF file converted once more (CR CR LF, as in UGS's ShapeOko test
+// file): one line end, so the line numbers are the editor's.
+TEST(GrblText, CrCrLfIsOneLineEnd) {
+  const auto r = run_grbl("G0 X1\r\r\nG5 X2\r\r\nM30\r\r\n");
+  ASSERT_EQ(r->errors().size(), 1u);
+  EXPECT_EQ(r->errors()[0].first, 2u);
+  const auto lines = grbl::split_lines("a\r\r\nb\r\rc");
+  ASSERT_EQ(lines.size(), 4u);  // a, b, the blank between two lone CRs, c
+  EXPECT_EQ(lines[1].offset, 4u);
+  EXPECT_EQ(lines[3].offset, 7u);
+}
+
+}  // namespace
+}  // namespace usina::gcode

@@ -66,7 +66,12 @@ std::vector<LineSpan> split_lines(std::string_view text) {
     const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
     out.push_back({at, end - at});
     at = end + 1;
-    if (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ++at;
+    // CR LF is one line end, and so is CR CR LF (a CR LF file converted
+    // once more): an editor shows one line there, and Grbl skips the blank.
+    std::size_t crs = end;
+    while (crs < text.size() && text[crs] == '\r')
+      ++crs;
+    if (crs > end && crs < text.size() && text[crs] == '\n') at = crs + 1;
   }
   return out;
 }
