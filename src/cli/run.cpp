@@ -139,7 +139,8 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   const std::uint32_t main_id = sources.add(std::move(program));
   std::string name = o.dialect;
   if (name == "auto") {
-    const gcode::DialectGuess guess = gcode::guess_dialect(sources.get(main_id)->text());
+    const gcode::DialectGuess guess =
+        gcode::guess_dialect(sources.get(main_id)->text(), o.file == "-" ? "" : o.file);
     name = std::string(guess.dialect);
     if (gcode::find_dialect(name) == nullptr) name = "rs274ngc";
     if (!o.diagnostics.quiet && o.diagnostics.print)

@@ -1,6 +1,7 @@
 // --dialect auto: which dialect a program's text is written in
-// (docs/fanuc.md §12). The first rule that fires over the first 200 lines,
-// outside comments, decides; the reason says which rule it was.
+// (docs/dialects.md, "Guessing the dialect"). A mark only one dialect
+// carries decides alone; else clues (named controls, codes, habits, the
+// end, the file's extension) are weighed. The reason says which decided.
 #pragma once
 
 #include <string>
@@ -13,6 +14,7 @@ struct DialectGuess {
   std::string reason;
 };
 
-DialectGuess guess_dialect(std::string_view text);
+// `file_name` gives the extension as a hint; empty for standard input.
+DialectGuess guess_dialect(std::string_view text, std::string_view file_name = {});
 
 }  // namespace usina::gcode
