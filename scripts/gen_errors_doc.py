@@ -252,7 +252,8 @@ EXPLAIN = {
         "Program `G40` before changing the side; use `G17` or `G18`."),
     "E_UNKNOWN_TOOL": (
         "A tool number (`H` for `G43`, `D` for `G41`/`G42`, or the loaded tool) is not in "
-        "the tool table.",
+        "the tool table given with `--tool-table`. Without `--tool-table` every tool number "
+        "is a tool of unknown length and diameter, taken as 0 (docs/rs274ngc.md, \"Tools\").",
         "Add the tool to the table given with `--tool-table`, or correct `H`/`D`."),
     "E_BAD_MACHINE_PROFILE": (
         "The machine profile given with `--machine` cannot be used: it is not valid TOML, a "

@@ -309,6 +309,11 @@ const ToolEntry* ToolTable::find(int number) const {
 }
 
 void ToolTable::set(ToolEntry entry) {
+  define(std::move(entry));
+  lists_tools_ = true;
+}
+
+void ToolTable::define(ToolEntry entry) {
   const auto it = std::lower_bound(entries_.begin(), entries_.end(), entry.number,
                                    [](const ToolEntry& e, int n) { return e.number < n; });
   if (it != entries_.end() && it->number == entry.number) {
@@ -324,7 +329,7 @@ std::optional<ToolTable> read_tool_table(const core::SourceFile& file, std::uint
     throw std::invalid_argument(
         fmt::format("read_tool_table: mm_per_unit {} is not positive", mm_per_unit));
   }
-  ToolTable table;
+  ToolTable table(true);
   std::map<int, std::uint32_t> line_of;  // tool number -> line it was last read from
   std::size_t bad_lines = 0;
   std::uint32_t line_number = 0;

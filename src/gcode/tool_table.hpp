@@ -31,13 +31,30 @@ struct ToolEntry {
   std::string comment{};               // text after ';', blanks trimmed
 };
 
-// Tools by number. Pointers from find() stay valid until the next set().
+// Tools by number. Pointers from find() stay valid until the next set() or
+// define().
+//
+// A table that lists tools (one read from a file, or filled by set()) is
+// the machine's: a number it does not list is no tool (E_UNKNOWN_TOOL). The
+// default table lists none: with no --tool-table a program is checked
+// without the machine's table, so every number is a tool whose length and
+// diameter are unknown and used as 0 (docs/rs274ngc.md, "Tools").
 class ToolTable {
  public:
+  ToolTable() = default;
+
+  explicit ToolTable(bool lists_tools) : lists_tools_(lists_tools) {}
+
   // The tool numbered `number`, or nullptr.
   const ToolEntry* find(int number) const;
-  // Adds `entry`, replacing any tool of the same number (as G10 L1 does).
+  // Adds `entry`, replacing any tool of the same number; the table then
+  // lists tools.
   void set(ToolEntry entry);
+  // Adds or replaces a tool as the program does (G10 L1/L10/L11): whether
+  // the table lists tools does not change.
+  void define(ToolEntry entry);
+
+  bool lists_tools() const { return lists_tools_; }
 
   std::size_t size() const { return entries_.size(); }
 
@@ -48,6 +65,7 @@ class ToolTable {
 
  private:
   std::vector<ToolEntry> entries_;  // sorted by number, numbers unique
+  bool lists_tools_ = false;
 };
 
 // LinuxCNC docs, "Tool Table Format": orientation Q is 0..9.
@@ -59,7 +77,7 @@ inline constexpr int kMaxToolOrientation = 9;
 // skipped; a tool number given twice is a warning (W_TOOL_REDEFINED) and the
 // later line wins; a line without P, a warning (W_TOOL_WITHOUT_POCKET).
 // nullopt only when lines were bad and no tool was read; a file of blank and
-// comment lines is an empty table. Throws std::invalid_argument when
+// comment lines is an empty table (which lists tools: none). Throws std::invalid_argument when
 // `mm_per_unit` is not a positive finite number (a programmer error).
 std::optional<ToolTable> read_tool_table(const core::SourceFile& file, std::uint32_t file_id,
                                          double mm_per_unit, core::DiagnosticSink& diags);

@@ -171,7 +171,7 @@ bool Interpreter::g10(BlockWords& w) {
                                  state_.tool_offset[static_cast<std::size_t>(a)] - v;
       if (!offset_in_range("the tool offset", letter, t.offset[a], w.col_of(letter))) return false;
     }
-    options_.tools.set(t);
+    options_.tools.define(t);
     return true;
   }
   return error(core::Code::BadWordValue, w.col_of('L'),
@@ -210,7 +210,8 @@ bool Interpreter::tool_length(BlockWords& w) {
     if (w.has('H') && !(h = whole(w, 'H', 0, kMaxToolNumber))) return false;
     const int tool = h ? *h : s.tool;
     const ToolEntry* t = options_.tools.find(tool);
-    if (t == nullptr && tool != 0) {
+    // No tool table: the tool's length is unknown, taken as 0.
+    if (t == nullptr && tool != 0 && options_.tools.lists_tools()) {
       return error(core::Code::UnknownTool, w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength],
                    fmt::format("tool {} is not in the tool table", tool));
     }
@@ -276,7 +277,8 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
     if (w.has('D') && !(d = whole(w, 'D', 0, kMaxToolNumber))) return false;
     const int tool = d ? *d : s.tool;
     const ToolEntry* t = options_.tools.find(tool);
-    if (t == nullptr && tool != 0) {
+    // No tool table: the tool's diameter is unknown, taken as 0.
+    if (t == nullptr && tool != 0 && options_.tools.lists_tools()) {
       return error(core::Code::UnknownTool, w.has('D') ? w.col_of('D') : w.gcol[kGroupCutterComp],
                    fmt::format("tool {} is not in the tool table", tool));
     }
