@@ -267,6 +267,21 @@ EXPLAIN = {
         "no permission), is larger than 64 MiB, is empty, or is not a text file (a NUL byte, "
         "a binary DXF).",
         "Check the path; save the drawing from the CAD program as ASCII DXF (R12 or later)."),
+    "E_MISPLACED_PERCENT": (
+        "A `%` line where the rs274ngc dialect cannot take it. As in LinuxCNC, `%` alone on "
+        "the program's first line (blank lines before it allowed) opens the program and the "
+        "next `%` line ends it; a `%` anywhere else — in the middle of a program that did not "
+        "open with `%`, in a subroutine, or with other text on its line (`%(name)`, `/%`) — "
+        "is an error where it stands, after the blocks before it have run. A program that "
+        "ran on for thousands of lines no longer stops there silently.",
+        "Remove the `%` line if it was pasted in by mistake (two files joined), or put a `%` "
+        "on the first line if the program is meant to stop there; give `%` a line of its own."),
+    "W_UNOPENED_PERCENT": (
+        "The program's last line with anything on it is a `%`, but the program did not open "
+        "with one. usina takes it as the end of the program (nothing follows it); LinuxCNC "
+        "runs the program, then reports an error (\"Bad character '%' used\").",
+        "Add a `%` as the first line, or remove the last one, if the program is to run on "
+        "LinuxCNC."),
     "E_DXF_MALFORMED": (
         "The drawing's lines are not a DXF file's groups: a group code that is not a whole "
         "number, a value line missing at the end, a line longer than 1,023 characters, no "

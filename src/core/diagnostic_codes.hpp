@@ -126,4 +126,7 @@
   X(ToolWithoutPocket, W_TOOL_WITHOUT_POCKET)                    \
   X(ToolRedefined, W_TOOL_REDEFINED)                             \
   /* dxf: the reader's checks of a drawing's lines and groups */ \
-  X(DxfMalformed, E_DXF_MALFORMED)
+  X(DxfMalformed, E_DXF_MALFORMED)                               \
+  /* rs274ngc: '%' lines (issue 12, real programs) */            \
+  X(MisplacedPercent, E_MISPLACED_PERCENT)                       \
+  X(UnopenedPercent, W_UNOPENED_PERCENT)

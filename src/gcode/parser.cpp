@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "gcode/lexer.hpp"
-#include "gcode/program_text.hpp"
 #include "gcode/number_form.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode {
 namespace {
@@ -465,8 +465,16 @@ void Parser::item() {
 void Parser::parse_line() {
   if (lex_.accept('/')) block_.deleted = true;
   if (lex_.peek() == '%') {
+    const std::size_t at = lex_.pos();
     lex_.advance();
     block_.percent = true;
+    // LinuxCNC: '%' stands alone on its line (docs/rs274ngc.md, "'%' lines").
+    if (!lex_.at_end() || block_.deleted) {
+      fail(core::Code::MisplacedPercent, at,
+           "'%' stands alone on its line (blanks allowed): move what else is on it to a line of "
+           "its own");
+    }
+    return;
   }
   if (lex_.peek() == 'N') {
     const std::size_t at = lex_.pos();

@@ -115,15 +115,7 @@ Interpreter::Flow Interpreter::step() {
   }
   loc_ = block_.loc;
   machine_.set_source(loc_);
-  if (block_.percent) {
-    // A first '%' opens the program; the next one ends it.
-    if (percent_mode_ || where.offset > 3 || frames_.size() > 0) {
-      ended_ = true;
-      return Flow::End;
-    }
-    percent_mode_ = true;
-    return Flow::Next;
-  }
+  if (block_.percent) return percent_line(where);
   if (block_.deleted && options_.block_delete) return Flow::Next;
   if (block_.o) return control(*block_.o, where.offset);
   if (block_.empty()) return Flow::Next;

@@ -131,6 +131,7 @@ class Interpreter final : private ParameterSource {
   // The main loop and control flow (control.cpp).
   Flow step();
   Flow control(const OWord& o, std::uint64_t line_offset);
+  Flow percent_line(const LinePos& where);  // percent.cpp
   Flow call(const OWord& o);
   Flow leave_sub(const OWord& o);
   Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
