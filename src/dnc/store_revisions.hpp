@@ -12,6 +12,7 @@
 
 #include "dnc/store.hpp"
 #include "dnc/store_check.hpp"
+#include "dnc/store_program_diff.hpp"
 #include "dnc/store_states.hpp"
 
 namespace usina::dnc {
@@ -80,5 +81,11 @@ StoreResult<Revision> change_state(Store& store, std::string_view program, std::
 
 // The revision released last, nullopt when none is.
 StoreResult<std::optional<Revision>> released_revision(Store& store, std::string_view program);
+
+// The diff of two revisions of a program (both read verified), normalised
+// by the rules of the newer one's dialect, or plain.
+StoreResult<ProgramDiff> diff_revisions(Store& store, std::string_view program,
+                                        std::string_view from, std::string_view to,
+                                        bool normalised);
 
 }  // namespace usina::dnc
