@@ -41,7 +41,9 @@ int bind_one(sqlite3_stmt* s, int index, const SqlValue& v) {
   if (std::holds_alternative<std::monostate>(v)) return sqlite3_bind_null(s, index);
   if (const auto* i = std::get_if<std::int64_t>(&v)) return sqlite3_bind_int64(s, index, *i);
   if (const auto* t = std::get_if<std::string_view>(&v)) {
-    return sqlite3_bind_text64(s, index, t->data(), t->size(), SQLITE_STATIC, SQLITE_UTF8);
+    // An empty view may have no data; SQLite would bind NULL for it.
+    return sqlite3_bind_text64(s, index, t->empty() ? "" : t->data(), t->size(), SQLITE_STATIC,
+                               SQLITE_UTF8);
   }
   const SqlBlob& b = std::get<SqlBlob>(v);
   // A zero-length blob is still a blob, not NULL.
