@@ -46,6 +46,7 @@ void BM_NormalisedDiff1MB(benchmark::State& state) {
   state.counters["blocks_changed"] = static_cast<double>(changed);
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * (a.size() + b.size())));
 }
+
 BENCHMARK(BM_NormalisedDiff1MB)->Unit(benchmark::kMillisecond);
 
 void BM_PlainDiff1MB(benchmark::State& state) {
@@ -56,6 +57,7 @@ void BM_PlainDiff1MB(benchmark::State& state) {
     benchmark::DoNotOptimize(d.diff.deleted);
   }
 }
+
 BENCHMARK(BM_PlainDiff1MB)->Unit(benchmark::kMillisecond);
 
 constexpr int kRevisions = 10'000;
@@ -76,9 +78,9 @@ void store_and_list(benchmark::State& state, const std::string& where) {
     for (int i = 0; i < kRevisions; ++i) {
       const std::string text = "G21 G90\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X" + std::to_string(i) +
                                " Y5\nM2\n(" + where + ")\n";
-      auto put = put_revision(**s, {"P" + std::to_string(i % 100), "", "rs274ngc", text, "bench",
-                                    nullptr},
-                              {"bench", "bench"});
+      auto put =
+          put_revision(**s, {"P" + std::to_string(i % 100), "", "rs274ngc", text, "bench", nullptr},
+                       {"bench", "bench"});
       if (!put) state.SkipWithError(put.error().message.c_str());
     }
     const auto t1 = std::chrono::steady_clock::now();
@@ -101,6 +103,7 @@ void BM_Store10kRevisionsSqlite(benchmark::State& state) {
   std::error_code ec;
   std::filesystem::remove_all(tmpl, ec);
 }
+
 BENCHMARK(BM_Store10kRevisionsSqlite)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_Store10kRevisionsPostgres(benchmark::State& state) {
@@ -108,6 +111,7 @@ void BM_Store10kRevisionsPostgres(benchmark::State& state) {
   if (url == nullptr) return state.SkipWithError("set USINA_BENCH_PG to a postgresql:// URL");
   store_and_list(state, url);
 }
+
 BENCHMARK(BM_Store10kRevisionsPostgres)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

@@ -1,8 +1,9 @@
 // The audit chain and the blobs' hashes against someone who edits the
 // database directly (the triggers dropped first, as they would be).
+#include "dnc/store_audit.hpp"
+
 #include <gtest/gtest.h>
 
-#include "dnc/store_audit.hpp"
 #include "dnc/store_import.hpp"
 #include "dnc/store_revisions.hpp"
 #include "store_fixture.hpp"

@@ -1,15 +1,16 @@
 // kill -9 of a process in the middle of an upload, on both back ends: the
 // store shows whole revisions only (with their audit entries) and takes the
 // next upload.
-#include <gtest/gtest.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <random>
 #include <set>
 #include <thread>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include "dnc/store_audit.hpp"
 #include "dnc/store_revisions.hpp"
@@ -74,11 +75,13 @@ TEST_P(StoreCrash, KilledBetweenTheBlobAndTheRevisionLeavesNothing) {
     o.hook = [fd = fds[1]](std::string_view point) {
       if (point != "upload.blob-written") return;
       [[maybe_unused]] const auto n = ::write(fd, "x", 1);
-      for (;;) ::pause();  // killed here, inside the transaction
+      for (;;)
+        ::pause();  // killed here, inside the transaction
     };
     auto s = Store::open(where(), o);
-    if (s) (void)put_revision(**s, {"BIG", "", "rs274ngc", program(1, 2048), "r", nullptr},
-                              {"ana", "t"});
+    if (s)
+      (void)put_revision(**s, {"BIG", "", "rs274ngc", program(1, 2048), "r", nullptr},
+                         {"ana", "t"});
     ::_exit(1);
   }
   ::close(fds[1]);
@@ -90,8 +93,8 @@ TEST_P(StoreCrash, KilledBetweenTheBlobAndTheRevisionLeavesNothing) {
   EXPECT_FALSE(find_program(*s, "BIG"));
   expect_consistent(*s, 0);
   // The lock died with the process: the next upload goes through.
-  EXPECT_TRUE(put_revision(*s, {"BIG", "", "rs274ngc", program(1, 64), "r", nullptr},
-                           {"ana", "t"}));
+  EXPECT_TRUE(
+      put_revision(*s, {"BIG", "", "rs274ngc", program(1, 64), "r", nullptr}, {"ana", "t"}));
 }
 
 TEST_P(StoreCrash, KilledAtARandomMomentOfManyUploadsLeavesWholeRevisions) {

@@ -2,11 +2,11 @@
 // the normalised and plain program diffs.
 #include "dnc/store_diff.hpp"
 
-#include <gtest/gtest.h>
-
 #include <random>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "dnc/store_normalise.hpp"
 #include "dnc/store_program_diff.hpp"
@@ -55,8 +55,10 @@ TEST(Diff, RandomPairsAreRebuiltAndMinimal) {
     std::uniform_int_distribution<std::uint32_t> sym(0, 1 + static_cast<std::uint32_t>(round % 9));
     Ids a(static_cast<std::size_t>(len(rng)));
     Ids b(static_cast<std::size_t>(len(rng)));
-    for (auto& x : a) x = sym(rng);
-    for (auto& x : b) x = sym(rng);
+    for (auto& x : a)
+      x = sym(rng);
+    for (auto& x : b)
+      x = sym(rng);
     const LineDiff d = diff_ids(a, b);
     ASSERT_EQ(apply(a, b, d), b) << "round " << round;
     EXPECT_EQ(a.size() - d.deleted, lcs(a, b)) << "round " << round;
@@ -78,7 +80,8 @@ TEST(Diff, EmptyAndIdenticalAndDisjoint) {
 TEST(Diff, AShuffleOfManyLinesStillEndsAndRebuilds) {
   // Past the search bound the split is no longer optimal, but still correct.
   Ids a(20000);
-  for (std::uint32_t i = 0; i < a.size(); ++i) a[i] = i;
+  for (std::uint32_t i = 0; i < a.size(); ++i)
+    a[i] = i;
   Ids b = a;
   std::shuffle(b.begin(), b.end(), std::mt19937(5));
   const LineDiff d = diff_ids(a, b);
@@ -87,8 +90,8 @@ TEST(Diff, AShuffleOfManyLinesStillEndsAndRebuilds) {
 
 TEST(Normalise, RenumberingLineEndsBlankLinesPercentAndLeaderAreIgnored) {
   const std::string a = "%\nO1000\nN10 G0 X0 Y0\nN20 G1 X10 F100\n\nN30 M30\n%\n";
-  const std::string b =
-      std::string("\0\0\0", 3) + "%\r\nO1000\r\nN100 G0 X0 Y0;\r\n  \r\nN110G1 X10 F100\r\nM30\r\n%\r\n\x7f";
+  const std::string b = std::string("\0\0\0", 3) +
+                        "%\r\nO1000\r\nN100 G0 X0 Y0;\r\n  \r\nN110G1 X10 F100\r\nM30\r\n%\r\n\x7f";
   EXPECT_TRUE(normalised_diff(a, b).diff.identical());
   EXPECT_FALSE(plain_diff(a, b).diff.identical());
 }

@@ -4,14 +4,15 @@
 // password hashing, and raw SQL for the tests that tamper with the database.
 #pragma once
 
-#include <gtest/gtest.h>
 #include <stdlib.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include "dnc/store.hpp"
 #include "dnc/store_db.hpp"
@@ -59,8 +60,9 @@ class PgServer {
     if (status == 0 && out.starts_with("postgresql://")) {
       url_ = out;
     } else if (status == 77) {
-      why_not_ = "PostgreSQL is not installed (initdb/pg_ctl not found); install Debian's "
-                 "postgresql package (scripts/setup.sh) to run the PostgreSQL half";
+      why_not_ =
+          "PostgreSQL is not installed (initdb/pg_ctl not found); install Debian's "
+          "postgresql package (scripts/setup.sh) to run the PostgreSQL half";
     } else {
       why_not_ = "the throw-away PostgreSQL cluster did not start (tests/dnc/pg_cluster.sh)";
     }
@@ -77,7 +79,8 @@ class PgServer {
     }
     const int status = ::pclose(p);
     if (out) {
-      while (!out->empty() && (out->back() == '\n' || out->back() == '\r')) out->pop_back();
+      while (!out->empty() && (out->back() == '\n' || out->back() == '\r'))
+        out->pop_back();
     }
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
@@ -94,10 +97,12 @@ struct TempFolder {
     char tmpl[] = "/tmp/usina-store-test-XXXXXX";
     path = ::mkdtemp(tmpl) != nullptr ? tmpl : "";
   }
+
   ~TempFolder() {
     std::error_code ec;
     if (!path.empty()) std::filesystem::remove_all(path, ec);
   }
+
   TempFolder(const TempFolder&) = delete;
   TempFolder& operator=(const TempFolder&) = delete;
   std::string path;
@@ -120,7 +125,7 @@ class StoreTest : public ::testing::TestWithParam<Backend> {
   StoreOptions options() {
     StoreOptions o;
     o.now_us = [this] { return now_us; };
-    o.password_ops = 1;          // libsodium's minimum: the tests hash many passwords
+    o.password_ops = 1;  // libsodium's minimum: the tests hash many passwords
     o.password_memory = 8192;
     return o;
   }
@@ -142,9 +147,8 @@ class StoreTest : public ::testing::TestWithParam<Backend> {
 
   // "DROP TRIGGER name" in each back end's spelling.
   void drop_trigger(Database& db, const std::string& name, const std::string& table) {
-    const std::string sql = GetParam() == Backend::Sqlite
-                                ? "DROP TRIGGER " + name
-                                : "DROP TRIGGER " + name + " ON " + table;
+    const std::string sql = GetParam() == Backend::Sqlite ? "DROP TRIGGER " + name
+                                                          : "DROP TRIGGER " + name + " ON " + table;
     ASSERT_TRUE(db.script(sql)) << sql;
   }
 
@@ -161,10 +165,10 @@ inline std::string backend_name(const ::testing::TestParamInfo<Backend>& info) {
   return info.param == Backend::Sqlite ? "Sqlite" : "Postgres";
 }
 
-#define USINA_STORE_BACKENDS(Suite)                                                              \
-  INSTANTIATE_TEST_SUITE_P(Backends, Suite,                                                      \
-                           ::testing::Values(::usina::dnc::Backend::Sqlite,                      \
-                                             ::usina::dnc::Backend::Postgres),                   \
-                           ::usina::dnc::test::backend_name)
+#define USINA_STORE_BACKENDS(Suite)                                                      \
+  INSTANTIATE_TEST_SUITE_P(                                                              \
+      Backends, Suite,                                                                   \
+      ::testing::Values(::usina::dnc::Backend::Sqlite, ::usina::dnc::Backend::Postgres), \
+      ::usina::dnc::test::backend_name)
 
 }  // namespace usina::dnc::test

@@ -1,14 +1,16 @@
 // A folder of programs in, the released set out.
-#include <gtest/gtest.h>
+#include "dnc/store_import.hpp"
+
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <gtest/gtest.h>
+
 #include "dnc/store_audit.hpp"
 #include "dnc/store_hash.hpp"
-#include "dnc/store_import.hpp"
 #include "store_fixture.hpp"
 
 namespace usina::dnc {
@@ -98,8 +100,8 @@ TEST_P(StoreImport, TheReleasedSetIsExportedWithAChecksumList) {
   ASSERT_TRUE(s);
   const std::string v1 = kProgram;
   const std::string v2 = std::string(kProgram) + "(v2)\n";
-  for (const auto& [name, text] : {std::pair{"A1", v1}, std::pair{"A1", v2}, std::pair{"B2", v1},
-                                   std::pair{"C3", v2}}) {
+  for (const auto& [name, text] :
+       {std::pair{"A1", v1}, std::pair{"A1", v2}, std::pair{"B2", v1}, std::pair{"C3", v2}}) {
     ASSERT_TRUE(put_revision(*s, {name, "", "rs274ngc", text, "r", nullptr}, {"ana", "t"}));
   }
   const auto release = [&](const char* name, const std::string& text) {

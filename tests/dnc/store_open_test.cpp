@@ -1,7 +1,7 @@
 // Opening a store: the schema's version, SQLite's WAL, a newer schema refused.
-#include <gtest/gtest.h>
-
 #include <algorithm>
+
+#include <gtest/gtest.h>
 
 #include "dnc/store_check.hpp"
 #include "dnc/store_schema.hpp"

@@ -1,12 +1,13 @@
 // Programs and revisions on both back ends: addresses, immutability, names,
 // sizes, dialects, listings.
-#include <gtest/gtest.h>
+#include "dnc/store_revisions.hpp"
 
 #include <string>
 
+#include <gtest/gtest.h>
+
 #include "dnc/store_hash.hpp"
 #include "dnc/store_names.hpp"
-#include "dnc/store_revisions.hpp"
 #include "sim/machine_profile.hpp"
 #include "store_fixture.hpp"
 
@@ -83,8 +84,10 @@ TEST_P(StoreRevisions, AMovePastTheMachinesTravelFailsTheCheck) {
       "[machine]\nname = \"small\"\n"
       "[axes.x]\nmin = 0.0\nmax = 5.0\nrapid = 5000.0\nmax_feed = 3000.0\naccel = 250.0\n"
       "[axes.y]\nmin = 0.0\nmax = 500.0\nrapid = 5000.0\nmax_feed = 3000.0\naccel = 250.0\n"
-      "[axes.z]\nmin = -100.0\nmax = 100.0\nrapid = 5000.0\nmax_feed = 3000.0\naccel = 250.0\n", 0, diags);
-  for (const auto& d : diags.all()) ADD_FAILURE() << d.message;
+      "[axes.z]\nmin = -100.0\nmax = 100.0\nrapid = 5000.0\nmax_feed = 3000.0\naccel = 250.0\n",
+      0, diags);
+  for (const auto& d : diags.all())
+    ADD_FAILURE() << d.message;
   ASSERT_TRUE(profile);
   Upload u = upload("O1000", kProgram);
   u.profile = &*profile;
@@ -109,10 +112,10 @@ TEST_P(StoreRevisions, TheDialectIsGuessedWhenNotGiven) {
 TEST_P(StoreRevisions, NamesThatArePathsAreRefused) {
   auto s = open();
   ASSERT_TRUE(s);
-  for (const std::string& bad : {std::string("../x"), std::string("/etc/passwd"), std::string("a/b"),
-                                std::string("a\0b", 3), std::string(""), std::string(".hidden"),
-                                std::string("-rf"), std::string("a b"), std::string(65, 'a'),
-                                std::string("caf\xc3\xa9")}) {
+  for (const std::string& bad :
+       {std::string("../x"), std::string("/etc/passwd"), std::string("a/b"), std::string("a\0b", 3),
+        std::string(""), std::string(".hidden"), std::string("-rf"), std::string("a b"),
+        std::string(65, 'a'), std::string("caf\xc3\xa9")}) {
     auto put = put_revision(*s, upload(bad, kProgram), {"ana", "t"});
     ASSERT_FALSE(put) << "accepted '" << bad << "'";
     EXPECT_EQ(put.error().kind, StoreErrorKind::Invalid) << put.error().message;
@@ -171,8 +174,8 @@ TEST_P(StoreRevisions, RevisionsAreListedNewestFirstAndFiltered) {
   std::vector<std::string> hashes;
   for (int i = 0; i < 5; ++i) {
     now_us += 1000;
-    auto put = put_revision(*s, upload("O1000", std::string(kProgram) + "(" + std::to_string(i) + ")\n"),
-                            {"ana", "t"});
+    auto put = put_revision(
+        *s, upload("O1000", std::string(kProgram) + "(" + std::to_string(i) + ")\n"), {"ana", "t"});
     ASSERT_TRUE(put);
     hashes.push_back(put->revision.hash);
   }

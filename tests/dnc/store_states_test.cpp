@@ -1,10 +1,10 @@
 // The revision state graph and the role table, every pair tried.
 #include "dnc/store_states.hpp"
 
-#include <gtest/gtest.h>
-
 #include <set>
 #include <utility>
+
+#include <gtest/gtest.h>
 
 #include "dnc/store_roles.hpp"
 
@@ -16,9 +16,9 @@ using S = RevisionState;
 // docs/dnc.md's graph, written out again so that a change to the code's
 // table fails here until the doc and this agree.
 const std::set<std::pair<S, S>> kEdges = {
-    {S::Draft, S::Checked},       {S::Draft, S::CheckFailed}, {S::Draft, S::Rejected},
-    {S::Checked, S::Approved},    {S::Checked, S::Rejected},  {S::Approved, S::Released},
-    {S::Approved, S::Rejected},   {S::Released, S::Rejected},
+    {S::Draft, S::Checked},     {S::Draft, S::CheckFailed}, {S::Draft, S::Rejected},
+    {S::Checked, S::Approved},  {S::Checked, S::Rejected},  {S::Approved, S::Released},
+    {S::Approved, S::Rejected}, {S::Released, S::Rejected},
 };
 
 TEST(RevisionStates, EveryPairIsAnEdgeExactlyWhenTheGraphSaysSo) {

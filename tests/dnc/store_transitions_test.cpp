@@ -1,9 +1,9 @@
 // Every move between two states tried on a stored revision, on both back
 // ends: the legal ones happen (with an audit entry), the others are refused
 // and change nothing.
-#include <gtest/gtest.h>
-
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "dnc/store_audit.hpp"
 #include "dnc/store_revisions.hpp"

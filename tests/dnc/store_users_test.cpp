@@ -1,9 +1,10 @@
 // Accounts, argon2id, sessions with expiry, login limits, the first admin.
+#include "dnc/store_users.hpp"
+
 #include <gtest/gtest.h>
 
 #include "dnc/store_audit.hpp"
 #include "dnc/store_hash.hpp"
-#include "dnc/store_users.hpp"
 #include "store_fixture.hpp"
 
 namespace usina::dnc {
