@@ -3,6 +3,9 @@
 # Debian's postgresql package on 127.0.0.1, never a mock.
 #   pg_cluster.sh start DIR   initdb (from a cached template) + pg_ctl start in
 #                             DIR; prints postgresql://usina@127.0.0.1:PORT/postgres
+#   pg_cluster.sh start-shared DIR   the same, the URL also written to DIR/url
+#                             (the ctest fixture; exits 0 even without
+#                             PostgreSQL: the tests then say why they skip)
 #   pg_cluster.sh stop DIR    stops it (immediate) and removes DIR
 # Exit 77 (with the reason on stderr) when PostgreSQL is not installed.
 # As root the server runs as the `postgres` user (initdb refuses root).
@@ -19,6 +22,14 @@ find_bin() {
     { dirname "$(command -v initdb)"; return 0; }
   return 1
 }
+
+if [ "$cmd" = start-shared ]; then
+  bash "$0" stop "$dir"
+  url=$(bash "$0" start "$dir") || { echo "no shared cluster; each test starts its own or skips" >&2; exit 0; }
+  echo "$url" >"$dir/url.tmp" && mv "$dir/url.tmp" "$dir/url"
+  echo "$url"
+  exit 0
+fi
 
 if ! bin=$(find_bin); then
   echo "PostgreSQL's initdb and pg_ctl were not found: install Debian's postgresql package (scripts/setup.sh)" >&2

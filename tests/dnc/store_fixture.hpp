@@ -5,9 +5,12 @@
 #pragma once
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -33,7 +36,7 @@ class PgServer {
 
   // A new empty database on the server; its URL.
   std::string fresh_database() {
-    const std::string name = "t" + std::to_string(++databases_);
+    const std::string name = "t" + std::to_string(::getpid()) + "_" + std::to_string(++databases_);
     auto admin = open_postgres(url_);
     if (!admin) return {};
     if (!(*admin)->script("CREATE DATABASE " + name)) return {};
@@ -49,6 +52,13 @@ class PgServer {
 
  private:
   PgServer() {
+    // ctest's fixture (tests/CMakeLists.txt) shares one cluster with every test.
+    if (const char* shared = std::getenv("USINA_TEST_PG_DIR")) {
+      std::ifstream in(std::string(shared) + "/url");
+      std::getline(in, url_);
+      if (url_.starts_with("postgresql://") && open_postgres(url_)) return;
+      url_.clear();
+    }
     char tmpl[] = "/tmp/usina-pg-XXXXXX";
     if (::mkdtemp(tmpl) == nullptr) {
       why_not_ = "cannot make a temporary folder";
