@@ -1,0 +1,190 @@
+"""Running a program through LinuxCNC's rs274 and through usina, and
+comparing the two traces.
+
+rs274 is run exactly as ../shared/conformance/lcnc-trace.sh runs it (a fresh
+empty parameter file, the generic tool table, standard input closed) and its
+canon output converted by ../shared/conformance/canon2jsonl.py, imported
+rather than started per program: a Python start costs more than rs274
+itself. `Engines.self_check` runs lcnc-trace.sh once and fails when the two
+ways disagree. The traces are compared by ../shared/conformance/compare_traces.py."""
+import contextlib
+import io
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+
+class Outcome:
+    """What one engine made of a program: its trace, and its error if it stopped on one."""
+
+    def __init__(self, trace, error, error_line=None, ops=None):
+        self.trace = trace  # JSONL text
+        self.error = error  # None: the program ran to its end
+        self.error_line = error_line  # 1-based, when the engine says it
+        self.ops = ops or []
+
+
+class Difference:
+    def __init__(self, kind, detail, site, text):
+        self.kind = kind  # 'trace', 'usina-error', 'lcnc-error'
+        self.detail = detail  # what differs (the op and field, or the error)
+        self.site = site  # the program line (1-based) where it shows, or None
+        self.text = text  # the comparison's own words
+
+    def signature(self):
+        return f'{self.kind}:{self.detail}'
+
+
+class Engines:
+    def __init__(self, usina, shared, work=None):
+        self.usina = os.path.realpath(usina)
+        self.shared = os.path.realpath(shared)
+        self.conf = os.path.join(self.shared, 'conformance')
+        self.table = os.path.join(self.conf, 'rs274ngc', 'tools', 'generic.tbl')
+        self.work = work or tempfile.mkdtemp(prefix='usina-difffuzz-')
+        if self.conf not in sys.path:
+            sys.path.insert(0, self.conf)
+        import canon2jsonl  # noqa: E402  (from ../shared, never copied)
+        import compare_traces  # noqa: E402
+        self.canon2jsonl, self.compare_traces = canon2jsonl, compare_traces
+        self.runs = 0
+
+    @staticmethod
+    def missing(shared):
+        """Why the fuzzer cannot run here, or None."""
+        if shutil.which('rs274') is None:
+            return 'rs274 (apt-get install linuxcnc-uspace) is not installed'
+        if not os.path.isfile(os.path.join(shared, 'conformance', 'lcnc-trace.sh')):
+            return f'{shared}/conformance/lcnc-trace.sh is missing'
+        return None
+
+    def write(self, text):
+        path = os.path.join(self.work, 'prog.ngc')
+        with open(path, 'w') as f:
+            f.write(text)
+        return path
+
+    def lcnc(self, text):
+        path = self.write(text)
+        var = os.path.join(self.work, 'p.var')
+        canon = os.path.join(self.work, 'p.canon')
+        open(var, 'w').close()
+        with open(canon, 'w') as out:
+            res = subprocess.run(['rs274', '-g', '-v', var, '-t', self.table, path],
+                                 stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.PIPE,
+                                 cwd=self.work, timeout=60)
+        buf = io.StringIO()
+        with contextlib.redirect_stdout(buf):
+            self.canon2jsonl.main(canon)
+        error = None
+        if res.returncode != 0:
+            lines = [ln for ln in res.stderr.decode(errors='replace').splitlines()
+                     if ln.strip() != 'executing']
+            error = '\n'.join(lines[-2:]) or f'rs274 exit {res.returncode}'
+        return Outcome(buf.getvalue(), error, block_line(text, error))
+
+    def run_usina(self, text):
+        path = self.write(text)
+        cmd = [self.usina, 'trace', '--peck-clearance', '0.254', '--machine-units', 'inch',
+               '--tool-table', self.table, 'prog.ngc']
+        res = subprocess.run(cmd, stdin=subprocess.DEVNULL, capture_output=True, cwd=self.work,
+                             timeout=60)
+        err = res.stderr.decode(errors='replace')
+        error, line = None, None
+        if res.returncode != 0:
+            m = re.search(r'prog\.ngc:(\d+):\d+: error: (.*)', err)
+            error = m.group(2) if m else (err.strip().splitlines() or [f'exit {res.returncode}'])[0]
+            line = int(m.group(1)) if m else None
+        return Outcome(res.stdout.decode(errors='replace'), error, line)
+
+    def compare(self, a, b):
+        """compare_traces.py's verdict on two traces: None when they match, else its message."""
+        pa, pb = os.path.join(self.work, 'lcnc.jsonl'), os.path.join(self.work, 'usina.jsonl')
+        with open(pa, 'w') as f:
+            f.write(a)
+        with open(pb, 'w') as f:
+            f.write(b)
+        buf = io.StringIO()
+        saved = sys.argv
+        sys.argv = ['compare_traces.py', pa, pb]
+        try:
+            with contextlib.redirect_stdout(buf):
+                rc = self.compare_traces.main()
+        finally:
+            sys.argv = saved
+        return None if rc == 0 else buf.getvalue().strip()
+
+    def check(self, text):
+        """Runs both; returns (Difference or None, lcnc Outcome, usina Outcome)."""
+        self.runs += 1
+        lc, us = self.lcnc(text), self.run_usina(text)
+        if (lc.error is None) != (us.error is None):
+            if us.error is not None:
+                code = re.search(r'\[(E_[A-Z_]+)\]', us.error)
+                return Difference('usina-error', code.group(1) if code else us.error,
+                                  us.error_line, f'usina: {us.error}'), lc, us
+            first = lc.error.splitlines()[0]
+            return Difference('lcnc-error', first, lc.error_line, f'rs274: {lc.error}'), lc, us
+        verdict = self.compare(lc.trace, us.trace)
+        if verdict is None:
+            return None, lc, us
+        return Difference('trace', trace_detail(verdict, us.trace),
+                          trace_site(verdict, us), verdict), lc, us
+
+    def self_check(self):
+        """lcnc-trace.sh and this runner give the same trace; rs274 works at all."""
+        prog = 'G21 G0 X1 Y2\nG1 Z-1 F100\nG2 X3 Y2 R1\nM2\n'
+        path = self.write(prog)
+        out = subprocess.run(['bash', os.path.join(self.conf, 'lcnc-trace.sh'), path],
+                             capture_output=True, cwd=self.work, timeout=60).stdout.decode()
+        if 'traverse' not in out:
+            return 'rs274 is installed but does not run here'
+        mine = self.lcnc(prog).trace
+        if mine != out:
+            return f'this runner and lcnc-trace.sh disagree:\n{mine}\n---\n{out}'
+        return None
+
+
+def motion_ops(trace):
+    out = []
+    for line in trace.splitlines():
+        if line.strip():
+            o = json.loads(line)
+            if o.get('op') in ('traverse', 'feed', 'arc', 'dwell', 'probe'):
+                out.append(o)
+    return out
+
+
+def trace_detail(verdict, usina_trace):
+    m = re.match(r'op (\d+): (\S+) differs\n\s+expected (\{.*\})', verdict)
+    if m:
+        return f'{json.loads(m.group(3))["op"]}.{m.group(2)}'
+    if verdict.startswith('motion op count'):
+        return 'count'
+    return verdict.splitlines()[0]
+
+
+def trace_site(verdict, us):
+    """The program line of the first motion op that differs, as usina's trace says it."""
+    ops = motion_ops(us.trace)
+    m = re.match(r'op (\d+):', verdict)
+    if m and int(m.group(1)) <= len(ops):
+        return ops[int(m.group(1)) - 1].get('src', [None])[0]
+    if us.error_line is not None:
+        return us.error_line
+    return ops[-1].get('src', [None])[0] if ops else None
+
+
+def block_line(text, error):
+    """The line of the block rs274 names in its error (its last stderr line is the block)."""
+    if not error:
+        return None
+    block = error.splitlines()[-1].strip()
+    for n, line in enumerate(text.splitlines(), 1):
+        if line.strip() == block:
+            return n
+    return None
