@@ -74,5 +74,31 @@ TEST(LinuxcncAgreement, ProbeBackOffUnderG20IsOneHundredthOfAnInch) {
   EXPECT_NEAR(r->param(5063), -0.99, kTol);
 }
 
+// interp_execute.cc computes sin((x * M_PIl) / 180.0): the angle and the
+// sine in long double. Rounded to double, SIN[30] is exactly 0.5 and
+// TAN[45] exactly 1, and SIN[180] is -5e-20, where double arithmetic gives
+// 0.49999999999999994, 0.9999999999999999 and +1.2e-16. FIX, ROUND,
+// comparisons and LN then decide otherwise (rs274 gives these positions).
+TEST(LinuxcncAgreement, TrigonometryInLongDoubleAsLinuxcnc) {
+  auto r =
+      run("G21\n"
+          "G0 X[FIX[SIN[30]*10]] Y[FIX[COS[60]*10]] Z[FIX[TAN[45]*10]]\n"
+          "G0 X[FIX[ASIN[0.5]]] Y[FIX[ACOS[0.5]]] Z[FIX[ATAN[1]/[1]]]\n"
+          "G0 X[[SIN[180] LT 0] + 10*[COS[90] LT 0]] Y[FIX[ATAN[1]/[SQRT[3]]]]\n"
+          "M2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> ends = r->ends();
+  ASSERT_EQ(ends.size(), 3u);
+  EXPECT_EQ(ends[0], (Vec3{5, 5, 10}));
+  EXPECT_EQ(ends[1], (Vec3{30, 60, 45}));
+  EXPECT_EQ(ends[2], (Vec3{11, 30, 45}));
+}
+
+TEST(LinuxcncAgreement, LogarithmOfTheSineOfAHalfTurnIsAnError) {
+  auto r = run("G21\n#1 = LN[SIN[180]]\nM2\n");
+  EXPECT_FALSE(r->ok);
+  EXPECT_EQ(r->diags.error_count(), 1);
+}
+
 }  // namespace
 }  // namespace usina::gcode
