@@ -47,7 +47,8 @@ class Difference:
 
 
 class Engines:
-    def __init__(self, usina, shared, work=None):
+    def __init__(self, usina, shared, work=None, timeout=20.0):
+        self.timeout = timeout  # seconds; a minimiser's cut can leave a loop that never ends
         self.usina = os.path.realpath(usina)
         self.shared = os.path.realpath(shared)
         self.conf = os.path.join(self.shared, 'conformance')
@@ -81,9 +82,12 @@ class Engines:
         canon = os.path.join(self.work, 'p.canon')
         open(var, 'w').close()
         with open(canon, 'w') as out:
-            res = subprocess.run(['rs274', '-g', '-v', var, '-t', self.table, path],
-                                 stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.PIPE,
-                                 cwd=self.work, timeout=60)
+            try:
+                res = subprocess.run(['rs274', '-g', '-v', var, '-t', self.table, path],
+                                     stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.PIPE,
+                                     cwd=self.work, timeout=self.timeout)
+            except subprocess.TimeoutExpired:
+                return Outcome('', f'timeout: rs274 ran over {self.timeout:g} s')
         buf = io.StringIO()
         with contextlib.redirect_stdout(buf):
             self.canon2jsonl.main(canon)
@@ -98,8 +102,11 @@ class Engines:
         path = self.write(text)
         cmd = [self.usina, 'trace', '--peck-clearance', '0.254', '--machine-units', 'inch',
                '--tool-table', self.table, 'prog.ngc']
-        res = subprocess.run(cmd, stdin=subprocess.DEVNULL, capture_output=True, cwd=self.work,
-                             timeout=60)
+        try:
+            res = subprocess.run(cmd, stdin=subprocess.DEVNULL, capture_output=True,
+                                 cwd=self.work, timeout=self.timeout)
+        except subprocess.TimeoutExpired:
+            return Outcome('', f'timeout: usina ran over {self.timeout:g} s')
         err = res.stderr.decode(errors='replace')
         error, line = None, None
         if res.returncode != 0:
@@ -112,9 +119,9 @@ class Engines:
         """compare_traces.py's verdict on two traces: None when they match, else its message."""
         pa, pb = os.path.join(self.work, 'lcnc.jsonl'), os.path.join(self.work, 'usina.jsonl')
         with open(pa, 'w') as f:
-            f.write(centres_on_start_plane(a))
+            f.write(normalise(a))
         with open(pb, 'w') as f:
-            f.write(centres_on_start_plane(b))
+            f.write(normalise(b))
         buf = io.StringIO()
         saved = sys.argv
         sys.argv = ['compare_traces.py', pa, pb, '--tol', str(TOLERANCE_MM)]
@@ -128,7 +135,10 @@ class Engines:
     def check(self, text):
         """Runs both; returns (Difference or None, lcnc Outcome, usina Outcome)."""
         self.runs += 1
-        lc, us = self.lcnc(text), self.run_usina(text)
+        lc = self.lcnc(text)
+        if lc.error and lc.error.startswith('timeout'):
+            return Difference('timeout', 'rs274', None, lc.error), lc, Outcome('', None)
+        us = self.run_usina(text)
         if (lc.error is None) != (us.error is None):
             if us.error is not None:
                 code = re.search(r'\[(E_[A-Z_]+)\]', us.error)
@@ -136,7 +146,16 @@ class Engines:
                                   us.error_line, f'usina: {us.error}'), lc, us
             first = lc.error.splitlines()[0]
             return Difference('lcnc-error', first, lc.error_line, f'rs274: {lc.error}'), lc, us
-        verdict = self.compare(lc.trace, us.trace)
+        lc_trace = lc.trace
+        if lc.error and us.error:
+            if lc.error_line and us.error_line and lc.error_line != us.error_line:
+                return Difference('error-line', f'rs274 line {lc.error_line}', us.error_line,
+                                  f'rs274 stops at line {lc.error_line}: {lc.error}\n'
+                                  f'usina stops at line {us.error_line}: {us.error}'), lc, us
+            # Both refuse the same block: rs274 may have moved in it before
+            # it found the fault (usina checks a block before it moves).
+            lc_trace = motion_prefix(lc.trace, len(motion_ops(us.trace)))
+        verdict = self.compare(lc_trace, us.trace)
         if verdict is None:
             return None, lc, us
         return Difference('trace', trace_detail(verdict, us.trace),
@@ -156,19 +175,26 @@ class Engines:
         return None
 
 
-def centres_on_start_plane(trace):
-    """Each arc's centre moved along its normal onto the plane of its start.
+def normalise(trace):
+    """Both traces, before compare_traces.py sees them:
 
-    trace.md gives a centre the axial coordinate of the arc's start, so that
-    coordinate says nothing the previous op's `to` does not. canon2jsonl.py
-    takes it from the last program position it saw, which is stale after
-    G92 or G5x change between two moves (its centre is then off by the
-    change); on both traces, the start's plane is the true one."""
-    out, last = [], None
+    - each arc's centre is moved along its normal onto the plane of its
+      start. trace.md gives a centre the axial coordinate of the arc's
+      start, so that coordinate says nothing the previous op's `to` does not;
+      canon2jsonl.py takes it from the last program position it saw, which
+      is stale after G92 or G5x change between two moves;
+    - a straight move to where the tool already is (within 1e-6 mm) is
+      dropped: it moves nothing, and whether one is made can hang on an ulp
+      (a cycle started exactly at R, computed in inches by rs274 and in mm
+      by usina)."""
+    out, last = [], [0.0, 0.0, 0.0]  # both start at the machine's origin
     for line in trace.splitlines():
         if not line.strip():
             continue
         o = json.loads(line)
+        if o.get('op') in ('traverse', 'feed') and o.get('to') and \
+                max(abs(a - b) for a, b in zip(o['to'], last)) <= 1e-6:
+            continue
         if o.get('op') == 'arc' and last is not None and o.get('center') and o.get('normal'):
             n = o['normal']
             k = sum(v * v for v in n) ** 0.5
@@ -179,6 +205,19 @@ def centres_on_start_plane(trace):
         if o.get('op') in ('traverse', 'feed', 'arc', 'probe') and o.get('to'):
             last = o['to']
         out.append(json.dumps(o))
+    return '\n'.join(out) + '\n'
+
+
+def motion_prefix(trace, n):
+    """The trace up to its n-th motion op."""
+    out, seen = [], 0
+    for line in trace.splitlines():
+        if line.strip() and json.loads(line).get('op') in ('traverse', 'feed', 'arc', 'dwell',
+                                                           'probe'):
+            if seen == n:
+                break
+            seen += 1
+        out.append(line)
     return '\n'.join(out) + '\n'
 
 
@@ -217,7 +256,5 @@ def block_line(text, error):
     if not error:
         return None
     block = error.splitlines()[-1].strip()
-    for n, line in enumerate(text.splitlines(), 1):
-        if line.strip() == block:
-            return n
-    return None
+    found = [n for n, line in enumerate(text.splitlines(), 1) if line.strip() == block]
+    return found[0] if len(found) == 1 else None

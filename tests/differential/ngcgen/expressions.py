@@ -14,8 +14,11 @@ ATOM = 10
 
 
 class Expr:
-    def __init__(self, text, value, prec=ATOM):
+    def __init__(self, text, value, prec=ATOM, fragile=False):
         self.text, self.value, self.prec = text, value, prec
+        # The value comes from a library function (sin, exp, ...): LinuxCNC
+        # may get it a few ulps apart (it converts angles in long double).
+        self.fragile = fragile
 
     def bracketed(self):
         return self.text if self.prec == ATOM else f'[{self.text}]'
@@ -67,7 +70,8 @@ def combine(b, op, left, right):
     if right.prec == ATOM:
         rt = right.text
     sep = ' ' if b.chance(0.7) or op.isalpha() else ''
-    return Expr(f'{lt}{sep}{op}{sep}{rt}', binary(op, left.value, right.value), p)
+    return Expr(f'{lt}{sep}{op}{sep}{rt}', binary(op, left.value, right.value), p,
+                left.fragile or right.fragile)
 
 
 def literal(b, lo=-10.0, hi=10.0):
@@ -100,22 +104,32 @@ def leaf(b):
     return literal(b)
 
 
+def near_integer(v, tol=1e-9):
+    return abs(v - round(v)) < tol
+
+
 def function(b, x):
-    """A function of x kept inside its domain, or None when none fits."""
+    """A function of x kept inside its domain (and away from its edges when
+    x may be a few ulps off LinuxCNC's value)."""
     v = x.value
-    fns = ['ABS', 'SIN', 'COS', 'FIX', 'FUP', 'ROUND']
-    if abs(v) <= 1:
+    edge = 1e-9 if x.fragile else 0.0
+    fns = ['ABS', 'SIN', 'COS']
+    if not (x.fragile and near_integer(v)):
+        fns += ['FIX', 'FUP']
+    if not (x.fragile and near_integer(v + 0.5)):
+        fns.append('ROUND')
+    if abs(v) <= 1 - edge:
         fns += ['ASIN', 'ACOS']
-    if v >= 0:
+    if v >= edge:
         fns.append('SQRT')
-    if v > 0:
+    if v > edge:
         fns.append('LN')
     if abs(v) < 5:
         fns.append('EXP')
     if abs(math.cos(math.radians(v))) > 0.2:
         fns.append('TAN')
-    if abs(v - round(v)) < 1e-3 and abs(abs(v - math.floor(v)) - 0.5) < 1e-3:
-        fns = [f for f in fns if f != 'ROUND']
+    if abs(abs(v - math.floor(v)) - 0.5) < 1e-3:
+        fns = [f for f in fns if f != 'ROUND']  # halves: LinuxCNC's (int)(x + 0.5)
     f = b.pick(fns)
     d = math.radians
     val = {'ABS': lambda: abs(v), 'SIN': lambda: math.sin(d(v)), 'COS': lambda: math.cos(d(v)),
@@ -124,8 +138,11 @@ def function(b, x):
            'LN': lambda: math.log(v), 'EXP': lambda: math.exp(v),
            'FIX': lambda: float(math.floor(v)), 'FUP': lambda: float(math.ceil(v)),
            'ROUND': lambda: float(math.floor(abs(v) + 0.5) * (1 if v >= 0 else -1))}[f]()
+    if f in ('SIN', 'COS', 'TAN') and abs(val * 2 - round(val * 2)) < 1e-12:
+        val = round(val * 2) / 2  # exact in LinuxCNC's long double (SIN[30] = 0.5)
     name = f.lower() if b.chance(0.2) else f
-    return Expr(f'{name}[{x.text}]', val)
+    fragile = x.fragile or f not in ('ABS', 'FIX', 'FUP', 'ROUND')
+    return Expr(f'{name}[{x.text}]', val, fragile=fragile)
 
 
 def expression(b, depth=2):
@@ -143,22 +160,27 @@ def expression(b, depth=2):
         if x.value == 0 and y.value == 0:
             x = Expr('1', 1.0)
         v = math.degrees(math.atan2(y.value, x.value))
-        return Expr(f'ATAN[{y.text}]/[{x.text}]', v)
+        return Expr(f'ATAN[{y.text}]/[{x.text}]', v, fragile=True)
     if r < 0.22:
         e = expression(b, depth - 1)
-        return Expr(f'-{e.bracketed()}', -e.value)
+        return Expr(f'-{e.bracketed()}', -e.value, fragile=e.fragile)
     left, right = expression(b, depth - 1), expression(b, depth - 1)
     op = b.pick(['+', '-', '*', '/', 'MOD', '**', 'EQ', 'NE', 'GT', 'GE', 'LT', 'LE', 'AND',
                  'OR', 'XOR'], [6, 6, 5, 4, 2, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1])
     if op in ('/', 'MOD') and abs(right.value) < 0.01:
         right = Expr('3', 3.0)
+    if op == 'MOD' and (right.fragile or left.fragile):
+        op = '+'  # a remainder near 0 or near the divisor flips on an ulp
+    if op in ('GT', 'GE', 'LT', 'LE') and (right.fragile or left.fragile) and \
+            abs(left.value - right.value) < 1e-9:
+        op = '+'  # so does a comparison of (nearly) equal values
     if op == '**':
         if left.value <= 0 or left.value > 50:
             left = Expr('2', 2.0)
         right = Expr(str(b.rnd.randint(0, 3)), None)
         right.value = float(right.text)
     if op in ('EQ', 'NE') and b.chance(0.5):
-        right = Expr(left.text, left.value, left.prec)  # equal on purpose
+        right = Expr(left.text, left.value, left.prec, left.fragile)  # equal on purpose
     e = combine(b, op, left, right)
     if not math.isfinite(e.value) or abs(e.value) > 1e6:
         return literal(b)
