@@ -100,5 +100,20 @@ TEST(LinuxcncAgreement, LogarithmOfTheSineOfAHalfTurnIsAnError) {
   EXPECT_EQ(r->diags.error_count(), 1);
 }
 
+// interp_convert.cc convert_coordinate_system: selecting the system already
+// in use does nothing ("continuing to use same coordinate system"), so a new
+// value written to its parameters takes effect only when the system is
+// selected again after another one.
+TEST(LinuxcncAgreement, SelectingTheActiveSystemAgainKeepsItsOffsets) {
+  InterpOptions linuxcnc;
+  linuxcnc.reselect_reloads_work_offsets = false;  // as the rs274ngc dialect runs it
+  auto r = run("G21\n#5223 = 10\nG54\nG0 Z1\nG55\nG54\nG0 Z2\nM2\n", linuxcnc);
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> ends = r->ends();
+  ASSERT_EQ(ends.size(), 2u);
+  EXPECT_NEAR(ends[0].z, 1.0, kTol);
+  EXPECT_NEAR(ends[1].z, 12.0, kTol);
+}
+
 }  // namespace
 }  // namespace usina::gcode

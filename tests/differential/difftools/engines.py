@@ -183,17 +183,17 @@ def normalise(trace):
       start, so that coordinate says nothing the previous op's `to` does not;
       canon2jsonl.py takes it from the last program position it saw, which
       is stale after G92 or G5x change between two moves;
-    - a straight move to where the tool already is (within 1e-6 mm) is
-      dropped: it moves nothing, and whether one is made can hang on an ulp
-      (a cycle started exactly at R, computed in inches by rs274 and in mm
-      by usina)."""
+    - a straight move shorter than the comparison's tolerance is dropped:
+      rs274 prints it as no move or as one of 0.0001 in, and whether one is
+      made at all can hang on an ulp (a cycle started at R, computed in
+      inches by rs274 and in mm by usina)."""
     out, last = [], [0.0, 0.0, 0.0]  # both start at the machine's origin
     for line in trace.splitlines():
         if not line.strip():
             continue
         o = json.loads(line)
         if o.get('op') in ('traverse', 'feed') and o.get('to') and \
-                max(abs(a - b) for a, b in zip(o['to'], last)) <= 1e-6:
+                max(abs(a - b) for a, b in zip(o['to'], last)) < TOLERANCE_MM:
             continue
         if o.get('op') == 'arc' and last is not None and o.get('center') and o.get('normal'):
             n = o['normal']
