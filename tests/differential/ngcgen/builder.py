@@ -33,6 +33,7 @@ class Builder:
         self.motion = None  # 'G0', 'G1', 'cycle', ... (None: G80)
         self.retract = 99
         self.tool = 0  # the tool in the spindle (M6)
+        self.tlo = False  # a tool length offset may be in effect (G43, G43.1)
         self.inverse_time = False
         self.params = {}  # parameter -> value the generator knows
         self.next_o = 100

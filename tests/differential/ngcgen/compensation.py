@@ -42,16 +42,16 @@ def line_words(b, p, q, incremental):
 
 def comp_arc(b, p, heading, rad, incremental):
     """An arc of radius > 2 tool radii, tangent to the heading or turned; returns words, end, heading."""
-    heading += math.radians(b.pick([0, 0, b.uniform(-150, 150)]))
+    heading += math.radians(b.pick([0, 0, b.uniform(-120, 120)]))
     ccw = b.chance(0.5)
-    ra = b.rnd_units(max(rad * b.uniform(2.5, 8), b.mm(2)))
+    ra = b.rnd_units(max(rad * b.uniform(3, 8), b.mm(2)))
     side = 1 if ccw else -1
     centre = (p[0] + ra * math.cos(heading + side * math.pi / 2),
               p[1] + ra * math.sin(heading + side * math.pi / 2))
     off = (b.rnd_units(centre[0] - p[0]), b.rnd_units(centre[1] - p[1]))
     centre = (p[0] + off[0], p[1] + off[1])
     rr = math.hypot(*off)
-    sweep = math.radians(b.uniform(20, 260)) * side
+    sweep = max(math.radians(b.uniform(20, 260)), 3 * rad / ra) * side  # at least 3 radii long
     a0 = math.atan2(p[1] - centre[1], p[0] - centre[0])
     q = [b.rnd_units(centre[0] + rr * math.cos(a0 + sweep)),
          b.rnd_units(centre[1] + rr * math.sin(a0 + sweep))]
@@ -79,8 +79,8 @@ def path(b, p, rad, heading):
         if b.chance(0.35):
             words, q, heading = comp_arc(b, p, heading, rad, incremental)
         else:
-            heading += math.radians(b.pick([0, b.uniform(-150, 150), b.uniform(-150, 150)]))
-            q = heading_move(b, p, heading, max(rad * b.uniform(3, 12), b.mm(3)))
+            heading += math.radians(b.pick([0, b.uniform(-120, 120), b.uniform(-150, 150)]))
+            q = heading_move(b, p, heading, max(rad * b.uniform(4, 12), b.mm(3)))
             words = [b.motion_word('G1')] + line_words(b, p, q, incremental)
         b.need_feed(words)
         b.emit(dm + words)

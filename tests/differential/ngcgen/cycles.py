@@ -14,9 +14,11 @@ def spindle_for(b, g):
     need = {74: 'ccw', 84: 'cw'}.get(g)
     if need is None and g in (86, 87, 88) and b.spindle == 'off':
         need = b.pick(['cw', 'ccw'])
-    if need and b.spindle != need:
+    if need is None and g in (86, 87, 88) and b.speed == 0:
+        need = b.spindle  # turning at S0 is stopped for rs274's canon
+    if need and (b.spindle != need or b.speed == 0):
         words = [b.m(3 if need == 'cw' else 4)]
-        if b.speed == 0 or b.chance(0.3):
+        if b.speed == 0 or b.chance(0.3):  # S0: rs274's canon counts the spindle stopped
             b.speed = float(b.rnd.randint(100, 3000))
             words.append(b.word('S', b.speed))
         b.emit(words)
@@ -75,7 +77,8 @@ def first_block(b, g, state):
             if b.chance(0.7):
                 words.append(word(b, AXES[a], b.rnd_units(b.length(-15, 15))))
         words += [word(b, AXES[n], -depth), word(b, 'R', r_inc)]
-        state.update(r=state['start'] + r_inc, bottom=state['start'] + r_inc - depth)
+        if state['start'] is not None:
+            state.update(r=state['start'] + r_inc, bottom=state['start'] + r_inc - depth)
     else:
         if b.dist != 90:
             words.append(b.g(90))
@@ -84,7 +87,9 @@ def first_block(b, g, state):
         for a in (i1, i2):
             if b.chance(0.8):
                 words.append(word(b, AXES[a], b.rnd_units(b.length(-40, 40))))
-        words += [word(b, AXES[n], state['bottom']), word(b, 'R', state['r'])]
+        exact = state['r'] == state['bottom']  # R at the bottom: no expression's rounding
+        words += [word(b, AXES[n], state['bottom'], 0 if exact else 0.25),
+                  word(b, 'R', state['r'], 0 if exact else 0.25)]
     return words
 
 
@@ -101,7 +106,7 @@ def follow_block(b, g, state):
     if b.dist == 90:
         if b.chance(0.3):
             above = [state['bottom'] + b.length(0, 10)]
-            if state['start'] >= state['bottom']:
+            if state['start'] is not None and state['start'] >= state['bottom']:
                 above.append(state['start'])  # R at the initial level
             state['r'] = b.rnd_units(b.pick(above))
             words.append(word(b, 'R', state['r']))
@@ -130,8 +135,10 @@ def cycle(b):
     r = b.rnd_units(b.length(-5, 10))
     bottom = b.rnd_units(r - b.pick([b.length(0.5, 25), 0.0], [12, 1]))
     start = start_level(b, r, bottom)
-    if b.chance(0.2) and b.pos is not None:
-        start = b.pos[n]  # wherever the tool is
+    if b.chance(0.25):
+        # Wherever the tool is: after another cycle (with or without G80, its
+        # initial level kept or not), a home move, a probe...
+        start = None if b.pos is None else b.pos[n]
     else:
         b.anchor()
         words = [b.g(0), b.word(AXES[n], start)]
@@ -146,7 +153,7 @@ def cycle(b):
     words += cycle_words(b, g, True)
     if g == 87:
         words += g87_words(b, state, True)
-    if b.chance(0.3):
+    if b.chance(0.3) and g != 74:  # G74 with L: known_differences.tsv g74-repeats
         words.append(f'L{b.rnd.randint(1, 4)}')
     b.need_feed(words)
     b.emit(words)
@@ -155,7 +162,7 @@ def cycle(b):
         words = follow_block(b, g, state) + cycle_words(b, g, False)
         if g == 87:
             words += g87_words(b, state, False)
-        if b.chance(0.2):
+        if b.chance(0.2) and g != 74:
             words.append(f'L{b.rnd.randint(1, 3)}')
         b.emit(words)
     b.pos = None

@@ -7,7 +7,7 @@ import math
 from .expressions import Expr, equal_to, expression
 
 SNAPSHOT = ('units', 'plane', 'dist', 'pos', 'feed_ok', 'spindle', 'speed', 'motion', 'retract',
-            'tool', 'params')
+            'tool', 'tlo', 'params')
 
 
 def snapshot(b):
@@ -149,8 +149,10 @@ def call(b):
     if b.pos is not None:
         b.pos = [p + dv for p, dv in zip(b.pos, d)]
     b.motion = None
+    if sub['kind'] == 'moves' and not sub['keeps']:
+        b.plane = 17  # its body says G17 (the recursive one leaves the plane)
     if not sub['keeps']:
-        b.plane, b.dist = 17, 90
+        b.dist = 90
     if sub.get('gout'):
         b.params['#<_gsub_out>'] = vals[0] + vals[1]
 

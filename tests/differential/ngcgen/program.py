@@ -55,7 +55,7 @@ def start(b):
     if b.chance(0.4):
         t = b.rnd.randint(1, 13)
         b.emit([f'T{t}', b.m(6)])
-        b.tool = t
+        b.tool = t  # before the spindle starts: M6 stops it
     if b.chance(0.5):
         b.speed = float(b.rnd.randint(1, 20) * 100)
         b.spindle = b.pick(['cw', 'ccw'])

@@ -76,6 +76,11 @@ def home(b):
 
 def units(b):
     u = 20 if b.units == 21 else 21
+    if b.tlo:
+        # rs274's stand-alone canon keeps a tool length offset in the unit it
+        # was set in across G20/G21 (known_differences.tsv: tlo-units).
+        b.emit([b.g(49)])
+        b.tlo = False
     b.emit([b.g(u)])
     b.set_units(u)
     if b.chance(0.5):
@@ -85,17 +90,24 @@ def units(b):
 def tool(b):
     r = b.rnd.random()
     if r < 0.4:
-        t = b.rnd.randint(0, 13)
+        # Not T0: rs274's stand-alone canon keeps the last tool's data in the
+        # spindle after T0 M6 (known_differences.tsv: t0-keeps-tool).
+        t = b.rnd.randint(1, 13)
         b.emit([f'T{t}', b.m(6)])
         b.tool = t
+        b.spindle = 'off'  # LinuxCNC's tool change stops the spindle
         if b.chance(0.5):
             b.emit([b.g(43)])
+            b.tlo = True
     elif r < 0.7:
         b.emit([b.g(43), f'H{b.rnd.randint(0, 13)}'])
+        b.tlo = True
     elif r < 0.85:
         b.emit([b.g(43.1), b.word('Z', b.rnd_units(b.length(-5, 5)))])
+        b.tlo = True
     else:
         b.emit([b.g(49)])
+        b.tlo = False
     b.pos = None  # the tool tip's program coordinates moved
 
 
@@ -109,7 +121,8 @@ def spindle(b):
     elif r < 0.8:
         b.emit([b.m(b.pick([7, 8, 9]))])
     else:
-        b.emit([b.g(b.pick([61, 61.1, 64]))] + ([b.word('P', 0.01)] if b.chance(0.3) else []))
+        mode = b.pick([61, 61.1, 64])
+        b.emit([b.g(mode)] + ([b.word('P', 0.01)] if mode == 64 and b.chance(0.5) else []))
 
 
 def comment(b):
