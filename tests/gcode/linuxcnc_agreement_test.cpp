@@ -115,5 +115,54 @@ TEST(LinuxcncAgreement, SelectingTheActiveSystemAgainKeepsItsOffsets) {
   EXPECT_NEAR(ends[1].z, 12.0, kTol);
 }
 
+// Issue 12: "a canned cycle started with the tool below the R plane does not
+// first traverse Z up to R". The tool was below R after a G99 cycle, a G80
+// and a new cycle with a higher R: a G80 alone on its block was dropped, so
+// the old cycle went on (its initial level Z10 above the new R5: no rise)
+// and the tool went straight to the next hole through the part. LinuxCNC
+// (convert_motion) ends the cycle at G80; the next one starts at Z1, below
+// R5, and rises straight up first (interp_cycles.cc: "if we're below the R
+// plane, rapid straight up to the R plane").
+TEST(LinuxcncAgreement, CycleAfterG80RisesStraightToRFromBelowIt) {
+  auto r = run("G21 F100\nG0 Z10\nG99 G81 X1 Z-5 R1\nG80\nG81 X2 Z-5 R5\nG80\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> expected{{0, 0, 10}, {1, 0, 10}, {1, 0, 1},  {1, 0, -5}, {1, 0, 1},
+                                   {1, 0, 5},  {2, 0, 5},  {2, 0, -5}, {2, 0, 5}};
+  EXPECT_EQ(r->ends(), expected);
+}
+
+// Once, whatever L is; in every plane.
+TEST(LinuxcncAgreement, CycleAfterG80RisesOnceWithRepeatsInEveryPlane) {
+  auto r =
+      run("G21 F100\nG18 G0 Y10\nG99 G81 X1 Y-5 R1\nG80\nG81 X2 Y-5 R5 L2\nG80\n"
+          "G19 G0 X10\nG99 G81 Y1 X-5 R1\nG80\nG81 Y2 X-5 R5 L2\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> ends = r->ends();
+  ASSERT_EQ(ends.size(), 24u);  // as rs274 traces it
+  // G18: from Y1 over X1 straight up to Y5, then over to X2 and down.
+  EXPECT_EQ(ends[5], (Vec3{1, 5, 0}));
+  EXPECT_EQ(ends[6], (Vec3{2, 5, 0}));
+  EXPECT_EQ(ends[9], (Vec3{2, 5, 0}));  // the repeat: no second rise
+  EXPECT_EQ(ends[10], (Vec3{2, -5, 0}));
+  // G19: from X1 straight up to X5.
+  EXPECT_EQ(ends[17], (Vec3{5, 1, 0}));
+  EXPECT_EQ(ends[18], (Vec3{5, 2, 0}));
+}
+
+TEST(LinuxcncAgreement, AxisWordsAfterG80AreAnError) {
+  auto r = run("G21 F100\nG81 X1 Z-5 R1\nG80\nX5\nM2\n");
+  EXPECT_FALSE(r->ok);
+  ASSERT_FALSE(r->diags.all().empty());
+  EXPECT_EQ(r->diags.all()[0].code, core::Code::AxisWordsConflict);
+  EXPECT_EQ(r->diags.all()[0].loc.line, 4u);
+}
+
+TEST(LinuxcncAgreement, ACycleAfterG80NeedsItsRAgain) {
+  auto r = run("G21 F100\nG81 X1 Z-5 R1\nG80\nG81 X5\nM2\n");
+  EXPECT_FALSE(r->ok);
+  ASSERT_FALSE(r->diags.all().empty());
+  EXPECT_EQ(r->diags.all()[0].code, core::Code::MissingWord);
+}
+
 }  // namespace
 }  // namespace usina::gcode
