@@ -14,6 +14,7 @@
 #include "core/source.hpp"
 #include "core/units.hpp"
 #include "gcode/interp/interpreter.hpp"
+#include "gcode/tool_table.hpp"
 
 namespace usina::gcode {
 namespace {
@@ -162,6 +163,50 @@ TEST(LinuxcncAgreement, ACycleAfterG80NeedsItsRAgain) {
   EXPECT_FALSE(r->ok);
   ASSERT_FALSE(r->diags.all().empty());
   EXPECT_EQ(r->diags.all()[0].code, core::Code::MissingWord);
+}
+
+// A table with tool 8: 3 mm long, 4 mm across.
+InterpOptions tool_eight() {
+  InterpOptions o;
+  ToolEntry t;
+  t.number = 8;
+  t.pocket = 8;
+  t.offset = {0, 0, 3};
+  t.diameter = 4;
+  o.tools.set(t);
+  return o;
+}
+
+// interp_convert.cc convert_tool_length_offset: H goes through
+// find_tool_index, and index 0 is the spindle: G43 H0 applies the length of
+// the tool in the spindle (none before the first M6).
+TEST(LinuxcncAgreement, G43H0IsTheToolInTheSpindle) {
+  auto r = run("G21\nT8 M6\nG0 X0 Y0 Z0\nG43 H0\nG91 G0 X1\nM2\n", tool_eight());
+  ASSERT_TRUE(r->ok) << r->first_error();
+  EXPECT_EQ(r->ends().back(), (Vec3{1, 0, -3}));
+  auto none = run("G21\nG0 X0 Y0 Z0\nG43 H0\nG91 G0 X1\nM2\n", tool_eight());
+  ASSERT_TRUE(none->ok) << none->first_error();
+  EXPECT_EQ(none->ends().back(), (Vec3{1, 0, 0}));
+}
+
+// Likewise convert_cutter_compensation_on: G41 D0 is the spindle's tool.
+TEST(LinuxcncAgreement, G41D0IsTheToolInTheSpindle) {
+  auto r =
+      run("G21 F100\nT8 M6\nG0 X0 Y0 Z0\nG41 D0 G1 X20 Y0\nG1 Y20\nG40 G1 X40\nM2\n", tool_eight());
+  ASSERT_TRUE(r->ok) << r->first_error();
+  // The entry ends 2 mm (the radius) left of the line to (20, 0), square
+  // to the next move: rs274 traces (17.6188, 2.3812) with its 1/8 in tool.
+  const Vec3 entry = r->ends().at(1);
+  EXPECT_GT(entry.y, 1.0);
+  EXPECT_LT(entry.x, 20.0);
+}
+
+// saicanon.cc: after a probe the canon's position is the backed-off stop,
+// and a tool change makes the interpreter read the position from the canon.
+TEST(LinuxcncAgreement, ToolChangeAfterAProbeStartsFromTheProbesStop) {
+  auto r = run("G21 F100\nG38.2 Z-10\nT8 M6\nG91 G1 X1\nM2\n", tool_eight());
+  ASSERT_TRUE(r->ok) << r->first_error();
+  EXPECT_NEAR(r->ends().back().z, -10.0 + 0.254, kTol);
 }
 
 }  // namespace

@@ -188,7 +188,8 @@ bool Interpreter::tool_length(BlockWords& w) {
   if (g == 430 || g == 432) {
     std::optional<int> h;
     if (w.has('H') && !(h = whole(w, 'H', 0, kMaxToolNumber))) return false;
-    const int tool = h ? *h : s.tool;
+    // LinuxCNC's find_tool_index: H0 is pocket 0, the spindle's tool.
+    const int tool = h && *h != 0 ? *h : s.tool;
     const ToolEntry* t = options_.tools.find(tool);
     if (t == nullptr && tool != 0) {
       return error(core::Code::UnknownTool, w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength],
@@ -244,7 +245,7 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   } else {
     std::optional<int> d;
     if (w.has('D') && !(d = whole(w, 'D', 0, kMaxToolNumber))) return false;
-    const int tool = d ? *d : s.tool;
+    const int tool = d && *d != 0 ? *d : s.tool;  // D0: the spindle's tool, as H0
     const ToolEntry* t = options_.tools.find(tool);
     if (t == nullptr && tool != 0) {
       return error(core::Code::UnknownTool, w.has('D') ? w.col_of('D') : w.gcol[kGroupCutterComp],
