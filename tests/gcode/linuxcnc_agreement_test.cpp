@@ -165,6 +165,21 @@ TEST(LinuxcncAgreement, ACycleAfterG80NeedsItsRAgain) {
   EXPECT_EQ(r->diags.all()[0].code, core::Code::MissingWord);
 }
 
+// LinuxCNC computes a cycle in inches under G20; usina in mm. An R the
+// program computes, [-7.192 + 7.57577] = 0.38377000000000017, lies a few ulps
+// above the initial level Z0.38377, so rs274 rises straight up to it before
+// it moves over (its trace); rounded to 15 digits it was the level itself.
+TEST(LinuxcncAgreement, AnInchRComputedAnUlpAboveTheInitialLevelIsAbove) {
+  auto r =
+      run("G20 F10\nG0 X0 Y0 Z0.38377\nG99 G81 X1 Z-0.2 R0.19616\nX2 R[-7.192 + 7.57577]\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> ends = r->ends();
+  ASSERT_EQ(ends.size(), 9u);
+  EXPECT_NEAR(ends[5].x, 25.4, 1e-9);  // up at the first hole
+  EXPECT_NEAR(ends[5].z, 0.38377 * core::kMmPerInch, 1e-6);
+  EXPECT_NEAR(ends[6].x, 50.8, 1e-9);  // then over to the second
+}
+
 // A table with tool 8: 3 mm long, 4 mm across.
 InterpOptions tool_eight() {
   InterpOptions o;
