@@ -180,6 +180,21 @@ TEST(LinuxcncAgreement, AnInchRComputedAnUlpAboveTheInitialLevelIsAbove) {
   EXPECT_NEAR(ends[6].x, 50.8, 1e-9);  // then over to the second
 }
 
+// LinuxCNC reads (and evaluates) every O-word line execution reaches: an
+// elseif after the branch that ran is evaluated before the skip to endif,
+// so its division by zero is an error there too (rs274: "Attempt to divide
+// by zero" at the elseif).
+TEST(LinuxcncAgreement, ElseifAfterTheBranchThatRanIsStillEvaluated) {
+  auto r =
+      run("G21\n#1 = 0\no102 if [0]\nG0 X1\no102 elseif [1]\nG0 X2\no102 elseif [8/#1]\n"
+          "G0 X4\no102 endif\nG0 X3\nM2\n");
+  EXPECT_FALSE(r->ok);
+  ASSERT_FALSE(r->diags.all().empty());
+  EXPECT_EQ(r->diags.all()[0].code, core::Code::DivisionByZero);
+  EXPECT_EQ(r->diags.all()[0].loc.line, 7u);
+  EXPECT_EQ(r->ends().size(), 1u);  // X2, and nothing after the error
+}
+
 // A table with tool 8: 3 mm long, 4 mm across.
 InterpOptions tool_eight() {
   InterpOptions o;

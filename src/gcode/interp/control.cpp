@@ -86,6 +86,9 @@ Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, 
     return Flow::Jumped;
   }
   // An elseif or else reached from a branch that ran: skip to the endif.
+  // LinuxCNC evaluates the elseif's condition all the same (it reads every
+  // O-word line it reaches): an error in it stops the program.
+  if (o.kind == OKind::ElseIf && !condition(o)) return Flow::Error;
   const std::uint32_t end = idx.next_of(e, {OKind::EndIf});
   if (end == kNoEntry) {
     error(core::Code::UnclosedBlock, o.col,
