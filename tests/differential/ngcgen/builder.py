@@ -34,6 +34,7 @@ class Builder:
         self.retract = 99
         self.tool = 0  # the tool in the spindle (M6)
         self.tlo = False  # a tool length offset may be in effect (G43, G43.1)
+        self.g92_on = False  # a G92/G52 offset may be in effect
         self.inverse_time = False
         self.params = {}  # parameter -> value the generator knows
         self.next_o = 100

@@ -7,7 +7,7 @@ import math
 from .expressions import Expr, equal_to, expression
 
 SNAPSHOT = ('units', 'plane', 'dist', 'pos', 'feed_ok', 'spindle', 'speed', 'motion', 'retract',
-            'tool', 'tlo', 'params')
+            'tool', 'tlo', 'g92_on', 'params')
 
 
 def snapshot(b):

@@ -25,7 +25,7 @@ def offsets(b):
     r = b.rnd.random()
     if r < 0.3:
         words = [b.g(10), 'L2', f'P{b.rnd.randint(0, 9)}'] + some_axes(b)
-        if b.chance(0.3):
+        if b.chance(0.3) and not b.g92_on:  # known_differences.tsv: g92-rotation
             words.append(b.word('R', round(b.uniform(-60, 60), 2), 2))
         b.emit(words)
         if b.chance(0.6):
@@ -38,12 +38,17 @@ def offsets(b):
         select_system(b)
     elif r < 0.75:
         b.emit([b.g(92)] + some_axes(b))
+        b.g92_on = True
         if b.chance(0.3):
-            b.emit([b.g(b.pick([92.1, 92.2, 92.3]))])
+            code = b.pick([92.1, 92.2, 92.3])
+            b.emit([b.g(code)])
+            b.g92_on = code == 92.3
     elif r < 0.85:
         b.emit([b.g(52)] + some_axes(b))
+        b.g92_on = True
         if b.chance(0.3):
             b.emit([b.g(52), 'X0', 'Y0', 'Z0'])
+            b.g92_on = False
     else:
         # The G5x offsets as parameters (#5221 X of G54, 20 apart), then the
         # system selected so they take effect.
@@ -76,6 +81,9 @@ def home(b):
 
 def units(b):
     u = 20 if b.units == 21 else 21
+    if b.motion == 'cycle':  # known_differences.tsv: units-in-cycle
+        b.emit([b.g(80)])
+        b.motion = None
     if b.tlo:
         # rs274's stand-alone canon keeps a tool length offset in the unit it
         # was set in across G20/G21 (known_differences.tsv: tlo-units).
