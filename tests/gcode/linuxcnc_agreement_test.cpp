@@ -195,6 +195,18 @@ TEST(LinuxcncAgreement, ElseifAfterTheBranchThatRanIsStillEvaluated) {
   EXPECT_EQ(r->ends().size(), 1u);  // X2, and nothing after the error
 }
 
+// Every elseif on the way to the endif, not only the first one.
+TEST(LinuxcncAgreement, EveryElseifAfterTheBranchThatRanIsEvaluated) {
+  auto r =
+      run("G21\n#1 = 0\no102 if [1]\nG0 X1\no102 elseif [1]\nG0 X2\no102 elseif [8/#1]\n"
+          "G0 X4\no102 else\nG0 X5\no102 endif\nG0 X3\nM2\n");
+  EXPECT_FALSE(r->ok);
+  ASSERT_FALSE(r->diags.all().empty());
+  EXPECT_EQ(r->diags.all()[0].code, core::Code::DivisionByZero);
+  EXPECT_EQ(r->diags.all()[0].loc.line, 7u);
+  EXPECT_EQ(r->ends().size(), 1u);
+}
+
 // A table with tool 8: 3 mm long, 4 mm across.
 InterpOptions tool_eight() {
   InterpOptions o;
