@@ -206,7 +206,11 @@ def loop(b):
         if stop is not None:
             c = f'o{b.fresh_o()}'
             b.raw(f'  {c} if [{k} EQ {stop}]')
-            b.raw(f'    {o} {b.pick(["break", "continue"])}')
+            # rs274 leaves a flag set after a break out of a while and after
+            # a continue in a do (known_differences.tsv break-then-do,
+            # continue-then-break): break leaves do loops, continue goes on in
+            # while loops, where the flag is cleared.
+            b.raw(f'    {o} {"break" if kind == "do" else "continue"}')
             b.raw(f'  {c} endif')
         b.raw(f'  G90 G1 X[{k} * {b.num(dx)} + {b.num(x0)}] Y{b.num(y)}')
         if kind == 'do':
