@@ -40,6 +40,8 @@ def parse():
     ap.add_argument('--out', default=None, help='folder for the programs that differ')
     ap.add_argument('--minimise-budget', type=float, default=60.0,
                     help='seconds spent minimising each new difference')
+    ap.add_argument('--minimise-max', type=int, default=3,
+                    help='new differences minimised at the end (the others are listed by seed)')
     ap.add_argument('--seed', type=int, help='run one program and show the difference')
     ap.add_argument('--minimise', action='store_true', help='with --seed: minimise it')
     ap.add_argument('--print', type=int, metavar='SEED', help='print the program of SEED')
@@ -125,15 +127,25 @@ def report(args, engines, counts, known_hits, new, elapsed, seed):
     for k, seeds in sorted(known_hits.items()):
         print(f'  known {k}: {len(seeds)} (seeds {", ".join(map(str, seeds[:5]))}'
               f'{", ..." if len(seeds) > 5 else ""})')
+    groups = {}
+    for seed, d, _ in new:
+        groups.setdefault(d.signature(), []).append(seed)
+    for sig, seeds in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+        print(f'  NEW {sig}: {len(seeds)} (seeds {", ".join(map(str, seeds[:8]))}'
+              f'{", ..." if len(seeds) > 8 else ""})')
+    if new:
+        print(f'each NEW difference: fix it, or list it in {os.path.relpath(args.known)} with '
+              f'its reason and a minimal program (tests/differential/README.md)')
     if args.out:
         os.makedirs(args.out, exist_ok=True)
-    for seed, d, text in new:
+        for seed, _, text in new:
+            with open(os.path.join(args.out, f'seed-{seed}.ngc'), 'w') as f:
+                f.write(text)
+    for seed, d, text in new[:args.minimise_max]:
         small = Minimiser(engines, budget_s=args.minimise_budget).run(text, d.signature())
         print(f'--- seed {seed} ({d.signature()}) minimised to {small.count(chr(10))} lines:\n'
               f'{small}---')
         if args.out:
-            with open(os.path.join(args.out, f'seed-{seed}.ngc'), 'w') as f:
-                f.write(text)
             with open(os.path.join(args.out, f'seed-{seed}-min.ngc'), 'w') as f:
                 f.write(small)
 
@@ -150,10 +162,13 @@ def main():
         print(f'differential fuzz: {why}: skipped')
         return 0
     engines = Engines(args.usina, args.shared)
-    why = engines.self_check()
-    if why:
-        print(f'differential fuzz: {why}: skipped')
+    check = engines.self_check()
+    if check and check[0] == 'skip':
+        print(f'differential fuzz: {check[1]}: skipped')
         return 0
+    if check:
+        print(f'differential fuzz: {check[1]}')
+        return 2
     if args.seed is not None:
         return one(args, engines)
     entries = known_mod.load(args.known) if os.path.isfile(args.known) else []

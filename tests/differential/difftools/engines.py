@@ -7,6 +7,7 @@ canon output converted by ../shared/conformance/canon2jsonl.py, imported
 rather than started per program: a Python start costs more than rs274
 itself. `Engines.self_check` runs lcnc-trace.sh once and fails when the two
 ways disagree. The traces are compared by ../shared/conformance/compare_traces.py."""
+import atexit
 import contextlib
 import io
 import json
@@ -54,6 +55,7 @@ class Engines:
         self.conf = os.path.join(self.shared, 'conformance')
         self.table = os.path.join(self.conf, 'rs274ngc', 'tools', 'generic.tbl')
         self.work = work or tempfile.mkdtemp(prefix='usina-difffuzz-')
+        atexit.register(shutil.rmtree, self.work, True)
         if self.conf not in sys.path:
             sys.path.insert(0, self.conf)
         import canon2jsonl  # noqa: E402  (from ../shared, never copied)
@@ -162,16 +164,17 @@ class Engines:
                           trace_site(verdict, us), verdict), lc, us
 
     def self_check(self):
-        """lcnc-trace.sh and this runner give the same trace; rs274 works at all."""
+        """('skip', why) when rs274 does not run here, ('error', why) when this
+        runner and lcnc-trace.sh disagree, None when all is well."""
         prog = 'G21 G0 X1 Y2\nG1 Z-1 F100\nG2 X3 Y2 R1\nM2\n'
         path = self.write(prog)
         out = subprocess.run(['bash', os.path.join(self.conf, 'lcnc-trace.sh'), path],
                              capture_output=True, cwd=self.work, timeout=60).stdout.decode()
         if 'traverse' not in out:
-            return 'rs274 is installed but does not run here'
+            return 'skip', 'rs274 is installed but does not run here'
         mine = self.lcnc(prog).trace
         if mine != out:
-            return f'this runner and lcnc-trace.sh disagree:\n{mine}\n---\n{out}'
+            return 'error', f'this runner and lcnc-trace.sh disagree:\n{mine}\n---\n{out}'
         return None
 
 
