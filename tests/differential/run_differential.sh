@@ -21,6 +21,9 @@ fi
 rm -rf "$probe"
 progs=$here/../programs/rs274ngc
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# rs274 keeps its tool table in $HOME/.tool.mmap: another rs274 of the same
+# user running meanwhile would clobber it. A home of its own.
+export HOME=$tmp
 pass=0; fail=0
 for p in "$progs"/*.ngc; do
   name=$(basename "$p" .ngc)

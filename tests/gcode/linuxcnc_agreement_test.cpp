@@ -207,6 +207,25 @@ TEST(LinuxcncAgreement, EveryElseifAfterTheBranchThatRanIsEvaluated) {
   EXPECT_EQ(r->ends().size(), 1u);
 }
 
+// interp_queue.cc move_endpoint_and_flush lets an arc whose end is moved
+// sweep more than programmed by 0.0254 (radians) under G21 and by 0.001
+// under G20: it compares turns with a length. A concave corner into this
+// arc makes it 0.0077 rad longer: refused in inches, accepted in mm (rs274
+// ends the arc, then goes straight to the G40 move's point).
+TEST(LinuxcncAgreement, ArcLengthenedByAConcaveCornerHasMoreSlackInMm) {
+  auto mm =
+      run("G21 F746.8\nG41.1 D12.7 G1 X9.4467 Y-44.3195\nX-36.9515 Y-176.4855\n"
+          "G91 G3 X75.6928 Y-10.8984 I36.54672 J-14.4789\nG90 G40 G1 X0 Y0\nM2\n");
+  ASSERT_TRUE(mm->ok) << mm->first_error();
+  EXPECT_EQ(mm->ends().size(), 5u);
+  auto inch =
+      run("G20 F30\nG41.1 D0.5 G1 X0.371917 Y-1.744862\nX-1.454783 Y-6.948248\n"
+          "G91 G3 X2.980031 Y-0.429071 I1.438847 J-0.570035\nG90 G40 G1 X0 Y0\nM2\n");
+  EXPECT_FALSE(inch->ok);
+  ASSERT_FALSE(inch->diags.all().empty());
+  EXPECT_EQ(inch->diags.all()[0].code, core::Code::CutterGouge);
+}
+
 // A table with tool 8: 3 mm long, 4 mm across.
 InterpOptions tool_eight() {
   InterpOptions o;

@@ -257,7 +257,8 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   // A negative radius (G41.1 D-1) puts the tool on the other side, as in LinuxCNC.
   const CompSide side = (g == 410 || g == 411) ? CompSide::Left : CompSide::Right;
   if (options_.ignore_cutter_comp) radius = 0.0;
-  if (auto e = comp_.start(side, radius, s.plane, orientation)) {
+  const bool metric = s.units == core::LengthUnit::Mm;
+  if (auto e = comp_.start(side, radius, s.plane, orientation, metric)) {
     return error(*e, w.gcol[kGroupCutterComp]);
   }
   s.comp = side == CompSide::Left ? CompSideState::Left : CompSideState::Right;

@@ -56,6 +56,10 @@ class Engines:
         self.table = os.path.join(self.conf, 'rs274ngc', 'tools', 'generic.tbl')
         self.work = work or tempfile.mkdtemp(prefix='usina-difffuzz-')
         atexit.register(shutil.rmtree, self.work, True)
+        # rs274 keeps its tool table in $HOME/.tool.mmap, shared with every
+        # other rs274 of the user: two at once clobber each other's tools
+        # ("Requested tool 12 not found"). A home of its own for this one.
+        self.env = dict(os.environ, HOME=self.work)
         if self.conf not in sys.path:
             sys.path.insert(0, self.conf)
         import canon2jsonl  # noqa: E402  (from ../shared, never copied)
@@ -87,7 +91,7 @@ class Engines:
             try:
                 res = subprocess.run(['rs274', '-g', '-v', var, '-t', self.table, path],
                                      stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.PIPE,
-                                     cwd=self.work, timeout=self.timeout)
+                                     cwd=self.work, timeout=self.timeout, env=self.env)
             except subprocess.TimeoutExpired:
                 return Outcome('', f'timeout: rs274 ran over {self.timeout:g} s')
         buf = io.StringIO()
@@ -169,7 +173,8 @@ class Engines:
         prog = 'G21 G0 X1 Y2\nG1 Z-1 F100\nG2 X3 Y2 R1\nM2\n'
         path = self.write(prog)
         out = subprocess.run(['bash', os.path.join(self.conf, 'lcnc-trace.sh'), path],
-                             capture_output=True, cwd=self.work, timeout=60).stdout.decode()
+                             capture_output=True, cwd=self.work, timeout=60,
+                             env=self.env).stdout.decode()
         if 'traverse' not in out:
             return 'skip', 'rs274 is installed but does not run here'
         mine = self.lcnc(prog).trace
