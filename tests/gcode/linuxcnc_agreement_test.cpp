@@ -226,6 +226,24 @@ TEST(LinuxcncAgreement, ArcLengthenedByAConcaveCornerHasMoreSlackInMm) {
   EXPECT_EQ(inch->diags.all()[0].code, core::Code::CutterGouge);
 }
 
+// interp_convert.cc convert_home: the stored position is taken into program
+// coordinates (find_relative) and the named axes take its program values;
+// under an XY rotation that moves more than the named machine axis (rs274's
+// trace of this program).
+TEST(LinuxcncAgreement, HomeOfNamedAxesIsInProgramCoordinates) {
+  InterpOptions mm;
+  auto r = run("G21\n#5161 = 5\nG10 L2 P1 R90\nG0 X10 Y0\nG28 X10\nG30 Y2\nM2\n", mm);
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> ends = r->ends();
+  ASSERT_EQ(ends.size(), 5u);
+  const std::vector<Vec3> expected{{0, 10, 0}, {0, 10, 0}, {0, 0, 0}, {-2, 0, 0}, {0, 0, 0}};
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    EXPECT_NEAR(ends[i].x, expected[i].x, 1e-9) << i;
+    EXPECT_NEAR(ends[i].y, expected[i].y, 1e-9) << i;
+    EXPECT_NEAR(ends[i].z, expected[i].z, 1e-9) << i;
+  }
+}
+
 // A table with tool 8: 3 mm long, 4 mm across.
 InterpOptions tool_eight() {
   InterpOptions o;

@@ -163,20 +163,19 @@ bool Interpreter::home(BlockWords& w, int g) {
   // Through the intermediate point given by the axis words, if any.
   // LinuxCNC moves there even without axis words (a move to where it is).
   machine_.traverse_axes(target(w, false));
-  // Then to the stored position: every axis, or only those named.
-  const Vec3 tool_tip = machine_.to_absolute(xyz(state_.pos));
-  Vec3 abs = tool_tip;
+  // Then to the stored position: every axis, or only those named, each
+  // taking the stored position's program coordinate (convert_home: under an
+  // XY rotation a named X moves the machine's X and Y).
+  Vec3 abs;
+  for (int a = 0; a < 3; ++a)
+    abs[a] = params_.get(base + a) * machine_mm() - state_.tool_offset[static_cast<std::size_t>(a)];
+  const Vec3 home = machine_.to_program(abs);
   Axes end = state_.pos;
   for (int a = 0; a < kAxisCount; ++a) {
     if (w.has_axis() && !w.has(kAxisLetters[a])) continue;
     const double v = params_.get(base + a);
-    if (a < 3) {
-      abs[a] = v * machine_mm() - state_.tool_offset[static_cast<std::size_t>(a)];
-    } else {
-      end[static_cast<std::size_t>(a)] = is_rotary(a) ? v : v * machine_mm();
-    }
+    end[static_cast<std::size_t>(a)] = a < 3 ? home[a] : is_rotary(a) ? v : v * machine_mm();
   }
-  set_xyz(end, machine_.to_program(abs));
   machine_.traverse_axes(end);
   return true;
 }
