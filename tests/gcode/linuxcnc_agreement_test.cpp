@@ -22,6 +22,7 @@ namespace {
 using core::Vec3;
 
 constexpr double kTol = 1e-9;
+constexpr double kPi = 3.14159265358979323846;
 
 struct Run {
   core::SourceManager sources;
@@ -242,6 +243,25 @@ TEST(LinuxcncAgreement, HomeOfNamedAxesIsInProgramCoordinates) {
     EXPECT_NEAR(ends[i].y, expected[i].y, 1e-9) << i;
     EXPECT_NEAR(ends[i].z, expected[i].z, 1e-9) << i;
   }
+}
+
+// interp_convert.cc convert_setup (G10 L20) starts from the current point
+// as system P sees it (find_current_in_system): an axis not named keeps its
+// offset, whichever system is in use (rs274's trace of this program).
+TEST(LinuxcncAgreement, G10L20OnAnotherSystemSetsOnlyTheNamedAxes) {
+  auto r =
+      run("G21\nG10 L2 P2 Y7 R30\nG55\nG0 X1 Y2 Z3\nG10 L20 P4 X5\nG57\nG0 X0 Y0 Z0\n"
+          "G10 L20 P3 Z1\nG56 G0 X1 Y1 Z1\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  const std::vector<Vec3> ends = r->ends();
+  ASSERT_EQ(ends.size(), 3u);
+  EXPECT_NEAR(ends[1].x, std::cos(kPi / 6) - 2 * std::sin(kPi / 6) - 5,
+              1e-9);  // R30 (1, 2), less 5
+  EXPECT_NEAR(ends[1].y, 0.0, 1e-9);
+  EXPECT_NEAR(ends[1].z, 0.0, 1e-9);
+  EXPECT_NEAR(ends[2].x, 1.0, 1e-9);
+  EXPECT_NEAR(ends[2].y, 1.0, 1e-9);
+  EXPECT_NEAR(ends[2].z, 0.0, 1e-9);
 }
 
 // A table with tool 8: 3 mm long, 4 mm across.

@@ -23,6 +23,18 @@ bool is_rotary(int axis) {
   return axis >= 3 && axis <= 5;
 }
 
+// The point `abs` (machine, tool tip) in the program coordinates of work
+// system n, less the G92 offset `g92` (mm): LinuxCNC's find_current_in_system.
+Vec3 in_system(const Parameters& params, double machine_mm, const Vec3& g92, const Vec3& abs,
+               int n) {
+  const int base = work_offset_base(n);
+  Vec3 d;
+  for (int a = 0; a < 3; ++a)
+    d[a] = abs[a] - params.get(base + a) * machine_mm;
+  const Vec2 r = core::rotate({d.x, d.y}, -core::deg_to_rad(params.get(base + 9)));
+  return Vec3{r.x, r.y, d.z} - g92;
+}
+
 }  // namespace
 
 void Interpreter::apply_work_offsets(int n) {
@@ -108,9 +120,11 @@ bool Interpreter::g10(BlockWords& w) {
     const int base = work_offset_base(n);
     if (w.has('R')) params_.set(base + 9, w.get('R'));
     // L20: offsets that make the current point read the given values, in
-    // the system's own (rotated) frame: g5x = m − R(v + g92).
+    // the system's own (rotated) frame: g5x = m − R(v + g92). The axes not
+    // named keep what the current point reads in that system (LinuxCNC's
+    // find_current_in_system), so their offsets stay.
     const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
-    Vec3 v = xyz(state_.pos);
+    Vec3 v = in_system(params_, machine_mm(), xyz(state_.g92), abs, n);
     bool linear = false;
     for (int a = 0; a < kAxisCount; ++a) {
       const char letter = kAxisLetters[a];
@@ -129,8 +143,10 @@ bool Interpreter::g10(BlockWords& w) {
       Vec3 q = v + xyz(state_.g92);
       const Vec2 r = core::rotate({q.x, q.y}, core::deg_to_rad(params_.get(base + 9)));
       q = {r.x, r.y, q.z};
-      for (int a = 0; a < 3; ++a)
-        params_.set(base + a, (abs[a] - q[a]) / machine_mm());
+      const bool plane = w.has('X') || w.has('Y');  // the rotation ties X and Y
+      for (int a = 0; a < 3; ++a) {
+        if (a < 2 ? plane : w.has('Z')) params_.set(base + a, (abs[a] - q[a]) / machine_mm());
+      }
     }
     if (n == state_.coord_system) select_coord_system(n);
     return true;
