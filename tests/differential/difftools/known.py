@@ -6,7 +6,7 @@ known_differences.tsv, one difference a line, tab-separated:
   signature a regular expression the difference's signature must match
             (`trace:arc.center/turn`, `usina-error:E_...`, `lcnc-error:...`)
   site      a regular expression the program line where it shows must
-            match (searched, case-insensitive), `.` for any
+            match (searched, case-insensitive), `.` for any (or none known)
   program   a regular expression the whole program must match, `.` for any
   why       the reason, in words
 Lines starting with # are comments."""
@@ -24,9 +24,9 @@ class Entry:
             return False
         lines = text.splitlines()
         site = lines[diff.site - 1] if diff.site and diff.site <= len(lines) else ''
-        if not re.search(self.site, site, re.I):
+        if self.site != '.' and not re.search(self.site, site, re.I):
             return False
-        return re.search(self.program, text, re.I | re.S) is not None
+        return self.program == '.' or re.search(self.program, text, re.I | re.S) is not None
 
 
 def load(path):

@@ -37,6 +37,8 @@ def assign(b):
     parts, new = [], {}
     for _ in range(b.pick([1, 1, 2, 3])):
         e = expression(b, b.pick([0, 1, 2, 3]))
+        if len(e.text) > 60:  # rs274 reads lines of 255 characters at most
+            e = Expr(b.num(round(e.value, 3), 3), round(e.value, 3))
         name = b.pick(list(b.params)) if b.params and b.chance(0.3) else param_name(b)
         parts.append(f'{name} = {e.text if e.prec == 10 and b.chance(0.5) else "[" + e.text + "]"}')
         new[name] = e.value

@@ -101,6 +101,9 @@ def tool(b):
         # Not T0: rs274's stand-alone canon keeps the last tool's data in the
         # spindle after T0 M6 (known_differences.tsv: t0-keeps-tool).
         t = b.rnd.randint(1, 13)
+        # From a known point: rs274 reads the point back from its canon at a
+        # tool change (known_differences.tsv: m6-rereads-canon).
+        b.anchor()
         b.emit([f'T{t}', b.m(6)])
         b.tool = t
         b.spindle = 'off'  # LinuxCNC's tool change stops the spindle
