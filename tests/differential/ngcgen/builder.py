@@ -7,7 +7,6 @@ state and, where it can, the current point in program coordinates
 it. Where the point is not known (after offsets change, a home move, a
 cycle), a segment that needs it first writes an anchor, `G90 G0 X Y Z`,
 after which the point is known in whatever frame is active."""
-import math
 import random
 
 # In-plane axes (first, second) and the axis on the plane's normal, as
@@ -202,8 +201,3 @@ def lower_words(text):
             depth = max(0, depth - 1)
         out.append(ch.lower() if depth == 0 else ch)
     return ''.join(out)
-
-
-def rotate(v, angle_deg):
-    a = math.radians(angle_deg)
-    return (v[0] * math.cos(a) - v[1] * math.sin(a), v[0] * math.sin(a) + v[1] * math.cos(a))
