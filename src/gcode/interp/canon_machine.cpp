@@ -76,9 +76,9 @@ void CanonMachine::feed_axes(const Axes& to) {
   emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to), programmed_feed()});
 }
 
-void CanonMachine::probe_axes(const Axes& to) {
+void CanonMachine::probe_axes(const Axes& to, const Vec3& stop) {
   state_->pos = to;
-  last_ = to_absolute(xyz(to));
+  last_ = to_absolute(stop);  // what the canon reports after the probe (a tool change reads it)
   moved_ = true;
   emit(canon::Probe{to_absolute(xyz(to)), abc_of(to)});
 }

@@ -43,7 +43,8 @@ class CanonMachine final : public MotionTarget {
   // Moves with every axis (rotary and UVW too).
   void traverse_axes(const Axes& to);
   void feed_axes(const Axes& to);
-  void probe_axes(const Axes& to);
+  // `stop`: where the probe ends (program coordinates), short of `to`.
+  void probe_axes(const Axes& to, const Vec3& stop);
   // A spline through `points` (program coordinates, the last one its end).
   void spline(const std::vector<Vec3>& points);
   void arc_axes(const Axes& to, const Vec3& center, int turn);

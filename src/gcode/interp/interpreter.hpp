@@ -45,6 +45,11 @@ struct InterpOptions {
   // The motion mode at the start, in tenths: LinuxCNC's G80; a controller
   // that powers up in another (Grbl: G0) sets it.
   GCode start_motion = 800;
+  // A G54-G59.3 word for the system in use re-reads its offsets from the
+  // parameters (Grbl; the fanuc front end re-selects to apply #5221...).
+  // LinuxCNC's convert_coordinate_system does nothing then: a new value of
+  // #5221... waits until the system is selected after another one.
+  bool reselect_reloads_work_offsets = true;
 };
 
 struct BlockWords;
