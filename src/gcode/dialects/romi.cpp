@@ -1,14 +1,14 @@
 // The romi dialect (ROMI MACH / Interact milling control of seed 000;
 // spec/romi.md): its lexical rules, its G/M table, the codes in force at
 // program start and its options. The handlers named here are the romi
-// engine's (romi_engine.hpp).
+// executor's (romi_exec.hpp); code_table() resolves them once.
 #include "gcode/dialects/romi_engine.hpp"
 
 namespace usina::gcode {
 namespace {
 
-// Groups in the order they run within a block: below kMoveGroup before the
-// block's move, the rest after it (romi_engine.cpp).
+// Groups in the order they run within a block: below romi::kAfterMoveGroup
+// before the block's move, the rest after it (romi_exec.cpp).
 enum Group : int {
   ToolChange = 1,
   Spindle = 2,
@@ -26,6 +26,9 @@ enum Group : int {
   Pattern = 51,
   Stop = 90,
 };
+
+static_assert(Motion < romi::kAfterMoveGroup && Pattern < romi::kAfterMoveGroup &&
+              Stop >= romi::kAfterMoveGroup);
 
 std::unique_ptr<ProgramRunner> make(RunContext context);
 
@@ -108,9 +111,14 @@ const Dialect& romi_dialect() {
 namespace {
 
 std::unique_ptr<ProgramRunner> make(RunContext context) {
-  return std::make_unique<romi::Engine>(romi_dialect(), std::move(context));
+  return std::make_unique<romi::Engine>(romi_dialect(), romi::code_table(), std::move(context));
 }
 
 }  // namespace
+
+const romi::CodeTable& romi::code_table() {
+  static const CodeTable table(romi_dialect(), &Executor::handler_named, kAfterMoveGroup);
+  return table;
+}
 
 }  // namespace usina::gcode

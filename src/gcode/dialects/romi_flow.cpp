@@ -48,14 +48,6 @@ void Engine::build_index() {
   }
 }
 
-bool Engine::count_jump() {
-  if (++jumps_ <= options_.max_total_iterations) return true;
-  return error(core::Code::TooManyIterations, 0,
-               fmt::format("the program's backward jumps, calls and pattern points came to more "
-                           "than {}; raise the limit with --max-total-iterations",
-                           options_.max_total_iterations));
-}
-
 bool Engine::jump_to_block(double n, std::uint32_t col) {
   if (!numbers_) build_index();
   auto it = numbers_->find(key(n));
@@ -63,7 +55,7 @@ bool Engine::jump_to_block(double n, std::uint32_t col) {
     return error(core::Code::UnknownBlockNumber, col,
                  fmt::format("no block N{} in the program", key(n)));
   }
-  if (it->second.at.offset <= cursor_.offset && !count_jump()) return false;
+  if (it->second.at.offset <= cursor_.offset && !run_.count_jump()) return false;
   cursor_ = it->second.at;
   return true;
 }
@@ -140,7 +132,7 @@ bool Engine::run_statement(const Statement& st) {
     if (frames_.size() >= static_cast<std::size_t>(options_.max_call_depth)) {
       return error(core::Code::RecursionTooDeep, st.col, "RPT and CALL nested too deep");
     }
-    if (!count_jump()) return false;
+    if (!run_.count_jump()) return false;
     frames_.push_back({true, cursor_, 0, 0, 0});
     cursor_ = it->second;
     return true;

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "gcode/dialects/romi_engine.hpp"
+#include "gcode/dialects/romi_exec.hpp"
 
 namespace usina::gcode::romi {
 namespace {
@@ -38,7 +38,7 @@ double positive_sweep(double a) {
 
 }  // namespace
 
-Vec3 Engine::cartesian_end(const Vec3& start) const {
+Vec3 Executor::cartesian_end(const Vec3& start) const {
   Vec3 end = start;
   for (int a = 0; a < 3; ++a) {
     const char letter = "XYZ"[a];
@@ -50,7 +50,7 @@ Vec3 Engine::cartesian_end(const Vec3& start) const {
 }
 
 // The end of a straight move (G00, G01, a drilling position) from `start`.
-std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
+std::optional<Vec3> Executor::line_end(const Vec3& start, Fail& fail) const {
   const bool polar_words = words_.has('R') || words_.has('A') || words_.has('C');
   if (!polar_words) {
     if (words_.has('I') || words_.has('J')) {
@@ -104,12 +104,12 @@ std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
   return end;
 }
 
-bool Engine::require_feed(const char* what) {
-  if (feed_ > 0.0) return true;
+bool Executor::require_feed(const char* what) {
+  if (work_.feed > 0.0) return true;
   return error(core::Code::NoFeedRate, 0, fmt::format("{} with no feed rate: give F", what));
 }
 
-bool Engine::move() {
+bool Executor::move() {
   if (moved_by_handler_) return true;
   words_.forget_taken();  // G81's R and Z, G31's X Y...: not a position
   bool position = false;
@@ -118,58 +118,58 @@ bool Engine::move() {
     words_.take(c);
     position = true;
   }
-  if (blend_) {
-    if (!position || motion_ > 1 || drill_.active) {
-      loc_ = blend_->loc;
+  if (work_.blend) {
+    if (!position || work_.motion > 1 || work_.drill.active) {
+      run_.at(work_.blend->loc);
       return error(core::Code::BlendNeedsMove, 0,
                    "an arc with only R blends into the next move, and the next block is not a "
                    "straight move");
     }
   }
   if (!position) return true;
-  if (drill_.active) {
-    if (motion_ > 1) {
+  if (work_.drill.active) {
+    if (work_.motion > 1) {
       return error(core::Code::NotAllowedInMode, 0,
                    "an arc while the drilling cycle G81 is on: G80 first");
     }
     Fail fail;
-    auto end = line_end(pos_, fail);
+    auto end = line_end(work_.pos, fail);
     if (!end) return error(fail);
     return drill_at(xy(*end));
   }
-  if (motion_ >= 2) return arc_block();
+  if (work_.motion >= 2) return arc_block();
   Fail fail;
-  auto end = line_end(pos_, fail);
+  auto end = line_end(work_.pos, fail);
   if (!end) return error(fail);
-  if (blend_) {
+  if (work_.blend) {
     // The end must not depend on where the blend arc ends.
-    Vec3 other = blend_->start;
+    Vec3 other = work_.blend->start;
     other.x += 1.0;
     other.y += 1.0;
     auto check = line_end(other, fail);
     if (!check || core::distance(xy(*check), xy(*end)) > 1e-9) {
-      loc_ = blend_->loc;
+      run_.at(work_.blend->loc);
       return error(core::Code::BlendNeedsMove, 0,
                    "an arc with only R blends into the next move, whose end point must not "
                    "depend on its start: give absolute X and Y");
     }
     if (!blend(*end)) return false;
   }
-  if (motion_ == 1 && !require_feed("G01")) return false;
-  return emit_line(*end, motion_ == 0);
+  if (work_.motion == 1 && !require_feed("G01")) return false;
+  return emit_line(*end, work_.motion == 0);
 }
 
-bool Engine::arc_block() {
-  if (!require_feed(motion_ == 2 ? "G02" : "G03")) return false;
+bool Executor::arc_block() {
+  if (!require_feed(work_.motion == 2 ? "G02" : "G03")) return false;
   if (words_.has('X') || words_.has('Y')) return arc_cartesian();
   return arc_polar();
 }
 
 // X Y I J (absolute centre) and X Y R (shorter arc; R < 0 the longer).
-bool Engine::arc_cartesian() {
-  const bool ccw = motion_ == 3;
-  const Vec2 p0 = xy(pos_);
-  const Vec3 end = cartesian_end(pos_);
+bool Executor::arc_cartesian() {
+  const bool ccw = work_.motion == 3;
+  const Vec2 p0 = xy(work_.pos);
+  const Vec3 end = cartesian_end(work_.pos);
   Vec2 center;
   if (words_.has('A') || words_.has('C')) {
     return error(core::Code::PolarWithXy, words_.col(words_.has('A') ? 'A' : 'C'),
@@ -211,10 +211,10 @@ bool Engine::arc_cartesian() {
 }
 
 // The polar forms: C I J, C, R C, R A, R A C, and R alone (a blend).
-bool Engine::arc_polar() {
-  const bool ccw = motion_ == 3;
-  const Vec2 p0 = xy(pos_);
-  Vec3 end = cartesian_end(pos_);
+bool Executor::arc_polar() {
+  const bool ccw = work_.motion == 3;
+  const Vec2 p0 = xy(work_.pos);
+  Vec3 end = cartesian_end(work_.pos);
   Vec2 center;
   double sweep = 0.0;
   if (words_.has('R')) {
@@ -224,11 +224,11 @@ bool Engine::arc_polar() {
     double dir = 0.0;
     if (words_.has('A') && words_.has('C')) {
       dir = words_.get('A');
-    } else if (!direction_) {
+    } else if (!work_.direction) {
       return error(core::Code::NoTangentDirection, words_.col('R'),
                    "a tangent arc with no previous move to be tangent to");
     } else {
-      dir = *direction_;
+      dir = *work_.direction;
     }
     const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
                        : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
@@ -246,7 +246,7 @@ bool Engine::arc_polar() {
       if (words_.has('I') || words_.has('J') || words_.has('Z')) {
         return error(core::Code::UnusedWord, 0, "a blend arc (R alone) takes no I, J or Z");
       }
-      blend_ = PendingBlend{loc_, center, r, ccw, pos_};
+      work_.blend = PendingBlend{run_.loc(), center, r, ccw, work_.pos};
       return true;
     }
   } else if (words_.has('C')) {
@@ -279,13 +279,13 @@ bool Engine::arc_polar() {
 
 // The R-only arc held from the previous block, now that the next move's end
 // is known: it runs on to where its tangent passes through that end.
-bool Engine::blend(const Vec3& next_end) {
-  const PendingBlend b = *blend_;
-  blend_.reset();
+bool Executor::blend(const Vec3& next_end) {
+  const PendingBlend b = *work_.blend;
+  work_.blend.reset();
   const Vec2 q = xy(next_end);
   const double dq = core::distance(q, b.center);
   if (dq <= b.radius + 1e-9) {
-    loc_ = b.loc;
+    run_.at(b.loc);
     return error(core::Code::BlendNeedsMove, 0,
                  "the next move ends inside the blend arc's circle: no tangent reaches it");
   }
@@ -300,98 +300,50 @@ bool Engine::blend(const Vec3& next_end) {
         b.ccw ? Vec2{-std::sin(cand), std::cos(cand)} : Vec2{std::sin(cand), -std::cos(cand)};
     if ((q.x - tp.x) * dir.x + (q.y - tp.y) * dir.y > 0) t = cand;
   }
-  const core::SourceLoc here = loc_;
-  loc_ = b.loc;
-  machine_.set_source(loc_);
+  const core::SourceLoc here = run_.loc();
+  at(b.loc);
   const Vec3 end{b.center.x + b.radius * std::cos(t), b.center.y + b.radius * std::sin(t),
                  b.start.z};
   const bool ok = emit_arc(end, b.center, b.ccw, 1);
-  loc_ = here;
-  machine_.set_source(loc_);
+  at(here);
   return ok;
 }
 
-bool Engine::emit_line(const Vec3& end, bool rapid) {
-  const Vec3 m = tf_.apply(end);
-  if (comp_.active() || !comp_.arc_allowed()) {
-    if (auto e = comp_.straight(m, rapid, loc_, machine_)) return error(*e);
+bool Executor::emit_line(const Vec3& end, bool rapid) {
+  const Vec3 m = work_.tf.apply(end);
+  if (work_.comp.active() || !work_.comp.arc_allowed()) {
+    if (auto e = work_.comp.straight(m, rapid, run_.loc(), machine_)) return error(*e);
   } else if (rapid) {
     machine_.traverse(m);
   } else {
     machine_.feed(m);
   }
-  const Vec2 d{end.x - pos_.x, end.y - pos_.y};
-  if (std::hypot(d.x, d.y) > 1e-9) direction_ = deg(std::atan2(d.y, d.x));
-  pos_ = end;
+  const Vec2 d{end.x - work_.pos.x, end.y - work_.pos.y};
+  if (std::hypot(d.x, d.y) > 1e-9) work_.direction = deg(std::atan2(d.y, d.x));
+  work_.pos = end;
   return true;
 }
 
-bool Engine::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
-  if (!tf_.uniform()) {
+bool Executor::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
+  if (!work_.tf.uniform()) {
     return error(core::Code::UnequalScaleArc, 0,
                  fmt::format("an arc under G72 with unequal factors (X {}, Y {}): it would be "
                              "an ellipse",
-                             tf_.scale_x, tf_.scale_y));
+                             work_.tf.scale_x, work_.tf.scale_y));
   }
-  const Vec3 m = tf_.apply(end);
-  const Vec2 mc = tf_.apply(center);
-  const bool machine_ccw = ccw != tf_.flips();
+  const Vec3 m = work_.tf.apply(end);
+  const Vec2 mc = work_.tf.apply(center);
+  const bool machine_ccw = ccw != work_.tf.flips();
   const int turn = machine_ccw ? turns : -turns;
-  const Vec3 c3{mc.x, mc.y, machine_state_.pos[2]};
-  if (comp_.active() || !comp_.arc_allowed()) {
-    if (auto e = comp_.arc(m, c3, turn, loc_, machine_)) return error(*e);
+  const Vec3 c3{mc.x, mc.y, work_.machine.pos[2]};
+  if (work_.comp.active() || !work_.comp.arc_allowed()) {
+    if (auto e = work_.comp.arc(m, c3, turn, run_.loc(), machine_)) return error(*e);
   } else {
     machine_.arc(m, c3, turn);
   }
   const double ae = std::atan2(end.y - center.y, end.x - center.x);
-  direction_ = deg(ae) + (ccw ? 90.0 : -90.0);
-  pos_ = end;
-  return true;
-}
-
-bool Engine::h_mirror(int code) {
-  if (code == 300) {
-    tf_.mirror_x = tf_.mirror_y = false;
-    return true;
-  }
-  const auto x = words_.take('X');
-  const auto y = words_.take('Y');
-  if (!x && !y) return error(core::Code::MissingWord, 0, "G31 needs X and/or Y: the mirror line");
-  tf_.mirror_x = x.has_value();
-  tf_.mirror_y = y.has_value();
-  tf_.mirror_at = {x ? mm(*x) : 0.0, y ? mm(*y) : 0.0};
-  return true;
-}
-
-bool Engine::h_scale(int) {
-  const auto k = words_.take('K');
-  const auto x = words_.take('X');
-  const auto y = words_.take('Y');
-  if (!k && !x && !y) return error(core::Code::MissingWord, 0, "G72 needs K, or X and/or Y");
-  for (const char c : {'K', 'X', 'Y'}) {
-    if (!words_.has(c)) continue;
-    const double f = words_.get(c);
-    if (!(f >= 0.05 && f <= 20.0)) {
-      return error(core::Code::ScaleOutOfRange, words_.col(c),
-                   fmt::format("scale factor {}{} is outside 0.05 to 20", c, f));
-    }
-  }
-  if (k) {
-    tf_.scale_x = tf_.scale_y = *k;
-  } else {
-    tf_.scale_x = x ? *x : 1.0;
-    tf_.scale_y = y ? *y : 1.0;
-  }
-  return true;
-}
-
-bool Engine::h_rotate(int) {
-  const auto c = words_.take('C');
-  if (!c) return error(core::Code::MissingWord, 0, "G73 needs C: the angle (C0 cancels)");
-  const auto i = words_.take('I');
-  const auto j = words_.take('J');
-  tf_.rotation_deg = *c;
-  tf_.rotation_at = {i ? mm(*i) : 0.0, j ? mm(*j) : 0.0};
+  work_.direction = deg(ae) + (ccw ? 90.0 : -90.0);
+  work_.pos = end;
   return true;
 }
 
