@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <optional>
 
@@ -11,60 +12,60 @@ namespace usina::gcode::romi {
 
 class Words {
  public:
-  struct Slot {
-    bool present = false;
-    bool incremental = false;  // this word alone (a lower-case letter)
-    bool taken = false;
-    double value = 0.0;
-    std::uint32_t col = 0;
-  };
+  // Nothing present: three stores, once a block.
+  void reset() { present_ = taken_ = incremental_ = 0; }
 
-  void reset() { slots_.fill({}); }
-
-  bool has(char c) const { return at(c).present; }
+  bool has(char c) const { return (present_ & bit(c)) != 0; }
 
   // Present and not yet taken by a handler.
-  bool open(char c) const { return at(c).present && !at(c).taken; }
+  bool open(char c) const { return (present_ & ~taken_ & bit(c)) != 0; }
 
-  double get(char c) const { return at(c).value; }
+  double get(char c) const { return value_[index(c)]; }
 
   // Written as an increment whatever G90/G91 say (lowercase_incremental).
-  bool incremental(char c) const { return at(c).incremental; }
+  bool incremental(char c) const { return (incremental_ & bit(c)) != 0; }
 
-  std::uint32_t col(char c) const { return at(c).col; }
+  std::uint32_t col(char c) const { return col_[index(c)]; }
 
   void set(char c, double v, bool incremental, std::uint32_t col) {
-    at(c) = {true, incremental, false, v, col};
+    present_ |= bit(c);
+    taken_ &= ~bit(c);
+    if (incremental) {
+      incremental_ |= bit(c);
+    } else {
+      incremental_ &= ~bit(c);
+    }
+    value_[index(c)] = v;
+    col_[index(c)] = col;
   }
 
   std::optional<double> take(char c) {
-    Slot& s = at(c);
-    if (!s.present) return std::nullopt;
-    s.taken = true;
-    return s.value;
+    if (!has(c)) return std::nullopt;
+    taken_ |= bit(c);
+    return value_[index(c)];
   }
 
   // Letters a handler took are no longer the block's to move with.
-  void forget_taken() {
-    for (Slot& s : slots_) {
-      if (s.taken) s.present = false;
-    }
-  }
+  void forget_taken() { present_ &= ~taken_; }
 
   // The first letter present and not taken, or 0.
   char untaken() const {
-    for (char c = 'A'; c <= 'Z'; ++c) {
-      if (has(c) && !at(c).taken) return c;
-    }
-    return 0;
+    const std::uint32_t left = present_ & ~taken_;
+    if (left == 0) return 0;
+    return static_cast<char>('A' + std::countr_zero(left));
   }
 
  private:
-  Slot& at(char c) { return slots_[static_cast<std::size_t>(c - 'A')]; }
+  static std::size_t index(char c) { return static_cast<std::size_t>(c - 'A'); }
 
-  const Slot& at(char c) const { return slots_[static_cast<std::size_t>(c - 'A')]; }
+  static std::uint32_t bit(char c) { return 1u << index(c); }
 
-  std::array<Slot, 26> slots_{};
+  // By letter, A to Z; a slot means something only while its letter is present.
+  std::array<double, 26> value_{};
+  std::array<std::uint32_t, 26> col_{};
+  std::uint32_t present_ = 0;
+  std::uint32_t taken_ = 0;
+  std::uint32_t incremental_ = 0;
 };
 
 }  // namespace usina::gcode::romi
