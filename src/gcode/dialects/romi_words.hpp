@@ -12,29 +12,27 @@ namespace usina::gcode::romi {
 
 class Words {
  public:
-  // Nothing present: three stores, once a block.
-  void reset() { present_ = taken_ = incremental_ = 0; }
+  // Nothing given: four stores, once a block.
+  void reset() { given_ = forgotten_ = taken_ = incremental_ = 0; }
 
-  bool has(char c) const { return (present_ & bit(c)) != 0; }
+  bool has(char c) const { return (present() & bit(c)) != 0; }
 
   // Present and not yet taken by a handler.
-  bool open(char c) const { return (present_ & ~taken_ & bit(c)) != 0; }
+  bool open(char c) const { return (present() & ~taken_ & bit(c)) != 0; }
 
-  double get(char c) const { return value_[index(c)]; }
+  // The value and column of a letter the block gave (0 when it gave none).
+  double get(char c) const { return (given_ & bit(c)) != 0 ? value_[index(c)] : 0.0; }
+
+  std::uint32_t col(char c) const { return (given_ & bit(c)) != 0 ? col_[index(c)] : 0; }
 
   // Written as an increment whatever G90/G91 say (lowercase_incremental).
   bool incremental(char c) const { return (incremental_ & bit(c)) != 0; }
 
-  std::uint32_t col(char c) const { return col_[index(c)]; }
-
   void set(char c, double v, bool incremental, std::uint32_t col) {
-    present_ |= bit(c);
+    given_ |= bit(c);
+    forgotten_ &= ~bit(c);
     taken_ &= ~bit(c);
-    if (incremental) {
-      incremental_ |= bit(c);
-    } else {
-      incremental_ &= ~bit(c);
-    }
+    incremental_ = incremental ? incremental_ | bit(c) : incremental_ & ~bit(c);
     value_[index(c)] = v;
     col_[index(c)] = col;
   }
@@ -46,11 +44,11 @@ class Words {
   }
 
   // Letters a handler took are no longer the block's to move with.
-  void forget_taken() { present_ &= ~taken_; }
+  void forget_taken() { forgotten_ |= taken_; }
 
   // The first letter present and not taken, or 0.
   char untaken() const {
-    const std::uint32_t left = present_ & ~taken_;
+    const std::uint32_t left = present() & ~taken_;
     if (left == 0) return 0;
     return static_cast<char>('A' + std::countr_zero(left));
   }
@@ -60,10 +58,13 @@ class Words {
 
   static std::uint32_t bit(char c) { return 1u << index(c); }
 
-  // By letter, A to Z; a slot means something only while its letter is present.
+  std::uint32_t present() const { return given_ & ~forgotten_; }
+
+  // By letter, A to Z; a slot means something only while its letter is given.
   std::array<double, 26> value_{};
   std::array<std::uint32_t, 26> col_{};
-  std::uint32_t present_ = 0;
+  std::uint32_t given_ = 0;
+  std::uint32_t forgotten_ = 0;
   std::uint32_t taken_ = 0;
   std::uint32_t incremental_ = 0;
 };
