@@ -35,7 +35,7 @@ std::unique_ptr<ProgramRunner> make(RunContext context);
 }  // namespace
 
 const Dialect& romi_dialect() {
-  static const Dialect d{
+  static const Dialect kDialect{
       "romi",
       "ROMI MACH / Interact milling control (seed 000): '#' or newline ends a block, ';' "
       "comments, lower-case axis words incremental, polar moves and arcs, G24/G25/G26/G81 "
@@ -105,7 +105,7 @@ const Dialect& romi_dialect() {
            "the spindle), or always the tool in the spindle"},
       },
       &make};
-  return d;
+  return kDialect;
 }
 
 namespace {
@@ -117,8 +117,8 @@ std::unique_ptr<ProgramRunner> make(RunContext context) {
 }  // namespace
 
 const romi::CodeTable& romi::code_table() {
-  static const CodeTable table(romi_dialect(), &Executor::handler_named, kAfterMoveGroup);
-  return table;
+  static const CodeTable kTable(romi_dialect(), &Executor::handler_named, kAfterMoveGroup);
+  return kTable;
 }
 
 }  // namespace usina::gcode

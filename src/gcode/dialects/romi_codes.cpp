@@ -13,10 +13,11 @@ std::string code_name(char letter, int tenths) {
 }
 
 CodeTable::CodeTable(const Dialect& dialect, Handler (*resolve)(std::string_view), int after_move)
-    : dialect_name_(dialect.name), index_(2 * (kMaxTenths + 1), 0) {
+    : dialect_name_(dialect.name), index_(2 * (std::size_t{kMaxTenths} + 1), 0) {
   const std::vector<CodeEntry>& codes = dialect.codes;
   // The groups' numbers in order: a group's rank is its place among them.
   std::vector<int> groups;
+  groups.reserve(codes.size());
   for (const CodeEntry& e : codes)
     groups.push_back(e.group);
   std::sort(groups.begin(), groups.end());

@@ -57,7 +57,8 @@ class CodeTable {
 
  private:
   static std::size_t slot(char letter, int tenths) {
-    return static_cast<std::size_t>((letter == 'M' ? kMaxTenths + 1 : 0) + tenths);
+    const std::size_t m_codes = letter == 'M' ? std::size_t{kMaxTenths} + 1 : 0;
+    return m_codes + static_cast<std::size_t>(tenths);
   }
 
   std::string_view dialect_name_;
@@ -78,7 +79,7 @@ class BlockCodes {
   // The code already placed in `c`'s group, or nullptr after placing `c`.
   const Code* place(const Code& c) {
     const std::uint32_t bit = 1u << c.rank;
-    if (present_ & bit) return by_rank_[static_cast<std::size_t>(c.rank)];
+    if ((present_ & bit) != 0) return by_rank_[static_cast<std::size_t>(c.rank)];
     present_ |= bit;
     by_rank_[static_cast<std::size_t>(c.rank)] = &c;
     return nullptr;

@@ -2,6 +2,8 @@
 // G25 grid, G24 bolt circle and G26 pocket (spec/romi.md, "Cycles and
 // patterns"). Their moves are marked Origin::Cycle, and each hole or pocket
 // is also emitted as a feature, so a part drawing shows it.
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -147,7 +149,7 @@ canon::Outline rounded_rectangle(Vec2 c, double a, double b, double rr) {
     double sx, sy;
   };
 
-  const Corner corners[4] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  const std::array<Corner, 4> corners = {{{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}};
   for (const Corner& k : corners) {
     // Along the side to the corner's arc, then round it.
     const Vec2 cc{c.x + k.sx * (a - rr), c.y + k.sy * (b - rr)};
@@ -169,11 +171,10 @@ bool Executor::ring(Vec2 c, double a, double b, double rr, double z) {
   if (a < 1e-9 && b < 1e-9) return true;
   const canon::Outline path = rounded_rectangle(c, a, b, rr);
   if (!emit_line({path.start.x, path.start.y, z}, false)) return false;
-  for (const canon::OutlineSegment& s : path.segs) {
+  return std::all_of(path.segs.begin(), path.segs.end(), [&](const canon::OutlineSegment& s) {
     const Vec3 to{s.to.x, s.to.y, z};
-    if (!(s.center ? emit_arc(to, *s.center, true, 1) : emit_line(to, false))) return false;
-  }
-  return true;
+    return s.center ? emit_arc(to, *s.center, true, 1) : emit_line(to, false);
+  });
 }
 
 }  // namespace usina::gcode::romi

@@ -77,6 +77,10 @@ class Engine final : public ProgramRunner, private ParameterSource {
   bool jump_to_block(double n, std::uint32_t col);
   bool after_block_number();
   bool run_statement(const Statement& st);
+  std::optional<double> statement_value(ExprRef e);
+  bool repeat(const Statement& st);
+  bool call(const Statement& st);
+  bool skip_sub(const Statement& st);
   bool skip_to(std::uint64_t offset);
 
   const Dialect& dialect_;

@@ -34,8 +34,8 @@ namespace usina::gcode::romi {
 inline constexpr int kAfterMoveGroup = 60;
 
 struct Fail {
-  core::Code code;
-  std::uint32_t col;
+  core::Code code = core::Code::Unsupported;
+  std::uint32_t col = 0;
   std::string message;
 };
 
@@ -146,10 +146,13 @@ class Executor {
   // Moves (romi_motion.cpp).
   bool move();
   std::optional<Vec3> line_end(const Vec3& start, Fail& fail) const;
+  std::optional<Vec2> polar_end(Vec2 p0, Fail& fail) const;
   Vec3 cartesian_end(const Vec3& start) const;
   bool arc_block();
   bool arc_cartesian();
   bool arc_polar();
+  bool tangent_arc(Vec2 p0, bool ccw);
+  bool swept_arc(Vec2 p0, Vec2 center, double sweep, bool ccw);
   bool blend(const Vec3& next_end);
   bool emit_line(const Vec3& end, bool rapid);
   bool emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns);

@@ -25,8 +25,9 @@ Vec2 Transform::apply(Vec2 p) const {
   return q;
 }
 
-bool Executor::h_plane(int) {
-  return true;  // G17 only: the table has no G18/G19
+// G17 only: the table has no G18/G19. A member, as every handler is.
+bool Executor::h_plane(int) {  // NOLINT(readability-convert-member-functions-to-static)
+  return true;
 }
 
 bool Executor::h_distance(int code) {

@@ -67,14 +67,23 @@ std::optional<Vec3> Executor::line_end(const Vec3& start, Fail& fail) const {
             "polar words (R, A, C) and X/Y in one straight move: give the end point one way"};
     return std::nullopt;
   }
+  const auto q = polar_end(xy(start), fail);
+  if (!q) return std::nullopt;
   Vec3 end = cartesian_end(start);  // Z may accompany any form
-  const Vec2 p0 = xy(start);
+  end.x = q->x;
+  end.y = q->y;
+  return end;
+}
+
+// The end of a polar straight move from p0: R A, R C, R or C, about the
+// polar centre I J (program zero when absent).
+std::optional<Vec2> Executor::polar_end(Vec2 p0, Fail& fail) const {
   const Vec2 o{words_.has('I') ? mm(words_.get('I')) : 0.0,
                words_.has('J') ? mm(words_.get('J')) : 0.0};
   const Vec2 d{p0.x - o.x, p0.y - o.y};
   const double r0 = std::hypot(d.x, d.y);
   const double t0 = deg(std::atan2(d.y, d.x));
-  Vec2 q;
+  const double c = incremental('C') ? t0 + words_.get('C') : words_.get('C');
   if (words_.has('A')) {
     if (!words_.has('R') || words_.has('C')) {
       fail = {core::Code::MissingWord, words_.col('A'),
@@ -82,26 +91,18 @@ std::optional<Vec3> Executor::line_end(const Vec3& start, Fail& fail) const {
                               : "A (the direction of the move) needs R (its length)"};
       return std::nullopt;
     }
-    q = polar(p0, mm(words_.get('R')), words_.get('A'));
-  } else if (words_.has('R')) {
-    const double r = incremental('R') ? r0 + mm(words_.get('R')) : mm(words_.get('R'));
-    if (words_.has('C')) {
-      q = polar(o, r, incremental('C') ? t0 + words_.get('C') : words_.get('C'));
-    } else {
-      if (r0 < 1e-9) {
-        fail = {core::Code::BadWordValue, words_.col('R'),
-                "R alone moves along the line from the polar centre through the current point, "
-                "and the current point is the centre"};
-        return std::nullopt;
-      }
-      q = {o.x + r * d.x / r0, o.y + r * d.y / r0};
-    }
-  } else {
-    q = polar(o, r0, incremental('C') ? t0 + words_.get('C') : words_.get('C'));
+    return polar(p0, mm(words_.get('R')), words_.get('A'));
   }
-  end.x = q.x;
-  end.y = q.y;
-  return end;
+  if (!words_.has('R')) return polar(o, r0, c);
+  const double r = incremental('R') ? r0 + mm(words_.get('R')) : mm(words_.get('R'));
+  if (words_.has('C')) return polar(o, r, c);
+  if (r0 < 1e-9) {
+    fail = {core::Code::BadWordValue, words_.col('R'),
+            "R alone moves along the line from the polar centre through the current point, "
+            "and the current point is the centre"};
+    return std::nullopt;
+  }
+  return Vec2{o.x + r * d.x / r0, o.y + r * d.y / r0};
 }
 
 bool Executor::require_feed(const char* what) {
@@ -214,64 +215,72 @@ bool Executor::arc_cartesian() {
 bool Executor::arc_polar() {
   const bool ccw = work_.motion == 3;
   const Vec2 p0 = xy(work_.pos);
-  Vec3 end = cartesian_end(work_.pos);
-  Vec2 center;
-  double sweep = 0.0;
-  if (words_.has('R')) {
-    const double r = mm(words_.get('R'));
-    if (!(r > 0.0))
-      return error(core::Code::BadWordValue, words_.col('R'), "arc radius must be positive");
-    double dir = 0.0;
-    if (words_.has('A') && words_.has('C')) {
-      dir = words_.get('A');
-    } else if (!work_.direction) {
-      return error(core::Code::NoTangentDirection, words_.col('R'),
-                   "a tangent arc with no previous move to be tangent to");
-    } else {
-      dir = *work_.direction;
-    }
-    const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
-                       : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
-    center = {p0.x + r * n.x, p0.y + r * n.y};
-    if (words_.has('C')) {
-      sweep = words_.get('C');
-    } else if (words_.has('A')) {
-      sweep = positive_sweep(ccw ? words_.get('A') - dir : dir - words_.get('A'));
-      if (sweep >= 360.0 - 1e-9) {
-        return error(core::Code::ArcZeroLength, words_.col('A'),
-                     "the arc would end in the direction it starts: A equals the direction "
-                     "of travel");
-      }
-    } else {
-      if (words_.has('I') || words_.has('J') || words_.has('Z')) {
-        return error(core::Code::UnusedWord, 0, "a blend arc (R alone) takes no I, J or Z");
-      }
-      work_.blend = PendingBlend{run_.loc(), center, r, ccw, work_.pos};
-      return true;
-    }
-  } else if (words_.has('C')) {
-    if (words_.has('A')) {
-      return error(core::Code::MissingWord, words_.col('A'), "A in an arc needs R");
-    }
-    center = {words_.has('I') ? mm(words_.get('I')) : 0.0,
-              words_.has('J') ? mm(words_.get('J')) : 0.0};
-    sweep = words_.get('C');
-  } else {
+  if (words_.has('R')) return tangent_arc(p0, ccw);
+  if (!words_.has('C')) {
     return error(core::Code::ArcMissingCenter, 0,
                  "an arc needs X Y with I J or R, or the polar words C, R C, R A, R A C or R");
   }
+  if (words_.has('A')) {
+    return error(core::Code::MissingWord, words_.col('A'), "A in an arc needs R");
+  }
+  const Vec2 center{words_.has('I') ? mm(words_.get('I')) : 0.0,
+                    words_.has('J') ? mm(words_.get('J')) : 0.0};
+  return swept_arc(p0, center, words_.get('C'), ccw);
+}
+
+// R C, R A, R A C and R alone: radius R, tangent at p0 to the direction of
+// travel (R A C: to A). R alone holds a blend arc for the next block.
+bool Executor::tangent_arc(Vec2 p0, bool ccw) {
+  const double r = mm(words_.get('R'));
+  if (!(r > 0.0)) {
+    return error(core::Code::BadWordValue, words_.col('R'), "arc radius must be positive");
+  }
+  double dir = 0.0;
+  if (words_.has('A') && words_.has('C')) {
+    dir = words_.get('A');
+  } else if (!work_.direction) {
+    return error(core::Code::NoTangentDirection, words_.col('R'),
+                 "a tangent arc with no previous move to be tangent to");
+  } else {
+    dir = *work_.direction;
+  }
+  const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
+                     : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
+  const Vec2 center{p0.x + r * n.x, p0.y + r * n.y};
+  if (words_.has('C')) return swept_arc(p0, center, words_.get('C'), ccw);
+  if (words_.has('A')) {
+    const double sweep = positive_sweep(ccw ? words_.get('A') - dir : dir - words_.get('A'));
+    if (sweep >= 360.0 - 1e-9) {
+      return error(core::Code::ArcZeroLength, words_.col('A'),
+                   "the arc would end in the direction it starts: A equals the direction "
+                   "of travel");
+    }
+    return swept_arc(p0, center, sweep, ccw);
+  }
+  if (words_.has('I') || words_.has('J') || words_.has('Z')) {
+    return error(core::Code::UnusedWord, 0, "a blend arc (R alone) takes no I, J or Z");
+  }
+  work_.blend = PendingBlend{run_.loc(), center, r, ccw, work_.pos};
+  return true;
+}
+
+// An arc from p0 about `center` through `sweep` degrees (more than 360:
+// whole turns and the rest) in the G02/G03 sense.
+bool Executor::swept_arc(Vec2 p0, Vec2 center, double sweep, bool ccw) {
   if (!(sweep > 0.0) || sweep > 360.0 * 1000) {
     return error(core::Code::BadWordValue, words_.col('C'),
                  "the sweep C must be positive (G02 or G03 gives the direction)");
   }
   const double r = core::distance(p0, center);
-  if (r < 1e-9)
+  if (r < 1e-9) {
     return error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is the start point");
+  }
   const double a0 = deg(std::atan2(p0.y - center.y, p0.x - center.x));
   const double turns_exact = sweep / 360.0;
   const int turns = std::max(1, static_cast<int>(std::ceil(turns_exact - 1e-9)));
   const bool whole = std::fabs(turns_exact - std::round(turns_exact)) < 1e-9;
   const Vec2 q = whole ? p0 : polar(center, r, ccw ? a0 + sweep : a0 - sweep);
+  Vec3 end = cartesian_end(work_.pos);
   end.x = q.x;
   end.y = q.y;
   return emit_arc(end, center, ccw, turns);

@@ -162,13 +162,10 @@ bool Executor::cut_pocket(const Pocket& p) {
     }
     if (!emit_line({c.x, c.y, zk}, false)) return false;
   }
-  if ((p.az > 0 && !emit_line({c.x, c.y, -p.depth}, false)) ||
-      !ring(c, p.wall_x(), p.wall_y(), corner, -p.depth) ||
-      !emit_line({c.x, c.y, -p.depth}, false) || !emit_line({c.x, c.y, p0.z}, true) ||
-      !emit_line(p0, true)) {
-    return false;
-  }
-  return true;
+  return (p.az <= 0 || emit_line({c.x, c.y, -p.depth}, false)) &&
+         ring(c, p.wall_x(), p.wall_y(), corner, -p.depth) &&
+         emit_line({c.x, c.y, -p.depth}, false) && emit_line({c.x, c.y, p0.z}, true) &&
+         emit_line(p0, true);
 }
 
 }  // namespace usina::gcode::romi
