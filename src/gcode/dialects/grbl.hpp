@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,16 +48,22 @@ struct StrippedLine {
 };
 
 StrippedLine strip_line(std::string_view line);
+// The same into `out`, whose buffers are reused: nothing is allocated a line
+// once they are as long as the longest line.
+void strip_line(std::string_view line, StrippedLine& out);
 
-// Where a program's lines start: Grbl ends a line at LF or CR
-// (protocol_main_loop), so CR LF, LF and CR alone each end one; the
-// offsets of the lines' first bytes, and of each line's end.
+// A line of a program: Grbl ends a line at LF or CR (protocol_main_loop),
+// so CR LF, LF and CR alone each end one. The offset of its first byte, its
+// length without the line end, and where the next line starts.
 struct LineSpan {
   std::uint64_t offset = 0;
   std::size_t length = 0;
+  std::uint64_t next = 0;
 };
 
-std::vector<LineSpan> split_lines(std::string_view text);
+// The line starting at `offset` (< text.size()); lines are read one at a
+// time, so no table of them is kept whatever the program's length.
+LineSpan read_line(std::string_view text, std::uint64_t offset);
 
 // Grbl's LINE_BUFFER_SIZE is 80 with the terminator.
 inline constexpr std::size_t kMaxLineLength = 79;
@@ -120,21 +125,14 @@ struct Travel {
   bool operator==(const Travel&) const = default;
 };
 
-// Where a move's machine position comes from, line by line: what the
-// runner's soft-limit check needs (grbl_runner.cpp).
+// What the soft-limit check needs to know of the line whose moves it checks
+// (grbl_machine_check.cpp): the machine's travel, the G43.1 tool length,
+// and whether the line is a jog or a homing.
 struct MachineFacts {
-  struct From {
-    Travel travel;
-    double tool_length_mm = 0.0;
-    bool operator==(const From&) const = default;
-  };
-
-  std::map<std::uint32_t, From> changes;  // line → in force from that line on
-  std::set<std::uint32_t> jogs;           // $J= lines: error:15, not alarm 2
-  std::set<std::uint32_t> homing;         // $H lines: not checked (Grbl's homing is not)
-
-  void record(std::uint32_t line, const From& now);
-  const From* at(std::uint32_t line) const;
+  Travel travel;
+  double tool_length_mm = 0.0;
+  bool jog = false;     // $J=: a move beyond the travel is error:15, not alarm 2
+  bool homing = false;  // $H: not checked (Grbl's homing is not)
 };
 
 // A `$` line. `interp_line` receives what the interpreter runs in its place

@@ -19,7 +19,16 @@ bool is_realtime(unsigned char c) {
 
 StrippedLine strip_line(std::string_view line) {
   StrippedLine out;
+  strip_line(line, out);
+  return out;
+}
+
+void strip_line(std::string_view line, StrippedLine& out) {
+  out.text.clear();
+  out.cols.clear();
   out.blanked.assign(line.size(), ' ');
+  out.realtime_col = out.control_col = 0;
+  out.control = 0;
   bool in_parens = false;
   bool in_semicolon = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
@@ -57,22 +66,18 @@ StrippedLine strip_line(std::string_view line) {
     out.cols.push_back(col);
     out.blanked[i] = up;
   }
-  return out;
 }
 
-std::vector<LineSpan> split_lines(std::string_view text) {
-  std::vector<LineSpan> out;
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
-    out.push_back({at, end - at});
-    at = end + 1;
-    // CR LF is one line end, and so is CR CR LF (a CR LF file converted
-    // once more): an editor shows one line there, and Grbl skips the blank.
-    std::size_t crs = end;
-    while (crs < text.size() && text[crs] == '\r')
-      ++crs;
-    if (crs > end && crs < text.size() && text[crs] == '\n') at = crs + 1;
-  }
+LineSpan read_line(std::string_view text, std::uint64_t offset) {
+  const std::size_t at = static_cast<std::size_t>(offset);
+  const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
+  LineSpan out{offset, end - at, std::min<std::uint64_t>(end + 1, text.size())};
+  // CR LF is one line end, and so is CR CR LF (a CR LF file converted
+  // once more): an editor shows one line there, and Grbl skips the blank.
+  std::size_t crs = end;
+  while (crs < text.size() && text[crs] == '\r')
+    ++crs;
+  if (crs > end && crs < text.size() && text[crs] == '\n') out.next = crs + 1;
   return out;
 }
 

@@ -3,7 +3,6 @@
 // interpreter, anything else is error:3.
 #include <charconv>
 #include <cmath>
-#include <iterator>
 #include <set>
 #include <string>
 
@@ -245,16 +244,6 @@ int Travel::beyond(const core::Vec3& machine) const {
     if (machine[a] > kRoundOff || machine[a] < -max[a] - kRoundOff) return a;
   }
   return -1;
-}
-
-void MachineFacts::record(std::uint32_t line, const From& now) {
-  const From* before = at(line);
-  if (before == nullptr || !(*before == now)) changes[line] = now;
-}
-
-const MachineFacts::From* MachineFacts::at(std::uint32_t line) const {
-  auto it = changes.upper_bound(line);
-  return it == changes.begin() ? nullptr : &std::prev(it)->second;
 }
 
 SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
