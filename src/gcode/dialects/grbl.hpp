@@ -4,6 +4,7 @@
 // the geometry is the shared one; these files only say what Grbl accepts.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -41,16 +42,22 @@ struct Failure {
 struct StrippedLine {
   std::string text;                 // what Grbl's parser sees
   std::vector<std::uint32_t> cols;  // 1-based column of each character of text
-  std::string blanked;              // the line with what Grbl drops turned to spaces
   std::uint32_t realtime_col = 0;   // first real-time character (? ~ ! ^X), 0 if none
   std::uint32_t control_col = 0;    // first control character outside comments (NUL...), 0 if none
   unsigned char control = 0;        // that character
+  // Nothing was dropped but blanks, nothing upper-cased: the line is its
+  // own blanked_line(), most lines of a program are.
+  bool verbatim = true;
 };
 
 StrippedLine strip_line(std::string_view line);
 // The same into `out`, whose buffers are reused: nothing is allocated a line
 // once they are as long as the longest line.
 void strip_line(std::string_view line, StrippedLine& out);
+
+// `line` with what Grbl drops turned to blanks and its letters upper-cased,
+// into `out`: the columns stay the user's (what the interpreter is given).
+void blanked_line(std::string_view line, const StrippedLine& s, std::string& out);
 
 // A line of a program: Grbl ends a line at LF or CR (protocol_main_loop),
 // so CR LF, LF and CR alone each end one. The offset of its first byte, its
@@ -100,9 +107,29 @@ struct Accepted {
   bool sets_feed = false;
 };
 
+// The dialect's G and M codes by number: the checks look codes up on every
+// line, so a table, not a search of the dialect's list.
+class CodeIndex {
+ public:
+  explicit CodeIndex(const Dialect& d);
+  // A code of `letter` (G or M) has the integer part `integer`.
+  bool has_integer(char letter, int integer) const;
+  // The entry of `letter` and `tenths` (G38.2: 382), or nullptr.
+  const CodeEntry* find(char letter, int tenths) const;
+
+ private:
+  static constexpr int kTenths = 2560;  // integer parts 0-255, as Grbl reads codes
+
+  static int at(char letter, int tenths) { return (letter == 'M' ? kTenths : 0) + tenths; }
+
+  const std::vector<CodeEntry>* codes_;
+  std::array<std::int16_t, 2 * kTenths> entry_;       // index in codes_, -1: none
+  std::array<bool, 2 * kTenths / 10> has_integer_{};  // by at(letter, integer * 10) / 10
+};
+
 // Grbl's checks of one G-code block (gc_execute_line steps 1–3); on success
 // `state` is what it is after the block.
-std::optional<Failure> check_block(const Dialect& d, const OptionValues& options,
+std::optional<Failure> check_block(const CodeIndex& codes, const OptionValues& options,
                                    const std::vector<Word>& words, Modal& state, Accepted& out);
 
 // Grbl's settings ($x=value) that usina reads; the others are recorded only.
@@ -147,8 +174,8 @@ struct SystemResult {
   std::vector<std::string> warnings;
 };
 
-SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
-                            const std::vector<std::uint32_t>& cols, const Modal& state,
-                            Settings& settings);
+SystemResult system_command(const CodeIndex& codes, const OptionValues& options,
+                            std::string_view text, const std::vector<std::uint32_t>& cols,
+                            const Modal& state, Settings& settings);
 
 }  // namespace usina::gcode::grbl

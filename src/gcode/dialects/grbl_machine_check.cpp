@@ -58,8 +58,8 @@ void MachineCheck::travel(const core::Vec3& to, const core::SourceLoc& src) {
   const int a = facts_->travel.beyond(machine);
   if (a < 0) return;
   const std::string what = fmt::format(
-      "the machine position {}{:.4f} is outside the travel {:.3f} to 0 ($13{}={}, $20=1)",
-      "XYZ"[a], machine[a], -facts_->travel.max[a], a, facts_->travel.max[a]);
+      "the machine position {}{:.4f} is outside the travel {:.3f} to 0 ($13{}={}, $20=1)", "XYZ"[a],
+      machine[a], -facts_->travel.max[a], a, facts_->travel.max[a]);
   if (facts_->jog) return fail(src, 15, "the jog's target: " + what);
   failure_ = core::Diagnostic{
       core::Code::GrblAlarm, core::Severity::Error, src,

@@ -26,7 +26,7 @@ std::string motion_name(int tenths) {
 }  // namespace
 
 LineReader::LineReader(const Dialect& d, const OptionValues& options, std::uint32_t file)
-    : d_(d),
+    : codes_(d),
       options_(options),
       file_(file),
       max_length_(line_length(options)),
@@ -36,6 +36,7 @@ LineKind LineReader::read(std::uint32_t n, std::uint64_t offset, std::string_vie
                           std::vector<core::Diagnostic>& diags) {
   diags_ = &diags;
   loc_ = {file_, n, 1, 0, offset};
+  line_ = text;
   if (!now_.ended) {
     if (auto too_long = block_too_long(text, loc_)) {
       diags.push_back(std::move(*too_long));
@@ -95,8 +96,13 @@ void LineReader::warnings_of_the_line() {
 LineKind LineReader::block() {
   if (auto f = read_words(stripped_.text, stripped_.cols, words_)) return fail(*f);
   Accepted acc;
-  if (auto f = check_block(d_, options_, words_, next_.modal, acc)) return fail(*f);
-  interp_.assign(stripped_.blanked);
+  if (auto f = check_block(codes_, options_, words_, next_.modal, acc)) return fail(*f);
+  if (stripped_.verbatim) {
+    interp_text_ = line_;
+  } else {
+    blanked_line(line_, stripped_, interp_);
+    interp_text_ = interp_;
+  }
   append_kept_modes(acc);
   if (acc.program_end) next_.ended = true;
   facts_.tool_length_mm = next_.modal.tool_length_mm;
@@ -107,6 +113,11 @@ LineKind LineReader::block() {
 // `$H` changed.
 void LineReader::append_kept_modes(const Accepted& acc) {
   Restore& r = next_.restore;
+  if (!r.modes && !(acc.uses_motion && r.motion)) {
+    if (acc.uses_motion || acc.sets_motion) r.motion = false;
+    return;
+  }
+  if (interp_text_.data() != interp_.data()) interp_.assign(interp_text_);
   const double per_unit = now_.modal.inch ? 25.4 : 1.0;
   if (r.modes) {
     const Modal& p = r.before;
@@ -120,13 +131,14 @@ void LineReader::append_kept_modes(const Accepted& acc) {
   }
   if (acc.uses_motion && r.motion) interp_ += " " + motion_name(r.before.motion);
   if (acc.uses_motion || acc.sets_motion) r.motion = false;
+  interp_text_ = interp_;
 }
 
 // A `$` line, on a copy of the settings.
 LineKind LineReader::system() {
   next_settings_ = settings_;
   SystemResult r =
-      system_command(d_, options_, stripped_.text, stripped_.cols, now_.modal, *next_settings_);
+      system_command(codes_, options_, stripped_.text, stripped_.cols, now_.modal, *next_settings_);
   for (std::string& w : r.warnings)
     warn(core::Code::GrblWarning, stripped_.cols.front(), std::move(w));
   if (r.failure) return fail(*r.failure);
@@ -146,6 +158,7 @@ LineKind LineReader::system() {
     return LineKind::Nothing;
   }
   interp_ = std::move(r.interp_line);
+  interp_text_ = interp_;
   return LineKind::Run;
 }
 

@@ -37,7 +37,7 @@ class LineReader {
   // After Run: the line as the interpreter runs it (the user's line with
   // what Grbl drops turned to blanks, so columns are the user's; a `$`
   // command's move), and what the checks of its moves need.
-  std::string_view interp_text() const { return interp_; }
+  std::string_view interp_text() const { return interp_text_; }
 
   const MachineFacts& facts() const { return facts_; }
 
@@ -68,12 +68,12 @@ class LineReader {
   void warnings_of_the_line();
   void append_kept_modes(const Accepted& acc);
 
-  const Dialect& d_;
+  CodeIndex codes_;
   const OptionValues& options_;
   std::uint32_t file_;
   std::size_t max_length_;
   State now_;
-  State next_;                            // the line's, until accept()
+  State next_;  // the line's, until accept()
   Settings settings_;
   std::optional<Settings> next_settings_;  // a `$` line's, until accept()
   Travel travel_;                          // of settings_
@@ -83,7 +83,9 @@ class LineReader {
   std::vector<core::Diagnostic>* diags_ = nullptr;
   StrippedLine stripped_;
   std::vector<Word> words_;
-  std::string interp_;
+  std::string_view line_;
+  std::string interp_;            // when the line itself will not do
+  std::string_view interp_text_;  // the line or interp_
   MachineFacts facts_;
 };
 

@@ -202,7 +202,7 @@ SystemResult restore(std::string_view what, std::uint32_t col, Settings& setting
 // A start-up block ($Nx=): stored, not run. Grbl checks its length against
 // the EEPROM line (80 bytes with the terminator) before the block itself;
 // with the default 80-byte line buffer a line cannot be that long.
-std::optional<Failure> startup_line(const Dialect& d, const OptionValues& options,
+std::optional<Failure> startup_line(const CodeIndex& codes, const OptionValues& options,
                                     std::string_view text, const std::vector<std::uint32_t>& cols,
                                     const Modal& state) {
   constexpr std::size_t kEepromLine = 80;
@@ -216,7 +216,7 @@ std::optional<Failure> startup_line(const Dialect& d, const OptionValues& option
   if (auto f = read_words(text.substr(4), body_cols, words)) return f;
   Modal copy = state;
   Accepted ignored;
-  return check_block(d, options, words, copy, ignored);
+  return check_block(codes, options, words, copy, ignored);
 }
 
 bool is_report(std::string_view t) {
@@ -246,9 +246,9 @@ int Travel::beyond(const core::Vec3& machine) const {
   return -1;
 }
 
-SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
-                            const std::vector<std::uint32_t>& cols, const Modal& state,
-                            Settings& settings) {
+SystemResult system_command(const CodeIndex& codes, const OptionValues& options,
+                            std::string_view text, const std::vector<std::uint32_t>& cols,
+                            const Modal& state, Settings& settings) {
   SystemResult r;
   const std::uint32_t col = cols.front();
   if (is_report(text)) return r;
@@ -264,7 +264,7 @@ SystemResult system_command(const Dialect& d, const OptionValues& options, std::
   // $Nx=), nothing to run.
   if (text.substr(0, 3) == "$I=") return r;
   if (text.size() >= 4 && text[1] == 'N' && (text[2] == '0' || text[2] == '1') && text[3] == '=') {
-    r.failure = startup_line(d, options, text, cols, state);
+    r.failure = startup_line(codes, options, text, cols, state);
     return r;
   }
   if (text.size() >= 2 && text[1] >= '0' && text[1] <= '9' &&

@@ -51,9 +51,9 @@ void CanonMachine::refuse(const std::string& why) {
   core::SourceLoc loc = src_;
   loc.length = 0;
   diags_->report({core::Code::ValueOutOfRange, core::Severity::Error, loc,
-                 fmt::format("{} (usina's ranges: docs/rs274ngc.md, Numbers); check the values, "
-                             "increments, offsets and scale factors that lead here",
-                             why)});
+                  fmt::format("{} (usina's ranges: docs/rs274ngc.md, Numbers); check the values, "
+                              "increments, offsets and scale factors that lead here",
+                              why)});
 }
 
 void CanonMachine::emit(canon::OpKind kind) {
