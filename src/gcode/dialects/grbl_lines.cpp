@@ -136,7 +136,8 @@ bool read_unsigned(std::string_view t, double& v) {
       std::memcpy(buffer.data() + 1, t.data(), t.size());
       first = buffer.data();
     } else {
-      longer = "0" + std::string(t);
+      longer = "0";
+      longer += t;
       first = longer.data();
     }
     ++length;
