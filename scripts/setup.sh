@@ -10,6 +10,7 @@ pkgs=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libdxflib-dev libcairo2-dev libpolyclipping-dev hershey-fonts-data
   clang-14 libclang-rt-14-dev clang-format
+  libboost-dev libboost-system-dev libssl-dev socat
 )
 [ "${1:-}" = "--with-linuxcnc" ] && pkgs+=(linuxcnc-uspace)
 missing=()
