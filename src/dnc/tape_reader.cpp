@@ -29,16 +29,22 @@ void TapeReader::bad_row() {
 
 void TapeReader::on_char(char c) {
   if (c == '%') {
-    // The first `%` opens the program unless a program came before it
-    // (a control that punches no opening `%`): then it is the end.
-    if (state_ == State::Open && !has_text()) {
+    // The first `%` opens the program unless a program (a block and its end)
+    // came before it, from a control that punches no opening `%`: then it is
+    // the end. A label on the leader has no block end.
+    if (state_ == State::Open && (!has_text() || text_.find('\n') == std::string::npos)) {
       text_.clear();
       state_ = State::Framed;
+      at_open_ = true;  // the `%` block's own end is no line of the program
     } else {
       state_ = State::Closed;
     }
     return;
   }
+  const bool own_end = (c == ';' && eob_ == EndOfBlock::Semicolon) ||
+                       (c == '#' && eob_ == EndOfBlock::Hash);
+  if (at_open_ && (c == '\n' || c == '\r' || own_end)) return;
+  at_open_ = false;
   if (swallow_line_end_ && (c == '\n' || c == '\r')) return;
   swallow_line_end_ = false;
   switch (c) {
@@ -86,7 +92,11 @@ bool TapeReader::feed(std::span<const std::uint8_t> rows) {
     const DecodedRow d = decode_row(code_, row, check_parity_);
     switch (d.kind) {
     case DecodedRow::Kind::Char: on_char(d.ch); break;
-    case DecodedRow::Kind::Feed: break;
+    case DecodedRow::Kind::Feed:
+        // Blank tape inside an EIA program is an error (YASNAC LX3 table 2.4):
+        // it is also what a one-hole character that lost its hole looks like.
+        if (code_ == TapeCode::Eia && row == kNul && state_ == State::Framed) bad_row();
+        break;
     case DecodedRow::Kind::BadParity:
     case DecodedRow::Kind::NoSuchCode: bad_row(); break;
     }

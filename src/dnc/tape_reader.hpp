@@ -57,6 +57,7 @@ class TapeReader {
   State state_ = State::Open;
   std::string text_;
   bool swallow_line_end_ = false;
+  bool at_open_ = false;
   bool too_large_ = false;
   std::uint64_t rows_ = 0;
   std::uint64_t after_end_ = 0;
