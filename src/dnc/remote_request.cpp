@@ -53,7 +53,11 @@ std::vector<std::pair<std::string, std::string>> pairs_of(std::string_view s) {
       skip_blank();
     }
     if ((slash || equals) && !key.empty()) {
-      out.emplace_back(key, std::string(word()));
+      // KEY=VALUE runs to a blank, so a path in it is seen whole and refused.
+      const std::size_t start = i;
+      while (i < s.size() && s[i] != ' ' && s[i] != '\t' && (equals || s[i] != '/'))
+        ++i;
+      out.emplace_back(key, std::string(s.substr(start, i - start)));
     } else if (i < s.size() && !is_word_char(s[i]) && s[i] != '/') {
       ++i;  // a stray `=`: go on past it
     }
