@@ -7,8 +7,6 @@
 //
 //   dnc_feed_bench [--machines 256] [--baud 115200] [--seconds 10] [--skid 32]
 //                  [--link memory|pty] [--buffer 4096]
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +16,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 
 #include "dnc/link_config.hpp"
 #include "dnc/link_memory.hpp"
@@ -42,6 +41,7 @@ struct Options {
 class Generated final : public ProgramSource {
  public:
   explicit Generated(std::uint64_t bytes) : total_(bytes) {}
+
   std::size_t read(std::span<char> out) override {
     std::size_t n = 0;
     while (n < out.size() && made_ < total_) {

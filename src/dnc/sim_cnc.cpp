@@ -61,6 +61,14 @@ void SimCnc::on_bytes(const std::uint8_t* p, std::size_t n) {
   execute(Clock::now());
   sha_.update(std::span<const std::uint8_t>(p, n));
   if (config_.keep_data) data_.insert(data_.end(), p, p + n);
+  // Most reads find the buffer far from high water: counted at once.
+  const double free_below_high = static_cast<double>(config_.high_water) - fill_;
+  if (!xoff_pending_ && !xoff_asserted_ && static_cast<double>(n) + 1.0 < free_below_high) {
+    stats_.received += n;
+    fill_ = config_.execute_rate <= 0.0 ? 0.0 : fill_ + static_cast<double>(n);
+    stats_.max_fill = std::max(stats_.max_fill, static_cast<std::size_t>(fill_));
+    n = 0;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     ++stats_.received;
     if (xoff_asserted_) stats_.max_after_xoff = std::max(stats_.max_after_xoff, ++after_xoff_);

@@ -41,8 +41,8 @@ void TapeReader::on_char(char c) {
     }
     return;
   }
-  const bool own_end = (c == ';' && eob_ == EndOfBlock::Semicolon) ||
-                       (c == '#' && eob_ == EndOfBlock::Hash);
+  const bool own_end =
+      (c == ';' && eob_ == EndOfBlock::Semicolon) || (c == '#' && eob_ == EndOfBlock::Hash);
   if (at_open_ && (c == '\n' || c == '\r' || own_end)) return;
   at_open_ = false;
   if (swallow_line_end_ && (c == '\n' || c == '\r')) return;
@@ -93,10 +93,10 @@ bool TapeReader::feed(std::span<const std::uint8_t> rows) {
     switch (d.kind) {
     case DecodedRow::Kind::Char: on_char(d.ch); break;
     case DecodedRow::Kind::Feed:
-        // Blank tape inside an EIA program is an error (YASNAC LX3 table 2.4):
-        // it is also what a one-hole character that lost its hole looks like.
-        if (code_ == TapeCode::Eia && row == kNul && state_ == State::Framed) bad_row();
-        break;
+      // Blank tape inside an EIA program is an error (YASNAC LX3 table 2.4):
+      // it is also what a one-hole character that lost its hole looks like.
+      if (code_ == TapeCode::Eia && row == kNul && state_ == State::Framed) bad_row();
+      break;
     case DecodedRow::Kind::BadParity:
     case DecodedRow::Kind::NoSuchCode: bad_row(); break;
     }

@@ -39,6 +39,15 @@ std::int64_t block_number(std::string_view block) {
   return digits == 0 ? -1 : n;
 }
 
+TapeWriter::TapeWriter(TapeFormat format) : format_(format) {
+  for (unsigned c = 0; c < 256; ++c) {
+    const std::optional<std::uint8_t> row =
+        encode_char(format_.code, static_cast<unsigned char>(c));
+    const bool too_wide = format_.seven_bit && format_.code == TapeCode::Ascii && c > 0x7F;
+    rows_of_[c] = (row && !too_wide) ? static_cast<std::int16_t>(*row) : std::int16_t{-1};
+  }
+}
+
 bool TapeWriter::fail(core::Code code, std::string message) {
   diag_ = core::Diagnostic{code, core::Severity::Error,
                            core::SourceLoc{0, static_cast<std::uint32_t>(line_ + 1), 0, 0, 0},
@@ -52,15 +61,14 @@ void TapeWriter::put_feed(std::uint32_t count, std::vector<std::uint8_t>& rows) 
 }
 
 bool TapeWriter::put_char(unsigned char c, std::size_t column, std::vector<std::uint8_t>& rows) {
-  std::optional<std::uint8_t> row = encode_char(format_.code, c);
-  if (format_.seven_bit && format_.code == TapeCode::Ascii && c > 0x7F) row.reset();
-  if (!row) {
+  const std::int16_t row = rows_of_[c];
+  if (row < 0) {
     return fail(core::Code::TapeNoCode,
                 fmt::format("line {} column {}: {} has no {} tape code; remove it from the "
                             "program (nothing was sent)",
                             line_ + 1, column + 1, shown(c), code_name(format_.code)));
   }
-  rows.push_back(*row);
+  rows.push_back(static_cast<std::uint8_t>(row));
   ++rows_;
   return true;
 }
@@ -96,9 +104,19 @@ void TapeWriter::open_frame(std::vector<std::uint8_t>& rows) {
 
 bool TapeWriter::put_block(std::string_view block, std::vector<std::uint8_t>& rows,
                            std::vector<BlockMark>& marks) {
+  // The hot loop of a drip feed: a table look-up a byte, one resize a block.
+  const std::size_t at = rows.size();
+  rows.resize(at + block.size());
   for (std::size_t i = 0; i < block.size(); ++i) {
-    if (!put_char(static_cast<unsigned char>(block[i]), i, rows)) return false;
+    const std::int16_t row = rows_of_[static_cast<unsigned char>(block[i])];
+    if (row < 0) {
+      rows.resize(at + i);
+      rows_ += i;
+      return put_char(static_cast<unsigned char>(block[i]), i, rows);
+    }
+    rows[at + i] = static_cast<std::uint8_t>(row);
   }
+  rows_ += block.size();
   const char own_end = format_.eob == EndOfBlock::Semicolon ? ';'
                        : format_.eob == EndOfBlock::Hash    ? '#'
                                                             : '\0';
@@ -136,21 +154,27 @@ bool TapeWriter::end_line(std::vector<std::uint8_t>& rows, std::vector<BlockMark
 
 bool TapeWriter::write(std::string_view text, std::vector<std::uint8_t>& rows,
                        std::vector<BlockMark>& marks) {
-  for (const char c : text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    // The run of the block up to its line end, appended at once.
+    std::size_t end = i;
+    while (end < text.size() && text[end] != '\n' && text[end] != '\r')
+      ++end;
+    if (end > i) {
+      after_cr_ = false;
+      const std::size_t room = kMaxTapeBlock - std::min(kMaxTapeBlock, block_.size());
+      block_.append(text.substr(i, std::min(room, end - i)));
+      if (end - i > room) too_long_ = true;
+    }
+    if (end == text.size()) break;
+    const char c = text[end];
+    i = end + 1;
     if (c == '\n' && after_cr_) {
       after_cr_ = false;
       continue;
     }
     after_cr_ = c == '\r';
-    if (c == '\n' || c == '\r') {
-      if (!end_line(rows, marks)) return false;
-      continue;
-    }
-    if (block_.size() < kMaxTapeBlock) {
-      block_.push_back(c);
-    } else {
-      too_long_ = true;
-    }
+    if (!end_line(rows, marks)) return false;
   }
   return true;
 }

@@ -12,6 +12,7 @@
 // romi `#`, a `;`) gets no second one.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -44,7 +45,7 @@ struct BlockMark {
 
 class TapeWriter {
  public:
-  explicit TapeWriter(TapeFormat format) : format_(format) {}
+  explicit TapeWriter(TapeFormat format);
 
   // Appends the rows of `text`, the next slice of the program, to `rows`
   // and one mark per block to `marks`. False, with E_TAPE_NO_CODE or
@@ -75,6 +76,7 @@ class TapeWriter {
   bool fail(core::Code code, std::string message);
 
   TapeFormat format_;
+  std::array<std::int16_t, 256> rows_of_{};  // each byte's row, -1 for none
   State state_ = State::BeforeFrame;
   std::string block_;      // the line being read (at most kMaxTapeBlock bytes)
   bool after_cr_ = false;  // the last byte was CR: a LF right after it ends nothing

@@ -2,14 +2,15 @@
 // real code path), a socat pty pair, raw TCP in both directions.
 #include "dnc/link.hpp"
 
-#include <gtest/gtest.h>
 #include <termios.h>
 #include <unistd.h>
 
-#include <boost/asio/ip/tcp.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <thread>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <gtest/gtest.h>
 
 #include "dnc/link_serial.hpp"
 #include "dnc/sim_cnc.hpp"
@@ -52,7 +53,8 @@ struct Fed {
 Fed feed(asio::io_context& io, Link& ours, Link& theirs, const LinkConfig& c,
          std::unique_ptr<ProgramSource> program, SimCncConfig sc = {}) {
   auto sim = std::make_shared<SimCnc>(io, theirs, sc);
-  auto sender = std::make_shared<Sender>(io, ours, send_options(c), std::move(program), JobMode::Drip);
+  auto sender =
+      std::make_shared<Sender>(io, ours, send_options(c), std::move(program), JobMode::Drip);
   Fed f;
   bool done = false;
   sim->start();
@@ -62,8 +64,8 @@ Fed feed(asio::io_context& io, Link& ours, Link& theirs, const LinkConfig& c,
   });
   test::run_until(io, [&] { return done; });
   if (f.report.state == JobState::Done) {
-    test::run_until(io, [&] { return sim->stats().received >= f.report.bytes_sent; },
-                    std::chrono::seconds(5));
+    test::run_until(
+        io, [&] { return sim->stats().received >= f.report.bytes_sent; }, std::chrono::seconds(5));
   }
   sim->stop();
   f.sim = sim->stats();
@@ -101,7 +103,8 @@ TEST(SerialLink, ADripFeedOverAPtyArrivesWhole) {
   sc.high_water = 256;
   sc.low_water = 64;
   sc.execute_rate = 8000;
-  const Fed f = feed(io, *link, *pair->master, c, std::make_unique<test::GeneratedProgram>(8000), sc);
+  const Fed f =
+      feed(io, *link, *pair->master, c, std::make_unique<test::GeneratedProgram>(8000), sc);
   EXPECT_EQ(f.report.state, JobState::Done) << f.report.reason;
   EXPECT_EQ(f.sim.received, f.report.bytes_sent);
   EXPECT_EQ(f.sim_sha, f.report.sha256);
@@ -119,7 +122,8 @@ TEST(SerialLink, ClosingThePtyMasterInterruptsTheFeed) {
   ASSERT_TRUE(link) << error;
   SimCncConfig sc;
   sc.drop_link_at = 5000;
-  const Fed f = feed(io, *link, *pair->master, c, std::make_unique<test::GeneratedProgram>(100000), sc);
+  const Fed f =
+      feed(io, *link, *pair->master, c, std::make_unique<test::GeneratedProgram>(100000), sc);
   EXPECT_EQ(f.report.state, JobState::Interrupted) << f.report.reason;
   EXPECT_GE(f.report.bytes_sent, 5000U);
   EXPECT_EQ(f.sim.received, 5000U);
@@ -136,9 +140,10 @@ TEST(SerialLink, AMissingDeviceIsAnErrorNamingIt) {
 // socat's pty pair, as research/dnc.md §6 plans: usina on one end as on a
 // serial port, the simulated control on the other.
 TEST(SerialLink, ASocatPtyPairCarriesAFeed) {
-  if (std::system("command -v socat > /dev/null 2>&1") != 0) GTEST_SKIP() << "socat is not installed";
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("usina-socat-" + std::to_string(::getpid()));
+  if (std::system("command -v socat > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "socat is not installed";
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("usina-socat-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string a = (dir / "a").string();
   const std::string b = (dir / "b").string();
@@ -216,7 +221,8 @@ TEST(TcpLink, ClientAndListeningModesCarryAFeed) {
 
 TEST(TcpLink, ARefusedConnectionIsAnError) {
   asio::io_context io;
-  asio::ip::tcp::acceptor probe(io, asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), 0));
+  asio::ip::tcp::acceptor probe(io,
+                                asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), 0));
   const auto port = probe.local_endpoint().port();
   probe.close();
   std::string error;

@@ -1,8 +1,8 @@
 #include "dnc/machine_config.hpp"
 
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace usina::dnc {
 namespace {
@@ -98,7 +98,8 @@ TEST(MachineConfig, EveryBadValueIsAnErrorAtItsLine) {
   };
   for (const auto& [line, says] : cases) {
     const std::string text =
-        "[[machine]]\nname = \"m\"\n" + std::string(line.starts_with("port") ? "" : "port = \"/dev/ttyS0\"\n") + line + "\n";
+        "[[machine]]\nname = \"m\"\n" +
+        std::string(line.starts_with("port") ? "" : "port = \"/dev/ttyS0\"\n") + line + "\n";
     const Read r = read(text);
     EXPECT_FALSE(r.machines) << line;
     ASSERT_FALSE(r.diags.all().empty()) << line;
@@ -113,8 +114,8 @@ TEST(MachineConfig, PortsAreCheckedAsTheyWillBeOpened) {
     const Read r = read(std::string("[[machine]]\nname = \"m\"\nport = \"") + bad + "\"\n");
     EXPECT_FALSE(r.machines) << bad;
   }
-  for (const char* good : {"/dev/ttyUSB0", "tcp://10.0.0.20:4001", "tcp://[::1]:4001",
-                           "tcp-listen://0.0.0.0:4001"}) {
+  for (const char* good :
+       {"/dev/ttyUSB0", "tcp://10.0.0.20:4001", "tcp://[::1]:4001", "tcp-listen://0.0.0.0:4001"}) {
     const Read r = read(std::string("[[machine]]\nname = \"m\"\nport = \"") + good + "\"\n");
     EXPECT_TRUE(r.machines) << good << ": " << messages(r.diags);
   }

@@ -17,7 +17,8 @@ TEST(RemoteRequest, CimcoStyleProgramRequest) {
 }
 
 TEST(RemoteRequest, StartAtBlockLineToolAndOperator) {
-  const auto r = parse_remote_request("O9999\n(/REQ BRACKET-2 /BL 10020)\n(TO=02 OP=JOHN)\n", kRules);
+  const auto r =
+      parse_remote_request("O9999\n(/REQ BRACKET-2 /BL 10020)\n(TO=02 OP=JOHN)\n", kRules);
   ASSERT_TRUE(r && *r) << (r && !*r ? r->error() : "");
   EXPECT_EQ((*r)->program, "BRACKET-2");
   EXPECT_EQ((*r)->start_block, 10020U);

@@ -1,10 +1,10 @@
 #include "dnc/tape_code.hpp"
 
-#include <gtest/gtest.h>
-
 #include <random>
 #include <set>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace usina::dnc {
 namespace {

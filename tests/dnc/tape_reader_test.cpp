@@ -1,10 +1,10 @@
 #include "dnc/tape_reader.hpp"
 
-#include <gtest/gtest.h>
-
 #include <random>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "dnc/tape_code.hpp"
 #include "dnc/tape_writer.hpp"
@@ -12,7 +12,9 @@
 namespace usina::dnc {
 namespace {
 
-std::vector<std::uint8_t> bytes(std::string_view s) { return {s.begin(), s.end()}; }
+std::vector<std::uint8_t> bytes(std::string_view s) {
+  return {s.begin(), s.end()};
+}
 
 std::vector<std::uint8_t> encode(std::string_view text, TapeCode code, EndOfBlock eob) {
   TapeWriter w(TapeFormat{code, eob, 10, 10, false});
@@ -44,6 +46,7 @@ TEST(TapeReader, EndOfBlockForms) {
     std::string rows;
     std::string text;
   };
+
   const std::vector<Case> cases{
       {EndOfBlock::CrLf, "%\r\nO1\r\nM30\r\n%", "O1\nM30\n"},
       {EndOfBlock::Cr, "%\rO1\rM30\r%", "O1\nM30\n"},
@@ -104,21 +107,23 @@ TEST(TapeReader, RoundTripEveryCodeAndEndOfBlock) {
       for (int i = 0; i < len; ++i)
         block += alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(rng)];
       if (block.find_first_not_of(' ') == std::string::npos) block = "G0";
-      while (block.back() == ' ') block.pop_back();
-      while (block.front() == ' ') block.erase(0, 1);
+      while (block.back() == ' ')
+        block.pop_back();
+      while (block.front() == ' ')
+        block.erase(0, 1);
       if (block == "%") block = "G0";
       program += block + "\n";
     }
     for (const TapeCode code : {TapeCode::Ascii, TapeCode::Iso, TapeCode::Eia}) {
-      for (const EndOfBlock eob : {EndOfBlock::Lf, EndOfBlock::CrLf, EndOfBlock::Cr,
-                                   EndOfBlock::Semicolon}) {
+      for (const EndOfBlock eob :
+           {EndOfBlock::Lf, EndOfBlock::CrLf, EndOfBlock::Cr, EndOfBlock::Semicolon}) {
         if (code == TapeCode::Eia && eob == EndOfBlock::Semicolon) continue;
         const auto rows = encode(program, code, eob);
         TapeReader r(code, eob, code != TapeCode::Ascii, 1 << 20);
         std::size_t at = 0;
         while (at < rows.size()) {
-          const std::size_t n = std::min(rows.size() - at,
-                                         std::uniform_int_distribution<std::size_t>(1, 64)(rng));
+          const std::size_t n =
+              std::min(rows.size() - at, std::uniform_int_distribution<std::size_t>(1, 64)(rng));
           r.feed(std::span<const std::uint8_t>(rows.data() + at, n));
           at += n;
         }

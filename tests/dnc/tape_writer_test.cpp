@@ -1,10 +1,10 @@
 #include "dnc/tape_writer.hpp"
 
-#include <gtest/gtest.h>
-
 #include <random>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "dnc/tape_code.hpp"
 
@@ -79,8 +79,9 @@ TEST(TapeWriter, IsoRowsCarryEvenParity) {
 TEST(TapeWriter, EiaUsesErAndItsEndOfBlock) {
   const Written w = write_all("o1\nm30\n", TapeFormat{TapeCode::Eia, EndOfBlock::Cr, 0, 0, false});
   ASSERT_TRUE(w.ok);
-  const std::vector<std::uint8_t> want{kEiaEndOfRecord, kEiaEndOfBlock, 0x46, 0x01, kEiaEndOfBlock,
-                                       0x54, 0x13, 0x20, kEiaEndOfBlock, kEiaEndOfRecord};
+  const std::vector<std::uint8_t> want{kEiaEndOfRecord, kEiaEndOfBlock, 0x46, 0x01,
+                                       kEiaEndOfBlock,  0x54,           0x13, 0x20,
+                                       kEiaEndOfBlock,  kEiaEndOfRecord};
   EXPECT_EQ(w.rows, want);
 }
 
@@ -93,7 +94,10 @@ TEST(TapeWriter, ACharacterWithoutCodeIsAnErrorNamingLineAndColumn) {
 }
 
 TEST(TapeWriter, ATypographicDashHasNoIsoCode) {
-  const Written w = write_all("N0120 G1 Y\xE2\x80\x93" "250.\n", TapeFormat{TapeCode::Iso, EndOfBlock::Lf, 0, 0, false});
+  const Written w = write_all(
+      "N0120 G1 Y\xE2\x80\x93"
+      "250.\n",
+      TapeFormat{TapeCode::Iso, EndOfBlock::Lf, 0, 0, false});
   EXPECT_FALSE(w.ok);
   EXPECT_EQ(w.writer.diagnostic().code, core::Code::TapeNoCode);
 }

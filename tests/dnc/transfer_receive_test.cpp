@@ -2,9 +2,8 @@
 // callback, on in-process links.
 #include "dnc/transfer_receive.hpp"
 
-#include <gtest/gtest.h>
-
 #include <boost/asio/write.hpp>
+#include <gtest/gtest.h>
 
 #include "dnc/link_memory.hpp"
 #include "dnc/sim_cnc.hpp"
@@ -127,15 +126,15 @@ Served serve(std::string_view request, bool grant) {
       answer(RequestAnswer{nullptr, "program " + r.program + " is not released"});
     }
   };
-  const bool is_request = answer_remote_request(io, *links.a, c, received, handler,
-                                                [&](const JobReport& r) {
-                                                  s.report = r;
-                                                  done = true;
-                                                });
+  const bool is_request =
+      answer_remote_request(io, *links.a, c, received, handler, [&](const JobReport& r) {
+        s.report = r;
+        done = true;
+      });
   EXPECT_TRUE(is_request);
   test::run_until(io, [&] { return done; });
-  test::run_until(io, [&] { return sim->stats().received >= s.report.bytes_sent; },
-                  std::chrono::seconds(5));
+  test::run_until(
+      io, [&] { return sim->stats().received >= s.report.bytes_sent; }, std::chrono::seconds(5));
   s.sim = sim->stats();
   s.data.assign(sim->data().begin(), sim->data().end());
   return s;

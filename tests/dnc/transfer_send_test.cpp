@@ -1,10 +1,10 @@
 // Send and drip feed against the simulated control, on in-process links.
 #include "dnc/transfer_send.hpp"
 
+#include <random>
+
 #include <gtest/gtest.h>
 #include <sys/resource.h>
-
-#include <random>
 
 #include "dnc/link_memory.hpp"
 #include "dnc/sim_cnc.hpp"
@@ -31,7 +31,7 @@ struct JobRun {
 };
 
 JobRun run_job(SendOptions options, std::unique_ptr<ProgramSource> program, SimCncConfig sim_config,
-            std::size_t pipe = 4096) {
+               std::size_t pipe = 4096) {
   asio::io_context io;
   LinkPair links = memory_link_pair(io, pipe);
   auto sim = std::make_shared<SimCnc>(io, *links.b, sim_config);
@@ -46,8 +46,9 @@ JobRun run_job(SendOptions options, std::unique_ptr<ProgramSource> program, SimC
   test::run_until(io, [&] { return done; });
   // Let the last bytes reach the control before reading its counts.
   if (run.report.state == JobState::Done) {
-    test::run_until(io, [&] { return sim->stats().received >= run.report.bytes_sent; },
-                    std::chrono::seconds(5));
+    test::run_until(
+        io, [&] { return sim->stats().received >= run.report.bytes_sent; },
+        std::chrono::seconds(5));
   }
   EXPECT_TRUE(done);
   sim->stop();
@@ -97,9 +98,9 @@ TEST(DripFeed, ZeroOverflowForEveryBufferAndDelay) {
       ASSERT_GT(skid, 0U);
       const std::uint64_t size = 4 * buffer + 2000;
       const JobRun r = run_job(ascii_options(static_cast<std::uint32_t>(skid), rate),
-                            std::make_unique<test::GeneratedProgram>(size), sim);
-      SCOPED_TRACE(testing::Message() << "buffer " << buffer << " delay " << delay_bytes
-                                      << " skid " << skid);
+                               std::make_unique<test::GeneratedProgram>(size), sim);
+      SCOPED_TRACE(testing::Message()
+                   << "buffer " << buffer << " delay " << delay_bytes << " skid " << skid);
       EXPECT_EQ(r.report.state, JobState::Done) << r.report.reason;
       EXPECT_EQ(r.sim.overflow, 0U);
       EXPECT_GT(r.sim.xoff_sent, 0U);
@@ -118,7 +119,8 @@ TEST(DripFeed, ASkidLargerThanTheRoomOverflowsTheSimulator) {
   sim.high_water = 60;
   sim.low_water = 16;
   sim.execute_rate = 1000.0;
-  const JobRun r = run_job(ascii_options(512, 0), std::make_unique<test::GeneratedProgram>(8000), sim);
+  const JobRun r =
+      run_job(ascii_options(512, 0), std::make_unique<test::GeneratedProgram>(8000), sim);
   EXPECT_GT(r.sim.overflow, 0U);
 }
 
@@ -126,7 +128,8 @@ TEST(DripFeed, XonWithoutXoffIsHarmless) {
   SimCncConfig sim;
   sim.spurious_xon_every = 0.001;
   sim.keep_data = true;
-  const JobRun r = run_job(ascii_options(32, 20000.0), std::make_unique<test::GeneratedProgram>(3000), sim);
+  const JobRun r =
+      run_job(ascii_options(32, 20000.0), std::make_unique<test::GeneratedProgram>(3000), sim);
   EXPECT_EQ(r.report.state, JobState::Done) << r.report.reason;
   EXPECT_GT(r.report.xon_without_xoff, 0U);
   EXPECT_EQ(r.sim.received, r.report.bytes_sent);
@@ -174,8 +177,8 @@ TEST(DripFeed, ALostLinkInterruptsAtTheRightByteLineAndBlock) {
     SimCncConfig sim;
     sim.drop_link_at = at;
     sim.keep_data = true;
-    const JobRun r = run_job(ascii_options(256, 0), std::make_unique<test::GeneratedProgram>(30000), sim,
-                          64);
+    const JobRun r =
+        run_job(ascii_options(256, 0), std::make_unique<test::GeneratedProgram>(30000), sim, 64);
     SCOPED_TRACE(testing::Message() << "drop at " << at);
     ASSERT_EQ(r.report.state, JobState::Interrupted) << r.report.reason;
     EXPECT_NE(r.report.reason.find("interrupted at byte"), std::string::npos);
@@ -195,8 +198,8 @@ TEST(DripFeed, ALostLinkInterruptsAtTheRightByteLineAndBlock) {
     if (last_block.starts_with("N")) {
       EXPECT_TRUE(last_block.starts_with("N" + std::to_string(r.report.block) + " ")) << last_block;
     }
-    EXPECT_EQ(r.report.line, static_cast<std::uint64_t>(
-                                 std::count(sent.begin(), sent.end(), '\n') - 1));
+    EXPECT_EQ(r.report.line,
+              static_cast<std::uint64_t>(std::count(sent.begin(), sent.end(), '\n') - 1));
   }
 }
 
@@ -209,9 +212,9 @@ TEST(DripFeed, StoppedByTheOperator) {
   slow.high_water = 64;
   slow.low_water = 16;
   auto sim = std::make_shared<SimCnc>(io, *links.b, slow);
-  auto sender = std::make_shared<Sender>(io, *links.a, ascii_options(32, 0),
-                                         std::make_unique<test::GeneratedProgram>(1 << 20),
-                                         JobMode::Drip);
+  auto sender =
+      std::make_shared<Sender>(io, *links.a, ascii_options(32, 0),
+                               std::make_unique<test::GeneratedProgram>(1 << 20), JobMode::Drip);
   JobReport report;
   bool done = false;
   sim->start();
@@ -238,13 +241,83 @@ TEST(DripFeed, HundredMegabytesInConstantMemory) {
   const std::uint64_t size = 100ULL << 20U;
   const long before = max_rss_kb();
   const JobRun r = run_job(ascii_options(8192, 0), std::make_unique<test::GeneratedProgram>(size),
-                        SimCncConfig{}, 16384);
+                           SimCncConfig{}, 16384);
   const long after = max_rss_kb();
   EXPECT_EQ(r.report.state, JobState::Done) << r.report.reason;
   EXPECT_EQ(r.sim.received, r.report.bytes_sent);
   EXPECT_GE(r.report.bytes_sent, size);
   EXPECT_EQ(r.sim_sha, r.report.sha256);
   EXPECT_LT(after - before, 16 * 1024) << "grew by " << (after - before) << " kB";
+}
+
+}  // namespace
+}  // namespace usina::dnc
+
+namespace usina::dnc {
+namespace {
+
+TEST(DripFeed, AnIsoXoffWithItsParityBitPauses) {
+  SimCncConfig sim;
+  sim.buffer = 256;
+  sim.high_water = 128;
+  sim.low_water = 32;
+  sim.execute_rate = 20000.0;
+  sim.xoff = 0x93;  // DC3 with channel 8 set: ISO on 8 data bits
+  sim.xon = 0x11;
+  SendOptions o = ascii_options(64, 100000.0);
+  o.code = TapeCode::Iso;
+  o.format.code = TapeCode::Iso;
+  const JobRun r = run_job(o, std::make_unique<test::GeneratedProgram>(4000), sim);
+  EXPECT_EQ(r.report.state, JobState::Done) << r.report.reason;
+  EXPECT_GT(r.report.xoff_count, 0U);
+  EXPECT_EQ(r.sim.overflow, 0U);
+}
+
+// A link whose DSR line the test holds.
+class DsrLink final : public Link {
+ public:
+  explicit DsrLink(Link& inner) : inner_(inner) {}
+
+  void async_read_some(std::span<std::uint8_t> b, IoHandler h) override {
+    inner_.async_read_some(b, std::move(h));
+  }
+
+  void async_write(std::span<const std::uint8_t> b, IoHandler h) override {
+    inner_.async_write(b, std::move(h));
+  }
+
+  void cancel() override { inner_.cancel(); }
+
+  void close() override { inner_.close(); }
+
+  bool peer_ready() const override { return dsr; }
+
+  std::string describe() const override { return "dsr"; }
+
+  bool dsr = false;
+
+ private:
+  Link& inner_;
+};
+
+TEST(DripFeed, DtrDsrWaitsWhileDsrIsLow) {
+  asio::io_context io;
+  LinkPair links = memory_link_pair(io);
+  DsrLink ours(*links.a);
+  auto sim = std::make_shared<SimCnc>(io, *links.b, SimCncConfig{});
+  SendOptions o = ascii_options(64, 0);
+  o.flow = Flow::DtrDsr;
+  auto sender = std::make_shared<Sender>(io, ours, o, string_source("O1\nM30\n"), JobMode::Send);
+  bool done = false;
+  sim->start();
+  sender->start([&](const JobReport&) { done = true; });
+  io.run_for(std::chrono::milliseconds(60));
+  EXPECT_EQ(sender->report().bytes_sent, 0U);
+  EXPECT_FALSE(done);
+  ours.dsr = true;
+  test::run_until(io, [&] { return done; });
+  EXPECT_EQ(sender->report().state, JobState::Done);
+  EXPECT_EQ(sender->report().bytes_sent, 11U);
 }
 
 }  // namespace
