@@ -28,6 +28,12 @@ void Sha256::update(std::span<const std::uint8_t> bytes) {
   if (!bytes.empty()) EVP_DigestUpdate(ctx_of(ctx_), bytes.data(), bytes.size());
 }
 
+Sha256& Sha256::add(std::string_view bytes) {
+  update(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                       bytes.size()));
+  return *this;
+}
+
 std::string Sha256::hex() const {
   EVP_MD_CTX* copy = EVP_MD_CTX_new();
   if (copy == nullptr || EVP_MD_CTX_copy_ex(copy, ctx_of(ctx_)) != 1) {
@@ -57,6 +63,14 @@ std::string sha256_hex(std::span<const std::uint8_t> bytes) {
 std::string sha256_hex(std::string_view text) {
   return sha256_hex(std::span<const std::uint8_t>(
       reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
+bool is_sha256_hex(std::string_view s) {
+  if (s.size() != 64) return false;
+  for (const char c : s) {
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
+  }
+  return true;
 }
 
 }  // namespace usina::dnc

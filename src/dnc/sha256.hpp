@@ -1,5 +1,6 @@
-// SHA-256 of bytes as they pass (OpenSSL's EVP), for the hash of what a
-// transfer put on the wire and of what a simulated control received.
+// SHA-256 (OpenSSL's EVP) as 64 lower-case hex digits: a revision's address,
+// a blob's check, a link of the audit chain, a session token's stored form,
+// and the hash of what a transfer put on the wire or a control received.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@ class Sha256 {
   Sha256& operator=(const Sha256&) = delete;
 
   void update(std::span<const std::uint8_t> bytes);
+  Sha256& add(std::string_view bytes);  // the audit chain hashes fields without joining them
   // The digest in lower-case hex; the hash goes on from the same state.
   std::string hex() const;
 
@@ -26,5 +28,8 @@ class Sha256 {
 
 std::string sha256_hex(std::span<const std::uint8_t> bytes);
 std::string sha256_hex(std::string_view text);
+
+// True for 64 lower-case hex digits: what a revision address looks like.
+bool is_sha256_hex(std::string_view s);
 
 }  // namespace usina::dnc

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "dnc/store_hash.hpp"
+#include "dnc/sha256.hpp"
 
 namespace usina::dnc {
 

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "dnc/sha256.hpp"
 #include "dnc/store_audit.hpp"
 #include "dnc/store_blobs.hpp"
-#include "dnc/store_hash.hpp"
 #include "dnc/store_names.hpp"
 #include "gcode/dialect.hpp"
 #include "gcode/dialect_guess.hpp"

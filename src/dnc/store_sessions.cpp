@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "dnc/sha256.hpp"
 #include "dnc/store_audit.hpp"
-#include "dnc/store_hash.hpp"
 #include "dnc/store_names.hpp"
 #include "dnc/store_users.hpp"
 

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "dnc/sha256.hpp"
 #include "dnc/store_audit.hpp"
-#include "dnc/store_hash.hpp"
 #include "store_fixture.hpp"
 
 namespace usina::dnc {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dnc/store_hash.hpp"
+#include "dnc/sha256.hpp"
 #include "dnc/store_names.hpp"
 #include "sim/machine_profile.hpp"
 #include "store_fixture.hpp"
