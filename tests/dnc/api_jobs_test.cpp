@@ -1,0 +1,209 @@
+// Jobs over HTTP to a simulated control on a pty: what reaches the control
+// is what the job's hash says; only a revision the machine may take goes;
+// a start inside the program is refused as not built; a job cut off by the
+// server stopping (or dying) is interrupted, never resent.
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "dnc/link_serial.hpp"
+#include "dnc/sim_cnc.hpp"
+#include "dnc/store_jobs.hpp"
+#include "server_fixture.hpp"
+
+namespace usina::dnc {
+namespace {
+
+using test::ApiClient;
+using test::RunningServer;
+
+// The control on the master side of a pty; the machine's port is the slave.
+struct Control {
+  std::unique_ptr<Link> link;
+  std::shared_ptr<SimCnc> sim;
+};
+
+ServerMachine pty_machine(const std::string& name, const std::string& port, std::uint32_t baud) {
+  ServerMachine m;
+  m.link.name = name;
+  m.link.port = port;
+  m.link.baud = baud;
+  m.link.code = TapeCode::Ascii;
+  m.link.data_bits = 8;
+  m.link.parity = Parity::None;
+  m.link.leader = 0;
+  m.link.trailer = 0;
+  return m;
+}
+
+// A server with one machine `mill-1` on a pty, its control simulated.
+Control start_with_control(RunningServer& s, std::uint32_t baud = 115200) {
+  auto pair = open_pty_pair(s.io());
+  EXPECT_TRUE(pair) << pair.error();
+  Control c;
+  c.link = std::move(pair->master);
+  SimCncConfig sc;
+  sc.keep_data = true;
+  c.sim = std::make_shared<SimCnc>(s.io(), *c.link, sc);
+  c.sim->start();
+  ServerConfig config;
+  config.machines.push_back(pty_machine("mill-1", pair->slave_path, baud));
+  s.start(config);
+  return c;
+}
+
+std::string released(const ApiClient& c, const std::string& name, const std::string& text) {
+  const std::string boss = c.log_in("boss", test::kPassword);
+  const std::string rev =
+      c.post("/api/programs", {{"name", name}, {"dialect", "rs274ngc"}, {"text", text}}, boss)
+          .json()["revision"];
+  for (const char* state : {"checked", "approved", "released"}) {
+    c.post("/api/programs/" + name + "/revisions/" + rev + "/state", {{"state", state}}, boss);
+  }
+  return rev;
+}
+
+// The job once it has ended (polled as a client would).
+nlohmann::json wait_for_end(const ApiClient& c, const std::string& token, std::int64_t job) {
+  for (int i = 0; i < 2400; ++i) {
+    const auto j = c.get("/api/jobs/" + std::to_string(job), token).json();
+    if (job_ended(j.value("state", ""))) return j;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return {};
+}
+
+const std::string kProgram = "G21 G90\nN10 G0 X1 Y1\nN20 G1 X5 F300\nN30 M2\n";
+
+TEST(ApiJobs, ASendReachesTheControlAndTheJobCarriesTheHashOfWhatWentOut) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  const std::string rev = released(c, "O700", kProgram);
+  const std::string oper = c.log_in("oper", test::kPassword);
+  const test::Reply r = c.post("/api/machines/mill-1/jobs",
+                               {{"program", "O700"}, {"revision", rev}, {"mode", "send"}}, oper);
+  ASSERT_EQ(r.status, 201) << r.body;
+  const auto job = wait_for_end(c, oper, r.json()["job"].get<std::int64_t>());
+  ASSERT_EQ(job["state"], "done") << job.dump();
+  const std::string wire = "%\nG21 G90\nN10 G0 X1 Y1\nN20 G1 X5 F300\nN30 M2\n%";
+  EXPECT_EQ(job["bytes_sent"], wire.size());
+  EXPECT_EQ(job["bytes_total"], wire.size());
+  EXPECT_EQ(job["block"], 30);
+  EXPECT_EQ(job["sha256"], sha256_hex(std::string_view(wire)));
+  const std::string got = s.on_loop(
+      [&] { return std::string(control.sim->data().begin(), control.sim->data().end()); });
+  EXPECT_EQ(got, wire);
+  const auto machine = c.get("/api/machines/mill-1", oper).json();
+  EXPECT_EQ(machine["state"], "idle");
+  EXPECT_EQ(machine["part_count"], 0);  // a send stores the program; it runs no part
+}
+
+TEST(ApiJobs, ADripFeedIsAPartWithItsCycleTime) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  const std::string rev = released(c, "O710", kProgram);
+  const std::string oper = c.log_in("oper", test::kPassword);
+  const auto r = c.post("/api/machines/mill-1/jobs",
+                        {{"program", "O710"}, {"revision", rev}, {"mode", "drip"}}, oper);
+  ASSERT_EQ(r.status, 201) << r.body;
+  EXPECT_EQ(wait_for_end(c, oper, r.json()["job"])["state"], "done");
+  const auto machine = c.get("/api/machines/mill-1", oper).json();
+  EXPECT_EQ(machine["part_count"], 1);
+  EXPECT_GE(machine["last_cycle_seconds"].get<double>(), 0.0);
+  EXPECT_EQ(machine["last_program"], "O710");
+}
+
+TEST(ApiJobs, OnlyTheReleasedRevisionGoesToAProductionMachine) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  const std::string prog = c.log_in("prog", test::kPassword);
+  const std::string draft =
+      c.post("/api/programs", {{"name", "O720"}, {"text", kProgram}}, prog).json()["revision"];
+  const auto order = [&](const std::string& rev) {
+    return c.post("/api/machines/mill-1/jobs",
+                  {{"program", "O720"}, {"revision", rev}, {"mode", "send"}}, prog);
+  };
+  const test::Reply refused = order(draft);
+  EXPECT_EQ(refused.status, 409);
+  EXPECT_NE(refused.body.find("draft"), std::string::npos) << refused.body;
+  EXPECT_EQ(order(std::string(64, 'e')).status, 404);
+  EXPECT_EQ(c.post("/api/machines/mill-9/jobs",
+                   {{"program", "O720"}, {"revision", draft}, {"mode", "send"}}, prog)
+                .status,
+            404);
+  EXPECT_EQ(c.post("/api/machines/mill-1/jobs",
+                   {{"program", "O720"}, {"revision", draft}, {"mode", "punch"}}, prog)
+                .status,
+            400);
+}
+
+TEST(ApiJobs, StartingFromABlockOrToolSaysItIsNotBuiltYet) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  const std::string rev = released(c, "O730", kProgram);
+  const std::string oper = c.log_in("oper", test::kPassword);
+  for (const char* key : {"start_block", "start_tool"}) {
+    const test::Reply r =
+        c.post("/api/machines/mill-1/jobs",
+               {{"program", "O730"}, {"revision", rev}, {"mode", "drip"}, {key, 20}}, oper);
+    EXPECT_EQ(r.status, 501) << key;
+    EXPECT_NE(r.body.find("not built yet"), std::string::npos) << r.body;
+  }
+}
+
+TEST(ApiJobs, AJobCutOffByTheServerStoppingIsInterruptedAndStaysSo) {
+  RunningServer s;
+  Control control = start_with_control(s, 1200);  // 109 bytes a second: it runs for a while
+  const ApiClient c = s.client();
+  std::string text;
+  for (int n = 1; n <= 300; ++n)
+    text += "N" + std::to_string(n * 10) + " G1 X" + std::to_string(n % 50) + " F500\n";
+  text += "M2\n";
+  const std::string rev = released(c, "O740", text);
+  const std::string oper = c.log_in("oper", test::kPassword);
+  const auto r = c.post("/api/machines/mill-1/jobs",
+                        {{"program", "O740"}, {"revision", rev}, {"mode", "drip"}}, oper);
+  ASSERT_EQ(r.status, 201) << r.body;
+  const std::int64_t id = r.json()["job"];
+  EXPECT_EQ(r.json()["state"], "running");
+  s.stop();
+  auto store = Store::open(s.dir(), test::fast_store());
+  ASSERT_TRUE(store);
+  auto job = find_job(**store, id);
+  ASSERT_TRUE(job);
+  EXPECT_EQ(job->state, "interrupted");
+  EXPECT_NE(job->reason.find("the test stopped the server"), std::string::npos) << job->reason;
+  EXPECT_LT(job->bytes_sent, job->bytes_total);
+}
+
+TEST(ApiJobs, AJobLeftRunningByADeadServerIsInterruptedWhenItStartsAgain) {
+  RunningServer s;
+  std::int64_t id = 0;
+  {
+    auto store = Store::open(s.dir(), test::fast_store());
+    ASSERT_TRUE(store);
+    JobRecord j;
+    j.machine = "mill-1";
+    j.program = "O750";
+    j.revision = std::string(64, 'a');
+    j.mode = "drip";
+    j.state = "running";
+    j.actor = "oper";
+    auto made = create_job(**store, j, Actor{"oper", "test"});
+    ASSERT_TRUE(made);
+    id = made->id;
+  }
+  s.start();
+  const ApiClient c = s.client();
+  const auto job = c.get("/api/jobs/" + std::to_string(id), c.log_in("oper", test::kPassword));
+  EXPECT_EQ(job.json()["state"], "interrupted") << job.body;
+  EXPECT_EQ(c.get("/api/jobs/999999", c.log_in("oper", test::kPassword)).status, 404);
+}
+
+}  // namespace
+}  // namespace usina::dnc
