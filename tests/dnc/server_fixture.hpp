@@ -51,11 +51,14 @@ class RunningServer {
 
   boost::asio::io_context& io() { return io_; }
 
+  // The store: a postgresql:// URL instead of the scratch folder.
+  void use_store(std::string where) { where_ = std::move(where); }
+
   const std::string& dir() const { return dir_; }
 
   // Opens the store (users of every role on a new one) and starts serving.
   void start(dnc::ServerConfig config = {}, dnc::StoreOptions options = fast_store()) {
-    auto s = dnc::Server::open(io_, dir_, std::move(config), options);
+    auto s = dnc::Server::open(io_, where_.empty() ? dir_ : where_, std::move(config), options);
     ASSERT_TRUE(s) << s.error();
     server_ = std::move(*s);
     add_users();
@@ -96,6 +99,7 @@ class RunningServer {
   }
 
   std::string dir_;
+  std::string where_;
   boost::asio::io_context io_;
   std::unique_ptr<dnc::Server> server_;
   std::thread thread_;
