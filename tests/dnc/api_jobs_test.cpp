@@ -114,7 +114,11 @@ TEST(ApiJobs, AJobCutOffByTheServerStoppingIsInterruptedAndStaysSo) {
                         {{"program", "O740"}, {"revision", rev}, {"mode", "drip"}}, oper);
   ASSERT_EQ(r.status, 201) << r.body;
   const std::int64_t id = r.json()["job"];
-  EXPECT_EQ(r.json()["state"], "running");
+  // Queued until the port is open (it opens as the server starts), then running.
+  for (int i = 0;
+       i < 600 && c.get("/api/jobs/" + std::to_string(id), oper).json()["state"] != "running"; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_EQ(c.get("/api/jobs/" + std::to_string(id), oper).json()["state"], "running");
   s.stop();
   auto store = Store::open(s.dir(), test::fast_store());
   ASSERT_TRUE(store);

@@ -105,14 +105,16 @@ struct SocatPair {
   }
 };
 
-std::string config_for(const fs::path& machine_port) {
+std::string config_for(const fs::path& machine_port, int baud = 115200) {
   return "[[machine]]\n"
          "name = \"mill-1\"\n"
          "dialect = \"rs274ngc\"\n"
          "port = \"" +
          machine_port.string() +
          "\"\n"
-         "baud = 115200\n"
+         "baud = " +
+         std::to_string(baud) +
+         "\n"
          "data_bits = 8\n"
          "parity = \"none\"\n"
          "stop_bits = 1\n"
@@ -207,6 +209,64 @@ TEST(ServeCli, AJobRunsEndToEndOverASocatPtyPairAndSigtermStopsTheServer) {
   EXPECT_EQ(std::string(sim->data().begin(), sim->data().end()), wire);
   sim.reset();
   link->reset();
+  fs::remove_all(dir);
+}
+
+// kill -9 in the middle of a drip feed: the server cannot write the job's
+// end, so the next start shows it interrupted (never resent from zero).
+TEST(ServeCli, AFeedCutByKill9IsInterruptedAfterTheRestart) {
+  if (std::system("command -v socat > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "socat is not installed";
+  const fs::path dir =
+      fs::temp_directory_path() / ("usina_serve_kill_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write(dir / "pw", "a long password\n");
+  ASSERT_EQ(wait_exit(spawn_usina({"serve", "--init", "--data", (dir / "data").string(), "--admin",
+                                   "boss", "--password-file", (dir / "pw").string()},
+                                  dir / "init.log")),
+            0);
+  SocatPair socat{dir};
+  ASSERT_TRUE(socat.start());
+  write(dir / "usina-serve.toml", config_for(dir / "machine", 1200));  // 120 bytes a second
+  const std::vector<std::string> run{"serve",
+                                     "--data",
+                                     (dir / "data").string(),
+                                     "--config",
+                                     (dir / "usina-serve.toml").string(),
+                                     "--listen",
+                                     "127.0.0.1:0"};
+  const pid_t first = spawn_usina(run, dir / "serve.log");
+  const unsigned short port = listening_port(dir / "serve.log");
+  ASSERT_NE(port, 0) << slurp(dir / "serve.log");
+  test::ApiClient c(port);
+  const std::string token = c.log_in("boss", "a long password");
+  std::string text;
+  for (int n = 1; n <= 400; ++n)
+    text += "N" + std::to_string(n) + " G1 X" + std::to_string(n % 40) + " F500\n";
+  const std::string rev =
+      c.post("/api/programs", {{"name", "O77"}, {"text", text}}, token).json()["revision"];
+  for (const char* state : {"checked", "approved", "released"})
+    c.post("/api/programs/O77/revisions/" + rev + "/state", {{"state", state}}, token);
+  const test::Reply job = c.post("/api/machines/mill-1/jobs",
+                                 {{"program", "O77"}, {"revision", rev}, {"mode", "drip"}}, token);
+  ASSERT_EQ(job.status, 201) << job.body;
+  const std::string id = std::to_string(job.json()["job"].get<int>());
+  // Queued until the port is open (it opens as the server starts), then running.
+  for (int i = 0; i < 600 && c.get("/api/jobs/" + id, token).json()["state"] != "running"; ++i)
+    std::this_thread::sleep_for(50ms);
+  ASSERT_EQ(c.get("/api/jobs/" + id, token).json()["state"], "running");
+  ASSERT_EQ(::kill(first, SIGKILL), 0);
+  EXPECT_EQ(wait_exit(first), 128 + SIGKILL);
+  const pid_t second = spawn_usina(run, dir / "serve2.log");
+  const unsigned short port2 = listening_port(dir / "serve2.log");
+  ASSERT_NE(port2, 0) << slurp(dir / "serve2.log");
+  test::ApiClient c2(port2);
+  const auto after = c2.get("/api/jobs/" + id, c2.log_in("boss", "a long password")).json();
+  EXPECT_EQ(after["state"], "interrupted") << after.dump();
+  EXPECT_NE(after["reason"].get<std::string>().find("the server stopped"), std::string::npos);
+  ::kill(second, SIGTERM);
+  EXPECT_EQ(wait_exit(second), 0);
   fs::remove_all(dir);
 }
 
