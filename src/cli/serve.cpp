@@ -109,6 +109,8 @@ std::optional<dnc::ServerConfig> configuration(const ServeOptions& o) {
   text << in.rdbuf();
   core::DiagnosticList diags;
   auto config = dnc::read_server_config(text.str(), 0, diags);
+  const std::string base = std::filesystem::path(path).parent_path().string();
+  if (config && !dnc::load_profiles(*config, base.empty() ? "." : base, diags)) config.reset();
   for (const core::Diagnostic& d : diags.all()) {
     fmt::print(stderr, "{}:{}:{}: {} {}: {}\n", path, d.loc.line, d.loc.col,
                core::severity_name(d.severity), core::code_name(d.code), d.message);

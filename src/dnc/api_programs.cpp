@@ -34,6 +34,17 @@ tl::expected<Upload, std::string> read_upload(const HttpRequest& req) {
   return up;
 }
 
+// The profile of the upload's machine class (or its program's): the
+// check then finds moves past that machine's travel.
+const sim::MachineProfile* profile_for(const ApiCall& c, const Upload& up) {
+  std::string machine_class = up.machine_class;
+  if (machine_class.empty()) {
+    if (auto p = find_program(c.ctx.store, up.name)) machine_class = p->machine_class;
+  }
+  const auto it = c.ctx.profiles.find(machine_class);
+  return it == c.ctx.profiles.end() ? nullptr : &it->second;
+}
+
 }  // namespace
 
 HttpResponse api_list_programs(ApiCall& c) {
@@ -49,6 +60,7 @@ HttpResponse api_list_programs(ApiCall& c) {
 HttpResponse api_upload(ApiCall& c) {
   auto up = read_upload(c.req);
   if (!up) return bad(c, up.error());
+  up->profile = profile_for(c, *up);
   auto put = put_revision(c.ctx.store, *up, c.actor());
   if (!put) return store_failure(c, put.error());
   nlohmann::json out = revision_json(put->revision);

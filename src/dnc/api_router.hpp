@@ -24,6 +24,7 @@ struct ApiContext {
   Store& store;
   Machines& machines;
   EventHub& events;
+  const std::map<std::string, sim::MachineProfile>& profiles;  // by machine class
 };
 
 // One request on its way through a handler.

@@ -44,7 +44,8 @@ tl::expected<std::unique_ptr<Server>, std::string> Server::open(asio::io_context
 Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig config)
     : io_(io), store_(std::move(store)), config_(std::move(config)) {
   machines_ = std::make_unique<Machines>(io_, *store_, events_, config_.machines);
-  api_ = std::make_unique<Api>(ApiContext{*store_, *machines_, events_});
+  machines_->use_profiles(&config_.profiles);
+  api_ = std::make_unique<Api>(ApiContext{*store_, *machines_, events_, config_.profiles});
   HttpHandlers handlers;
   handlers.request = [this](const HttpRequest& req, const std::string& origin) {
     return api_->handle(req, origin);

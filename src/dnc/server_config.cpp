@@ -1,5 +1,9 @@
 #include "dnc/server_config.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -63,19 +67,62 @@ bool read_machine_classes(const toml::table& root, ServerConfig& c, std::uint32_
   bool ok = true;
   for (std::size_t i = 0; i < list->size() && i < c.machines.size(); ++i) {
     const toml::table* t = list->get(i)->as_table();
-    const toml::node* n = t != nullptr ? t->get("machine_class") : nullptr;
-    if (n == nullptr) continue;
-    if (auto v = n->value<std::string>()) {
-      c.machines[i].machine_class = *v;
-    } else {
-      fail(diags, file_id, n->source(), "machine_class must be a string");
+    for (const auto& [key, into] : {std::pair{"machine_class", &c.machines[i].machine_class},
+                                    std::pair{"profile", &c.machines[i].profile}}) {
+      const toml::node* n = t != nullptr ? t->get(key) : nullptr;
+      if (n == nullptr) continue;
+      if (auto v = n->value<std::string>()) {
+        *into = *v;
+      } else {
+        fail(diags, file_id, n->source(), fmt::format("{} must be a string", key));
+        ok = false;
+      }
+    }
+    if (!c.machines[i].profile.empty() && c.machines[i].machine_class.empty()) {
+      fail(diags, file_id, t->source(),
+           fmt::format("machine `{}`: a profile belongs to a machine class; give machine_class",
+                       c.machines[i].link.name));
       ok = false;
     }
   }
   return ok;
 }
 
+std::optional<std::string> read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
+
+bool load_profiles(ServerConfig& config, const std::string& base_dir, core::DiagnosticSink& diags) {
+  std::map<std::string, std::string> files;  // class -> its profile's file
+  for (const ServerMachine& m : config.machines) {
+    if (m.profile.empty()) continue;
+    const std::filesystem::path path = std::filesystem::path(base_dir) / m.profile;
+    const auto [at, fresh] = files.emplace(m.machine_class, path.string());
+    if (!fresh && at->second != path.string()) {
+      fail(diags, 0, {},
+           fmt::format("machine class `{}` has two profiles, {} and {}; give one", m.machine_class,
+                       at->second, path.string()));
+      return false;
+    }
+    if (!fresh) continue;
+    const auto text = read_file(path);
+    if (!text) {
+      fail(diags, 0, {},
+           fmt::format("cannot read the profile {} of machine `{}`", path.string(), m.link.name));
+      return false;
+    }
+    auto profile = sim::read_machine_profile(*text, 0, diags);
+    if (!profile) return false;
+    config.profiles.emplace(m.machine_class, std::move(*profile));
+  }
+  return true;
+}
 
 std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::uint32_t file_id,
                                                core::DiagnosticSink& diags) {
@@ -83,7 +130,7 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   if (!links) return std::nullopt;
   ServerConfig c;
   for (LinkConfig& l : *links)
-    c.machines.push_back(ServerMachine{std::move(l), {}});
+    c.machines.push_back(ServerMachine{std::move(l), {}, {}});
   toml::table root;
   try {
     root = toml::parse(toml_text);

@@ -54,6 +54,11 @@ class Machines {
 
   MachineRuntime* find(std::string_view name);
 
+  // The machine classes' profiles, for the check of what the machines punch.
+  void use_profiles(const std::map<std::string, sim::MachineProfile>* profiles) {
+    profiles_ = profiles;
+  }
+
   const std::vector<std::unique_ptr<MachineRuntime>>& all() const { return machines_; }
 
   // Queues a job (and starts it when the machine is idle). NotFound for an
@@ -83,6 +88,7 @@ class Machines {
   std::vector<std::unique_ptr<MachineRuntime>> machines_;
   asio::steady_timer ticker_;
   std::function<void()> stopped_;
+  const std::map<std::string, sim::MachineProfile>* profiles_ = nullptr;
   bool stopping_ = false;
 };
 

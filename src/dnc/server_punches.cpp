@@ -33,6 +33,10 @@ void Machines::on_punch(MachineRuntime& m, const ReceivedProgram& r) {
   up.dialect = m.config.link.dialect;
   up.text = r.text;
   up.reason = fmt::format("punched by machine {}", machine);
+  if (profiles_ != nullptr) {
+    if (auto it = profiles_->find(up.machine_class); it != profiles_->end())
+      up.profile = &it->second;
+  }
   auto put = put_revision(store_, up, Actor{machine, "machine " + machine});
   if (!put) {
     events_.publish("punch.refused",

@@ -146,6 +146,29 @@ TEST(ApiPrograms, AnUploadPastTheLimitIs413) {
   EXPECT_EQ(c.get("/api/programs/O400", prog).status, 404);  // nothing stored
 }
 
+TEST(ApiPrograms, AnUploadOfAClassWithAProfileIsCheckedAgainstItsTravel) {
+  RunningServer s;
+  ServerConfig config;
+  core::DiagnosticList diags;
+  config.machines.push_back(ServerMachine{LinkConfig{}, "small", "machines/small_vmc.toml"});
+  config.machines[0].link.name = "vmc";
+  ASSERT_TRUE(load_profiles(config, std::string(USINA_TEST_DIR) + "/../examples", diags));
+  config.machines.clear();  // the profile is what this test needs, not the port
+  s.start(config);
+  const ApiClient c = s.client();
+  const std::string prog = c.log_in("prog", test::kPassword);
+  // X spans 800 mm; the VMC's X travels 600 (without a work zero the check
+  // compares the span with the travel).
+  const std::string text = "G21 G90\nG0 X-400 Y0\nG0 X400\nM2\n";
+  const auto past =
+      c.post("/api/programs", {{"name", "O600"}, {"machine_class", "small"}, {"text", text}}, prog);
+  EXPECT_EQ(past.json()["state"], "check-failed") << past.body;
+  EXPECT_GE(past.json()["checks"]["overtravel"].get<int>(), 1);
+  const auto generic =
+      c.post("/api/programs", {{"name", "O601"}, {"machine_class", "other"}, {"text", text}}, prog);
+  EXPECT_EQ(generic.json()["state"], "draft") << generic.body;
+}
+
 TEST(ApiAudit, TheLogAndItsChainAreReadByApprovers) {
   RunningServer s;
   s.start();

@@ -27,6 +27,22 @@ TEST(ServerConfig, TheExampleIsValid) {
   EXPECT_EQ(c->machines[1].link.mode, MachineMode::Tryout);
   EXPECT_EQ(c->listen, "127.0.0.1:8080");
   EXPECT_TRUE(parse_listen(c->listen));
+  ServerConfig loaded = *c;
+  ASSERT_TRUE(load_profiles(loaded, std::string(USINA_TEST_DIR) + "/../examples", diags));
+  ASSERT_EQ(loaded.profiles.count("mill"), 1U);
+  EXPECT_EQ(loaded.profiles.at("mill").name, "small VMC");
+}
+
+TEST(ServerConfig, AProfileThatCannotBeReadIsAnError) {
+  core::DiagnosticList diags;
+  auto c = read_server_config(
+      "[[machine]]\nname = \"m\"\nport = \"/dev/null\"\nmachine_class = \"mill\"\n"
+      "profile = \"no-such.toml\"\n",
+      0, diags);
+  ASSERT_TRUE(c);
+  EXPECT_FALSE(load_profiles(*c, "/nonexistent", diags));
+  ASSERT_TRUE(diags.has_errors());
+  EXPECT_NE(diags.all().back().message.find("no-such.toml"), std::string::npos);
 }
 
 TEST(ServerConfig, AWrongServerValueIsAnErrorAtItsLine) {
