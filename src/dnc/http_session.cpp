@@ -20,10 +20,11 @@ std::string origin_of(const asio::ip::tcp::socket& s) {
 }
 
 // What a request that could not be read answers: 413 past the body limit,
-// 400 with the parser's reason for the rest.
+// 431 past the header limit, 400 with the parser's reason for the rest.
 http::status status_of_read_error(const beast::error_code& ec) {
-  return ec == http::error::body_limit ? http::status::payload_too_large
-                                       : http::status::bad_request;
+  if (ec == http::error::body_limit) return http::status::payload_too_large;
+  if (ec == http::error::header_limit) return http::status::request_header_fields_too_large;
+  return http::status::bad_request;
 }
 
 }  // namespace

@@ -169,6 +169,13 @@ TEST(ApiPrograms, AnUploadOfAClassWithAProfileIsCheckedAgainstItsTravel) {
   EXPECT_EQ(generic.json()["state"], "draft") << generic.body;
 }
 
+TEST(ApiPrograms, HeadersPastTheLimitAre431) {
+  RunningServer s;
+  s.start();
+  const test::Reply r = s.client().get("/api/programs", std::string(32 * 1024, 'a'));
+  EXPECT_EQ(r.status, 431);
+}
+
 TEST(ApiAudit, TheLogAndItsChainAreReadByApprovers) {
   RunningServer s;
   s.start();
