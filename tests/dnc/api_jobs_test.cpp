@@ -119,6 +119,14 @@ TEST(ApiJobs, AJobCutOffByTheServerStoppingIsInterruptedAndStaysSo) {
        i < 600 && c.get("/api/jobs/" + std::to_string(id), oper).json()["state"] != "running"; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_EQ(c.get("/api/jobs/" + std::to_string(id), oper).json()["state"], "running");
+  const auto machine = c.get("/api/machines/mill-1", oper).json();
+  EXPECT_EQ(machine["state"], "sending");
+  EXPECT_EQ(machine["job"]["job"], id);
+  EXPECT_EQ(machine["job"]["state"], "running");
+  EXPECT_GT(machine["job"]["bytes_total"].get<std::uint64_t>(), text.size());
+  EXPECT_LT(machine["job"]["bytes_sent"].get<std::uint64_t>(),
+            machine["job"]["bytes_total"].get<std::uint64_t>());
+  EXPECT_TRUE(machine["job"].contains("block"));
   s.stop();
   auto store = Store::open(s.dir(), test::fast_store());
   ASSERT_TRUE(store);
