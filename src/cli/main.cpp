@@ -86,6 +86,7 @@ int run(int argc, char** argv) {
   usina::cli::add_draw(app);
   usina::cli::add_convert(app);
   usina::cli::add_gen(app);
+  usina::cli::add_serve(app);
   if (argc > 1 && std::string_view(argv[1]) == "help") return help(app, argc, argv);
   try {
     app.parse(argc, argv);

@@ -12,6 +12,7 @@ void add_stats(CLI::App& app);
 void add_draw(CLI::App& app);
 void add_convert(CLI::App& app);
 void add_gen(CLI::App& app);
+void add_serve(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();

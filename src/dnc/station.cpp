@@ -138,8 +138,8 @@ bool Station::submit(std::unique_ptr<ProgramSource> program, JobMode mode, Sende
   return true;
 }
 
-void Station::stop_job() {
-  if (sender_) sender_->stop();
+void Station::stop_job(std::string reason) {
+  if (sender_) sender_->stop(std::move(reason));
 }
 
 void Station::lost() {

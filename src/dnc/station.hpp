@@ -47,8 +47,9 @@ class Station : public std::enable_shared_from_this<Station> {
   // Starts a job if the station is idle; false (and why) otherwise.
   bool submit(std::unique_ptr<ProgramSource> program, JobMode mode, Sender::DoneHandler done,
               std::string* why);
-  // The operator's stop of the running job (it ends interrupted).
-  void stop_job();
+  // The operator's stop of the running job (it ends interrupted), or the
+  // server's, with its reason.
+  void stop_job(std::string reason = "stopped by the operator");
 
   StationState state() const { return state_; }
 

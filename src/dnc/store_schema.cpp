@@ -117,8 +117,35 @@ CREATE TRIGGER revisions_no_delete BEFORE DELETE ON revisions
   FOR EACH ROW EXECUTE FUNCTION usina_refuse();
 )SQL";
 
+// Version 2: the server's jobs (a send or drip feed of a revision to a
+// machine) and how each ended, so a job the server did not see to its end
+// (SIGTERM, kill -9) is shown interrupted after a restart, never resent.
+constexpr std::string_view kV2 = R"SQL(
+CREATE TABLE jobs (
+  id @ID@,
+  machine TEXT NOT NULL,
+  program TEXT NOT NULL,
+  revision TEXT NOT NULL,
+  mode TEXT NOT NULL,
+  state TEXT NOT NULL,
+  actor TEXT NOT NULL,
+  created_at BIGINT NOT NULL,
+  started_at BIGINT NOT NULL DEFAULT 0,
+  ended_at BIGINT NOT NULL DEFAULT 0,
+  bytes_sent BIGINT NOT NULL DEFAULT 0,
+  bytes_total BIGINT NOT NULL DEFAULT 0,
+  line BIGINT NOT NULL DEFAULT 0,
+  block BIGINT NOT NULL DEFAULT -1,
+  sha256 TEXT NOT NULL DEFAULT '',
+  reason TEXT NOT NULL DEFAULT '',
+  alarm BIGINT NOT NULL DEFAULT 0
+);
+CREATE INDEX jobs_by_machine ON jobs (machine, id);
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres},
+    {2, kV2, "SELECT 1", "SELECT 1"},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

@@ -24,7 +24,7 @@ Receiver::Receiver(asio::io_context& io, Link& link, ReceiveOptions options)
 void Receiver::start(DoneHandler done) {
   done_ = std::move(done);
   if (finished_) {
-    asio::post(io_, [self = shared_from_this()] { self->done_(ReceivedProgram{}); });
+    hand_on();
     return;
   }
   read_loop();
@@ -80,7 +80,7 @@ void Receiver::end(ReceivedProgram::End how, std::string reason) {
   finished_ = true;
   idle_.cancel();
   link_.cancel();
-  ReceivedProgram r;
+  ReceivedProgram& r = result_;
   r.end = how;
   r.text = reader_.text();
   r.name = program_number(r.text);
@@ -93,9 +93,11 @@ void Receiver::end(ReceivedProgram::End how, std::string reason) {
     r.reason = fmt::format("{} row(s) failed the {} parity check or are no character of the code",
                            r.bad_rows, code_name(options_.code));
   }
-  if (done_) {
-    asio::post(io_, [self = shared_from_this(), r = std::move(r)] { self->done_(r); });
-  }
+  if (done_) hand_on();
+}
+
+void Receiver::hand_on() {
+  asio::post(io_, [self = shared_from_this()] { self->done_(self->result_); });
 }
 
 }  // namespace usina::dnc

@@ -64,6 +64,7 @@ class Receiver : public std::enable_shared_from_this<Receiver> {
   void on_rows(std::span<const std::uint8_t> rows);
   void arm_idle();
   void end(ReceivedProgram::End how, std::string reason);
+  void hand_on();
 
   asio::io_context& io_;
   Link& link_;
@@ -73,6 +74,9 @@ class Receiver : public std::enable_shared_from_this<Receiver> {
   asio::steady_timer idle_;
   std::array<std::uint8_t, 1024> in_{};
   DoneHandler done_;
+  // Kept until it is handed on: a punch can end within `feed_first`, before
+  // `start` has given the handler.
+  ReceivedProgram result_;
   bool finished_ = false;
 };
 

@@ -64,8 +64,8 @@ void Sender::start(DoneHandler done) {
   pump();
 }
 
-void Sender::stop() {
-  end(JobState::Interrupted, "stopped by the operator");
+void Sender::stop(std::string reason) {
+  end(JobState::Interrupted, std::move(reason));
 }
 
 bool Sender::is_xon(std::uint8_t b) const {

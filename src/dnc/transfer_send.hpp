@@ -79,8 +79,9 @@ class Sender : public std::enable_shared_from_this<Sender> {
 
   // Starts the job; `done` runs once, on the loop, when it ends.
   void start(DoneHandler done);
-  // The operator's stop: the job ends interrupted.
-  void stop();
+  // The operator's stop (or the server's, with its reason): the job ends
+  // interrupted.
+  void stop(std::string reason = "stopped by the operator");
 
   // Bytes from the control that are not flow control (DPRNT output, ...).
   void on_received(BytesHandler h) { received_ = std::move(h); }

@@ -304,7 +304,9 @@ TEST(DripFeed, DtrDsrWaitsWhileDsrIsLow) {
   asio::io_context io;
   LinkPair links = memory_link_pair(io);
   DsrLink ours(*links.a);
-  auto sim = std::make_shared<SimCnc>(io, *links.b, SimCncConfig{});
+  SimCncConfig sc;
+  sc.keep_data = true;
+  auto sim = std::make_shared<SimCnc>(io, *links.b, sc);
   SendOptions o = ascii_options(64, 0);
   o.flow = Flow::DtrDsr;
   auto sender = std::make_shared<Sender>(io, ours, o, string_source("O1\nM30\n"), JobMode::Send);
@@ -317,7 +319,12 @@ TEST(DripFeed, DtrDsrWaitsWhileDsrIsLow) {
   ours.dsr = true;
   test::run_until(io, [&] { return done; });
   EXPECT_EQ(sender->report().state, JobState::Done);
-  EXPECT_EQ(sender->report().bytes_sent, 11U);
+  // "%\nO1\nM30\n%": the frame's `%` and its block end, two blocks, the closing
+  // `%` (no leader or trailer) -- ten bytes, as AProgramArrivesWhole counts them.
+  const std::string wire = "%\nO1\nM30\n%";
+  EXPECT_EQ(sender->report().bytes_sent, wire.size());
+  test::run_until(io, [&] { return sim->stats().received >= wire.size(); });
+  EXPECT_EQ(std::string(sim->data().begin(), sim->data().end()), wire);
 }
 
 }  // namespace

@@ -1,0 +1,59 @@
+// `GET /api/events`: a WebSocket on which the server puts one JSON text
+// message per change (a revision uploaded or moved, a job queued, started,
+// ended, a machine's state, a punch received; a running job's progress at
+// most once a second). A client that falls more than `kMaxQueued` messages
+// behind is closed rather than let the server's memory grow.
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core/tcp_stream.hpp>
+#include <boost/beast/websocket.hpp>
+#include <nlohmann/json.hpp>
+
+#include "dnc/api_http.hpp"
+
+namespace usina::dnc {
+
+class EventSession : public std::enable_shared_from_this<EventSession> {
+ public:
+  static constexpr std::size_t kMaxQueued = 4096;
+
+  explicit EventSession(boost::asio::ip::tcp::socket socket);
+
+  void accept(HttpRequest upgrade);
+  void send(std::shared_ptr<const std::string> text);
+  void close();
+
+  bool open() const { return open_; }
+
+ private:
+  void read_loop();
+  void write_next();
+
+  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
+  boost::beast::flat_buffer in_;
+  std::deque<std::shared_ptr<const std::string>> queue_;
+  bool open_ = false;
+  bool writing_ = false;
+};
+
+class EventHub {
+ public:
+  void add(std::shared_ptr<EventSession> s);
+  // `event` gets a "type" and a "seq" (one more per event).
+  void publish(std::string_view type, nlohmann::json event);
+  void close_all();
+
+  std::uint64_t published() const { return seq_; }
+
+ private:
+  std::vector<std::weak_ptr<EventSession>> sessions_;
+  std::uint64_t seq_ = 0;
+};
+
+}  // namespace usina::dnc

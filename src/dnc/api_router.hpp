@@ -1,0 +1,91 @@
+// usina's HTTP API (docs/dnc-server.md; the routes of spec/dnc-api.md and
+// more). Every request is matched to a route first (404 for no route, 405
+// for a route without that method), then its token checked (401), then the
+// user's role (403, store_roles.hpp), and only then its names looked up
+// (404) and its body read (400 with a message, 413 past the limits).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <boost/asio/ip/tcp.hpp>
+
+#include "dnc/api_events.hpp"
+#include "dnc/api_http.hpp"
+#include "dnc/server_machines.hpp"
+#include "dnc/store.hpp"
+#include "dnc/store_roles.hpp"
+#include "dnc/store_users.hpp"
+
+namespace usina::dnc {
+
+struct ApiContext {
+  Store& store;
+  Machines& machines;
+  EventHub& events;
+  const std::map<std::string, sim::MachineProfile>& profiles;  // by machine class
+};
+
+// One request on its way through a handler.
+struct ApiCall {
+  const HttpRequest& req;
+  Target target;
+  std::vector<std::string> params;  // the route's {name} segments, in order
+  std::optional<Session> session;   // the caller (every route but login)
+  std::string origin;
+  ApiContext& ctx;
+
+  Actor actor() const { return Actor{session ? session->user.name : "", origin}; }
+
+  Role role() const { return session ? session->user.role : Role::Operator; }
+};
+
+using ApiHandler = HttpResponse (*)(ApiCall&);
+
+enum class Access { Public, AnyUser, Permission };
+
+struct ApiRoute {
+  http::verb method;
+  std::string_view pattern;  // "/api/programs/{}/revisions/{}/state"
+  Access access;
+  Permission permission;  // when access is Permission
+  ApiHandler handler;
+};
+
+// Every route, for the router and the tests that walk them.
+std::span<const ApiRoute> api_routes();
+
+class Api {
+ public:
+  explicit Api(ApiContext ctx) : ctx_(ctx) {}
+
+  HttpResponse handle(const HttpRequest& req, const std::string& origin);
+  // `GET /api/events`: takes the socket for the event stream, or refuses.
+  std::optional<HttpResponse> upgrade(boost::asio::ip::tcp::socket& socket, const HttpRequest& req);
+
+ private:
+  ApiContext ctx_;
+};
+
+// The handlers, by topic (api_auth.cpp, api_programs.cpp, api_machines.cpp, api_audit.cpp).
+HttpResponse api_login(ApiCall& c);
+HttpResponse api_logout(ApiCall& c);
+HttpResponse api_session(ApiCall& c);
+HttpResponse api_create_user(ApiCall& c);
+HttpResponse api_list_programs(ApiCall& c);
+HttpResponse api_upload(ApiCall& c);
+HttpResponse api_program(ApiCall& c);
+HttpResponse api_revision(ApiCall& c);
+HttpResponse api_revision_text(ApiCall& c);
+HttpResponse api_change_state(ApiCall& c);
+HttpResponse api_diff(ApiCall& c);
+HttpResponse api_list_machines(ApiCall& c);
+HttpResponse api_machine(ApiCall& c);
+HttpResponse api_start_job(ApiCall& c);
+HttpResponse api_job(ApiCall& c);
+HttpResponse api_stop_job(ApiCall& c);
+HttpResponse api_audit(ApiCall& c);
+HttpResponse api_events_plain(ApiCall& c);
+
+}  // namespace usina::dnc

@@ -1,0 +1,121 @@
+#include "dnc/http_session.hpp"
+
+#include <boost/beast/websocket/rfc6455.hpp>
+#include <fmt/format.h>
+
+namespace usina::dnc {
+
+namespace beast = boost::beast;
+namespace asio = boost::asio;
+
+namespace {
+
+std::string origin_of(const asio::ip::tcp::socket& s) {
+  boost::system::error_code ec;
+  const auto peer = s.remote_endpoint(ec);
+  if (ec) return "unknown";
+  // The address alone: the login limits count failures per origin, and a
+  // client gets a new port with each connection.
+  return peer.address().to_string();
+}
+
+// What a request that could not be read answers: 413 past the body limit,
+// 431 past the header limit, 400 with the parser's reason for the rest.
+http::status status_of_read_error(const beast::error_code& ec) {
+  if (ec == http::error::body_limit) return http::status::payload_too_large;
+  if (ec == http::error::header_limit) return http::status::request_header_fields_too_large;
+  return http::status::bad_request;
+}
+
+}  // namespace
+
+HttpSession::HttpSession(asio::ip::tcp::socket socket, std::shared_ptr<HttpListener> listener)
+    : stream_(std::move(socket)), listener_(std::move(listener)) {
+  origin_ = origin_of(stream_.socket());
+  ++listener_->connections;
+}
+
+HttpSession::~HttpSession() {
+  --listener_->connections;
+}
+
+void HttpSession::start() {
+  read();
+}
+
+void HttpSession::read() {
+  parser_.emplace();
+  parser_->body_limit(listener_->limits().body_bytes);
+  parser_->header_limit(listener_->limits().header_bytes);
+  stream_.expires_after(listener_->limits().read_timeout);
+  http::async_read(
+      stream_, buffer_, *parser_,
+      [self = shared_from_this()](const beast::error_code& ec, std::size_t) { self->on_read(ec); });
+}
+
+void HttpSession::on_read(const beast::error_code& ec) {
+  if (ec == http::error::end_of_stream || ec == beast::error::timeout ||
+      ec == asio::error::operation_aborted || ec == asio::error::connection_reset ||
+      ec == asio::error::eof) {
+    close();
+    return;
+  }
+  if (ec) {
+    HttpRequest blank;
+    blank.version(11);
+    const auto status = status_of_read_error(ec);
+    const std::string why =
+        status == http::status::payload_too_large
+            ? fmt::format("the request is larger than the server's limit of {} bytes",
+                          listener_->limits().body_bytes)
+            : fmt::format("the request cannot be read: {}", ec.message());
+    answer(error_response(blank, status, why), true);
+    return;
+  }
+  HttpRequest req = parser_->release();
+  if (beast::websocket::is_upgrade(req)) {
+    auto refused = listener_->handlers().upgrade(stream_.socket(), req);
+    if (refused) answer(std::move(*refused), false);
+    return;  // the socket now belongs to the WebSocket (or is answered and closed)
+  }
+  answer(listener_->handlers().request(req, origin_), false);
+}
+
+// `drain`: the request was not read to its end; answer, stop sending, and
+// read what the client still sends, so it gets the answer instead of a reset.
+void HttpSession::answer(HttpResponse res, bool drain_after) {
+  if (drain_after) res.keep_alive(false);
+  auto shared = std::make_shared<HttpResponse>(std::move(res));
+  stream_.expires_after(listener_->limits().read_timeout);
+  http::async_write(
+      stream_, *shared,
+      [self = shared_from_this(), shared, drain_after](const beast::error_code& ec, std::size_t) {
+        if (ec) return self->close();
+        if (drain_after) return self->drain();
+        if (!shared->keep_alive()) return self->close();
+        self->read();
+      });
+}
+
+void HttpSession::drain() {
+  boost::system::error_code ignored;
+  stream_.socket().shutdown(asio::ip::tcp::socket::shutdown_send, ignored);
+  stream_.expires_after(std::chrono::seconds(5));  // for the whole drain
+  drain_more();
+}
+
+void HttpSession::drain_more() {
+  stream_.async_read_some(asio::buffer(sink_),
+                          [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
+                            if (ec) return self->close();
+                            self->drain_more();
+                          });
+}
+
+void HttpSession::close() {
+  boost::system::error_code ignored;
+  stream_.socket().shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+  stream_.close();
+}
+
+}  // namespace usina::dnc

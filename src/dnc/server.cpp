@@ -1,0 +1,80 @@
+#include "dnc/server.hpp"
+
+#include <charconv>
+
+#include <fmt/format.h>
+
+#include "dnc/store_jobs.hpp"
+
+namespace usina::dnc {
+
+std::optional<boost::asio::ip::tcp::endpoint> parse_listen(std::string_view text) {
+  const std::size_t colon = text.rfind(':');
+  if (colon == std::string_view::npos || colon == 0) return std::nullopt;
+  std::string_view host = text.substr(0, colon);
+  const std::string_view port_text = text.substr(colon + 1);
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
+  unsigned port = 0;
+  const auto [end, ec] =
+      std::from_chars(port_text.data(), port_text.data() + port_text.size(), port);
+  if (ec != std::errc() || end != port_text.data() + port_text.size() || port > 65535)
+    return std::nullopt;
+  boost::system::error_code bad;
+  const auto address = boost::asio::ip::make_address(std::string(host), bad);
+  if (bad) return std::nullopt;
+  return boost::asio::ip::tcp::endpoint(address, static_cast<unsigned short>(port));
+}
+
+tl::expected<std::unique_ptr<Server>, std::string> Server::open(asio::io_context& io,
+                                                                const std::string& where,
+                                                                ServerConfig config,
+                                                                StoreOptions options) {
+  options.session_seconds = static_cast<std::int64_t>(config.session_hours * 3600.0);
+  auto store = Store::open(where, std::move(options));
+  if (!store) return tl::unexpected(store.error().message);
+  // A job a previous run did not see to its end was cut off: never resent.
+  auto cut = interrupt_unfinished_jobs(**store,
+                                       "the server stopped while the job was queued or "
+                                       "running (the bytes are those last recorded)");
+  if (!cut) return tl::unexpected(cut.error().message);
+  return std::unique_ptr<Server>(new Server(io, std::move(*store), std::move(config)));
+}
+
+Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig config)
+    : io_(io), store_(std::move(store)), config_(std::move(config)) {
+  machines_ = std::make_unique<Machines>(io_, *store_, events_, config_.machines);
+  machines_->use_profiles(&config_.profiles);
+  api_ = std::make_unique<Api>(ApiContext{*store_, *machines_, events_, config_.profiles});
+  HttpHandlers handlers;
+  handlers.request = [this](const HttpRequest& req, const std::string& origin) {
+    return api_->handle(req, origin);
+  };
+  handlers.upgrade = [this](boost::asio::ip::tcp::socket& socket, const HttpRequest& req) {
+    return api_->upgrade(socket, req);
+  };
+  HttpLimits limits;
+  limits.body_bytes = config_.max_upload;
+  listener_ = std::make_shared<HttpListener>(io_, std::move(handlers), limits);
+}
+
+std::string Server::start(const std::string& listen) {
+  const auto at = parse_listen(listen);
+  if (!at)
+    return fmt::format("cannot read the address `{}`; give host:port, as 127.0.0.1:8080", listen);
+  if (std::string error = listener_->listen(*at); !error.empty())
+    return fmt::format("cannot listen on {}: {}", listen, error);
+  listener_->start();
+  machines_->start();
+  return {};
+}
+
+void Server::stop(const std::string& reason, std::function<void()> stopped) {
+  listener_->stop();
+  machines_->stop(reason, [this, stopped = std::move(stopped)] {
+    events_.close_all();
+    if (stopped) stopped();
+  });
+}
+
+}  // namespace usina::dnc

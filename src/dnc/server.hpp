@@ -1,0 +1,63 @@
+// `usina serve`, the whole server on one event loop: the store, the
+// machines' stations and job queues, the HTTP API and its event stream.
+// Opening marks the jobs a previous run did not see to their end as
+// interrupted; stopping interrupts the running jobs, writes their ends,
+// closes the ports and the connections.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <tl/expected.hpp>
+
+#include "dnc/api_events.hpp"
+#include "dnc/api_router.hpp"
+#include "dnc/http_listener.hpp"
+#include "dnc/server_config.hpp"
+#include "dnc/server_machines.hpp"
+#include "dnc/store.hpp"
+
+namespace usina::dnc {
+
+class Server {
+ public:
+  // `where`: a folder (SQLite) or a postgresql:// URL.
+  static tl::expected<std::unique_ptr<Server>, std::string> open(asio::io_context& io,
+                                                                 const std::string& where,
+                                                                 ServerConfig config,
+                                                                 StoreOptions options = {});
+
+  // Listens on `listen` ("127.0.0.1:8080", port 0 for any) and opens the
+  // machines' ports; an error message when it cannot listen.
+  std::string start(const std::string& listen);
+  // Interrupts the running jobs with `reason`; `stopped` runs when their
+  // ends are written and the ports and connections are closed.
+  void stop(const std::string& reason, std::function<void()> stopped);
+
+  boost::asio::ip::tcp::endpoint endpoint() const { return listener_->local_endpoint(); }
+
+  Store& store() { return *store_; }
+
+  Machines& machines() { return *machines_; }
+
+  EventHub& events() { return events_; }
+
+ private:
+  Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig config);
+
+  asio::io_context& io_;
+  std::unique_ptr<Store> store_;
+  ServerConfig config_;
+  EventHub events_;
+  std::unique_ptr<Machines> machines_;
+  std::unique_ptr<Api> api_;
+  std::shared_ptr<HttpListener> listener_;
+};
+
+// "host:port" ("[::1]:8080" for IPv6); nothing when malformed.
+std::optional<boost::asio::ip::tcp::endpoint> parse_listen(std::string_view text);
+
+}  // namespace usina::dnc

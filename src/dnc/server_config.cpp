@@ -1,0 +1,145 @@
+#include "dnc/server_config.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "dnc/machine_config.hpp"
+
+namespace usina::dnc {
+namespace {
+
+void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source_region& at,
+          std::string message) {
+  core::Diagnostic d;
+  d.code = core::Code::DncConfig;
+  d.severity = core::Severity::Error;
+  d.loc.file = file_id;
+  d.loc.line = at.begin.line;
+  d.loc.col = at.begin.column;
+  d.message = std::move(message);
+  diags.report(std::move(d));
+}
+
+// The `[server]` table; false when a value is wrong.
+bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t file_id,
+                       core::DiagnosticSink& diags) {
+  const toml::table* t = root["server"].as_table();
+  if (t == nullptr) return true;
+  bool ok = true;
+  if (const toml::node* n = t->get("listen")) {
+    if (auto v = n->value<std::string>()) {
+      c.listen = *v;
+    } else {
+      fail(diags, file_id, n->source(), "server.listen must be a string \"host:port\"");
+      ok = false;
+    }
+  }
+  if (const toml::node* n = t->get("max_upload")) {
+    const auto v = n->value<std::int64_t>();
+    if (v && *v >= 1024) {
+      c.max_upload = static_cast<std::uint64_t>(*v);
+    } else {
+      fail(diags, file_id, n->source(), "server.max_upload must be a count of bytes, 1024 or more");
+      ok = false;
+    }
+  }
+  if (const toml::node* n = t->get("session_hours")) {
+    const auto v = n->value<double>();
+    if (v && *v > 0.0 && *v <= 24.0 * 30) {
+      c.session_hours = *v;
+    } else {
+      fail(diags, file_id, n->source(), "server.session_hours must be a number of hours, 0 to 720");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+// `machine_class` of each [[machine]] (machine_config.cpp accepts the key).
+bool read_machine_classes(const toml::table& root, ServerConfig& c, std::uint32_t file_id,
+                          core::DiagnosticSink& diags) {
+  const toml::array* list = root["machine"].as_array();
+  if (list == nullptr) return true;
+  bool ok = true;
+  for (std::size_t i = 0; i < list->size() && i < c.machines.size(); ++i) {
+    const toml::table* t = list->get(i)->as_table();
+    for (const auto& [key, into] : {std::pair{"machine_class", &c.machines[i].machine_class},
+                                    std::pair{"profile", &c.machines[i].profile}}) {
+      const toml::node* n = t != nullptr ? t->get(key) : nullptr;
+      if (n == nullptr) continue;
+      if (auto v = n->value<std::string>()) {
+        *into = *v;
+      } else {
+        fail(diags, file_id, n->source(), fmt::format("{} must be a string", key));
+        ok = false;
+      }
+    }
+    if (!c.machines[i].profile.empty() && c.machines[i].machine_class.empty()) {
+      fail(diags, file_id, t->source(),
+           fmt::format("machine `{}`: a profile belongs to a machine class; give machine_class",
+                       c.machines[i].link.name));
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+std::optional<std::string> read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+bool load_profiles(ServerConfig& config, const std::string& base_dir, core::DiagnosticSink& diags) {
+  std::map<std::string, std::string> files;  // class -> its profile's file
+  for (const ServerMachine& m : config.machines) {
+    if (m.profile.empty()) continue;
+    const std::filesystem::path path = std::filesystem::path(base_dir) / m.profile;
+    const auto [at, fresh] = files.emplace(m.machine_class, path.string());
+    if (!fresh && at->second != path.string()) {
+      fail(diags, 0, {},
+           fmt::format("machine class `{}` has two profiles, {} and {}; give one", m.machine_class,
+                       at->second, path.string()));
+      return false;
+    }
+    if (!fresh) continue;
+    const auto text = read_file(path);
+    if (!text) {
+      fail(diags, 0, {},
+           fmt::format("cannot read the profile {} of machine `{}`", path.string(), m.link.name));
+      return false;
+    }
+    auto profile = sim::read_machine_profile(*text, 0, diags);
+    if (!profile) return false;
+    config.profiles.emplace(m.machine_class, std::move(*profile));
+  }
+  return true;
+}
+
+std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::uint32_t file_id,
+                                               core::DiagnosticSink& diags) {
+  auto links = read_machine_links(toml_text, file_id, diags);
+  if (!links) return std::nullopt;
+  ServerConfig c;
+  for (LinkConfig& l : *links)
+    c.machines.push_back(ServerMachine{std::move(l), {}, {}});
+  toml::table root;
+  try {
+    root = toml::parse(toml_text);
+  } catch (const toml::parse_error&) {
+    return std::nullopt;  // reported by read_machine_links
+  }
+  const bool ok = read_server_table(root, c, file_id, diags);
+  if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;
+  return c;
+}
+
+}  // namespace usina::dnc

@@ -1,0 +1,49 @@
+// usina-serve.toml as the server reads it: the `[[machine]]` tables
+// (machine_config.hpp checks their link keys; `machine_class` names the
+// class whose programs the machine runs) and the `[server]` table:
+//
+//   [server]
+//   listen = "127.0.0.1:8080"   # --listen overrides it
+//   max_upload = 67108864       # bytes of a request body; past it: 413
+//   session_hours = 8           # a login's life
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/diagnostic.hpp"
+#include "dnc/link_config.hpp"
+#include "sim/machine_profile.hpp"
+
+namespace usina::dnc {
+
+struct ServerMachine {
+  LinkConfig link;
+  std::string machine_class;  // empty: any class
+  std::string profile;        // the class's machine profile (a file), checked uploads' travel
+};
+
+struct ServerConfig {
+  std::vector<ServerMachine> machines;
+  std::string listen = "127.0.0.1:8080";
+  std::uint64_t max_upload = 64ull << 20;
+  double session_hours = 8.0;
+  // Each machine class's profile (load_profiles): the store's check of an
+  // upload of that class runs on it, travel included.
+  std::map<std::string, sim::MachineProfile> profiles;
+};
+
+// The configuration in `toml_text`, or nothing when it has an error
+// (reported to `diags`, E_DNC_CONFIG at its line).
+std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::uint32_t file_id,
+                                               core::DiagnosticSink& diags);
+
+// Reads the `profile` file of each machine (relative to `base_dir`, the
+// configuration's folder) into `profiles`, by machine class; false, with
+// diagnostics, when one cannot be read or a class has two different files.
+bool load_profiles(ServerConfig& config, const std::string& base_dir, core::DiagnosticSink& diags);
+
+}  // namespace usina::dnc

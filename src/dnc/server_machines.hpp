@@ -1,0 +1,103 @@
+// The server's machines: one station per `[[machine]]` (station.hpp), each
+// with its queue of jobs. A job is a row of the store (store_jobs.hpp) from
+// queued to how it ended; only a revision the machine may take is queued
+// (production: the program's released revision; try-out: approved ones
+// too). A queued job starts when its machine is idle; when it ends the
+// machine's next starts. Punches become draft revisions; remote requests
+// are answered from the store. Every change is an event (api_events.hpp).
+#pragma once
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <boost/asio/steady_timer.hpp>
+
+#include "dnc/api_events.hpp"
+#include "dnc/server_config.hpp"
+#include "dnc/station.hpp"
+#include "dnc/store.hpp"
+#include "dnc/store_jobs.hpp"
+
+namespace usina::dnc {
+
+struct MachineRuntime {
+  ServerMachine config;
+  std::shared_ptr<Station> station;
+  std::deque<std::int64_t> queue;      // queued jobs, oldest first
+  std::optional<JobRecord> current;    // the running job
+  std::uint64_t progress_seen = 0;     // bytes at the last progress event
+  unsigned ticks_since_saved = 0;      // progress is written every few seconds
+  std::optional<JobRecord> answering;  // the job of a remote request being answered
+  std::string link_error;              // why the port did not open, last time
+};
+
+struct JobOrder {
+  std::string program;
+  std::string revision;
+  JobMode mode = JobMode::Send;
+};
+
+class Machines {
+ public:
+  Machines(asio::io_context& io, Store& store, EventHub& events, std::vector<ServerMachine> config);
+
+  // Opens every machine's port and listens.
+  void start();
+  // Stops every running job (interrupted, with `reason`), marks queued jobs
+  // interrupted, closes the ports; `stopped` runs when all is written.
+  void stop(const std::string& reason, std::function<void()> stopped);
+
+  MachineRuntime* find(std::string_view name);
+
+  // The machine classes' profiles, for the check of what the machines punch.
+  void use_profiles(const std::map<std::string, sim::MachineProfile>* profiles) {
+    profiles_ = profiles;
+  }
+
+  const std::vector<std::unique_ptr<MachineRuntime>>& all() const { return machines_; }
+
+  // Queues a job (and starts it when the machine is idle). NotFound for an
+  // unknown program or revision; Refused when the machine may not take it.
+  StoreResult<JobRecord> submit(MachineRuntime& m, const JobOrder& order, const Actor& actor);
+  // The job as stored, with the running job's live progress.
+  StoreResult<JobRecord> job(std::int64_t id);
+
+ private:
+  StationEvents station_events(MachineRuntime& m);
+  StoreResult<void> may_take(const MachineRuntime& m, const JobOrder& order);
+  void start_next(MachineRuntime& m);
+  bool launch(MachineRuntime& m, JobRecord job);
+  void fail_job(JobRecord job, const std::string& reason);
+  void on_job_done(MachineRuntime& m, const JobReport& r);
+  void on_punch(MachineRuntime& m, const ReceivedProgram& r);
+  void on_request(MachineRuntime& m, const RemoteRequest& r, const AnswerFunction& answer);
+  void on_request_answered(MachineRuntime& m, const JobReport& r);
+  void save(const JobRecord& job, const Actor& actor);
+  void publish_job(const JobRecord& job);
+  void tick();
+  void finish_stop();
+
+  asio::io_context& io_;
+  Store& store_;
+  EventHub& events_;
+  std::vector<std::unique_ptr<MachineRuntime>> machines_;
+  asio::steady_timer ticker_;
+  std::function<void()> stopped_;
+  const std::map<std::string, sim::MachineProfile>* profiles_ = nullptr;
+  bool stopping_ = false;
+};
+
+// The job's record updated from the sender's report (state, bytes, line,
+// block, hash, reason).
+void apply_report(JobRecord& job, const JobReport& r);
+// The rows a revision makes on the machine's wire; or why it cannot be sent.
+tl::expected<std::uint64_t, std::string> wire_bytes(const LinkConfig& link, std::string_view text);
+
+nlohmann::json job_json(const JobRecord& j);
+
+}  // namespace usina::dnc

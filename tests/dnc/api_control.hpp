@@ -1,0 +1,79 @@
+// A simulated control on a pty for the API tests, and a program taken to
+// released over HTTP.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "dnc/link_serial.hpp"
+#include "dnc/sim_cnc.hpp"
+#include "dnc/store_jobs.hpp"
+#include "server_fixture.hpp"
+
+namespace usina::dnc {
+
+using test::ApiClient;
+using test::RunningServer;
+
+// The control on the master side of a pty; the machine's port is the slave.
+struct Control {
+  std::unique_ptr<Link> link;
+  std::shared_ptr<SimCnc> sim;
+};
+
+inline ServerMachine pty_machine(const std::string& name, const std::string& port,
+                                 std::uint32_t baud) {
+  ServerMachine m;
+  m.link.name = name;
+  m.link.port = port;
+  m.link.baud = baud;
+  m.link.code = TapeCode::Ascii;
+  m.link.data_bits = 8;
+  m.link.parity = Parity::None;
+  m.link.leader = 0;
+  m.link.trailer = 0;
+  return m;
+}
+
+// A server with one machine `mill-1` on a pty, its control simulated.
+inline Control start_with_control(RunningServer& s, std::uint32_t baud = 115200) {
+  auto pair = open_pty_pair(s.io());
+  EXPECT_TRUE(pair) << pair.error();
+  Control c;
+  c.link = std::move(pair->master);
+  SimCncConfig sc;
+  sc.keep_data = true;
+  c.sim = std::make_shared<SimCnc>(s.io(), *c.link, sc);
+  c.sim->start();
+  ServerConfig config;
+  config.machines.push_back(pty_machine("mill-1", pair->slave_path, baud));
+  s.start(config);
+  return c;
+}
+
+inline std::string released(const ApiClient& c, const std::string& name, const std::string& text) {
+  const std::string boss = c.log_in("boss", test::kPassword);
+  const std::string rev =
+      c.post("/api/programs", {{"name", name}, {"dialect", "rs274ngc"}, {"text", text}}, boss)
+          .json()["revision"];
+  for (const char* state : {"checked", "approved", "released"}) {
+    c.post("/api/programs/" + name + "/revisions/" + rev + "/state", {{"state", state}}, boss);
+  }
+  return rev;
+}
+
+// The job once it has ended (polled as a client would).
+inline nlohmann::json wait_for_end(const ApiClient& c, const std::string& token, std::int64_t job) {
+  for (int i = 0; i < 2400; ++i) {
+    const auto j = c.get("/api/jobs/" + std::to_string(job), token).json();
+    if (job_ended(j.value("state", ""))) return j;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return {};
+}
+
+}  // namespace usina::dnc
