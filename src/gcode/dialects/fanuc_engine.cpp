@@ -58,9 +58,8 @@ Engine::Engine(RunContext& c)
     : sources_(c.sources),
       options_(c.options),
       diags_(c.diags),
-      columns_(c.diags),
       stroke_(c.sink, c.options.start),
-      interp_(c.sources, std::move(c.options), stroke_, columns_) {
+      interp_(c.sources, std::move(c.options), stroke_, c.diags) {
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
   rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";
@@ -98,18 +97,6 @@ std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
       out.push_back({static_cast<int>(index), value.v});
   }
   return out;
-}
-
-void ColumnMap::report(core::Diagnostic d) {
-  if (!spans_.empty() && d.loc.file == file_ && d.loc.line == line_) {
-    for (const Span& s : spans_) {
-      if (d.loc.col >= s.first && d.loc.col <= s.last) {
-        d.loc.col = s.col;
-        break;
-      }
-    }
-  }
-  next_.report(std::move(d));
 }
 
 core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
@@ -154,8 +141,7 @@ bool Engine::run(std::uint32_t file) {
   main_end_ = tape_.size() > 0 ? tape_.program_end(0) : 0;
   if (tape_.size() > 0) {
     // Fanuc's power-on return mode is G98 (LinuxCNC starts in G99).
-    const TapeBlock& first = tape_.at(0);
-    interp_.run_block("G98", {first.file, first.line, first.line_offset});
+    hand(tape_.at(0), {{'G', 98}});
   }
   apply_start_external();
   while (!done_ && !failed_ && !interp_.failed() && !interp_.ended()) {

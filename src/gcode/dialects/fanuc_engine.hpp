@@ -3,13 +3,16 @@
 // statements itself (variables with vacancy, IF, WHILE, GOTO, M98/M99,
 // G65/G66), applies Fanuc's number rules and the transformations LinuxCNC
 // lacks (G16 polar, G51 scaling, G51.1 mirror, G68 rotation), and hands
-// each NC block, as RS274NGC words with numbers, to the interpreter.
+// each NC block to the interpreter as evaluated words (the one road below
+// the text: interp/evaluated_block.hpp).
 #pragma once
 
 #include <array>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,8 +23,8 @@
 
 namespace usina::gcode::fanuc {
 
-// A value as the front end writes it into an RS274NGC word for the
-// interpreter: up to 10 decimals, no trailing zeros ("12.5", "-3", "0").
+// A value as a message shows it: up to 10 decimals, no trailing zeros
+// ("12.5", "-3", "0").
 std::string word_number(double v);
 
 // One word of an NC block after its value was read.
@@ -127,34 +130,6 @@ class StrokeCheck final : public canon::Sink {
   std::optional<Violation> violation_;
 };
 
-// Points the interpreter's diagnostics about a block the front end rewrote
-// at the Fanuc words they came from: each rewritten word's columns map to
-// its word's column in the program's line.
-class ColumnMap final : public core::DiagnosticSink {
- public:
-  struct Span {
-    std::uint32_t first = 0, last = 0;  // columns in the rewritten text
-    std::uint32_t col = 0;              // the word's column in the line
-  };
-
-  explicit ColumnMap(core::DiagnosticSink& next) : next_(next) {}
-
-  void report(core::Diagnostic d) override;
-
-  void set(std::uint32_t file, std::uint32_t line, std::vector<Span> spans) {
-    file_ = file;
-    line_ = line;
-    spans_ = std::move(spans);
-  }
-
-  void clear() { spans_.clear(); }
-
- private:
-  core::DiagnosticSink& next_;
-  std::uint32_t file_ = 0, line_ = 0;
-  std::vector<Span> spans_;
-};
-
 class Engine final : public ProgramRunner, private VariableSource {
  public:
   explicit Engine(RunContext& c);
@@ -212,7 +187,13 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool fanuc_codes(const TapeBlock& b, Words& w);
   bool convert_codes(const TapeBlock& b, Words& w);
   void cycle_levels(Words& w, bool incremental);
+  // The hand-over: evaluated words down the interpreter's one road
+  // (interp/evaluated_block.hpp), each at the column it was written at.
   bool hand_over(const TapeBlock& b, Words& w);
+  bool hand(const TapeBlock& b, std::span<const EvaluatedWord> words);
+  bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);
+  core::SourceLoc block_loc(const TapeBlock& b) const;
+  std::vector<EvaluatedWord> handed_;  // reused from block to block
   void group_one_motion(Words& w);
   bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);
@@ -234,6 +215,10 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool polar_interp_codes(const TapeBlock& b, Words& w);
   bool polar_interp_switch(const TapeBlock& b, Words& w, bool on, bool off);
   bool polar_interp_move(const TapeBlock& b, Words& w);
+  // The axes outside the polar plane (X Y Z A B C): where they go, from, to.
+  using PolarOthers = std::array<std::optional<std::pair<double, double>>, 6>;
+  bool polar_pieces(const TapeBlock& b, const std::vector<PolarPoint>& points,
+                    const PolarOthers& others, std::optional<double> feed);
   std::optional<core::Vec2> polar_interp_centre(const TapeBlock& b, Words& w, core::Vec2 from,
                                                 core::Vec2 to, bool ccw);
   PolarAxes polar_axes_;  // polar_axes option (parameters 5460/5461)
@@ -297,8 +282,7 @@ class Engine final : public ProgramRunner, private VariableSource {
   core::SourceManager& sources_;
   InterpOptions options_;
   core::DiagnosticSink& diags_;
-  ColumnMap columns_;   // the interpreter's diagnostics go through it
-  StrokeCheck stroke_;  // and its ops through this
+  StrokeCheck stroke_;  // the interpreter's ops go through it
   Interpreter interp_;
   bool dpi_fanuc_ = false;  // decimal_point=fanuc
   int program_digits_ = 4;

@@ -363,8 +363,8 @@ void Engine::cycle_levels(Words& w, bool incremental) {
   }
 }
 
-// G76 fine boring and G87 back boring (docs/fanuc.md §7), written as
-// RS274NGC blocks for the interpreter. R and Z are kept as positions as in
+// G76 fine boring and G87 back boring (docs/fanuc.md §7), handed to the
+// interpreter as the moves they make. R and Z are kept as positions as in
 // the other cycles: in G91, R is the distance from the initial level and Z
 // from the R point, X Y from the current point, and each of the K repeats
 // steps the hole by X Y again (in G90 K bores the same hole K times).
@@ -418,31 +418,30 @@ bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Ve
   // program, so the shift is added after them (the hole is transformed).
   const double dx = g76_.shift == 0 ? q : g76_.shift == 1 ? -q : 0.0;
   const double dy = g76_.shift == 2 ? q : g76_.shift == 3 ? -q : 0.0;
-  const LinePos where{b.file, b.line, b.line_offset};
-  if (!interp_.run_block("G90", where)) return false;
+  if (!hand(b, {{'G', 90}})) return false;
   for (long n = 0; n < repeats; ++n) {
     const double x = first.x + step.x * static_cast<double>(n);
     const double y = first.y + step.y * static_cast<double>(n);
-    const std::string hole = fmt::format("G0 X{} Y{}", word_number(x), word_number(y));
-    const std::string shifted = fmt::format("G0 X{} Y{}", word_number(x + dx), word_number(y + dy));
-    std::vector<std::string> blocks{hole};
-    if (code == 760) {
-      blocks.insert(blocks.end(), {fmt::format("G0 Z{}", word_number(r)),
-                                   fmt::format("G1 Z{} F{}", word_number(z), word_number(g76_.f)),
-                                   fmt::format("G4 P{}", word_number(g76_.p)), "M19", shifted,
-                                   fmt::format("G0 Z{}", word_number(back)), hole, "M3"});
-    } else {
-      // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
-      blocks.insert(blocks.end(),
-                    {"M19", shifted, fmt::format("G0 Z{}", word_number(r)), hole, "M3",
-                     fmt::format("G1 Z{} F{}", word_number(z), word_number(g76_.f)),
-                     fmt::format("G4 P{}", word_number(g76_.p)), "M19", shifted,
-                     fmt::format("G0 Z{}", word_number(top)), hole, "M3"});
-    }
-    for (const std::string& text : blocks)
-      if (!interp_.run_block(text, where)) return false;
+    const auto hole = [&] { return hand(b, {{'G', 0}, {'X', x}, {'Y', y}}); };
+    const auto shifted = [&] { return hand(b, {{'G', 0}, {'X', x + dx}, {'Y', y + dy}}); };
+    const auto orient = [&] { return hand(b, {{'M', 19}}); };
+    const auto bore = [&] {
+      return hand(b, {{'G', 1}, {'Z', z}, {'F', g76_.f}}) && hand(b, {{'G', 4}, {'P', g76_.p}});
+    };
+    const auto out = [&](double level) {
+      return hand(b, {{'G', 0}, {'Z', level}}) && hole() && hand(b, {{'M', 3}});
+    };
+    // G76: down to Z, dwell, orient, shift off the wall, out, back on the
+    // hole's axis. G87: in shifted, down to R (the bottom), back on the
+    // axis, bore up to Z, dwell, orient, shift, out above the part.
+    if (!hole()) return false;
+    const bool ok =
+        code == 760 ? hand(b, {{'G', 0}, {'Z', r}}) && bore() && orient() && shifted() && out(back)
+                    : orient() && shifted() && hand(b, {{'G', 0}, {'Z', r}}) && hole() &&
+                          hand(b, {{'M', 3}}) && bore() && orient() && shifted() && out(top);
+    if (!ok) return false;
   }
-  return !was_incremental || interp_.run_block("G91", where);
+  return !was_incremental || hand(b, {{'G', 91}});
 }
 
 // Fanuc's G80 is a group of its own: after it (and at power-on) axis words
@@ -462,40 +461,50 @@ void Engine::group_one_motion(Words& w) {
   if (axes) w.list.push_back({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
 }
 
+// The block's words down the interpreter's one road: its G codes in
+// tenths (one mirrored axis swaps the side of cutter compensation), M and L
+// as whole numbers, each word at the column the user wrote it at.
 bool Engine::hand_over(const TapeBlock& b, Words& w) {
-  const core::SourceLoc loc = loc_of(b, 0);
-  std::string text(loc.col > 1 ? loc.col - 1 : 0, ' ');
-  std::vector<ColumnMap::Span> spans;
+  handed_.clear();
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
     // Read in range (word_in_range), a value leaves it only by the scaling
-    // or rotation in force: say so at the word, before it becomes text.
+    // or rotation in force: say so at the word.
     if (auto why = word_out_of_range(word.letter, word.value)) {
       return error(core::Code::ValueOutOfRange, b, word.pos,
                    fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
                                "G51.1)",
                                *why));
     }
-    spans.push_back({static_cast<std::uint32_t>(text.size() + 1), 0, loc_of(b, word.pos).col});
+    double v = word.value;
     if (word.letter == 'G') {
-      int t = tenths(word.value);
-      // One mirrored axis swaps the side of cutter compensation.
+      int t = tenths(v);
       if (xf_.reverses(interp_.state().plane) && (t == 410 || t == 420 || t == 411 || t == 421))
         t = t < 415 ? t + 10 : t - 10;
-      text += t % 10 == 0 ? fmt::format("G{} ", t / 10) : fmt::format("G{}.{} ", t / 10, t % 10);
+      v = t / 10.0;
     } else if (word.letter == 'M' || word.letter == 'L') {
-      text += fmt::format("{}{} ", word.letter, std::lround(word.value));
-    } else {
-      text += fmt::format("{}{} ", word.letter, word_number(word.value));
+      v = static_cast<double>(std::lround(v));
     }
-    spans.back().last = static_cast<std::uint32_t>(text.size());
+    handed_.push_back({word.letter, v, loc_of(b, word.pos).col});
   }
-  // The interpreter's diagnostics point at the Fanuc words, not at the
-  // rewritten text's columns.
-  columns_.set(b.file, b.line, std::move(spans));
-  const bool ok = interp_.run_block(text, {b.file, b.line, b.line_offset});
-  columns_.clear();
-  return ok;
+  return hand(b, handed_);
+}
+
+// The block's place: where its text starts (after '/', O and N); its
+// operations carry it, and the interpreter's diagnostics where no word
+// applies.
+core::SourceLoc Engine::block_loc(const TapeBlock& b) const {
+  core::SourceLoc loc = loc_of(b, 0);
+  loc.length = 0;
+  return loc;
+}
+
+bool Engine::hand(const TapeBlock& b, std::span<const EvaluatedWord> words) {
+  return interp_.run_evaluated({block_loc(b), words, {}, {}});
+}
+
+bool Engine::hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words) {
+  return hand(b, std::span<const EvaluatedWord>(words.begin(), words.size()));
 }
 
 }  // namespace usina::gcode::fanuc

@@ -127,8 +127,7 @@ bool Engine::offset_codes(const TapeBlock& b, Words& w) {
       return error(core::Code::ValueOutOfRange, b, h != nullptr ? h->pos : 0,
                    fmt::format("the length in offset register H{}: {}", h_register_, *why));
     }
-    if (!interp_.run_block(fmt::format("G43.1 Z{:.10f}", v), {b.file, b.line, b.line_offset}))
-      return false;
+    if (!hand(b, {{'G', 43.1}, {'Z', v}})) return false;
   }
   w.take_g(430);
   w.take_g(440);

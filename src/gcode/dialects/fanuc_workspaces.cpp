@@ -58,8 +58,7 @@ void Engine::apply_start_external() {
 // the active one again after its parameters changed.
 bool Engine::reselect(const TapeBlock& b) {
   const int n = interp_.state().coord_system;
-  const std::string code = n <= 6 ? fmt::format("G{}", 53 + n) : "G59.3";
-  return interp_.run_block(code, {b.file, b.line, b.line_offset});
+  return hand(b, {{'G', n <= 6 ? 53.0 + n : 59.3}});
 }
 
 // The active G54.1 system (plus EXT) into the G59.3 slot.

@@ -17,6 +17,7 @@
 #include "gcode/interp/canned_cycles.hpp"
 #include "gcode/interp/canon_machine.hpp"
 #include "gcode/interp/cutter_comp.hpp"
+#include "gcode/interp/evaluated_block.hpp"
 #include "gcode/interp/state.hpp"
 #include "gcode/parameters.hpp"
 #include "gcode/parser.hpp"
@@ -66,10 +67,16 @@ class Interpreter final : private ParameterSource {
 
   const ModalState& state() const { return state_; }
 
-  // For a front end that cuts and expands blocks itself (the fanuc
-  // dialect): runs one RS274NGC block of text, located at `where` for its
-  // diagnostics. False after an error. `finish` ends such a run.
-  bool run_block(std::string_view text, const LinePos& where);
+  // The entry below the text (evaluated_block.hpp): steps 2-4 of one block
+  // a front end has evaluated. The words are sorted into modal groups (an
+  // unknown code, two codes of one group, a repeated word or a value out of
+  // range is an error at its word), the assignments take effect, the block
+  // is checked, planned and executed on a copy of the modal state that
+  // replaces the state only when the block succeeded. False after an error
+  // (reported; the run stops there). Interpreter::run() sends every block of
+  // an RS274NGC program through it; a front end with its own reader calls it
+  // block by block and ends with finish().
+  bool run_evaluated(const EvaluatedBlock& block);
   bool finish();
 
   bool ended() const { return ended_; }
@@ -157,15 +164,25 @@ class Interpreter final : private ParameterSource {
   void jump_to(std::uint32_t file, const OEntry& e, bool after);
   bool end_of_file();
 
-  // Block steps (interpreter.cpp, execute.cpp).
-  bool evaluate(const Block& b, BlockWords& w);
-  bool assign_parameters(const Block& b);
+  // Step 1 of an RS274NGC block (evaluate.cpp): its values into
+  // evaluated_ and assigns_.
+  bool evaluate(const Block& b);
+  bool evaluate_assigns(const Block& b);
+  bool evaluation_failed(core::Code code, std::uint32_t col, std::string message);
+  EvaluatedBlock evaluated(const Block& b) const;
+  std::vector<EvaluatedWord> evaluated_;
+  std::vector<EvaluatedAssign> assigns_;
+
+  // Steps 2-4 (interpreter.cpp, check.cpp, execute.cpp).
+  bool sort_words(std::span<const EvaluatedWord> words, BlockWords& w);
+  bool sort_word(const EvaluatedWord& word, BlockWords& w);
+  bool assign(std::span<const EvaluatedAssign> assigns);
   bool place_g(BlockWords& w, GCode g, std::uint32_t col);
   bool place_m(BlockWords& w, int m, std::uint32_t col);
   bool check(BlockWords& w);
   bool check_unused(const BlockWords& w);
-  bool execute(const Block& b, BlockWords& w);
-  bool comments(const Block& b);
+  bool execute(std::span<const CommentText> notes, BlockWords& w);
+  bool comments(std::span<const CommentText> notes);
   bool tool_and_spindle(BlockWords& w);
   bool modal_settings(BlockWords& w);
   bool modal_zero(BlockWords& w);
