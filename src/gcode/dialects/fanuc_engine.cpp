@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iterator>
 
 #include <fmt/format.h>
 
@@ -28,8 +27,14 @@ long sequence_number(double v) {
 
 int loop_mark(std::string_view text, int& m) {
   std::string up;
-  for (char c : text)
-    if (c != ' ' && c != '\t') up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(') {
+      i = skip_comment(text, i) - 1;
+    } else if (c != ' ' && c != '\t') {
+      up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+  }
   std::size_t at = std::string::npos;
   int kind = 0;
   if (up.rfind("WHILE", 0) == 0 || up.rfind("DO", 0) == 0) {
@@ -99,23 +104,11 @@ std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
   return out;
 }
 
+// A position in a block's text is a column of its line: the text is the
+// file's own, comments and all.
 core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
   const std::string_view src = sources_.get(b.file)->text();
-  std::uint32_t col = b.col;
-  if (b.text.data() >= src.data() && b.text.data() <= src.data() + src.size()) {
-    col = static_cast<std::uint32_t>(b.text.data() - src.data() - b.line_offset + pos + 1);
-  } else {
-    // The text is a copy without the block's comments: add back what each
-    // comment before the position took.
-    const std::size_t at = b.text_start + pos;
-    // The gaps are in text order with their widths summed: the last one
-    // before the position holds the total (a search, not a walk, so a
-    // block of many comments stays linear).
-    const auto after = std::partition_point(b.gaps.begin(), b.gaps.end(),
-                                            [at](const auto& g) { return g.first < at; });
-    const std::size_t extra = after == b.gaps.begin() ? 0 : std::prev(after)->second;
-    col = static_cast<std::uint32_t>(b.col + at + extra);
-  }
+  const auto col = static_cast<std::uint32_t>(b.text.data() - src.data() - b.line_offset + pos + 1);
   return {b.file, b.line, col, 1, b.line_offset};
 }
 

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "gcode/dialects/fanuc_tape.hpp"
+
 namespace usina::gcode::fanuc {
 namespace {
 
@@ -67,9 +69,11 @@ std::nullopt_t MacroReader::fail(core::Code code, std::string message) {
   return std::nullopt;
 }
 
+// A comment reads as a blank where it stands (fanuc_tape.hpp).
 void MacroReader::blanks() {
-  while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t'))
-    ++i_;
+  while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '(')) {
+    i_ = text_[i_] == '(' ? skip_comment(text_, i_) : i_ + 1;
+  }
 }
 
 bool MacroReader::at_end() {
@@ -115,7 +119,9 @@ std::optional<double> MacroReader::number() {
   had_point_ = false;
   for (; i_ < text_.size(); ++i_) {
     const char c = text_[i_];
-    if (std::isdigit(static_cast<unsigned char>(c))) {
+    if (c == '(') {
+      i_ = skip_comment(text_, i_) - 1;  // a blank inside the number
+    } else if (std::isdigit(static_cast<unsigned char>(c))) {
       any = true;
       if (scale == 0) {
         v = v * 10 + (c - '0');

@@ -5,33 +5,34 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <map>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 namespace usina::gcode::fanuc {
+
+// Where a comment that opens at text[open] ends: after its ')' (inner
+// '( )' pairs belong to it: "(READ WITH (DPI=0) ...)"), or at the end of
+// its line when it is never closed. The tape, the block head and the macro
+// reader all skip a comment as one blank where it stands.
+std::size_t skip_comment(std::string_view text, std::size_t open);
 
 struct TapeBlock {
   std::uint32_t file = 0;
   std::uint32_t line = 0;
   std::uint32_t col = 1;  // of the block's first character in its line
   std::uint64_t line_offset = 0;
-  std::string_view text;     // without '/', the N word and comments
+  // The block's words and statements in the file, after '/', O and N and
+  // without the blanks and comments around them; comments between the
+  // words stay where they are (readers skip them as blanks), so a position
+  // in `text` is a column of the line.
+  std::string_view text;
   std::string_view comment;  // the first ( ) comment's text
   std::size_t length = 0;    // of the block in the file, its head and comments included
   long sequence = -1;        // N number, -1 when none
   bool deleted = false;      // '/' at the start
   long program = -1;         // O number when the block starts a program
-  // A block with a comment has its text copied without it: where `text`
-  // started in the block (from `col`), and each comment's place in that
-  // copy with the characters it took beyond its one blank, so a position
-  // in `text` finds its column again (the widths summed up to each
-  // comment, in the order of the text).
-  std::uint32_t text_start = 0;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
 };
 
 class Tape {
@@ -73,7 +74,6 @@ class Tape {
   std::vector<TapeBlock> blocks_;
   std::vector<FileSpan> files_;
   std::map<long, std::size_t> programs_;
-  std::deque<std::string> stripped_;  // block texts with comments removed
 };
 
 }  // namespace usina::gcode::fanuc
