@@ -64,7 +64,7 @@ Engine::Engine(RunContext& c)
       options_(c.options),
       diags_(c.diags),
       stroke_(c.sink, c.options.start),
-      interp_(c.sources, std::move(c.options), stroke_, c.diags) {
+      interp_(c.sources, std::move(c.options), stroke_, c.diags, this) {
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
   rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";
@@ -73,7 +73,10 @@ Engine::Engine(RunContext& c)
   g76_.shift = boring_shift_bits(c.dialect_options["boring_shift"]);
   polar_axes_ = polar_axes_from(c.dialect_options["polar_axes"]).value_or(PolarAxes{});
   locals_.push_back(vacant_locals());
-  if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
+  pecks_ = {options_.peck_clearance_mm, options_.peck_clearance_mm};
+  // The offset page of --offsets: the fanuc dialect's own input.
+  if (auto it = c.dialect_options.find("offsets"); it != c.dialect_options.end())
+    offsets_ok_ = read_offsets(it->second);
 }
 
 std::array<Value, 34> vacant_locals() {

@@ -130,7 +130,7 @@ class StrokeCheck final : public canon::Sink {
   std::optional<Violation> violation_;
 };
 
-class Engine final : public ProgramRunner, private VariableSource {
+class Engine final : public ProgramRunner, private VariableSource, private CycleHooks {
  public:
   explicit Engine(RunContext& c);
   void set_parameter(int index, double value) override;
@@ -187,6 +187,14 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool fanuc_codes(const TapeBlock& b, Words& w);
   bool convert_codes(const TapeBlock& b, Words& w);
   void cycle_levels(Words& w, bool incremental);
+
+  // The initial level the interpreter's cycles took (mm on the plane's
+  // normal), in force while its motion mode is a drilling cycle: in G91
+  // R counts from it (interp/cycle_hooks.hpp).
+  void cycle_ran(double initial_level_mm) override { cycle_level_ = initial_level_mm; }
+
+  std::optional<double> cycle_level() const;
+  std::optional<double> cycle_level_;
   // The hand-over: evaluated words down the interpreter's one road
   // (interp/evaluated_block.hpp), each at the column it was written at.
   bool hand_over(const TapeBlock& b, Words& w);
@@ -261,6 +269,12 @@ class Engine final : public ProgramRunner, private VariableSource {
   std::optional<long> parameter_bits(const TapeBlock& b, long number, const NcWord& r,
                                      long modeled);
   bool parameter_mode_ = false;
+
+  // 5114 and 5115: G73's back-off and G83's clearance, which the
+  // interpreter asks for at each cycle (interp/cycle_hooks.hpp).
+  PeckDistances peck_distances() const override { return pecks_; }
+
+  PeckDistances pecks_;
 
   // G22/G23 stored stroke check 2 (fanuc_stroke.cpp).
   bool stroke_codes(const TapeBlock& b, Words& w);

@@ -264,9 +264,7 @@ bool Engine::nc_block(const TapeBlock& b) {
     if (!fine_boring(b, w)) return false;
   }
   group_one_motion(w);
-  const bool cancels_cycle = w.has_g(800);
   if (!hand_over(b, w)) return false;
-  if (cancels_cycle) interp_.forget_cycle_level();
   if (!xf_.active() && !polar_) reset_program_point();
   if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
   if (back) return give_back(*back, b, call_pos);
@@ -340,13 +338,17 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
   return true;
 }
 
+std::optional<double> Engine::cycle_level() const {
+  return is_cycle(interp_.state().motion) ? cycle_level_ : std::nullopt;
+}
+
 // R and Z of a cycle block: given, they are remembered as positions; left
 // out, the remembered ones are written for the interpreter, which needs R
 // in the block that starts a cycle and re-reads the numbers under G91.
 void Engine::cycle_levels(Words& w, bool incremental) {
   const double per = core::mm_per(interp_.state().units);
   const double z_now = interp_.state().pos[2] / per;
-  const double initial = interp_.cycle_initial_level().value_or(z_now);
+  const double initial = cycle_level() ? *cycle_level() / per : z_now;
   NcWord* r = w.find('R');
   NcWord* z = w.find('Z');
   const std::optional<double> r_abs =

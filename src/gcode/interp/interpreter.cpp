@@ -12,9 +12,10 @@
 namespace usina::gcode {
 
 Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
-                         core::DiagnosticSink& diags)
+                         core::DiagnosticSink& diags, CycleHooks* cycle_hooks)
     : sources_(sources),
       options_(std::move(options)),
+      cycle_hooks_(cycle_hooks),
       sink_(sink),
       diags_(diags),
       machine_(sink, state_, diags),

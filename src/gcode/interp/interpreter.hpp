@@ -17,6 +17,7 @@
 #include "gcode/interp/canned_cycles.hpp"
 #include "gcode/interp/canon_machine.hpp"
 #include "gcode/interp/cutter_comp.hpp"
+#include "gcode/interp/cycle_hooks.hpp"
 #include "gcode/interp/evaluated_block.hpp"
 #include "gcode/interp/state.hpp"
 #include "gcode/parameters.hpp"
@@ -28,21 +29,20 @@ namespace usina::gcode {
 
 struct InterpOptions {
   core::LengthUnit machine_units = core::LengthUnit::Mm;  // of the tool table and parameters
-  double peck_clearance_mm = 1.0;                         // G73/G83 retract above the last peck
-  std::vector<std::string> subroutine_path;               // folders searched for o<name> call
-  long max_loop_iterations = 10'000'000;   // per run of a loop, so a runaway loop ends
-  long max_total_iterations = 10'000'000;  // all loops of the program together
+  // G73's back-off and G83's clearance above the last peck, unless the
+  // front end gives CycleHooks (cycle_hooks.hpp).
+  double peck_clearance_mm = 1.0;
+  std::vector<std::string> subroutine_path;  // folders searched for o<name> call
+  long max_loop_iterations = 10'000'000;     // per run of a loop, so a runaway loop ends
+  long max_total_iterations = 10'000'000;    // all loops of the program together
   int max_call_depth = 200;
   double spline_tolerance_mm = 0.001;
-  // G73's back-off after each peck; empty: peck_clearance_mm.
-  std::optional<double> peck_retract_mm;
   bool block_delete = false;  // '/' blocks skipped (the operator's switch; off as in LinuxCNC)
   // G41/G42 are checked but offset nothing: the moves are the programmed
   // contour (what a part drawing shows), not the tool centre.
   bool ignore_cutter_comp = false;
   ToolTable tools;
-  std::string offset_file;  // fanuc: the H and D offset registers (docs/fanuc.md)
-  core::Vec3 start{};       // where the tool is when the program starts (usina draw --start)
+  core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
   // The motion mode at the start, in tenths: LinuxCNC's G80; a controller
   // that powers up in another (Grbl: G0) sets it.
   GCode start_motion = 800;
@@ -52,8 +52,10 @@ struct BlockWords;
 
 class Interpreter final : private ParameterSource {
  public:
+  // `cycle_hooks`: a dialect's own cycle state (cycle_hooks.hpp: the peck
+  // distances a program may change, the initial level); null for LinuxCNC's.
   Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
-              core::DiagnosticSink& diags);
+              core::DiagnosticSink& diags, CycleHooks* cycle_hooks = nullptr);
   ~Interpreter() override;
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
@@ -80,25 +82,6 @@ class Interpreter final : private ParameterSource {
   bool finish();
 
   bool ended() const { return ended_; }
-
-  // Fanuc: G80 ends a cycle mode, so the next cycle's initial level is
-  // where it starts (LinuxCNC keeps its cycle_il until another motion).
-  void forget_cycle_level() { cycles_.note_other_motion(); }
-
-  std::optional<double> cycle_initial_level() const { return cycles_.initial_level(); }
-
-  // The machine settings of G73's back-off and G83's clearance, changed
-  // during a run (a control's parameters set by the program).
-  void set_peck_distances(double g73_retract_mm, double g83_clearance_mm) {
-    options_.peck_retract_mm = g73_retract_mm;
-    options_.peck_clearance_mm = g83_clearance_mm;
-  }
-
-  double peck_retract_mm() const {
-    return options_.peck_retract_mm.value_or(options_.peck_clearance_mm);
-  }
-
-  double peck_clearance_mm() const { return options_.peck_clearance_mm; }
 
   bool failed() const { return failed_; }
 
@@ -233,6 +216,7 @@ class Interpreter final : private ParameterSource {
 
   core::SourceManager& sources_;
   InterpOptions options_;
+  CycleHooks* cycle_hooks_;
   canon::Sink& sink_;
   core::DiagnosticSink& diags_;
   ModalState state_;
