@@ -29,13 +29,16 @@ cxx="${CXX_FUZZ:-clang++-14}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
-targets=(parser interpreter romi fanuc grbl dxf)
+targets=(parser interpreter romi fanuc grbl dxf remote_request)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
 # The targets that read drawings link the cam module and its libraries
 # instead of the gcode module.
 cam_targets=" dxf "
+# The targets of what a control punches link the dnc module's tape and
+# request files (no event loop, no Boost).
+dnc_targets=" remote_request "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -49,6 +52,7 @@ mapfile -t base_sources < <(cd "$root" && ls src/core/*.cpp src/canon/*.cpp | so
 mapfile -t gcode_sources < <(cd "$root" &&
   find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; } | sort)
 mapfile -t cam_sources < <(cd "$root" && ls src/cam/*.cpp | sort)
+dnc_sources=(src/dnc/tape_code.cpp src/dnc/tape_reader.cpp src/dnc/remote_request.cpp)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
@@ -65,7 +69,7 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
   echo "rule link"
   echo "  command = \$cxx \$lflags \$in -o \$out -lfmt \$libs"
   echo "  description = LINK \$out"
-  for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}"; do
+  for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}" "${dnc_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
   for t in "${targets[@]}"; do
@@ -75,7 +79,9 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
     else
       echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
     fi
-    if [[ "$cam_targets" == *" $t "* ]]; then
+    if [[ "$dnc_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${dnc_sources[@]}")"
+    elif [[ "$cam_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}")"
       echo "  libs = $cam_libs"
     else

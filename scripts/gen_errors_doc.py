@@ -601,6 +601,41 @@ EXPLAIN = {
         "A tool number appears on two lines of the tool table; the later line replaces the "
         "earlier one.",
         "Keep one line per tool."),
+    # dnc: links, tape codes, transfers
+    "E_DNC_CONFIG": (
+        "A `[[machine]]` table of the DNC configuration (`usina-serve.toml`) has a value usina "
+        "cannot use: a baud rate outside 110-115200, 5 or 9 data bits, an unknown parity, flow "
+        "control, tape code or end of block, a `skid` of 0, a missing `name` or `port`, two "
+        "machines of one name, or a combination no link can carry (EIA needs 8 data bits and "
+        "no parity: the code has its own parity on channel 5). The message gives the key and "
+        "the values it takes.",
+        "Correct the key named in the message; docs/dnc.md lists every key with its values."),
+    "W_UNKNOWN_DNC_KEY": (
+        "A `[[machine]]` table has a key usina does not read, e.g. `buad` for `baud`: its value "
+        "is not used. The message gives the key's line and the nearest valid name.",
+        "Correct the key's spelling (the message suggests one), or remove it; docs/dnc.md lists "
+        "the keys."),
+    "E_TAPE_NO_CODE": (
+        "A character of the program has no code in the machine's tape code: EIA RS-244 has "
+        "letters, digits, space and `+ - / . , ( ) %` only (no `=`, `#`, `[`, `*`...), and ISO "
+        "and ASCII are 7-bit (no accented letters or other bytes above 127). Nothing is sent.",
+        "Remove the character from the program, or set the machine's `code` to `iso` if the "
+        "control reads ISO."),
+    "E_TAPE_PARITY": (
+        "A character received from the control fails the tape code's parity check (ISO: even "
+        "parity on channel 8; EIA: odd parity on channel 5), or is no character of the code. "
+        "The received program is kept with the position of each bad character, not stored as "
+        "good.",
+        "Check the link's settings (baud, data bits, parity, stop bits) against the control's, "
+        "and the cable; then punch the program again."),
+    "E_REMOTE_REQUEST": (
+        "A program punched by the control looked like a remote request (its O number is the "
+        "machine's `request_program`, or a comment holds `PRG=`, `/REQ`...) but it cannot be "
+        "answered: no program named, a name with characters a program name may not have "
+        "(`/`, `..`, spaces), or a start block, line or tool that is not a number. The control "
+        "gets a response program whose comment says why.",
+        "Punch the request again as `O9999 (PRG=NAME)`, with the program's name as the store "
+        "knows it."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -10,6 +10,8 @@ pkgs=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libdxflib-dev libcairo2-dev libpolyclipping-dev hershey-fonts-data
   clang-14 libclang-rt-14-dev clang-format
+  libsqlite3-dev libpqxx-dev libssl-dev libsodium-dev postgresql
+  libboost-dev libboost-system-dev socat
 )
 [ "${1:-}" = "--with-linuxcnc" ] && pkgs+=(linuxcnc-uspace)
 missing=()

@@ -1,10 +1,10 @@
 #include "gcode/expr.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
-#include "core/units.hpp"
 #include "gcode/parameters.hpp"
 
 namespace usina::gcode {
@@ -13,6 +13,21 @@ namespace {
 // LinuxCNC interp_internal.hh TOLERANCE_EQUAL: EQ, NE, LE and GE compare
 // within it (interp_execute.cc execute_binary2); LT and GT do not.
 constexpr double kEqualTolerance = 1e-4;
+
+// LinuxCNC converts angles with M_PIl in long double (interp_execute.cc:
+// sin((x * M_PIl) / 180.0), which C++ resolves to the long double sin;
+// (asin(x) * 180.0) / M_PIl). Rounded to double, SIN[30] is then exactly 0.5
+// and SIN[180] -5e-20 (double gives 0.49999999999999994 and +1.2e-16), and
+// FIX, comparisons and LN decide as LinuxCNC does.
+constexpr long double kPi = std::numbers::pi_v<long double>;
+
+long double radians(double degrees) {
+  return (static_cast<long double>(degrees) * kPi) / 180.0L;
+}
+
+double degrees(double radians) {
+  return static_cast<double>((static_cast<long double>(radians) * 180.0L) / kPi);
+}
 
 class Evaluator {
  public:
@@ -64,7 +79,7 @@ std::optional<double> Evaluator::eval(ExprRef ref) {
     if (!a) return std::nullopt;
     auto b = eval(n.b);
     if (!b) return std::nullopt;
-    if (n.kind == ExprKind::Atan2) return core::rad_to_deg(std::atan2(*a, *b));
+    if (n.kind == ExprKind::Atan2) return degrees(std::atan2(*a, *b));
     return binary(n, *a, *b);
   }
   }
@@ -128,9 +143,9 @@ std::optional<double> Evaluator::function(const ExprNode& n, double a) {
                   fmt::format("{}[{}]: the argument must be within -1 and 1",
                               static_cast<Func>(n.op) == Func::Acos ? "ACOS" : "ASIN", a));
     }
-    return core::rad_to_deg(static_cast<Func>(n.op) == Func::Acos ? std::acos(a) : std::asin(a));
-  case Func::Atan: return core::rad_to_deg(std::atan(a));
-  case Func::Cos: return std::cos(core::deg_to_rad(a));
+    return degrees(static_cast<Func>(n.op) == Func::Acos ? std::acos(a) : std::asin(a));
+  case Func::Atan: return degrees(std::atan(a));
+  case Func::Cos: return static_cast<double>(std::cos(radians(a)));
   case Func::Exp: return std::exp(a);
   case Func::Fix: return std::floor(a);
   case Func::Fup: return std::ceil(a);
@@ -141,14 +156,14 @@ std::optional<double> Evaluator::function(const ExprNode& n, double a) {
     }
     return std::log(a);
   case Func::Round: return std::round(a);  // halves away from zero, as LinuxCNC
-  case Func::Sin: return std::sin(core::deg_to_rad(a));
+  case Func::Sin: return static_cast<double>(std::sin(radians(a)));
   case Func::Sqrt:
     if (a < 0.0) {
       return fail(n.col, core::Code::DomainError,
                   fmt::format("SQRT[{}]: the argument must not be negative", a));
     }
     return std::sqrt(a);
-  case Func::Tan: return std::tan(core::deg_to_rad(a));
+  case Func::Tan: return static_cast<double>(std::tan(radians(a)));
   case Func::Log10:
     if (a <= 0.0) {
       return fail(n.col, core::Code::DomainError,

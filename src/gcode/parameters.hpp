@@ -24,7 +24,15 @@ class Parameters {
 
   double get(int index) const { return numbered_[static_cast<std::size_t>(index)]; }
 
-  void set(int index, double value) { numbered_[static_cast<std::size_t>(index)] = value; }
+  void set(int index, double value) {
+    if (journal_ != nullptr) journal_->emplace_back(index, get(index));
+    numbered_[static_cast<std::size_t>(index)] = value;
+  }
+
+  // Every write of a numbered parameter from now on is appended to
+  // `journal` as (index, value before), so a refused block's writes can be
+  // put back (Interpreter::roll_back); nullptr stops the recording.
+  void record_writes(std::vector<std::pair<int, double>>* journal) { journal_ = journal; }
 
   // Locals first (innermost call), then globals; nullopt when not defined.
   std::optional<double> named(std::string_view name) const;
@@ -42,6 +50,7 @@ class Parameters {
   Scope globals_;
   std::vector<Scope> locals_{Scope{}};
   std::vector<std::array<double, 30>> saved_locals_;
+  std::vector<std::pair<int, double>>* journal_ = nullptr;
 };
 
 }  // namespace usina::gcode

@@ -122,6 +122,19 @@ DXF = {
 DXF_SIZES = {"value": 200_000, "comment": 100_000, "lines": 1_000_000, "lwpolyline": 1_000_000,
              "splines": 1_000_000, "hatch": 1_000_000}
 
+# --- remote requests: a punch's rows, the first byte picks code and block end --
+
+REQUEST = {
+    # A request whose comment holds 200 KB of KEY=VALUE pairs.
+    "comment": lambda n: "\x00%\nO9999\n(" + repeat_to("PRG=A ", n) + ")\n%",
+    # A punch of 1 MB: moves, one a block, with DC codes and a leader.
+    "program": lambda n: moves(n, "G1 X%d Y%d F600\n", "\x00\x12" + "\x00" * 50 + "%\nO1\n")
+    + "%\x14",
+    # A label of 100 KB on the leader, before the first `%`.
+    "label": lambda n: "\x00" + repeat_to("LABEL ", n) + "%\nO9999\n(PRG=1)\n%",
+}
+REQUEST_SIZES = {"comment": 200_000, "program": 1_000_000, "label": 100_000}
+
 TARGETS = {
     "parser": (ngc_families(), SIZES, "ngc"),
     "interpreter": (ngc_families(), SIZES, "ngc"),
@@ -129,6 +142,7 @@ TARGETS = {
     "fanuc": (fanuc_families(), SIZES, "nc"),
     "grbl": (ngc_families(), SIZES, "gcode"),
     "dxf": (DXF, DXF_SIZES, "dxf"),
+    "remote_request": (REQUEST, REQUEST_SIZES, "tape"),
 }
 
 

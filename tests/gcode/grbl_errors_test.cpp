@@ -249,8 +249,11 @@ TEST(GrblLines, StripLikeGrblsLineReader) {
   EXPECT_EQ(s.text, "G1X10Y2");
   EXPECT_EQ(s.cols.front(), 1u);
   EXPECT_EQ(s.cols.back(), 18u);
-  EXPECT_EQ(s.blanked.size(), std::string("g1 x 1 0 (cmt) /y2 ; rest").size());
-  EXPECT_EQ(s.blanked.substr(0, 8), "G1 X 1 0");
+  std::string blanked;
+  grbl::blanked_line("g1 x 1 0 (cmt) /y2 ; rest", s, blanked);
+  EXPECT_EQ(blanked, "G1 X 1 0        Y2       ");
+  EXPECT_FALSE(s.verbatim);
+  EXPECT_TRUE(grbl::strip_line("G1 X1  Y2").verbatim);
   EXPECT_EQ(grbl::strip_line("(unclosed G1 X1").text, "");
   EXPECT_EQ(grbl::strip_line("G0 X1 (a;b) Y2").text, "G0X1Y2");
   EXPECT_EQ(grbl::strip_line("G0 X1 (\xC3\xA9t\xC3\xA9)").text, "G0X1");

@@ -2,6 +2,8 @@
 // line that are not G-code: a control character such as NUL is dropped like
 // a blank (reported), CR ends a line as LF does.
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +14,14 @@ namespace usina::gcode {
 namespace {
 
 using testing::run_grbl;
+
+// The lines of `text` as the runner reads them, one after the other.
+std::vector<grbl::LineSpan> lines_of(std::string_view text) {
+  std::vector<grbl::LineSpan> out;
+  for (std::uint64_t at = 0; at < text.size(); at = out.back().next)
+    out.push_back(grbl::read_line(text, at));
+  return out;
+}
 
 TEST(GrblText, NulInsideALineIsDroppedAsGrblDoesAndReported) {
   const auto r =
@@ -58,8 +68,8 @@ TEST(GrblText, CrLfIsOneLineEnd) {
   EXPECT_EQ(r->errors()[0].first, 2u);
 }
 
-TEST(GrblText, SplitLinesAtLfCrAndCrLf) {
-  const auto lines = grbl::split_lines("a\rbb\r\nc\n\nd");
+TEST(GrblText, LinesEndAtLfCrAndCrLf) {
+  const auto lines = lines_of("a\rbb\r\nc\n\nd");
   ASSERT_EQ(lines.size(), 5u);
   EXPECT_EQ(lines[0].offset, 0u);
   EXPECT_EQ(lines[0].length, 1u);
@@ -83,7 +93,7 @@ TEST(GrblText, CrCrLfIsOneLineEnd) {
   const auto r = run_grbl("G0 X1\r\r\nG5 X2\r\r\nM30\r\r\n");
   ASSERT_EQ(r->errors().size(), 1u);
   EXPECT_EQ(r->errors()[0].first, 2u);
-  const auto lines = grbl::split_lines("a\r\r\nb\r\rc");
+  const auto lines = lines_of("a\r\r\nb\r\rc");
   ASSERT_EQ(lines.size(), 4u);  // a, b, the blank between two lone CRs, c
   EXPECT_EQ(lines[1].offset, 4u);
   EXPECT_EQ(lines[3].offset, 7u);

@@ -116,7 +116,9 @@ TEST(ValueRange, HugeToolLengthFromTheTableIsAnErrorAtH) {
 }
 
 TEST(ValueRange, OffsetsInParametersStopAtTheMove) {
-  rs274("#5221=[10**300]\nG54 G0 X1\nM2\n", 2, 0);
+  // G55, not the G54 in use: re-selecting the system in use keeps its
+  // offsets, as LinuxCNC's convert_coordinate_system.
+  rs274("#5241=[10**300]\nG55 G0 X1\nM2\n", 2, 0);
 }
 
 TEST(ValueRange, ArcTooFlatToTellFromAFullCircleIsAnError) {

@@ -1,10 +1,10 @@
 // The grbl dialect (Grbl 1.1, docs/grbl.md): its table and options, and the
-// runner. The runner checks every line as Grbl would (grbl_lines.cpp,
-// grbl_check.cpp, grbl_system.cpp), then runs the accepted lines through the
-// RS274NGC interpreter in a copy of the program whose refused and `$` lines
-// are blank (same line numbers). Grbl reports an error and reads the next
-// line; the interpreter stops at its first error, so a line it refuses is
-// blanked too and the copy is run again (grbl_runner.cpp).
+// runner. The runner reads the program once, line by line, as Grbl reads a
+// stream: each line is checked as Grbl would (grbl_lines.cpp,
+// grbl_check.cpp, grbl_system.cpp, grbl_reader.cpp), run by the RS274NGC
+// interpreter, and its moves checked from the position
+// (grbl_machine_check.cpp). Grbl reports an error and reads the next line;
+// so does the runner, the refused line changing nothing (grbl_runner.cpp).
 #include "gcode/dialects/grbl_runner.hpp"
 
 namespace usina::gcode {

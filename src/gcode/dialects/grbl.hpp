@@ -4,10 +4,10 @@
 // the geometry is the shared one; these files only say what Grbl accepts.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,23 +42,35 @@ struct Failure {
 struct StrippedLine {
   std::string text;                 // what Grbl's parser sees
   std::vector<std::uint32_t> cols;  // 1-based column of each character of text
-  std::string blanked;              // the line with what Grbl drops turned to spaces
   std::uint32_t realtime_col = 0;   // first real-time character (? ~ ! ^X), 0 if none
   std::uint32_t control_col = 0;    // first control character outside comments (NUL...), 0 if none
   unsigned char control = 0;        // that character
+  // Nothing was dropped but blanks, nothing upper-cased: the line is its
+  // own blanked_line(), most lines of a program are.
+  bool verbatim = true;
 };
 
 StrippedLine strip_line(std::string_view line);
+// The same into `out`, whose buffers are reused: nothing is allocated a line
+// once they are as long as the longest line.
+void strip_line(std::string_view line, StrippedLine& out);
 
-// Where a program's lines start: Grbl ends a line at LF or CR
-// (protocol_main_loop), so CR LF, LF and CR alone each end one; the
-// offsets of the lines' first bytes, and of each line's end.
+// `line` with what Grbl drops turned to blanks and its letters upper-cased,
+// into `out`: the columns stay the user's (what the interpreter is given).
+void blanked_line(std::string_view line, const StrippedLine& s, std::string& out);
+
+// A line of a program: Grbl ends a line at LF or CR (protocol_main_loop),
+// so CR LF, LF and CR alone each end one. The offset of its first byte, its
+// length without the line end, and where the next line starts.
 struct LineSpan {
   std::uint64_t offset = 0;
   std::size_t length = 0;
+  std::uint64_t next = 0;
 };
 
-std::vector<LineSpan> split_lines(std::string_view text);
+// The line starting at `offset` (< text.size()); lines are read one at a
+// time, so no table of them is kept whatever the program's length.
+LineSpan read_line(std::string_view text, std::uint64_t offset);
 
 // Grbl's LINE_BUFFER_SIZE is 80 with the terminator.
 inline constexpr std::size_t kMaxLineLength = 79;
@@ -95,9 +107,29 @@ struct Accepted {
   bool sets_feed = false;
 };
 
+// The dialect's G and M codes by number: the checks look codes up on every
+// line, so a table, not a search of the dialect's list.
+class CodeIndex {
+ public:
+  explicit CodeIndex(const Dialect& d);
+  // A code of `letter` (G or M) has the integer part `integer`.
+  bool has_integer(char letter, int integer) const;
+  // The entry of `letter` and `tenths` (G38.2: 382), or nullptr.
+  const CodeEntry* find(char letter, int tenths) const;
+
+ private:
+  static constexpr int kTenths = 2560;  // integer parts 0-255, as Grbl reads codes
+
+  static int at(char letter, int tenths) { return (letter == 'M' ? kTenths : 0) + tenths; }
+
+  const std::vector<CodeEntry>* codes_;
+  std::array<std::int16_t, 2 * kTenths> entry_;       // index in codes_, -1: none
+  std::array<bool, 2 * kTenths / 10> has_integer_{};  // by at(letter, integer * 10) / 10
+};
+
 // Grbl's checks of one G-code block (gc_execute_line steps 1–3); on success
 // `state` is what it is after the block.
-std::optional<Failure> check_block(const Dialect& d, const OptionValues& options,
+std::optional<Failure> check_block(const CodeIndex& codes, const OptionValues& options,
                                    const std::vector<Word>& words, Modal& state, Accepted& out);
 
 // Grbl's settings ($x=value) that usina reads; the others are recorded only.
@@ -120,21 +152,14 @@ struct Travel {
   bool operator==(const Travel&) const = default;
 };
 
-// Where a move's machine position comes from, line by line: what the
-// runner's soft-limit check needs (grbl_runner.cpp).
+// What the soft-limit check needs to know of the line whose moves it checks
+// (grbl_machine_check.cpp): the machine's travel, the G43.1 tool length,
+// and whether the line is a jog or a homing.
 struct MachineFacts {
-  struct From {
-    Travel travel;
-    double tool_length_mm = 0.0;
-    bool operator==(const From&) const = default;
-  };
-
-  std::map<std::uint32_t, From> changes;  // line → in force from that line on
-  std::set<std::uint32_t> jogs;           // $J= lines: error:15, not alarm 2
-  std::set<std::uint32_t> homing;         // $H lines: not checked (Grbl's homing is not)
-
-  void record(std::uint32_t line, const From& now);
-  const From* at(std::uint32_t line) const;
+  Travel travel;
+  double tool_length_mm = 0.0;
+  bool jog = false;     // $J=: a move beyond the travel is error:15, not alarm 2
+  bool homing = false;  // $H: not checked (Grbl's homing is not)
 };
 
 // A `$` line. `interp_line` receives what the interpreter runs in its place
@@ -149,8 +174,8 @@ struct SystemResult {
   std::vector<std::string> warnings;
 };
 
-SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
-                            const std::vector<std::uint32_t>& cols, const Modal& state,
-                            Settings& settings);
+SystemResult system_command(const CodeIndex& codes, const OptionValues& options,
+                            std::string_view text, const std::vector<std::uint32_t>& cols,
+                            const Modal& state, Settings& settings);
 
 }  // namespace usina::gcode::grbl

@@ -2,7 +2,10 @@
 // docs/grbl.md): the words (step 1), then the block's commands (step 3). The
 // checks that need the position (arc geometry, probe targets) are the
 // interpreter's and the runner's (grbl.cpp).
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include <fmt/format.h>
 
@@ -13,14 +16,49 @@ namespace {
 
 enum class AxisCommand { None, NonModal, Motion, ToolLength };
 
+constexpr std::uint32_t letter_bit(char letter) {
+  return std::uint32_t{1} << (letter - 'A');
+}
+
+// A block's commands and values. Fixed arrays, not maps: a block is checked
+// for every line of the program, and nothing is allocated for it.
 struct BlockCodes {
-  std::map<int, int> by_group;  // group → code (tenths; M codes as letter 'M' groups ≥ 100)
+  // Grbl's G groups are 0-13, its M groups 104-108 (grbl.cpp's table).
+  static constexpr std::size_t slot(int group) {
+    return static_cast<std::size_t>(group < 100 ? group : group - 100 + 16);
+  }
+
+  std::array<int, 32> by_group;  // group → code (tenths), -1: none
   AxisCommand axis = AxisCommand::None;
-  std::map<char, Word> values;
+  std::uint32_t letters = 0;  // a bit a letter of the value words read
 
-  bool has(int group) const { return by_group.count(group) > 0; }
+  BlockCodes() { by_group.fill(-1); }
 
-  int code(int group) const { return by_group.at(group); }
+  bool has(int group) const { return by_group[slot(group)] >= 0; }
+
+  int code(int group) const { return by_group[slot(group)]; }
+
+  void set_code(int group, int code) { by_group[slot(group)] = code; }
+
+  bool has_value(char l) const { return (letters & letter_bit(l)) != 0; }
+
+  // A value word read (has_value(l)).
+  Word value(char l) const {
+    const auto i = static_cast<std::size_t>(l - 'A');
+    return {l, values[i], cols[i]};
+  }
+
+  void set_value(const Word& w) {
+    const auto i = static_cast<std::size_t>(w.letter - 'A');
+    values[i] = w.value;
+    cols[i] = w.col;
+    letters |= letter_bit(w.letter);
+  }
+
+ private:
+  // Read only where `letters` has the bit: not cleared for every block.
+  std::array<double, 26> values;
+  std::array<std::uint32_t, 26> cols;
 };
 
 constexpr int kNonModal = 0, kMotion = 1, kPlane = 2, kDistance = 3, kFeedMode = 5, kUnits = 6,
@@ -32,17 +70,11 @@ bool fraction_family(int g) {
   return g == 28 || g == 30 || g == 38 || g == 43 || g == 61 || g == 90 || g == 91 || g == 92;
 }
 
-bool has_integer_part(const Dialect& d, char letter, int integer) {
-  for (const CodeEntry& e : d.codes)
-    if (e.letter == letter && e.code / 10 == integer) return true;
-  return false;
-}
-
 std::string code_name(char letter, double value) {
   return fmt::format("{}{}", letter, value);
 }
 
-std::optional<Failure> read_code(const Dialect& d, const OptionValues& options, const Word& w,
+std::optional<Failure> read_code(const CodeIndex& codes, const OptionValues& options, const Word& w,
                                  BlockCodes& b) {
   const double integer = std::trunc(w.value);
   if (integer < 0 || integer > 255) {
@@ -53,7 +85,7 @@ std::optional<Failure> read_code(const Dialect& d, const OptionValues& options, 
   if (w.letter == 'M' && mantissa > 0) {
     return Failure{23, w.col, code_name('M', w.value) + ": M codes take no fraction"};
   }
-  if (!has_integer_part(d, w.letter, iv) ||
+  if (!codes.has_integer(w.letter, iv) ||
       (w.letter == 'M' && iv == 7 && options.count("grbl_m7") && options.at("grbl_m7") == "off")) {
     return Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"};
   }
@@ -71,8 +103,7 @@ std::optional<Failure> read_code(const Dialect& d, const OptionValues& options, 
       b.axis = kind;
     }
   }
-  const CodeEntry* e =
-      mantissa % 10 == 0 ? d.find_code(w.letter, iv * 10 + mantissa / 10) : nullptr;
+  const CodeEntry* e = mantissa % 10 == 0 ? codes.find(w.letter, iv * 10 + mantissa / 10) : nullptr;
   if (e == nullptr) {
     if (w.letter == 'G' && fraction_family(iv)) {
       return Failure{20, w.col, code_name('G', w.value) + " is not a Grbl 1.1 command"};
@@ -80,13 +111,16 @@ std::optional<Failure> read_code(const Dialect& d, const OptionValues& options, 
     return Failure{23, w.col, code_name(w.letter, w.value) + " must be a whole number"};
   }
   const int group = e->group;
+  if (BlockCodes::slot(group) >= b.by_group.size()) {
+    return Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"};
+  }
   if (b.has(group)) {
     return Failure{21, w.col,
                    code_name(w.letter, w.value) +
                        " is in the modal group of another "
                        "command of the block"};
   }
-  b.by_group[group] = e->code;
+  b.set_code(group, e->code);
   return std::nullopt;
 }
 
@@ -101,31 +135,33 @@ std::optional<Failure> read_value(const Word& w, BlockCodes& b) {
   if (w.letter == 'T' && w.value > 255) {
     return Failure{38, w.col, fmt::format("T{} is above Grbl's largest tool number 255", w.value)};
   }
-  if (b.values.count(w.letter)) {
+  if (b.has_value(w.letter)) {
     return Failure{25, w.col, fmt::format("{} word appears twice in the block", w.letter)};
   }
   if (std::string_view("FNPTS").find(w.letter) != std::string_view::npos && w.value < 0) {
     return Failure{4, w.col, fmt::format("{}{} must not be negative", w.letter, w.value)};
   }
-  b.values[w.letter] = w;
+  b.set_value(w);
   return std::nullopt;
 }
 
 struct Step3 {
   const BlockCodes& b;
   Modal next;
-  std::map<char, Word> unused;
-  std::uint32_t col0;  // column of the block's first word
+  std::uint32_t unused;  // letters of the value words no command has used yet
+  std::uint32_t col0;    // column of the block's first word
 
-  bool has(char l) const { return b.values.count(l) > 0; }
+  bool has(char l) const { return b.has_value(l); }
 
-  double get(char l) const { return b.values.at(l).value; }
+  double get(char l) const { return b.value(l).value; }
 
-  std::uint32_t col(char l) const { return has(l) ? b.values.at(l).col : col0; }
+  std::uint32_t col(char l) const { return has(l) ? b.value(l).col : col0; }
 
   std::uint32_t code_col() const { return col0; }
 
   bool axis_words() const { return has('X') || has('Y') || has('Z'); }
+
+  void use(char l) { unused &= ~letter_bit(l); }
 };
 
 // In-plane axis and offset letters.
@@ -155,7 +191,7 @@ std::optional<Failure> feed_rate(Step3& s) {
     s.next.feed_mm = 0.0;  // leaving G93: the feed rate is undefined again
   }
   s.next.inverse_time = inverse;
-  s.unused.erase('F');
+  s.use('F');
   return std::nullopt;
 }
 
@@ -164,7 +200,7 @@ std::optional<Failure> non_modal(Step3& s) {
   const int g = s.b.code(kNonModal);
   if (g == 40) {
     if (!s.has('P')) return Failure{28, s.code_col(), "G4 needs P (seconds)"};
-    s.unused.erase('P');
+    s.use('P');
   } else if (g == 100) {
     if (!s.axis_words()) return Failure{26, s.code_col(), "G10 needs axis words"};
     if (!s.has('P') && !s.has('L')) return Failure{28, s.code_col(), "G10 needs L and P"};
@@ -176,8 +212,8 @@ std::optional<Failure> non_modal(Step3& s) {
           20, s.col('L'),
           s.has('R') && l == 2 ? "G10 L2 takes no R (no rotation)" : "G10 takes L2 or L20"};
     }
-    s.unused.erase('P');
-    s.unused.erase('L');
+    s.use('P');
+    s.use('L');
   } else if (g == 530) {
     const int motion = s.b.has(kMotion) ? s.b.code(kMotion) : s.next.motion;
     if (motion != 0 && motion != 10) {
@@ -200,7 +236,7 @@ std::optional<Failure> arc(Step3& s) {
                    fmt::format("G2/G3 needs {} or {}, an axis word in the plane", a0, a1)};
   }
   if (s.has('R')) {
-    s.unused.erase('R');
+    s.use('R');
     return std::nullopt;
   }
   const auto [o0, o1] = plane_offsets(s.next.plane);
@@ -208,9 +244,9 @@ std::optional<Failure> arc(Step3& s) {
     return Failure{35, s.code_col(),
                    fmt::format("G2/G3 needs R, or {} or {} for the centre", o0, o1)};
   }
-  s.unused.erase('I');
-  s.unused.erase('J');
-  s.unused.erase('K');
+  s.use('I');
+  s.use('J');
+  s.use('K');
   return std::nullopt;
 }
 
@@ -233,7 +269,7 @@ std::optional<Failure> motion(Step3& s) {
 }
 
 std::optional<Failure> step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
-  Step3 s{b, state, b.values, col0};
+  Step3 s{b, state, b.letters, col0};
   if (s.has('N') && s.get('N') > 10'000'000) {
     return Failure{27, s.col('N'), "line number above 10,000,000"};
   }
@@ -254,9 +290,10 @@ std::optional<Failure> step3(const BlockCodes& b, std::uint32_t col0, Modal& sta
   if (auto f = non_modal(s)) return f;
   if (auto f = motion(s)) return f;
   for (char l : std::string_view("NFSTXYZ"))
-    s.unused.erase(l);
-  if (!s.unused.empty()) {
-    const Word& w = s.unused.begin()->second;
+    s.use(l);
+  if (s.unused != 0) {
+    // The first in the alphabet, as Grbl's check of its value words.
+    const Word w = b.value(static_cast<char>('A' + std::countr_zero(s.unused)));
     return Failure{36, w.col,
                    fmt::format("{} word is not used by any command of the block", w.letter)};
   }
@@ -266,16 +303,38 @@ std::optional<Failure> step3(const BlockCodes& b, std::uint32_t col0, Modal& sta
 
 }  // namespace
 
-std::optional<Failure> check_block(const Dialect& d, const OptionValues& options,
+CodeIndex::CodeIndex(const Dialect& d) : codes_(&d.codes) {
+  entry_.fill(-1);
+  for (std::size_t i = 0; i < d.codes.size(); ++i) {
+    const CodeEntry& e = d.codes[i];
+    if ((e.letter != 'G' && e.letter != 'M') || e.code < 0 || e.code >= kTenths) continue;
+    const auto slot = static_cast<std::size_t>(at(e.letter, e.code));
+    entry_[slot] = static_cast<std::int16_t>(i);
+    has_integer_[slot / 10] = true;
+  }
+}
+
+bool CodeIndex::has_integer(char letter, int integer) const {
+  if ((letter != 'G' && letter != 'M') || integer < 0 || integer * 10 >= kTenths) return false;
+  return has_integer_[static_cast<std::size_t>(at(letter, integer * 10) / 10)];
+}
+
+const CodeEntry* CodeIndex::find(char letter, int tenths) const {
+  if ((letter != 'G' && letter != 'M') || tenths < 0 || tenths >= kTenths) return nullptr;
+  const std::int16_t i = entry_[static_cast<std::size_t>(at(letter, tenths))];
+  return i < 0 ? nullptr : &(*codes_)[static_cast<std::size_t>(i)];
+}
+
+std::optional<Failure> check_block(const CodeIndex& codes, const OptionValues& options,
                                    const std::vector<Word>& words, Modal& state, Accepted& out) {
   out = {};
   BlockCodes b;
   for (const Word& w : words) {
-    auto f = (w.letter == 'G' || w.letter == 'M') ? read_code(d, options, w, b) : read_value(w, b);
+    auto f =
+        (w.letter == 'G' || w.letter == 'M') ? read_code(codes, options, w, b) : read_value(w, b);
     if (f) return f;
   }
-  if (b.axis == AxisCommand::None &&
-      (b.values.count('X') || b.values.count('Y') || b.values.count('Z')))
+  if (b.axis == AxisCommand::None && (b.has_value('X') || b.has_value('Y') || b.has_value('Z')))
     b.axis = AxisCommand::Motion;  // axis words alone move with the modal motion
   const std::uint32_t col0 = words.empty() ? 1 : words.front().col;
   if (auto f = step3(b, col0, state)) return f;
@@ -283,7 +342,7 @@ std::optional<Failure> check_block(const Dialect& d, const OptionValues& options
   out.uses_motion = b.axis == AxisCommand::Motion && !out.sets_motion;
   out.sets_distance = b.has(kDistance);
   out.sets_feed_mode = b.has(kFeedMode);
-  out.sets_feed = b.values.count('F') > 0;
+  out.sets_feed = b.has_value('F');
   out.program_end = b.has(kStop) && (b.code(kStop) == 20 || b.code(kStop) == 300);
   return std::nullopt;
 }

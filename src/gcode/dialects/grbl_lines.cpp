@@ -1,8 +1,11 @@
 // Grbl's line reader ([proto] of docs/grbl.md): what reaches the parser of a
 // line streamed to the firmware, and the words it is read into.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <string>
 
 #include "gcode/dialects/grbl.hpp"
 
@@ -15,16 +18,47 @@ bool is_realtime(unsigned char c) {
   return c == '?' || c == '~' || c == '!' || c == 0x18;
 }
 
+// A character Grbl keeps as it is outside comments (upper-cased): most of
+// a line, so the others are told apart once, by this table.
+constexpr std::array<bool, 256> kPlain = [] {
+  std::array<bool, 256> t{};
+  for (int c = '!'; c < 0x80; ++c)
+    t[static_cast<std::size_t>(c)] = true;
+  for (const unsigned char c : std::string_view("?~!/(;"))
+    t[c] = false;
+  return t;
+}();
+
 }  // namespace
 
 StrippedLine strip_line(std::string_view line) {
   StrippedLine out;
-  out.blanked.assign(line.size(), ' ');
+  strip_line(line, out);
+  return out;
+}
+
+void strip_line(std::string_view line, StrippedLine& out) {
+  out.text.resize(line.size());
+  out.cols.resize(line.size());
+  out.realtime_col = out.control_col = 0;
+  out.control = 0;
+  out.verbatim = true;
+  std::size_t kept = 0;
   bool in_parens = false;
   bool in_semicolon = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
     const auto c = static_cast<unsigned char>(line[i]);
     const auto col = static_cast<std::uint32_t>(i + 1);
+    if (kPlain[c] && !in_parens && !in_semicolon) {
+      const char up =
+          (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : static_cast<char>(c);
+      if (up != line[i]) out.verbatim = false;
+      out.text[kept] = up;
+      out.cols[kept] = col;
+      ++kept;
+      continue;
+    }
+    if (c != ' ') out.verbatim = false;
     if (is_realtime(c)) {
       if (out.realtime_col == 0) out.realtime_col = col;
       continue;
@@ -42,69 +76,110 @@ StrippedLine strip_line(std::string_view line) {
       out.control_col = col;
       out.control = c;
     }
-    if (c <= ' ' || c == '/') continue;
-    if (c == '(') {
-      in_parens = true;
-      continue;
-    }
-    if (c == ';') {
-      in_semicolon = true;
-      continue;
-    }
-    const char up =
-        (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : static_cast<char>(c);
-    out.text.push_back(up);
-    out.cols.push_back(col);
-    out.blanked[i] = up;
+    // What is left besides blanks and '/' is '(' or ';': the rest is plain.
+    if (c == '(') in_parens = true;
+    if (c == ';') in_semicolon = true;
   }
-  return out;
+  out.text.resize(kept);
+  out.cols.resize(kept);
 }
 
-std::vector<LineSpan> split_lines(std::string_view text) {
-  std::vector<LineSpan> out;
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
-    out.push_back({at, end - at});
-    at = end + 1;
-    // CR LF is one line end, and so is CR CR LF (a CR LF file converted
-    // once more): an editor shows one line there, and Grbl skips the blank.
-    std::size_t crs = end;
-    while (crs < text.size() && text[crs] == '\r')
-      ++crs;
-    if (crs > end && crs < text.size() && text[crs] == '\n') at = crs + 1;
+void blanked_line(std::string_view line, const StrippedLine& s, std::string& out) {
+  out.assign(line.size(), ' ');
+  for (std::size_t k = 0; k < s.text.size(); ++k)
+    out[s.cols[k] - 1] = s.text[k];
+}
+
+// Where the line starting at `at` ends: at the first LF or CR. Searched a
+// piece at a time, so a file of CR ends is not searched to its end for an
+// LF at every line.
+std::size_t line_end(std::string_view text, std::size_t at) {
+  constexpr std::size_t kPiece = 256;
+  for (std::size_t from = at; from < text.size(); from += kPiece) {
+    const char* p = text.data() + from;
+    const std::size_t length = std::min(kPiece, text.size() - from);
+    const auto* lf = static_cast<const char*>(std::memchr(p, '\n', length));
+    const std::size_t before_lf = lf != nullptr ? static_cast<std::size_t>(lf - p) : length;
+    const auto* cr = static_cast<const char*>(std::memchr(p, '\r', before_lf));
+    if (cr != nullptr) return from + static_cast<std::size_t>(cr - p);
+    if (lf != nullptr) return from + before_lf;
   }
+  return text.size();
+}
+
+LineSpan read_line(std::string_view text, std::uint64_t offset) {
+  const std::size_t at = static_cast<std::size_t>(offset);
+  const std::size_t end = line_end(text, at);
+  LineSpan out{offset, end - at, std::min<std::uint64_t>(end + 1, text.size())};
+  // CR LF is one line end, and so is CR CR LF (a CR LF file converted
+  // once more): an editor shows one line there, and Grbl skips the blank.
+  std::size_t crs = end;
+  while (crs < text.size() && text[crs] == '\r')
+    ++crs;
+  if (crs > end && crs < text.size() && text[crs] == '\n') out.next = crs + 1;
   return out;
 }
 
 namespace {
 
+// Digits with at most one point as a finite number, by from_chars, which
+// takes no sign and is given a digit before the point. A number as long as
+// a line fits the buffer, so nothing is allocated.
+bool read_unsigned(std::string_view t, double& v) {
+  std::array<char, 512> buffer;
+  std::string longer;
+  const char* first = t.data();
+  std::size_t length = t.size();
+  if (t.front() == '.') {
+    if (t.size() < buffer.size()) {
+      buffer[0] = '0';
+      std::memcpy(buffer.data() + 1, t.data(), t.size());
+      first = buffer.data();
+    } else {
+      longer = "0";
+      longer += t;
+      first = longer.data();
+    }
+    ++length;
+  }
+  const auto r = std::from_chars(first, first + length, v);
+  return r.ec == std::errc{} && std::isfinite(v);
+}
+
 // Grbl's read_float: an optional sign, then digits with at most one point,
 // at least one digit. Returns the characters read, 0 when it is no number.
 std::size_t read_number(std::string_view s, double& value) {
+  // Clinger's fast path: at most 15 digits and 22 decimals make an exact
+  // integer and an exact power of ten, whose quotient is rounded once, so
+  // it is the correctly rounded value from_chars gives.
+  static constexpr std::array<double, 23> kPowers = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
   std::size_t i = 0;
   if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
-  std::size_t digits = 0;
+  const std::size_t start = i;
+  std::uint64_t digits = 0;
+  std::size_t count = 0;
+  std::size_t decimals = 0;
   bool point = false;
-  while (i < s.size()) {
+  for (; i < s.size(); ++i) {
     if (s[i] >= '0' && s[i] <= '9') {
-      ++digits;
+      if (++count <= 15) digits = digits * 10 + static_cast<std::uint64_t>(s[i] - '0');
+      if (point) ++decimals;
     } else if (s[i] == '.' && !point) {
       point = true;
     } else {
       break;
     }
-    ++i;
   }
-  if (digits == 0) return 0;
-  // from_chars takes no sign and wants a digit before the point.
-  const bool negative = s[0] == '-';
-  const std::size_t first = (s[0] == '-' || s[0] == '+') ? 1 : 0;
-  std::string text = s[first] == '.' ? std::string("0") : std::string();
-  text.append(s.substr(first, i - first));
+  if (count == 0) return 0;
   double v = 0.0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc{} || !std::isfinite(v)) return 0;
-  value = negative ? -v : v;
+  if (count <= 15) {
+    v = static_cast<double>(digits) / kPowers[decimals];
+  } else if (!read_unsigned(s.substr(start, i - start), v)) {
+    return 0;
+  }
+  value = s[0] == '-' ? -v : v;
   return i;
 }
 

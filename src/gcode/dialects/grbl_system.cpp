@@ -3,7 +3,6 @@
 // interpreter, anything else is error:3.
 #include <charconv>
 #include <cmath>
-#include <iterator>
 #include <set>
 #include <string>
 
@@ -75,7 +74,9 @@ std::optional<Failure> setting(std::string_view text, std::uint32_t col, Setting
   }
   std::vector<Word> words;
   // The value is read as Grbl's read_float does: an 'X' stands in for a letter.
-  std::string as_word = "X" + std::string(text.substr(eq + 1));
+  // (Appended, not "X" + string: GCC 12 at -O3 warns wrongly of an overlap.)
+  std::string as_word = "X";
+  as_word += text.substr(eq + 1);
   std::vector<std::uint32_t> cols(as_word.size(), col);
   if (read_words(as_word, cols, words) || words.size() != 1) {
     return Failure{2, col, fmt::format("${}= needs a number", n)};
@@ -203,7 +204,7 @@ SystemResult restore(std::string_view what, std::uint32_t col, Settings& setting
 // A start-up block ($Nx=): stored, not run. Grbl checks its length against
 // the EEPROM line (80 bytes with the terminator) before the block itself;
 // with the default 80-byte line buffer a line cannot be that long.
-std::optional<Failure> startup_line(const Dialect& d, const OptionValues& options,
+std::optional<Failure> startup_line(const CodeIndex& codes, const OptionValues& options,
                                     std::string_view text, const std::vector<std::uint32_t>& cols,
                                     const Modal& state) {
   constexpr std::size_t kEepromLine = 80;
@@ -217,7 +218,7 @@ std::optional<Failure> startup_line(const Dialect& d, const OptionValues& option
   if (auto f = read_words(text.substr(4), body_cols, words)) return f;
   Modal copy = state;
   Accepted ignored;
-  return check_block(d, options, words, copy, ignored);
+  return check_block(codes, options, words, copy, ignored);
 }
 
 bool is_report(std::string_view t) {
@@ -247,19 +248,9 @@ int Travel::beyond(const core::Vec3& machine) const {
   return -1;
 }
 
-void MachineFacts::record(std::uint32_t line, const From& now) {
-  const From* before = at(line);
-  if (before == nullptr || !(*before == now)) changes[line] = now;
-}
-
-const MachineFacts::From* MachineFacts::at(std::uint32_t line) const {
-  auto it = changes.upper_bound(line);
-  return it == changes.begin() ? nullptr : &std::prev(it)->second;
-}
-
-SystemResult system_command(const Dialect& d, const OptionValues& options, std::string_view text,
-                            const std::vector<std::uint32_t>& cols, const Modal& state,
-                            Settings& settings) {
+SystemResult system_command(const CodeIndex& codes, const OptionValues& options,
+                            std::string_view text, const std::vector<std::uint32_t>& cols,
+                            const Modal& state, Settings& settings) {
   SystemResult r;
   const std::uint32_t col = cols.front();
   if (is_report(text)) return r;
@@ -275,7 +266,7 @@ SystemResult system_command(const Dialect& d, const OptionValues& options, std::
   // $Nx=), nothing to run.
   if (text.substr(0, 3) == "$I=") return r;
   if (text.size() >= 4 && text[1] == 'N' && (text[2] == '0' || text[2] == '1') && text[3] == '=') {
-    r.failure = startup_line(d, options, text, cols, state);
+    r.failure = startup_line(codes, options, text, cols, state);
     return r;
   }
   if (text.size() >= 2 && text[1] >= '0' && text[1] <= '9' &&

@@ -1,14 +1,14 @@
 // The romi dialect (ROMI MACH / Interact milling control of seed 000;
 // spec/romi.md): its lexical rules, its G/M table, the codes in force at
 // program start and its options. The handlers named here are the romi
-// engine's (romi_engine.hpp).
+// executor's (romi_exec.hpp); code_table() resolves them once.
 #include "gcode/dialects/romi_engine.hpp"
 
 namespace usina::gcode {
 namespace {
 
-// Groups in the order they run within a block: below kMoveGroup before the
-// block's move, the rest after it (romi_engine.cpp).
+// Groups in the order they run within a block: below romi::kAfterMoveGroup
+// before the block's move, the rest after it (romi_exec.cpp).
 enum Group : int {
   ToolChange = 1,
   Spindle = 2,
@@ -27,12 +27,15 @@ enum Group : int {
   Stop = 90,
 };
 
+static_assert(Motion < romi::kAfterMoveGroup && Pattern < romi::kAfterMoveGroup &&
+              Stop >= romi::kAfterMoveGroup);
+
 std::unique_ptr<ProgramRunner> make(RunContext context);
 
 }  // namespace
 
 const Dialect& romi_dialect() {
-  static const Dialect d{
+  static const Dialect kDialect{
       "romi",
       "ROMI MACH / Interact milling control (seed 000): '#' or newline ends a block, ';' "
       "comments, lower-case axis words incremental, polar moves and arcs, G24/G25/G26/G81 "
@@ -102,15 +105,20 @@ const Dialect& romi_dialect() {
            "the spindle), or always the tool in the spindle"},
       },
       &make};
-  return d;
+  return kDialect;
 }
 
 namespace {
 
 std::unique_ptr<ProgramRunner> make(RunContext context) {
-  return std::make_unique<romi::Engine>(romi_dialect(), std::move(context));
+  return std::make_unique<romi::Engine>(romi_dialect(), romi::code_table(), std::move(context));
 }
 
 }  // namespace
+
+const romi::CodeTable& romi::code_table() {
+  static const CodeTable kTable(romi_dialect(), &Executor::handler_named, kAfterMoveGroup);
+  return kTable;
+}
 
 }  // namespace usina::gcode

@@ -48,14 +48,6 @@ void Engine::build_index() {
   }
 }
 
-bool Engine::count_jump() {
-  if (++jumps_ <= options_.max_total_iterations) return true;
-  return error(core::Code::TooManyIterations, 0,
-               fmt::format("the program's backward jumps, calls and pattern points came to more "
-                           "than {}; raise the limit with --max-total-iterations",
-                           options_.max_total_iterations));
-}
-
 bool Engine::jump_to_block(double n, std::uint32_t col) {
   if (!numbers_) build_index();
   auto it = numbers_->find(key(n));
@@ -63,7 +55,7 @@ bool Engine::jump_to_block(double n, std::uint32_t col) {
     return error(core::Code::UnknownBlockNumber, col,
                  fmt::format("no block N{} in the program", key(n)));
   }
-  if (it->second.at.offset <= cursor_.offset && !count_jump()) return false;
+  if (it->second.at.offset <= cursor_.offset && !run_.count_jump()) return false;
   cursor_ = it->second.at;
   return true;
 }
@@ -91,71 +83,31 @@ bool Engine::statements(bool flow) {
   return true;
 }
 
-bool Engine::run_statement(const Statement& st) {
+// The value of a statement's expression; nullopt after reporting why not.
+std::optional<double> Engine::statement_value(ExprRef e) {
   EvalError err;
-  auto value = [&](ExprRef e) -> std::optional<double> {
-    auto v = gcode::evaluate(block_.base, e, *this, err);
-    if (!v) error(err.error.code, err.col, err.error.message);
-    return v;
-  };
+  auto v = gcode::evaluate(block_.base, e, *this, err);
+  if (!v) error(err.error.code, err.col, err.error.message);
+  return v;
+}
+
+bool Engine::run_statement(const Statement& st) {
   switch (st.kind) {
   case StmtKind::Assign: {
-    auto v = value(st.expr);
+    auto v = statement_value(st.expr);
     if (!v) return false;
     params_[static_cast<std::size_t>(st.param)] = *v;
     return true;
   }
   case StmtKind::IfGoto: {
-    auto v = value(st.expr);
+    auto v = statement_value(st.expr);
     if (!v) return false;
     return *v == 0.0 || jump_to_block(st.label, st.col);
   }
   case StmtKind::Goto: return jump_to_block(st.label, st.col);
-  case StmtKind::Repeat: {
-    double times = 1;
-    if (st.expr != kNoExpr) {
-      auto v = value(st.expr);
-      if (!v) return false;
-      times = std::round(*v);
-      if (!(times >= 0 && times <= 1e9)) {
-        return error(core::Code::BadWordValue, st.col,
-                     fmt::format("RPT count {} is not 0 or more", *v));
-      }
-    }
-    if (times < 1) return true;
-    if (frames_.size() >= static_cast<std::size_t>(options_.max_call_depth)) {
-      return error(core::Code::RecursionTooDeep, st.col, "RPT and CALL nested too deep");
-    }
-    frames_.push_back({false, cursor_, st.label, st.label_end, static_cast<long>(times)});
-    return jump_to_block(st.label, st.col);
-  }
-  case StmtKind::Call: {
-    if (!numbers_) build_index();
-    auto it = subs_.find(key(st.label));
-    if (it == subs_.end()) {
-      return error(
-          core::Code::UnknownBlockNumber, st.col,
-          fmt::format("CALL {}: no (SUB {}) in the program", key(st.label), key(st.label)));
-    }
-    if (frames_.size() >= static_cast<std::size_t>(options_.max_call_depth)) {
-      return error(core::Code::RecursionTooDeep, st.col, "RPT and CALL nested too deep");
-    }
-    if (!count_jump()) return false;
-    frames_.push_back({true, cursor_, 0, 0, 0});
-    cursor_ = it->second;
-    return true;
-  }
-  case StmtKind::Sub: {
-    // Met in the flow of the program: the subroutine's body is skipped.
-    if (!numbers_) build_index();
-    for (const std::uint64_t r : returns_) {
-      if (r > cursor_.offset) {
-        return skip_to(r);
-      }
-    }
-    return error(core::Code::UnclosedBlock, st.col,
-                 fmt::format("(SUB {}) has no (RET)", key(st.label)));
-  }
+  case StmtKind::Repeat: return repeat(st);
+  case StmtKind::Call: return call(st);
+  case StmtKind::Sub: return skip_sub(st);
   case StmtKind::Return:
     if (frames_.empty() || !frames_.back().call) {
       return error(core::Code::UnmatchedControl, st.col, "(RET) with no (CALL) to return to");
@@ -165,6 +117,52 @@ bool Engine::run_statement(const Statement& st) {
     return true;
   }
   return true;
+}
+
+// (RPT N<first>, N<last>[, n]): the section runs n more times (default 1).
+bool Engine::repeat(const Statement& st) {
+  double times = 1;
+  if (st.expr != kNoExpr) {
+    auto v = statement_value(st.expr);
+    if (!v) return false;
+    times = std::round(*v);
+    if (!(times >= 0 && times <= 1e9)) {
+      return error(core::Code::BadWordValue, st.col,
+                   fmt::format("RPT count {} is not 0 or more", *v));
+    }
+  }
+  if (times < 1) return true;
+  if (frames_.size() >= static_cast<std::size_t>(options_.max_call_depth)) {
+    return error(core::Code::RecursionTooDeep, st.col, "RPT and CALL nested too deep");
+  }
+  frames_.push_back({false, cursor_, st.label, st.label_end, static_cast<long>(times)});
+  return jump_to_block(st.label, st.col);
+}
+
+bool Engine::call(const Statement& st) {
+  if (!numbers_) build_index();
+  auto it = subs_.find(key(st.label));
+  if (it == subs_.end()) {
+    return error(core::Code::UnknownBlockNumber, st.col,
+                 fmt::format("CALL {}: no (SUB {}) in the program", key(st.label), key(st.label)));
+  }
+  if (frames_.size() >= static_cast<std::size_t>(options_.max_call_depth)) {
+    return error(core::Code::RecursionTooDeep, st.col, "RPT and CALL nested too deep");
+  }
+  if (!run_.count_jump()) return false;
+  frames_.push_back({true, cursor_, 0, 0, 0});
+  cursor_ = it->second;
+  return true;
+}
+
+// (SUB n) met in the flow of the program: the subroutine's body is skipped.
+bool Engine::skip_sub(const Statement& st) {
+  if (!numbers_) build_index();
+  for (const std::uint64_t r : returns_) {
+    if (r > cursor_.offset) return skip_to(r);
+  }
+  return error(core::Code::UnclosedBlock, st.col,
+               fmt::format("(SUB {}) has no (RET)", key(st.label)));
 }
 
 // Moves the cursor forward to `offset`, counting the lines passed.

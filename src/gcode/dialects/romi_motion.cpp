@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "gcode/dialects/romi_engine.hpp"
+#include "gcode/dialects/romi_exec.hpp"
 
 namespace usina::gcode::romi {
 namespace {
@@ -38,7 +38,7 @@ double positive_sweep(double a) {
 
 }  // namespace
 
-Vec3 Engine::cartesian_end(const Vec3& start) const {
+Vec3 Executor::cartesian_end(const Vec3& start) const {
   Vec3 end = start;
   for (int a = 0; a < 3; ++a) {
     const char letter = "XYZ"[a];
@@ -50,7 +50,7 @@ Vec3 Engine::cartesian_end(const Vec3& start) const {
 }
 
 // The end of a straight move (G00, G01, a drilling position) from `start`.
-std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
+std::optional<Vec3> Executor::line_end(const Vec3& start, Fail& fail) const {
   const bool polar_words = words_.has('R') || words_.has('A') || words_.has('C');
   if (!polar_words) {
     if (words_.has('I') || words_.has('J')) {
@@ -67,14 +67,23 @@ std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
             "polar words (R, A, C) and X/Y in one straight move: give the end point one way"};
     return std::nullopt;
   }
+  const auto q = polar_end(xy(start), fail);
+  if (!q) return std::nullopt;
   Vec3 end = cartesian_end(start);  // Z may accompany any form
-  const Vec2 p0 = xy(start);
+  end.x = q->x;
+  end.y = q->y;
+  return end;
+}
+
+// The end of a polar straight move from p0: R A, R C, R or C, about the
+// polar centre I J (program zero when absent).
+std::optional<Vec2> Executor::polar_end(Vec2 p0, Fail& fail) const {
   const Vec2 o{words_.has('I') ? mm(words_.get('I')) : 0.0,
                words_.has('J') ? mm(words_.get('J')) : 0.0};
   const Vec2 d{p0.x - o.x, p0.y - o.y};
   const double r0 = std::hypot(d.x, d.y);
   const double t0 = deg(std::atan2(d.y, d.x));
-  Vec2 q;
+  const double c = incremental('C') ? t0 + words_.get('C') : words_.get('C');
   if (words_.has('A')) {
     if (!words_.has('R') || words_.has('C')) {
       fail = {core::Code::MissingWord, words_.col('A'),
@@ -82,34 +91,26 @@ std::optional<Vec3> Engine::line_end(const Vec3& start, Fail& fail) const {
                               : "A (the direction of the move) needs R (its length)"};
       return std::nullopt;
     }
-    q = polar(p0, mm(words_.get('R')), words_.get('A'));
-  } else if (words_.has('R')) {
-    const double r = incremental('R') ? r0 + mm(words_.get('R')) : mm(words_.get('R'));
-    if (words_.has('C')) {
-      q = polar(o, r, incremental('C') ? t0 + words_.get('C') : words_.get('C'));
-    } else {
-      if (r0 < 1e-9) {
-        fail = {core::Code::BadWordValue, words_.col('R'),
-                "R alone moves along the line from the polar centre through the current point, "
-                "and the current point is the centre"};
-        return std::nullopt;
-      }
-      q = {o.x + r * d.x / r0, o.y + r * d.y / r0};
-    }
-  } else {
-    q = polar(o, r0, incremental('C') ? t0 + words_.get('C') : words_.get('C'));
+    return polar(p0, mm(words_.get('R')), words_.get('A'));
   }
-  end.x = q.x;
-  end.y = q.y;
-  return end;
+  if (!words_.has('R')) return polar(o, r0, c);
+  const double r = incremental('R') ? r0 + mm(words_.get('R')) : mm(words_.get('R'));
+  if (words_.has('C')) return polar(o, r, c);
+  if (r0 < 1e-9) {
+    fail = {core::Code::BadWordValue, words_.col('R'),
+            "R alone moves along the line from the polar centre through the current point, "
+            "and the current point is the centre"};
+    return std::nullopt;
+  }
+  return Vec2{o.x + r * d.x / r0, o.y + r * d.y / r0};
 }
 
-bool Engine::require_feed(const char* what) {
-  if (feed_ > 0.0) return true;
+bool Executor::require_feed(const char* what) {
+  if (work_.feed > 0.0) return true;
   return error(core::Code::NoFeedRate, 0, fmt::format("{} with no feed rate: give F", what));
 }
 
-bool Engine::move() {
+bool Executor::move() {
   if (moved_by_handler_) return true;
   words_.forget_taken();  // G81's R and Z, G31's X Y...: not a position
   bool position = false;
@@ -118,58 +119,58 @@ bool Engine::move() {
     words_.take(c);
     position = true;
   }
-  if (blend_) {
-    if (!position || motion_ > 1 || drill_.active) {
-      loc_ = blend_->loc;
+  if (work_.blend) {
+    if (!position || work_.motion > 1 || work_.drill.active) {
+      run_.at(work_.blend->loc);
       return error(core::Code::BlendNeedsMove, 0,
                    "an arc with only R blends into the next move, and the next block is not a "
                    "straight move");
     }
   }
   if (!position) return true;
-  if (drill_.active) {
-    if (motion_ > 1) {
+  if (work_.drill.active) {
+    if (work_.motion > 1) {
       return error(core::Code::NotAllowedInMode, 0,
                    "an arc while the drilling cycle G81 is on: G80 first");
     }
     Fail fail;
-    auto end = line_end(pos_, fail);
+    auto end = line_end(work_.pos, fail);
     if (!end) return error(fail);
     return drill_at(xy(*end));
   }
-  if (motion_ >= 2) return arc_block();
+  if (work_.motion >= 2) return arc_block();
   Fail fail;
-  auto end = line_end(pos_, fail);
+  auto end = line_end(work_.pos, fail);
   if (!end) return error(fail);
-  if (blend_) {
+  if (work_.blend) {
     // The end must not depend on where the blend arc ends.
-    Vec3 other = blend_->start;
+    Vec3 other = work_.blend->start;
     other.x += 1.0;
     other.y += 1.0;
     auto check = line_end(other, fail);
     if (!check || core::distance(xy(*check), xy(*end)) > 1e-9) {
-      loc_ = blend_->loc;
+      run_.at(work_.blend->loc);
       return error(core::Code::BlendNeedsMove, 0,
                    "an arc with only R blends into the next move, whose end point must not "
                    "depend on its start: give absolute X and Y");
     }
     if (!blend(*end)) return false;
   }
-  if (motion_ == 1 && !require_feed("G01")) return false;
-  return emit_line(*end, motion_ == 0);
+  if (work_.motion == 1 && !require_feed("G01")) return false;
+  return emit_line(*end, work_.motion == 0);
 }
 
-bool Engine::arc_block() {
-  if (!require_feed(motion_ == 2 ? "G02" : "G03")) return false;
+bool Executor::arc_block() {
+  if (!require_feed(work_.motion == 2 ? "G02" : "G03")) return false;
   if (words_.has('X') || words_.has('Y')) return arc_cartesian();
   return arc_polar();
 }
 
 // X Y I J (absolute centre) and X Y R (shorter arc; R < 0 the longer).
-bool Engine::arc_cartesian() {
-  const bool ccw = motion_ == 3;
-  const Vec2 p0 = xy(pos_);
-  const Vec3 end = cartesian_end(pos_);
+bool Executor::arc_cartesian() {
+  const bool ccw = work_.motion == 3;
+  const Vec2 p0 = xy(work_.pos);
+  const Vec3 end = cartesian_end(work_.pos);
   Vec2 center;
   if (words_.has('A') || words_.has('C')) {
     return error(core::Code::PolarWithXy, words_.col(words_.has('A') ? 'A' : 'C'),
@@ -211,67 +212,75 @@ bool Engine::arc_cartesian() {
 }
 
 // The polar forms: C I J, C, R C, R A, R A C, and R alone (a blend).
-bool Engine::arc_polar() {
-  const bool ccw = motion_ == 3;
-  const Vec2 p0 = xy(pos_);
-  Vec3 end = cartesian_end(pos_);
-  Vec2 center;
-  double sweep = 0.0;
-  if (words_.has('R')) {
-    const double r = mm(words_.get('R'));
-    if (!(r > 0.0))
-      return error(core::Code::BadWordValue, words_.col('R'), "arc radius must be positive");
-    double dir = 0.0;
-    if (words_.has('A') && words_.has('C')) {
-      dir = words_.get('A');
-    } else if (!direction_) {
-      return error(core::Code::NoTangentDirection, words_.col('R'),
-                   "a tangent arc with no previous move to be tangent to");
-    } else {
-      dir = *direction_;
-    }
-    const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
-                       : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
-    center = {p0.x + r * n.x, p0.y + r * n.y};
-    if (words_.has('C')) {
-      sweep = words_.get('C');
-    } else if (words_.has('A')) {
-      sweep = positive_sweep(ccw ? words_.get('A') - dir : dir - words_.get('A'));
-      if (sweep >= 360.0 - 1e-9) {
-        return error(core::Code::ArcZeroLength, words_.col('A'),
-                     "the arc would end in the direction it starts: A equals the direction "
-                     "of travel");
-      }
-    } else {
-      if (words_.has('I') || words_.has('J') || words_.has('Z')) {
-        return error(core::Code::UnusedWord, 0, "a blend arc (R alone) takes no I, J or Z");
-      }
-      blend_ = PendingBlend{loc_, center, r, ccw, pos_};
-      return true;
-    }
-  } else if (words_.has('C')) {
-    if (words_.has('A')) {
-      return error(core::Code::MissingWord, words_.col('A'), "A in an arc needs R");
-    }
-    center = {words_.has('I') ? mm(words_.get('I')) : 0.0,
-              words_.has('J') ? mm(words_.get('J')) : 0.0};
-    sweep = words_.get('C');
-  } else {
+bool Executor::arc_polar() {
+  const bool ccw = work_.motion == 3;
+  const Vec2 p0 = xy(work_.pos);
+  if (words_.has('R')) return tangent_arc(p0, ccw);
+  if (!words_.has('C')) {
     return error(core::Code::ArcMissingCenter, 0,
                  "an arc needs X Y with I J or R, or the polar words C, R C, R A, R A C or R");
   }
+  if (words_.has('A')) {
+    return error(core::Code::MissingWord, words_.col('A'), "A in an arc needs R");
+  }
+  const Vec2 center{words_.has('I') ? mm(words_.get('I')) : 0.0,
+                    words_.has('J') ? mm(words_.get('J')) : 0.0};
+  return swept_arc(p0, center, words_.get('C'), ccw);
+}
+
+// R C, R A, R A C and R alone: radius R, tangent at p0 to the direction of
+// travel (R A C: to A). R alone holds a blend arc for the next block.
+bool Executor::tangent_arc(Vec2 p0, bool ccw) {
+  const double r = mm(words_.get('R'));
+  if (!(r > 0.0)) {
+    return error(core::Code::BadWordValue, words_.col('R'), "arc radius must be positive");
+  }
+  double dir = 0.0;
+  if (words_.has('A') && words_.has('C')) {
+    dir = words_.get('A');
+  } else if (!work_.direction) {
+    return error(core::Code::NoTangentDirection, words_.col('R'),
+                 "a tangent arc with no previous move to be tangent to");
+  } else {
+    dir = *work_.direction;
+  }
+  const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
+                     : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
+  const Vec2 center{p0.x + r * n.x, p0.y + r * n.y};
+  if (words_.has('C')) return swept_arc(p0, center, words_.get('C'), ccw);
+  if (words_.has('A')) {
+    const double sweep = positive_sweep(ccw ? words_.get('A') - dir : dir - words_.get('A'));
+    if (sweep >= 360.0 - 1e-9) {
+      return error(core::Code::ArcZeroLength, words_.col('A'),
+                   "the arc would end in the direction it starts: A equals the direction "
+                   "of travel");
+    }
+    return swept_arc(p0, center, sweep, ccw);
+  }
+  if (words_.has('I') || words_.has('J') || words_.has('Z')) {
+    return error(core::Code::UnusedWord, 0, "a blend arc (R alone) takes no I, J or Z");
+  }
+  work_.blend = PendingBlend{run_.loc(), center, r, ccw, work_.pos};
+  return true;
+}
+
+// An arc from p0 about `center` through `sweep` degrees (more than 360:
+// whole turns and the rest) in the G02/G03 sense.
+bool Executor::swept_arc(Vec2 p0, Vec2 center, double sweep, bool ccw) {
   if (!(sweep > 0.0) || sweep > 360.0 * 1000) {
     return error(core::Code::BadWordValue, words_.col('C'),
                  "the sweep C must be positive (G02 or G03 gives the direction)");
   }
   const double r = core::distance(p0, center);
-  if (r < 1e-9)
+  if (r < 1e-9) {
     return error(core::Code::ArcZeroLength, 0, "arc of zero radius: the centre is the start point");
+  }
   const double a0 = deg(std::atan2(p0.y - center.y, p0.x - center.x));
   const double turns_exact = sweep / 360.0;
   const int turns = std::max(1, static_cast<int>(std::ceil(turns_exact - 1e-9)));
   const bool whole = std::fabs(turns_exact - std::round(turns_exact)) < 1e-9;
   const Vec2 q = whole ? p0 : polar(center, r, ccw ? a0 + sweep : a0 - sweep);
+  Vec3 end = cartesian_end(work_.pos);
   end.x = q.x;
   end.y = q.y;
   return emit_arc(end, center, ccw, turns);
@@ -279,13 +288,13 @@ bool Engine::arc_polar() {
 
 // The R-only arc held from the previous block, now that the next move's end
 // is known: it runs on to where its tangent passes through that end.
-bool Engine::blend(const Vec3& next_end) {
-  const PendingBlend b = *blend_;
-  blend_.reset();
+bool Executor::blend(const Vec3& next_end) {
+  const PendingBlend b = *work_.blend;
+  work_.blend.reset();
   const Vec2 q = xy(next_end);
   const double dq = core::distance(q, b.center);
   if (dq <= b.radius + 1e-9) {
-    loc_ = b.loc;
+    run_.at(b.loc);
     return error(core::Code::BlendNeedsMove, 0,
                  "the next move ends inside the blend arc's circle: no tangent reaches it");
   }
@@ -300,98 +309,50 @@ bool Engine::blend(const Vec3& next_end) {
         b.ccw ? Vec2{-std::sin(cand), std::cos(cand)} : Vec2{std::sin(cand), -std::cos(cand)};
     if ((q.x - tp.x) * dir.x + (q.y - tp.y) * dir.y > 0) t = cand;
   }
-  const core::SourceLoc here = loc_;
-  loc_ = b.loc;
-  machine_.set_source(loc_);
+  const core::SourceLoc here = run_.loc();
+  at(b.loc);
   const Vec3 end{b.center.x + b.radius * std::cos(t), b.center.y + b.radius * std::sin(t),
                  b.start.z};
   const bool ok = emit_arc(end, b.center, b.ccw, 1);
-  loc_ = here;
-  machine_.set_source(loc_);
+  at(here);
   return ok;
 }
 
-bool Engine::emit_line(const Vec3& end, bool rapid) {
-  const Vec3 m = tf_.apply(end);
-  if (comp_.active() || !comp_.arc_allowed()) {
-    if (auto e = comp_.straight(m, rapid, loc_, machine_)) return error(*e);
+bool Executor::emit_line(const Vec3& end, bool rapid) {
+  const Vec3 m = work_.tf.apply(end);
+  if (work_.comp.active() || !work_.comp.arc_allowed()) {
+    if (auto e = work_.comp.straight(m, rapid, run_.loc(), machine_)) return error(*e);
   } else if (rapid) {
     machine_.traverse(m);
   } else {
     machine_.feed(m);
   }
-  const Vec2 d{end.x - pos_.x, end.y - pos_.y};
-  if (std::hypot(d.x, d.y) > 1e-9) direction_ = deg(std::atan2(d.y, d.x));
-  pos_ = end;
+  const Vec2 d{end.x - work_.pos.x, end.y - work_.pos.y};
+  if (std::hypot(d.x, d.y) > 1e-9) work_.direction = deg(std::atan2(d.y, d.x));
+  work_.pos = end;
   return true;
 }
 
-bool Engine::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
-  if (!tf_.uniform()) {
+bool Executor::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
+  if (!work_.tf.uniform()) {
     return error(core::Code::UnequalScaleArc, 0,
                  fmt::format("an arc under G72 with unequal factors (X {}, Y {}): it would be "
                              "an ellipse",
-                             tf_.scale_x, tf_.scale_y));
+                             work_.tf.scale_x, work_.tf.scale_y));
   }
-  const Vec3 m = tf_.apply(end);
-  const Vec2 mc = tf_.apply(center);
-  const bool machine_ccw = ccw != tf_.flips();
+  const Vec3 m = work_.tf.apply(end);
+  const Vec2 mc = work_.tf.apply(center);
+  const bool machine_ccw = ccw != work_.tf.flips();
   const int turn = machine_ccw ? turns : -turns;
-  const Vec3 c3{mc.x, mc.y, machine_state_.pos[2]};
-  if (comp_.active() || !comp_.arc_allowed()) {
-    if (auto e = comp_.arc(m, c3, turn, loc_, machine_)) return error(*e);
+  const Vec3 c3{mc.x, mc.y, work_.machine.pos[2]};
+  if (work_.comp.active() || !work_.comp.arc_allowed()) {
+    if (auto e = work_.comp.arc(m, c3, turn, run_.loc(), machine_)) return error(*e);
   } else {
     machine_.arc(m, c3, turn);
   }
   const double ae = std::atan2(end.y - center.y, end.x - center.x);
-  direction_ = deg(ae) + (ccw ? 90.0 : -90.0);
-  pos_ = end;
-  return true;
-}
-
-bool Engine::h_mirror(int code) {
-  if (code == 300) {
-    tf_.mirror_x = tf_.mirror_y = false;
-    return true;
-  }
-  const auto x = words_.take('X');
-  const auto y = words_.take('Y');
-  if (!x && !y) return error(core::Code::MissingWord, 0, "G31 needs X and/or Y: the mirror line");
-  tf_.mirror_x = x.has_value();
-  tf_.mirror_y = y.has_value();
-  tf_.mirror_at = {x ? mm(*x) : 0.0, y ? mm(*y) : 0.0};
-  return true;
-}
-
-bool Engine::h_scale(int) {
-  const auto k = words_.take('K');
-  const auto x = words_.take('X');
-  const auto y = words_.take('Y');
-  if (!k && !x && !y) return error(core::Code::MissingWord, 0, "G72 needs K, or X and/or Y");
-  for (const char c : {'K', 'X', 'Y'}) {
-    if (!words_.has(c)) continue;
-    const double f = words_.get(c);
-    if (!(f >= 0.05 && f <= 20.0)) {
-      return error(core::Code::ScaleOutOfRange, words_.col(c),
-                   fmt::format("scale factor {}{} is outside 0.05 to 20", c, f));
-    }
-  }
-  if (k) {
-    tf_.scale_x = tf_.scale_y = *k;
-  } else {
-    tf_.scale_x = x ? *x : 1.0;
-    tf_.scale_y = y ? *y : 1.0;
-  }
-  return true;
-}
-
-bool Engine::h_rotate(int) {
-  const auto c = words_.take('C');
-  if (!c) return error(core::Code::MissingWord, 0, "G73 needs C: the angle (C0 cancels)");
-  const auto i = words_.take('I');
-  const auto j = words_.take('J');
-  tf_.rotation_deg = *c;
-  tf_.rotation_at = {i ? mm(*i) : 0.0, j ? mm(*j) : 0.0};
+  work_.direction = deg(ae) + (ccw ? 90.0 : -90.0);
+  work_.pos = end;
   return true;
 }
 

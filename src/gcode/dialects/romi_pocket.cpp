@@ -7,13 +7,13 @@
 
 #include <fmt/format.h>
 
-#include "gcode/dialects/romi_engine.hpp"
+#include "gcode/dialects/romi_exec.hpp"
 
 namespace usina::gcode::romi {
 
 // The pocket's words, and the sizes the checks and the cut share (each
 // measured from the pocket's centre, in mm).
-struct Engine::Pocket {
+struct Executor::Pocket {
   Vec3 start;      // the current point: one corner, and where the tool returns
   Vec2 corner;     // X Y, the opposite corner
   double z = 0.0;  // Z as written: only its size counts
@@ -41,7 +41,7 @@ struct Engine::Pocket {
   double rough_y() const { return wall_y() - ay; }
 };
 
-bool Engine::h_pocket(int) {
+bool Executor::h_pocket(int) {
   moved_by_handler_ = true;
   if (!pocket_allowed()) return false;
   Pocket p;
@@ -50,8 +50,8 @@ bool Engine::h_pocket(int) {
   return cut_pocket(p);
 }
 
-bool Engine::pocket_allowed() {
-  if (comp_.active()) {
+bool Executor::pocket_allowed() {
+  if (work_.comp.active()) {
     return error(core::Code::CompNotAllowed, 0,
                  "G26 with cutter radius compensation on: G40 first");
   }
@@ -60,20 +60,20 @@ bool Engine::pocket_allowed() {
                  "G26 needs X Y (the opposite corner) and Z (the depth)");
   }
   if (!require_feed("G26")) return false;
-  if (tool_diameter_ <= 0.0) {
+  if (work_.tool_diameter <= 0.0) {
     return error(core::Code::UnknownToolDiameter, 0,
                  "a pocket needs the tool's diameter: change the tool with T<n> M06 first");
   }
   return true;
 }
 
-bool Engine::read_pocket(Pocket& p) {
-  p.start = pos_;
+bool Executor::read_pocket(Pocket& p) {
+  p.start = work_.pos;
   p.corner = {incremental('X') ? p.start.x + mm(*words_.take('X')) : mm(*words_.take('X')),
               incremental('Y') ? p.start.y + mm(*words_.take('Y')) : mm(*words_.take('Y'))};
   p.z = *words_.take('Z');
   p.depth = std::fabs(mm(p.z));
-  p.tool_radius = tool_diameter_ / 2.0;
+  p.tool_radius = work_.tool_diameter / 2.0;
   p.radius = words_.has('R') ? mm(*words_.take('R')) : p.tool_radius;
   p.ax = words_.has('I') ? mm(*words_.take('I')) : 0.0;
   p.ay = words_.has('J') ? mm(*words_.take('J')) : 0.0;
@@ -91,7 +91,7 @@ bool Engine::read_pocket(Pocket& p) {
   return true;
 }
 
-bool Engine::check_pocket(const Pocket& p) {
+bool Executor::check_pocket(const Pocket& p) {
   const double rt = p.tool_radius;
   const double half_side = std::min(p.half_w(), p.half_h());
   if (p.radius < rt - 1e-9) {
@@ -106,17 +106,18 @@ bool Engine::check_pocket(const Pocket& p) {
   }
   if (p.wall_x() < 0 || p.wall_y() < 0 || p.rough_x() < 0 || p.rough_y() < 0 || p.ax < 0 ||
       p.ay < 0 || p.az < 0 || p.az > p.depth) {
-    return error(core::Code::PocketTooSmall, 0,
-                 fmt::format("a pocket {}×{} mm cannot be cut with a {} mm tool and allowances "
-                             "I{} J{} K{}",
-                             2 * p.half_w(), 2 * p.half_h(), tool_diameter_, p.ax, p.ay, p.az));
+    return error(
+        core::Code::PocketTooSmall, 0,
+        fmt::format("a pocket {}×{} mm cannot be cut with a {} mm tool and allowances "
+                    "I{} J{} K{}",
+                    2 * p.half_w(), 2 * p.half_h(), work_.tool_diameter, p.ax, p.ay, p.az));
   }
   if (p.z < 0) {
     note(
         core::Code::DepthSignIgnored, core::Severity::Note, 0,
         fmt::format("G26 depth Z{}: the pocket is {} mm deep (the sign is ignored)", p.z, p.depth));
   }
-  if (!tf_.uniform()) {
+  if (!work_.tf.uniform()) {
     return error(core::Code::UnequalScaleArc, 0,
                  "a pocket under G72 with unequal factors: its corners would be ellipses");
   }
@@ -124,10 +125,10 @@ bool Engine::check_pocket(const Pocket& p) {
 }
 
 // The feature: the pocket's own outline, after the transformation.
-void Engine::emit_pocket_outline(const Pocket& p) {
+void Executor::emit_pocket_outline(const Pocket& p) {
   canon::Outline outline = rounded_rectangle(p.centre(), p.half_w(), p.half_h(), p.radius);
   auto place = [&](Vec2 q) {
-    const Vec3 a = machine_.to_absolute({tf_.apply(q).x, tf_.apply(q).y, 0.0});
+    const Vec3 a = machine_.to_absolute({work_.tf.apply(q).x, work_.tf.apply(q).y, 0.0});
     return Vec2{a.x, a.y};
   };
   outline.start = place(outline.start);
@@ -135,7 +136,7 @@ void Engine::emit_pocket_outline(const Pocket& p) {
     s.to = place(s.to);
     if (s.center) {
       s.center = place(*s.center);
-      s.turn = tf_.flips() ? -1 : 1;
+      s.turn = work_.tf.flips() ? -1 : 1;
     }
   }
   machine_.emit(canon::Pocket{std::move(outline), p.depth});
@@ -144,7 +145,7 @@ void Engine::emit_pocket_outline(const Pocket& p) {
 // Plunges at the centre to each depth step and roughs in rings outwards,
 // leaving the allowances; then the floor and the wall at full depth, and
 // back to the start.
-bool Engine::cut_pocket(const Pocket& p) {
+bool Executor::cut_pocket(const Pocket& p) {
   CycleOrigin origin(machine_);
   const Vec2 c = p.centre();
   const Vec3 p0 = p.start;
@@ -155,19 +156,16 @@ bool Engine::cut_pocket(const Pocket& p) {
     const double zk = -rough * k / p.steps;
     if (!emit_line({c.x, c.y, zk}, false)) return false;
     for (int m = 1; m <= p.rings; ++m) {
-      if (!count_jump()) return false;
+      if (!run_.count_jump()) return false;
       const double s = static_cast<double>(m) / p.rings;
       if (!ring(c, p.rough_x() * s, p.rough_y() * s, corner, zk)) return false;
     }
     if (!emit_line({c.x, c.y, zk}, false)) return false;
   }
-  if ((p.az > 0 && !emit_line({c.x, c.y, -p.depth}, false)) ||
-      !ring(c, p.wall_x(), p.wall_y(), corner, -p.depth) ||
-      !emit_line({c.x, c.y, -p.depth}, false) || !emit_line({c.x, c.y, p0.z}, true) ||
-      !emit_line(p0, true)) {
-    return false;
-  }
-  return true;
+  return (p.az <= 0 || emit_line({c.x, c.y, -p.depth}, false)) &&
+         ring(c, p.wall_x(), p.wall_y(), corner, -p.depth) &&
+         emit_line({c.x, c.y, -p.depth}, false) && emit_line({c.x, c.y, p0.z}, true) &&
+         emit_line(p0, true);
 }
 
 }  // namespace usina::gcode::romi

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "gcode/program_text.hpp"
 #include "gcode/number_form.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode::romi {
 namespace {

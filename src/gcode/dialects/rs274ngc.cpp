@@ -7,9 +7,16 @@
 namespace usina::gcode {
 namespace {
 
+// What LinuxCNC does where the interpreter serves other controls otherwise.
+InterpOptions linuxcnc(InterpOptions o) {
+  o.reselect_reloads_work_offsets = false;
+  return o;
+}
+
 class Rs274Runner final : public ProgramRunner {
  public:
-  explicit Rs274Runner(RunContext& c) : interp_(c.sources, std::move(c.options), c.sink, c.diags) {}
+  explicit Rs274Runner(RunContext& c)
+      : interp_(c.sources, linuxcnc(std::move(c.options)), c.sink, c.diags) {}
 
   void set_parameter(int index, double value) override {
     interp_.set_parameter(index, value);

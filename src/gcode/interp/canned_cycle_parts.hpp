@@ -23,20 +23,29 @@ inline InterpError error(core::Code code, std::string message) {
   return {code, std::move(message)};
 }
 
-// LinuxCNC computes in program units; usina holds mm. mm / 25.4 can miss the
-// number LinuxCNC read by an ulp, and then a depth that is an exact multiple
-// of Q gets one peck more or less; 15 significant digits bring it back.
+// LinuxCNC computes in program units; usina holds mm (v = u * 25.4). v / 25.4
+// can miss the number LinuxCNC read by an ulp, and then a depth that is an
+// exact multiple of Q gets one peck more or less; 15 significant digits bring
+// it back. But a number the program computed (an R of [-7.192 + 7.57577])
+// has all 17 digits, whose last ones decide "above R or at R" for LinuxCNC:
+// the 15-digit number is taken only when it multiplies back to v, else a
+// double next to v / 25.4 that does (several may: any is on R's side).
 struct Units {
   double mm = 1.0;  // mm per program unit
 
   double in(double v) const {
     if (mm == 1.0) return v;
+    const double q = v / mm;
     std::array<char, 40> buf{};
     const auto res =
-        std::to_chars(buf.data(), buf.data() + buf.size(), v / mm, std::chars_format::general, 15);
-    double u = v / mm;
-    std::from_chars(buf.data(), res.ptr, u);
-    return u;
+        std::to_chars(buf.data(), buf.data() + buf.size(), q, std::chars_format::general, 15);
+    double rounded = q;
+    std::from_chars(buf.data(), res.ptr, rounded);
+    if (rounded * mm == v) return rounded;
+    for (const double c : {q, std::nextafter(q, -HUGE_VAL), std::nextafter(q, HUGE_VAL)}) {
+      if (c * mm == v) return c;
+    }
+    return rounded;
   }
 
   double out(double u) const { return u * mm; }

@@ -50,16 +50,16 @@ void CanonMachine::refuse(const std::string& why) {
   faulted_ = true;
   core::SourceLoc loc = src_;
   loc.length = 0;
-  diags_.report({core::Code::ValueOutOfRange, core::Severity::Error, loc,
-                 fmt::format("{} (usina's ranges: docs/rs274ngc.md, Numbers); check the values, "
-                             "increments, offsets and scale factors that lead here",
-                             why)});
+  diags_->report({core::Code::ValueOutOfRange, core::Severity::Error, loc,
+                  fmt::format("{} (usina's ranges: docs/rs274ngc.md, Numbers); check the values, "
+                              "increments, offsets and scale factors that lead here",
+                              why)});
 }
 
 void CanonMachine::emit(canon::OpKind kind) {
   if (faulted_) return;
   if (auto why = canon::out_of_range(kind)) return refuse(*why);
-  sink_.on(canon::Op{std::move(kind), src_, origin_});
+  sink_->on(canon::Op{std::move(kind), src_, origin_});
 }
 
 void CanonMachine::traverse_axes(const Axes& to) {
@@ -76,9 +76,9 @@ void CanonMachine::feed_axes(const Axes& to) {
   emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to), programmed_feed()});
 }
 
-void CanonMachine::probe_axes(const Axes& to) {
+void CanonMachine::probe_axes(const Axes& to, const Vec3& stop) {
   state_->pos = to;
-  last_ = to_absolute(xyz(to));
+  last_ = to_absolute(stop);  // what the canon reports after the probe (a tool change reads it)
   moved_ = true;
   emit(canon::Probe{to_absolute(xyz(to)), abc_of(to)});
 }

@@ -20,7 +20,7 @@ namespace usina::gcode {
 class CanonMachine final : public MotionTarget {
  public:
   CanonMachine(canon::Sink& sink, ModalState& state, core::DiagnosticSink& diags)
-      : sink_(sink), state_(&state), diags_(diags) {}
+      : sink_(&sink), state_(&state), diags_(&diags) {}
 
   // The state the machine reads (offsets, feed) and updates (position).
   void bind(ModalState& state) { state_ = &state; }
@@ -43,7 +43,8 @@ class CanonMachine final : public MotionTarget {
   // Moves with every axis (rotary and UVW too).
   void traverse_axes(const Axes& to);
   void feed_axes(const Axes& to);
-  void probe_axes(const Axes& to);
+  // `stop`: where the probe ends (program coordinates), short of `to`.
+  void probe_axes(const Axes& to, const Vec3& stop);
   // A spline through `points` (program coordinates, the last one its end).
   void spline(const std::vector<Vec3>& points);
   void arc_axes(const Axes& to, const Vec3& center, int turn);
@@ -80,9 +81,10 @@ class CanonMachine final : public MotionTarget {
 
   canon::Abc abc_of(const Axes& a) const { return {a[3], a[4], a[5]}; }
 
-  canon::Sink& sink_;
+  // Pointers, so a copy of the machine can be assigned back (Interpreter::roll_back).
+  canon::Sink* sink_;
   ModalState* state_;
-  core::DiagnosticSink& diags_;
+  core::DiagnosticSink* diags_;
   bool faulted_ = false;
   core::SourceLoc src_;
   canon::Origin origin_ = canon::Origin::Program;

@@ -20,7 +20,8 @@ bool Interpreter::place_g(BlockWords& w, GCode g, std::uint32_t col) {
   const auto gi = static_cast<std::size_t>(group);
   // LinuxCNC accepts G80 beside another motion code (CAM headers write
   // "G0 G80"): the cycle is cancelled and the other code is the motion.
-  if (group == kGroupMotion && (w.g[gi] == 800 || g == 800) && w.g[gi] != g) {
+  // A G80 alone is the block's motion code (it ends the cycle).
+  if (group == kGroupMotion && w.g[gi] != -1 && (w.g[gi] == 800 || g == 800) && w.g[gi] != g) {
     if (g != 800) w.g[gi] = g;
     return true;
   }

@@ -105,7 +105,15 @@ Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, 
     jump_to(cursor_.file, a, a.kind != OKind::ElseIf);
     return Flow::Jumped;
   }
-  // An elseif or else reached from a branch that ran: skip to the endif.
+  // An elseif or else reached from a branch that ran: on to the endif.
+  // LinuxCNC reads every elseif of the if on the way and evaluates its
+  // condition all the same: an error in one stops the program.
+  if (o.kind == OKind::ElseIf && !condition(o)) return Flow::Error;
+  const std::uint32_t next = idx.next_of(e, {OKind::ElseIf, OKind::Else, OKind::EndIf});
+  if (o.kind == OKind::ElseIf && next != kNoEntry && idx.at(next).kind == OKind::ElseIf) {
+    jump_to(cursor_.file, idx.at(next), false);  // it comes here again, as skipped
+    return Flow::Jumped;
+  }
   const std::uint32_t end = idx.next_of(e, {OKind::EndIf});
   if (end == kNoEntry) {
     error(core::Code::UnclosedBlock, o.col,

@@ -22,8 +22,10 @@ using core::kPi;
 // radians of tangent get neither an arc nor an intersection.
 constexpr double kTangent = 0.05;
 // interp_queue.cc move_endpoint_and_flush: a held arc whose end is moved may
-// sweep this much more (radians) before it counts as gouging.
+// sweep this much more (radians) before it counts as gouging. LinuxCNC
+// compares the turns with a length: .001 under G20, .0254 under G21.
 constexpr double kSweepSlack = 0.001;
+constexpr double kSweepSlackMetric = 0.0254;
 
 double angle_of(Vec2 v) {
   return std::atan2(v.y, v.x);
@@ -36,7 +38,7 @@ InterpError error(Code code, std::string message) {
 }  // namespace
 
 std::optional<InterpError> CutterComp::start(CompSide side, double radius, core::Plane plane,
-                                             int orientation) {
+                                             int orientation, bool metric) {
   // interp_convert.cc convert_cutter_compensation_on.
   if (side == CompSide::Off) {
     return error(Code::CompNotAllowed,
@@ -63,6 +65,7 @@ std::optional<InterpError> CutterComp::start(CompSide side, double radius, core:
   radius_ = std::fabs(radius);
   plane_ = plane;
   orientation_ = orientation;
+  metric_ = metric;
   first_move_ = true;
   return std::nullopt;
 }
@@ -316,7 +319,8 @@ std::optional<InterpError> CutterComp::check_move_end(const Held& h, Vec2 to) co
   const Vec2 from = *queue_start_;
   if (h.kind == Kind::Arc) {
     const double sweep = core::arc_sweep(from, to, h.center, h.turn > 0, std::abs(h.turn));
-    if (h.sweep == 0.0 || std::fabs(sweep) <= std::fabs(h.sweep) + kSweepSlack) return std::nullopt;
+    const double slack = metric_ ? kSweepSlackMetric : kSweepSlack;
+    if (h.sweep == 0.0 || std::fabs(sweep) <= std::fabs(h.sweep) + slack) return std::nullopt;
     return error(Code::CutterGouge,
                  fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit the "
                              "concave corner after the previous arc; that arc would have to end "

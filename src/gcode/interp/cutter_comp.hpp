@@ -79,8 +79,10 @@ class CutterComp {
   // `orientation` is a lathe tool's orientation (1-8; 0 and 9 for a mill),
   // honoured in G18: the emitted point is the tool's origin, not the centre
   // of its nose radius (LinuxCNC interp_queue.cc latheorigin_x/z).
+  // `metric`: the program is in G21, where LinuxCNC lets a concave corner
+  // lengthen an arc more (see kSweepSlack in cutter_comp.cpp).
   std::optional<InterpError> start(CompSide side, double radius, core::Plane plane,
-                                   int orientation = 0);
+                                   int orientation = 0, bool metric = false);
 
   // A programmed straight move (G0 when `rapid`, else G1) to `programmed_end`.
   std::optional<InterpError> straight(const Vec3& programmed_end, bool rapid,
@@ -203,6 +205,7 @@ class CutterComp {
   double radius_ = 0.0;
   core::Plane plane_ = core::Plane::XY;
   int orientation_ = 0;
+  bool metric_ = false;
   bool first_move_ = true;
   bool arc_not_allowed_ = false;
   // LinuxCNC's current point (tool centre) and programmed point, in the

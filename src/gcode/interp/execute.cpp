@@ -159,7 +159,9 @@ bool Interpreter::modal_settings(BlockWords& w) {
   if (w.g[kGroupToolLength] != -1 && !tool_length(w)) return false;
   if (w.g[kGroupCoordSystem] != -1) {
     const GCode g = w.g[kGroupCoordSystem];
-    if (!select_coord_system(g <= 590 ? g / 10 - 53 : 6 + g - 590)) return false;
+    const int n = g <= 590 ? g / 10 - 53 : 6 + g - 590;
+    const bool again = n == s.coord_system && !options_.reselect_reloads_work_offsets;
+    if (!again && !select_coord_system(n)) return false;
   }
   if (w.g[kGroupPathControl] != -1) s.path_mode = w.g[kGroupPathControl];
   if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;

@@ -62,8 +62,7 @@ void Interpreter::warn(core::Code code, std::uint32_t col, std::string message) 
   diags_.report({code, core::Severity::Warning, loc, std::move(message)});
 }
 
-bool Interpreter::run(std::uint32_t file) {
-  cursor_ = {file, 0, 1};
+void Interpreter::start_from_parameters() {
   // The offsets a parameter file holds are in force from the start, as
   // LinuxCNC restores them when its interpreter starts.
   const double system = params_.get(5220);
@@ -75,6 +74,11 @@ bool Interpreter::run(std::uint32_t file) {
       state_.g92[static_cast<std::size_t>(a)] = (a >= 3 && a <= 5) ? v : v * machine_mm();
     }
   }
+}
+
+bool Interpreter::run(std::uint32_t file) {
+  cursor_ = {file, 0, 1};
+  start_from_parameters();
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr) return false;
   cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);

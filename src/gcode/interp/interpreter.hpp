@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "canon/sink.hpp"
@@ -46,6 +47,11 @@ struct InterpOptions {
   // The motion mode at the start, in tenths: LinuxCNC's G80; a controller
   // that powers up in another (Grbl: G0) sets it.
   GCode start_motion = 800;
+  // A G54-G59.3 word for the system in use re-reads its offsets from the
+  // parameters (Grbl; the fanuc front end re-selects to apply #5221...).
+  // LinuxCNC's convert_coordinate_system does nothing then: a new value of
+  // #5221... waits until the system is selected after another one.
+  bool reselect_reloads_work_offsets = true;
 };
 
 struct BlockWords;
@@ -80,6 +86,19 @@ class Interpreter final : private ParameterSource {
   // block by block and ends with finish().
   bool run_evaluated(const EvaluatedBlock& block);
   bool finish();
+  // What run() does before the first block: the work offset and G92 a
+  // parameter file holds are put in force. For a run of run_block calls.
+  void start_from_parameters();
+
+  // For a front end that reports a refused block and reads on (Grbl's
+  // "report and continue", grbl_runner.cpp): checkpoint() marks the state
+  // before a block; roll_back() puts back what the block changed (modal
+  // state, canonical machine, cycle values, numbered parameters, the
+  // program end) after the block, or the front end's check of its ops,
+  // refused it, and lets run_block go on. Blocks of cutter compensation,
+  // subroutines, loops and named parameters are not covered.
+  void checkpoint();
+  void roll_back();
 
   bool ended() const { return ended_; }
 
@@ -104,6 +123,14 @@ class Interpreter final : private ParameterSource {
     std::uint32_t body_line = 0;
     std::uint32_t file = 0;
     std::optional<ModalState> autorestore;  // M73: restored on return
+  };
+
+  struct Checkpoint {
+    ModalState state;
+    CanonMachine machine;
+    CannedCycles cycles;
+    bool ended = false;
+    std::vector<std::pair<int, double>> parameters;  // (index, value before) in write order
   };
 
   struct LoopCount {
@@ -224,6 +251,7 @@ class Interpreter final : private ParameterSource {
   CanonMachine machine_;
   CutterComp comp_;
   CannedCycles cycles_;
+  std::optional<Checkpoint> checkpoint_;
   // Runs `effect` now, or after the move cutter compensation holds.
   void in_order(std::function<void()> effect);
   bool comp_forbids(const BlockWords& w);

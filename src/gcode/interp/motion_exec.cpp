@@ -247,15 +247,16 @@ bool Interpreter::probe(BlockWords& w, const Axes& end) {
   }
 
   const Vec3 start = xyz(state_.pos);
-  machine_.probe_axes(end);
   // No probe in a trace: the move is traced to its target and the probe
-  // result is what LinuxCNC's stand-alone interpreter reports, a stop 0.01
-  // program units short of the target, not tripped (#5070 = 0); the current
-  // point is that stop (its conformance traces, smartprobe.ngc, x-trim.ngc).
+  // result is what LinuxCNC's stand-alone interpreter reports, a stop short
+  // of the target, not tripped (#5070 = 0); the current point is that stop
+  // (its conformance traces, smartprobe.ngc, x-trim.ngc). saicanon.cc backs
+  // off 0.01 under G20 and 0.254 under G21: 0.254 mm in either unit.
+  constexpr double kProbeBackOffMm = 0.254;
   const Vec3 dir = xyz(end) - start;
   const double length = core::norm(dir);
-  const Vec3 stop =
-      length > 0.0 ? xyz(end) - dir * (0.01 * core::mm_per(state_.units) / length) : xyz(end);
+  const Vec3 stop = length > 0.0 ? xyz(end) - dir * (kProbeBackOffMm / length) : xyz(end);
+  machine_.probe_axes(end, stop);
   Axes result = end;
   set_xyz(result, stop);
   set_xyz(state_.pos, stop);

@@ -24,6 +24,18 @@ bool is_rotary(int axis) {
   return axis >= 3 && axis <= 5;
 }
 
+// The point `abs` (machine, tool tip) in the program coordinates of work
+// system n, less the G92 offset `g92` (mm): LinuxCNC's find_current_in_system.
+Vec3 in_system(const Parameters& params, double machine_mm, const Vec3& g92, const Vec3& abs,
+               int n) {
+  const int base = work_offset_base(n);
+  Vec3 d;
+  for (int a = 0; a < 3; ++a)
+    d[a] = abs[a] - params.get(base + a) * machine_mm;
+  const Vec2 r = core::rotate({d.x, d.y}, -core::deg_to_rad(params.get(base + 9)));
+  return Vec3{r.x, r.y, d.z} - g92;
+}
+
 }  // namespace
 
 // An offset a block sets (or a tool length it applies) within canon's
@@ -121,9 +133,11 @@ bool Interpreter::g10(BlockWords& w) {
     const int base = work_offset_base(n);
     if (w.has('R')) params_.set(base + 9, w.get('R'));
     // L20: offsets that make the current point read the given values, in
-    // the system's own (rotated) frame: g5x = m − R(v + g92).
+    // the system's own (rotated) frame: g5x = m − R(v + g92). The axes not
+    // named keep what the current point reads in that system (LinuxCNC's
+    // find_current_in_system), so their offsets stay.
     const Vec3 abs = machine_.to_absolute(xyz(state_.pos));
-    Vec3 v = xyz(state_.pos);
+    Vec3 v = in_system(params_, machine_mm(), xyz(state_.g92), abs, n);
     bool linear = false;
     for (int a = 0; a < kAxisCount; ++a) {
       const char letter = kAxisLetters[a];
@@ -143,13 +157,16 @@ bool Interpreter::g10(BlockWords& w) {
       Vec3 q = v + xyz(state_.g92);
       const Vec2 r = core::rotate({q.x, q.y}, core::deg_to_rad(params_.get(base + 9)));
       q = {r.x, r.y, q.z};
+      const bool plane = w.has('X') || w.has('Y');  // the rotation ties X and Y
       for (int a = 0; a < 3; ++a) {
+        if (!(a < 2 ? plane : w.has('Z'))) continue;
         const char letter = kAxisLetters[a];
         const std::uint32_t col = w.has(letter) ? w.col_of(letter) : w.gcol[kGroupNonModal];
         if (!offset_in_range("the work offset", letter, abs[a] - q[a], col)) return false;
       }
-      for (int a = 0; a < 3; ++a)
-        params_.set(base + a, (abs[a] - q[a]) / machine_mm());
+      for (int a = 0; a < 3; ++a) {
+        if (a < 2 ? plane : w.has('Z')) params_.set(base + a, (abs[a] - q[a]) / machine_mm());
+      }
     }
     if (n == state_.coord_system) select_coord_system(n);
     return true;
@@ -183,20 +200,19 @@ bool Interpreter::home(BlockWords& w, int g) {
   // Through the intermediate point given by the axis words, if any.
   // LinuxCNC moves there even without axis words (a move to where it is).
   machine_.traverse_axes(target(w, false));
-  // Then to the stored position: every axis, or only those named.
-  const Vec3 tool_tip = machine_.to_absolute(xyz(state_.pos));
-  Vec3 abs = tool_tip;
+  // Then to the stored position: every axis, or only those named, each
+  // taking the stored position's program coordinate (convert_home: under an
+  // XY rotation a named X moves the machine's X and Y).
+  Vec3 abs;
+  for (int a = 0; a < 3; ++a)
+    abs[a] = params_.get(base + a) * machine_mm() - state_.tool_offset[static_cast<std::size_t>(a)];
+  const Vec3 home = machine_.to_program(abs);
   Axes end = state_.pos;
   for (int a = 0; a < kAxisCount; ++a) {
     if (w.has_axis() && !w.has(kAxisLetters[a])) continue;
     const double v = params_.get(base + a);
-    if (a < 3) {
-      abs[a] = v * machine_mm() - state_.tool_offset[static_cast<std::size_t>(a)];
-    } else {
-      end[static_cast<std::size_t>(a)] = is_rotary(a) ? v : v * machine_mm();
-    }
+    end[static_cast<std::size_t>(a)] = a < 3 ? home[a] : is_rotary(a) ? v : v * machine_mm();
   }
-  set_xyz(end, machine_.to_program(abs));
   machine_.traverse_axes(end);
   return true;
 }
@@ -208,7 +224,8 @@ bool Interpreter::tool_length(BlockWords& w) {
   if (g == 430 || g == 432) {
     std::optional<int> h;
     if (w.has('H') && !(h = whole(w, 'H', 0, kMaxToolNumber))) return false;
-    const int tool = h ? *h : s.tool;
+    // LinuxCNC's find_tool_index: H0 is pocket 0, the spindle's tool.
+    const int tool = h && *h != 0 ? *h : s.tool;
     const ToolEntry* t = options_.tools.find(tool);
     if (t == nullptr && tool != 0) {
       return error(core::Code::UnknownTool, w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength],
@@ -274,7 +291,7 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   } else {
     std::optional<int> d;
     if (w.has('D') && !(d = whole(w, 'D', 0, kMaxToolNumber))) return false;
-    const int tool = d ? *d : s.tool;
+    const int tool = d && *d != 0 ? *d : s.tool;  // D0: the spindle's tool, as H0
     const ToolEntry* t = options_.tools.find(tool);
     if (t == nullptr && tool != 0) {
       return error(core::Code::UnknownTool, w.has('D') ? w.col_of('D') : w.gcol[kGroupCutterComp],
@@ -286,7 +303,8 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   // A negative radius (G41.1 D-1) puts the tool on the other side, as in LinuxCNC.
   const CompSide side = (g == 410 || g == 411) ? CompSide::Left : CompSide::Right;
   if (options_.ignore_cutter_comp) radius = 0.0;
-  if (auto e = comp_.start(side, radius, s.plane, orientation)) {
+  const bool metric = s.units == core::LengthUnit::Mm;
+  if (auto e = comp_.start(side, radius, s.plane, orientation, metric)) {
     return error(*e, w.gcol[kGroupCutterComp]);
   }
   s.comp = side == CompSide::Left ? CompSideState::Left : CompSideState::Right;

@@ -1,0 +1,196 @@
+// Many machines drip-fed at once from one process and one event loop
+// (issue 13, "Speed"): each machine a simulated control on a pty pair or an
+// in-process pipe, each fed a program long enough to last the run at the
+// line's rate. Prints the bytes delivered, overflows, hash mismatches, the
+// CPU used (user + system, as a share of one core over the wall time) and
+// the peak memory. No assertion on times: the figures are for the report.
+//
+//   dnc_feed_bench [--machines 256] [--baud 115200] [--seconds 10] [--skid 32]
+//                  [--link memory|pty] [--buffer 4096]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include "dnc/link_config.hpp"
+#include "dnc/link_memory.hpp"
+#include "dnc/link_serial.hpp"
+#include "dnc/sim_cnc.hpp"
+#include "dnc/transfer_send.hpp"
+
+namespace {
+
+using namespace usina::dnc;
+
+struct Options {
+  int machines = 256;
+  std::uint32_t baud = 115200;
+  double seconds = 10.0;
+  std::uint32_t skid = 32;
+  std::string link = "memory";
+  std::size_t buffer = 4096;
+};
+
+// Lines "N.. G1 X.. Y.. F1200" made as they are read: constant memory.
+class Generated final : public ProgramSource {
+ public:
+  explicit Generated(std::uint64_t bytes) : total_(bytes) {}
+
+  std::size_t read(std::span<char> out) override {
+    std::size_t n = 0;
+    while (n < out.size() && made_ < total_) {
+      if (at_ == line_.size()) {
+        ++number_;
+        line_ = fmt::format("N{} G1 X{}.5 Y-{}.25 F1200\n", number_, number_ % 1000, number_ % 777);
+        at_ = 0;
+      }
+      out[n++] = line_[at_++];
+      ++made_;
+    }
+    return n;
+  }
+
+ private:
+  std::uint64_t total_;
+  std::uint64_t made_ = 0;
+  std::uint64_t number_ = 0;
+  std::string line_;
+  std::size_t at_ = 0;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string key = argv[i];
+    const char* v = argv[i + 1];
+    if (key == "--machines") o.machines = std::atoi(v);
+    if (key == "--baud") o.baud = static_cast<std::uint32_t>(std::atol(v));
+    if (key == "--seconds") o.seconds = std::atof(v);
+    if (key == "--skid") o.skid = static_cast<std::uint32_t>(std::atol(v));
+    if (key == "--link") o.link = v;
+    if (key == "--buffer") o.buffer = static_cast<std::size_t>(std::atol(v));
+  }
+  return o;
+}
+
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
+}
+
+long max_rss_kb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+struct Machine {
+  std::unique_ptr<Link> ours;
+  std::unique_ptr<Link> theirs;
+  std::shared_ptr<SimCnc> sim;
+  std::shared_ptr<Sender> sender;
+  JobReport report;
+  bool done = false;
+};
+
+LinkConfig machine_config(const Options& o, int i) {
+  LinkConfig c;
+  c.name = fmt::format("m{}", i);
+  c.baud = o.baud;
+  c.data_bits = 8;
+  c.parity = Parity::None;
+  c.stop_bits = 1;
+  c.code = TapeCode::Iso;
+  c.skid = o.skid;
+  return c;
+}
+
+bool open_links(asio::io_context& io, const Options& o, const LinkConfig& c, Machine& m) {
+  if (o.link == "pty") {
+    auto pair = open_pty_pair(io);
+    if (!pair) return false;
+    auto ours = open_serial_link(io, pair->slave_path, c);
+    if (!ours) return false;
+    m.ours = std::move(*ours);
+    m.theirs = std::move(pair->master);
+    return true;
+  }
+  LinkPair links = memory_link_pair(io, 4096);
+  m.ours = std::move(links.a);
+  m.theirs = std::move(links.b);
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  asio::io_context io;
+  std::vector<Machine> machines(static_cast<std::size_t>(o.machines));
+  const double rate = bytes_per_second(machine_config(o, 0));
+  const auto program_bytes = static_cast<std::uint64_t>(rate * o.seconds);
+  SimCncConfig sc;
+  sc.buffer = o.buffer;
+  sc.high_water = o.buffer - o.skid - 16;
+  sc.low_water = o.buffer / 4;
+  sc.execute_rate = rate * 0.97;  // a control a little slower than its line: XOFF now and then
+  for (int i = 0; i < o.machines; ++i) {
+    Machine& m = machines[static_cast<std::size_t>(i)];
+    const LinkConfig c = machine_config(o, i);
+    if (!open_links(io, o, c, m)) {
+      std::fprintf(stderr, "cannot open the links of machine %d\n", i);
+      return 2;
+    }
+    m.sim = std::make_shared<SimCnc>(io, *m.theirs, sc);
+    m.sender = std::make_shared<Sender>(io, *m.ours, send_options(c),
+                                        std::make_unique<Generated>(program_bytes), JobMode::Drip);
+  }
+  const double cpu0 = cpu_seconds();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (Machine& m : machines) {
+    m.sim->start();
+    m.sender->start([&m](const JobReport& r) {
+      m.report = r;
+      m.done = true;
+    });
+  }
+  int left = o.machines;
+  while (left > 0) {
+    io.run_one_for(std::chrono::milliseconds(100));
+    left = 0;
+    for (const Machine& m : machines)
+      left += m.done ? 0 : 1;
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = cpu_seconds() - cpu0;
+  // The last bytes reach the controls.
+  io.run_for(std::chrono::milliseconds(200));
+  std::uint64_t sent = 0, received = 0, overflow = 0, xoffs = 0;
+  int not_done = 0, mismatched = 0;
+  for (Machine& m : machines) {
+    sent += m.report.bytes_sent;
+    received += m.sim->stats().received;
+    overflow += m.sim->stats().overflow;
+    xoffs += m.sim->stats().xoff_sent;
+    not_done += m.report.state == JobState::Done ? 0 : 1;
+    mismatched += m.report.sha256 == m.sim->sha256() ? 0 : 1;
+  }
+  fmt::print(
+      "machines {} link {} baud {} skid {} buffer {}\n"
+      "program {} bytes each, line rate {:.0f} bytes/s\n"
+      "wall {:.2f} s, cpu {:.2f} s = {:.1f} % of one core\n"
+      "bytes sent {} received {} overflow {} xoff {} not done {} hash mismatches {}\n"
+      "max rss {:.1f} MB\n",
+      o.machines, o.link, o.baud, o.skid, o.buffer, program_bytes, rate, wall, cpu,
+      100.0 * cpu / wall, sent, received, overflow, xoffs, not_done, mismatched,
+      static_cast<double>(max_rss_kb()) / 1024.0);
+  return (not_done == 0 && mismatched == 0 && overflow == 0 && sent == received) ? 0 : 1;
+}

@@ -1,0 +1,168 @@
+#include "dnc/link_serial.hpp"
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include <boost/asio/posix/stream_descriptor.hpp>
+#include <boost/asio/write.hpp>
+#include <fmt/format.h>
+#include <sys/ioctl.h>
+
+namespace usina::dnc {
+namespace {
+
+speed_t speed_of(std::uint32_t baud) {
+  static constexpr std::array<std::pair<std::uint32_t, speed_t>, 15> kSpeeds{{
+      {110, B110},
+      {134, B134},
+      {150, B150},
+      {200, B200},
+      {300, B300},
+      {600, B600},
+      {1200, B1200},
+      {1800, B1800},
+      {2400, B2400},
+      {4800, B4800},
+      {9600, B9600},
+      {19200, B19200},
+      {38400, B38400},
+      {57600, B57600},
+      {115200, B115200},
+  }};
+  for (const auto& [b, s] : kSpeeds) {
+    if (b == baud) return s;
+  }
+  return B9600;
+}
+
+class DescriptorLink final : public Link {
+ public:
+  DescriptorLink(asio::io_context& io, int fd, std::string name, bool dsr_flow)
+      : stream_(io, fd), fd_(fd), name_(std::move(name)), dsr_flow_(dsr_flow) {}
+
+  void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override {
+    stream_.async_read_some(asio::buffer(buffer.data(), buffer.size()), std::move(handler));
+  }
+
+  void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override {
+    asio::async_write(stream_, asio::buffer(bytes.data(), bytes.size()), std::move(handler));
+  }
+
+  void cancel() override {
+    ErrorCode ignored;
+    stream_.cancel(ignored);
+  }
+
+  void close() override {
+    ErrorCode ignored;
+    stream_.close(ignored);
+  }
+
+  std::optional<std::size_t> output_queue() const override {
+    int n = 0;
+    if (!stream_.is_open() || ::ioctl(fd_, TIOCOUTQ, &n) != 0 || n < 0) return std::nullopt;
+    return static_cast<std::size_t>(n);
+  }
+
+  bool peer_ready() const override {
+    if (!dsr_flow_) return true;
+    int lines = 0;
+    if (::ioctl(fd_, TIOCMGET, &lines) != 0) return true;  // no modem lines (a pty)
+    return (lines & TIOCM_DSR) != 0;
+  }
+
+  std::string describe() const override { return name_; }
+
+ private:
+  asio::posix::stream_descriptor stream_;
+  int fd_;
+  std::string name_;
+  bool dsr_flow_;
+};
+
+std::string errno_text(const char* what, const std::string& path) {
+  return fmt::format("{} {}: {}", what, path, std::strerror(errno));
+}
+
+}  // namespace
+
+tl::expected<void, std::string> configure_tty(int fd, const LinkConfig& config) {
+  termios t{};
+  if (::tcgetattr(fd, &t) != 0) {
+    return tl::make_unexpected(fmt::format("not a serial port or pty ({})", std::strerror(errno)));
+  }
+  // Raw: no kernel flow control (IXON would eat the control's XOFF and hide
+  // it from usina), no CR/LF translation, no echo, no signals.
+  t.c_iflag &= ~static_cast<tcflag_t>(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL |
+                                      IXON | IXOFF | IXANY);
+  t.c_oflag &= ~static_cast<tcflag_t>(OPOST);
+  t.c_lflag &= ~static_cast<tcflag_t>(ECHO | ECHONL | ICANON | ISIG | IEXTEN);
+  t.c_cflag &= ~static_cast<tcflag_t>(CSIZE | PARENB | PARODD | CSTOPB | CRTSCTS);
+  t.c_cflag |= static_cast<tcflag_t>(CLOCAL | CREAD | (config.data_bits == 7 ? CS7 : CS8));
+  if (config.parity != Parity::None) {
+    t.c_cflag |= PARENB;
+    t.c_iflag |= INPCK;  // a row with a parity error reads as NUL (a tape feed)
+  }
+  if (config.parity == Parity::Odd) t.c_cflag |= PARODD;
+  if (config.stop_bits == 2) t.c_cflag |= CSTOPB;
+  if (config.flow == Flow::RtsCts) t.c_cflag |= CRTSCTS;
+  t.c_cc[VMIN] = 1;
+  t.c_cc[VTIME] = 0;
+  ::cfsetispeed(&t, speed_of(config.baud));
+  ::cfsetospeed(&t, speed_of(config.baud));
+  if (::tcsetattr(fd, TCSANOW, &t) != 0) {
+    return tl::make_unexpected(fmt::format("cannot set the frame ({})", std::strerror(errno)));
+  }
+  // Controls without handshake still want DTR and RTS high (research/dnc.md
+  // §2.1); a pty has no modem lines, so the error is not one.
+  if (config.flow != Flow::RtsCts) {
+    int lines = TIOCM_DTR | TIOCM_RTS;
+    (void)::ioctl(fd, TIOCMBIS, &lines);
+  }
+  return {};
+}
+
+tl::expected<std::unique_ptr<Link>, std::string> open_serial_link(asio::io_context& io,
+                                                                  const std::string& path,
+                                                                  const LinkConfig& config) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return tl::make_unexpected(errno_text("cannot open", path));
+  if (auto ok = configure_tty(fd, config); !ok) {
+    ::close(fd);
+    return tl::make_unexpected(fmt::format("{}: {}", path, ok.error()));
+  }
+  return descriptor_link(io, fd, path, config.flow == Flow::DtrDsr);
+}
+
+std::unique_ptr<Link> descriptor_link(asio::io_context& io, int fd, std::string name,
+                                      bool dsr_flow) {
+  return std::make_unique<DescriptorLink>(io, fd, std::move(name), dsr_flow);
+}
+
+tl::expected<PtyPair, std::string> open_pty_pair(asio::io_context& io) {
+  const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (master < 0) return tl::make_unexpected(errno_text("cannot open", "a pty"));
+  std::array<char, 128> name{};
+  if (::grantpt(master) != 0 || ::unlockpt(master) != 0 ||
+      ::ptsname_r(master, name.data(), name.size()) != 0) {
+    ::close(master);
+    return tl::make_unexpected(errno_text("cannot unlock", "a pty"));
+  }
+  termios t{};
+  if (::tcgetattr(master, &t) == 0) {
+    ::cfmakeraw(&t);
+    (void)::tcsetattr(master, TCSANOW, &t);
+  }
+  PtyPair pair;
+  pair.slave_path = name.data();
+  pair.master = descriptor_link(io, master, "pty master " + pair.slave_path);
+  return pair;
+}
+
+}  // namespace usina::dnc

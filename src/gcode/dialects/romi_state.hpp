@@ -1,0 +1,88 @@
+// The modal state of the romi dialect: a value (DESIGN.md, "Inside the gcode
+// front end"). A block works on a copy that replaces the state only when the
+// block succeeded (grbl's gc_execute_line: copy, import and check the words,
+// execute, commit), so a failed block changes no mode, and "run from block
+// N" or a look-ahead is a copy.
+//
+// The ops a block sent before its error stay sent, as a control's moves
+// stay made: the state rolls back, the canon stream does not.
+#pragma once
+
+#include <optional>
+
+#include "core/diagnostic.hpp"
+#include "core/units.hpp"
+#include "gcode/interp/cutter_comp.hpp"
+#include "gcode/interp/state.hpp"
+
+namespace usina::gcode::romi {
+
+// Mirror, scale, rotation: applied to a programmed point in the order
+// rotation, scale, mirror (spec/romi.md, "Transformations").
+struct Transform {
+  bool mirror_x = false;  // X coordinates flip about X = mirror_at.x
+  bool mirror_y = false;
+  Vec2 mirror_at;
+  double scale_x = 1.0;
+  double scale_y = 1.0;
+  double rotation_deg = 0.0;
+  Vec2 rotation_at;
+
+  Vec2 apply(Vec2 p) const;
+
+  Vec3 apply(const Vec3& p) const {
+    const Vec2 q = apply(Vec2{p.x, p.y});
+    return {q.x, q.y, p.z};
+  }
+
+  // One axis mirrored: arcs and compensation sides swap.
+  bool flips() const { return mirror_x != mirror_y; }
+
+  bool uniform() const { return scale_x == scale_y; }
+};
+
+// G81, modal until G80.
+struct DrillCycle {
+  bool active = false;
+  double r = 0.0;      // approach plane above the work surface, mm
+  double depth = 0.0;  // below the surface, mm
+  double dwell = 0.0;  // s
+  bool defined = false;
+};
+
+// An arc with only R: it blends into the next block's move, which decides
+// where it ends.
+struct PendingBlend {
+  core::SourceLoc loc;
+  Vec2 center;
+  double radius = 0.0;
+  bool ccw = true;
+  Vec3 start;
+};
+
+struct Modal {
+  // Program coordinates.
+  int motion = 0;  // 0..3: G00..G03
+  bool incremental = false;
+  core::LengthUnit units = core::LengthUnit::Mm;
+  bool retract_to_r = true;  // G99; G98 retracts to where the hole started
+  DrillCycle drill;
+  Transform tf;
+  int offset_register = 0;          // O
+  Vec3 pos;                         // the programmed point
+  std::optional<double> direction;  // of travel at pos, degrees
+  double feed = 0.0;                // mm/min
+  int selected_tool = -1;           // T
+  double tool_diameter = 0.0;       // of the tool in the spindle
+  std::optional<PendingBlend> blend;
+
+  // What the canonical machine reads and updates: the machine position,
+  // the tool in the spindle, S, spindle and coolant.
+  ModalState machine;
+  // Cutter compensation: its side and radius, and the moves it holds.
+  CutterComp comp;
+
+  double mm(double v) const { return v * core::mm_per(units); }
+};
+
+}  // namespace usina::gcode::romi
