@@ -85,6 +85,10 @@ class Interpreter final : private ParameterSource {
   // an RS274NGC program through it; a front end with its own reader calls it
   // block by block and ends with finish().
   bool run_evaluated(const EvaluatedBlock& block);
+  // One line of RS274NGC text read by this interpreter's own reader, then
+  // run down the same road (Grbl's front end, until it hands its words
+  // evaluated: issue 12). No control flow: an O-word is not run here.
+  bool run_block(std::string_view text, const LinePos& where);
   bool finish();
   // What run() does before the first block: the work offset and G92 a
   // parameter file holds are put in force. For a run of run_block calls.
