@@ -127,9 +127,9 @@
   X(ToolRedefined, W_TOOL_REDEFINED)                             \
   /* dxf: the reader's checks of a drawing's lines and groups */ \
   X(DxfMalformed, E_DXF_MALFORMED)                               \
-  /* dnc: links, tape codes, transfers */                        \
-  X(DncConfig, E_DNC_CONFIG)                                     \
-  X(UnknownDncKey, W_UNKNOWN_DNC_KEY)                            \
-  X(TapeNoCode, E_TAPE_NO_CODE)                                  \
-  X(TapeParity, E_TAPE_PARITY)                                   \
+  /* dnc: links, tape codes, transfers */                         \
+  X(DncConfig, E_DNC_CONFIG)                                      \
+  X(UnknownDncKey, W_UNKNOWN_DNC_KEY)                             \
+  X(TapeNoCode, E_TAPE_NO_CODE)                                   \
+  X(TapeParity, E_TAPE_PARITY)                                    \
   X(RemoteRequest, E_REMOTE_REQUEST)
