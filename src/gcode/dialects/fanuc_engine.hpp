@@ -14,6 +14,7 @@
 #include <set>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "gcode/dialect.hpp"
@@ -139,14 +140,20 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
 
  private:
   struct Loop {
-    std::size_t do_block;
-    std::size_t end_block;
+    TapePos do_block;
+    TapePos end_block;
+  };
+
+  // Where a loop's END stands and where the block after it starts.
+  struct LoopEnd {
+    TapePos end_block;
+    TapePos after;
   };
 
   struct Frame {
-    std::size_t ret = 0;   // block after the call
-    std::size_t body = 0;  // first block of the called program
-    std::size_t end = 0;   // exclusive
+    TapePos ret;    // block after the call
+    TapePos start;  // the called program's O block (its first block without one)
+    TapePos body;   // first block of the called program
     long repeats_left = 0;
     bool macro = false;       // G65/G66: a new local level
     bool modal_call = false;  // G66: its blocks do not trigger the call
@@ -159,22 +166,36 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
     std::array<Value, 34> args{};
   };
 
+  // Where a GOTO leads, found once per jump site, number and program: the
+  // target and the loops (DO blocks) open around it.
+  struct Jump {
+    std::optional<TapePos> target;
+    std::vector<std::uint64_t> open_loops;
+  };
+
+  using JumpKey = std::tuple<std::uint64_t, std::uint64_t, long>;  // site, from, number
+
   // Flow (fanuc_engine.cpp).
   bool step();
-  bool end_of_program();
+  bool ends_program(const TapeBlock& b);
+  bool end_of_program(const TapeBlock& end);
   bool statement(const TapeBlock& b);
   bool assignment(MacroReader& r, const TapeBlock& b, bool run);
   bool goto_block(long n, const TapeBlock& b, std::size_t pos);
+  const Jump& jump(long n, const TapeBlock& b);
+  std::optional<TapePos> find_sequence(long n, TapePos from, TapePos start) const;
   bool while_do(MacroReader& r, const TapeBlock& b, std::optional<bool> cond);
   bool end_loop(MacroReader& r, const TapeBlock& b);
-  std::size_t find_end(std::size_t do_block, int m, const TapeBlock& b);
+  std::optional<LoopEnd> find_end(const TapeBlock& do_block, int m);
   bool call(long program, long times, bool macro, const std::array<Value, 34>* args,
             const TapeBlock& b, std::size_t pos, bool modal);
   bool give_back(long sequence, const TapeBlock& b, std::size_t pos);
-  std::size_t find_program(long number);
+  std::optional<TapePos> find_program(long number);
   bool count_jump(const TapeBlock& b);
 
   std::vector<Loop>& loops() { return frames_.empty() ? main_loops_ : frames_.back().loops; }
+
+  TapePos program_start() const { return frames_.empty() ? main_start_ : frames_.back().start; }
 
   // NC blocks (fanuc_nc.cpp).
   bool nc_block(const TapeBlock& b);
@@ -302,15 +323,21 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   int program_digits_ = 4;
 
   Tape tape_;
-  std::size_t pc_ = 0;
+  TapePos pc_;  // the next block
   std::uint32_t main_file_ = 0;
-  std::size_t main_end_ = 0;
+  TapePos main_start_;
+  bool main_started_ = false;  // a block with words or an O number was read
+  TapeBlock last_;             // the last block read
+  bool read_any_ = false;
+  std::map<std::uint64_t, LoopEnd> loop_ends_;         // by DO block
+  std::map<JumpKey, Jump> jumps_;                      // GOTO
+  std::map<JumpKey, std::optional<TapePos>> returns_;  // M99 P: site, return point, N
   bool done_ = false;
   bool failed_ = false;
   bool offsets_ok_ = true;
   bool warned_integer_ = false;
   long total_jumps_ = 0;
-  std::map<std::size_t, long> loop_runs_;
+  std::map<std::uint64_t, long> loop_runs_;  // by DO block
   std::vector<Frame> frames_;
   std::vector<Loop> main_loops_;
   std::vector<std::array<Value, 34>> locals_;

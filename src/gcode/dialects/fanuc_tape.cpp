@@ -142,12 +142,26 @@ std::size_t read_block_head(std::string_view raw, TapeBlock& b) {
 
 }  // namespace
 
-std::size_t Tape::add_file(std::uint32_t file, std::string_view text, std::size_t from) {
-  const std::size_t first = blocks_.size();
+TapePos Tape::add_file(std::uint32_t file, std::string_view text, std::size_t from) {
   std::size_t i = 0;
-  PendingBlock p = tape_start(text, std::min(from, text.size()), i);
-  bool closed = false;
-  for (; i < text.size(); ++i) {
+  const PendingBlock p = tape_start(text, std::min(from, text.size()), i);
+  const TapePos start{file, p.line, i, p.line_start};
+  files_.push_back({file, text, start, false});
+  return start;
+}
+
+std::string_view Tape::text_of(std::uint32_t file) const {
+  for (const File& f : files_) {
+    if (f.id == file) return f.text;
+  }
+  return {};
+}
+
+TapeBlock Tape::cut(TapePos at) const {
+  const std::string_view text = text_of(at.file);
+  PendingBlock p{at.offset, at.line, at.line_start, {}, at.offset};
+  TapeBlock b;
+  for (std::size_t i = at.offset; i < text.size(); ++i) {
     const char c = text[i];
     if (c == '(') {
       bool shut = false;
@@ -157,75 +171,75 @@ std::size_t Tape::add_file(std::uint32_t file, std::string_view text, std::size_
       continue;
     }
     if (c == '%') {
-      end_block(file, text, i, p);
-      closed = true;
-      break;
+      if (make_block(at.file, text, i, p, b)) {
+        b.next = {at.file, p.line, i, p.line_start};
+        return b;
+      }
+      b = TapeBlock{};
+      b.at = {at.file, p.line, i, p.line_start};
+      b.end = b.closed = true;
+      return b;
     }
     if (c == ';' || c == '\n') {
-      end_block(file, text, i, p);
+      const bool made = make_block(at.file, text, i, p, b);
       p.start = i + 1;
+      p.comment = {};
       if (c == '\n') {
         ++p.line;
         p.line_start = i + 1;
+      }
+      if (made) {
+        b.next = {at.file, p.line, p.start, p.line_start};
+        return b;
       }
       continue;
     }
     if (!blank(c)) p.content_end = i + 1;
   }
-  if (!closed && p.start < text.size()) end_block(file, text, text.size(), p);
-  files_.push_back({first, blocks_.size(), closed});
-  return first;
+  if (p.start < text.size() && make_block(at.file, text, text.size(), p, b)) {
+    b.next = {at.file, p.line, text.size(), p.line_start};
+    return b;
+  }
+  b = TapeBlock{};
+  b.at = {at.file, p.line, std::max<std::uint64_t>(at.offset, text.size()), p.line_start};
+  b.end = true;
+  return b;
 }
 
-void Tape::end_block(std::uint32_t file, std::string_view text, std::size_t stop, PendingBlock& p) {
+// The pending block cut at `stop` into `b`; false when it is empty.
+bool Tape::make_block(std::uint32_t file, std::string_view text, std::size_t stop,
+                      const PendingBlock& p, TapeBlock& b) const {
   const std::string_view raw = text.substr(p.start, stop - p.start);
-  TapeBlock b;
+  b = TapeBlock{};
   b.file = file;
   b.line = p.line;
   b.line_offset = p.line_start;
   b.col = static_cast<std::uint32_t>(p.start - p.line_start + 1);
   b.comment = p.comment;
   b.length = stop - p.start;
+  b.at = {file, p.line, p.start, p.line_start};
   const std::size_t k = read_block_head(raw, b);
-  if (b.program >= 0) programs_.emplace(b.program, blocks_.size());
   const std::size_t end = p.content_end > p.start + k ? p.content_end - p.start : k;
   b.text = raw.substr(k, end - k);
   // Blank lines and stray ';' make no block.
-  if (!b.text.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty())
-    blocks_.push_back(b);
-  p.comment = {};
+  return !b.text.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty();
 }
 
-const Tape::FileSpan& Tape::span_of(std::size_t i) const {
-  for (const FileSpan& f : files_) {
-    if (i >= f.first && i < f.end) return f;
+std::optional<TapePos> Tape::program(long number) {
+  if (auto it = programs_.find(number); it != programs_.end()) return it->second;
+  for (File& f : files_) {
+    while (!f.all_indexed) {
+      const TapeBlock b = cut(f.indexed);
+      if (b.end) {
+        f.all_indexed = true;
+        break;
+      }
+      f.indexed = b.next;
+      if (b.program >= 0 && programs_.emplace(b.program, b.at).second && b.program == number)
+        return b.at;
+    }
   }
-  return files_.back();
-}
-
-std::size_t Tape::program(long number) const {
-  auto it = programs_.find(number);
-  return it == programs_.end() ? npos : it->second;
-}
-
-std::size_t Tape::program_end(std::size_t i) const {
-  const FileSpan& f = span_of(i);
-  for (std::size_t k = i + 1; k < f.end; ++k) {
-    if (blocks_[k].program >= 0) return k;
-  }
-  return f.end;
-}
-
-std::size_t Tape::program_start(std::size_t i) const {
-  const FileSpan& f = span_of(i);
-  for (std::size_t k = i + 1; k-- > f.first;) {
-    if (blocks_[k].program >= 0) return k;
-  }
-  return f.first;
-}
-
-bool Tape::closed(std::size_t i) const {
-  return span_of(i).closed;
+  return std::nullopt;
 }
 
 }  // namespace usina::gcode::fanuc

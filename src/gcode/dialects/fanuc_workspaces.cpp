@@ -51,7 +51,7 @@ void Engine::apply_start_external() {
                             interp_.parameters().get(n) + external_[static_cast<std::size_t>(a)]);
     }
   }
-  if (tape_.size() > 0) reselect(tape_.at(0));
+  if (const TapeBlock first = tape_.cut(main_start_); !first.end) reselect(first);
 }
 
 // The interpreter applies a system's parameters when it is selected: select
