@@ -37,11 +37,28 @@ struct NcWord {
   bool vacant = false;           // one vacant variable: the word is left out
   bool taken = false;            // used by the front end, not passed on
   std::size_t pos = 0;
+  // G in tenths, M whole, as read (kNoCode: not yet known, see Words::code).
+  int code = kNoCode;
+
+  static constexpr int kNoCode = -1;
 };
 
 struct Words {
   std::vector<NcWord> list;
+
+  void add(const NcWord& w) {
+    list.push_back(w);
+    if (w.letter == 'G') g_bits |= g_bit(code(w));
+  }
+
+  void clear() {
+    list.clear();
+    g_bits = 0;
+  }
+
   NcWord* find(char letter);
+  // A G word's code in tenths or an M word's whole code.
+  static int code(const NcWord& w);
 
   bool has(char letter) { return find(letter) != nullptr; }
 
@@ -51,6 +68,14 @@ struct Words {
   void take_g(int tenths);
   void take_m(int m);
   void take(char letter);
+
+  // A bit for each G code the block holds (shared by others), so a block
+  // is not searched for each of the dozens of codes asked of it.
+  static std::uint64_t g_bit(int tenths) {
+    return std::uint64_t{1} << ((static_cast<std::uint32_t>(tenths) * 2654435761u) >> 26);
+  }
+
+  std::uint64_t g_bits = 0;
 };
 
 // The transformations, applied to programmed points in the order mirror,
@@ -223,6 +248,7 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);
   core::SourceLoc block_loc(const TapeBlock& b) const;
   std::vector<EvaluatedWord> handed_;  // reused from block to block
+  Words words_;                        // the NC block's words, reused likewise
   void group_one_motion(Words& w);
   bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);

@@ -14,12 +14,23 @@ namespace {
 constexpr double kRad = std::numbers::pi / 180.0;
 constexpr int kMaxBrackets = 5;  // [16L]: alarm 118 past 5 levels
 
+// ASCII, as a tape is: no locale asked per character.
 bool is_letter(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) != 0;
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
 }
 
 char upper(char c) {
-  return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+}
+
+bool is_operator_word(std::string_view l) {
+  auto is = [&](std::string_view w) {
+    if (l.size() != w.size()) return false;
+    for (std::size_t k = 0; k < l.size(); ++k)
+      if (upper(l[k]) != w[k]) return false;
+    return true;
+  };
+  return is("OR") || is("XOR") || is("AND") || is("MOD");
 }
 
 // Rounded and kept within ±1e15, so a huge or NaN value never overflows
@@ -165,11 +176,38 @@ std::optional<long> MacroReader::variable_number() {
   return to_integer(*n);
 }
 
+// The common word value, a signed number and nothing else ("X-1.25"),
+// read without the descent through sum, product and unary; the same digits
+// give the same value. nullopt (and the position back) for anything else.
+std::optional<Value> MacroReader::plain_number() {
+  const std::size_t start = i_;
+  bool negative = false;
+  for (char c = peek(); c == '-' || c == '+'; c = peek()) {
+    ++i_;
+    negative = negative != (c == '-');
+  }
+  const char c = i_ < text_.size() ? text_[i_] : '\0';
+  if ((c >= '0' && c <= '9') || c == '.') {
+    const MacroError before = err_;
+    if (auto n = number()) {
+      const char next = i_ < text_.size() ? text_[i_] : '\0';
+      if (next == '\0' || (is_letter(next) && !is_operator_word(letters()))) {
+        literal_ = true;
+        return Value{negative ? -*n : *n};
+      }
+    }
+    err_ = before;
+  }
+  i_ = start;
+  return std::nullopt;
+}
+
 std::optional<Value> MacroReader::expression() {
   single_var_ = false;
   literal_ = false;
   relation_ = false;
   const std::size_t start = i_;
+  if (auto plain = plain_number()) return plain;
   auto v = sum();
   if (!v) return std::nullopt;
   // One variable reference alone keeps its vacancy; anything else computed

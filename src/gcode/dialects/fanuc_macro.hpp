@@ -84,6 +84,7 @@ class MacroReader {
   std::optional<Value> bracket();
   std::optional<Value> function(std::string_view name);
   std::optional<double> number();
+  std::optional<Value> plain_number();
   std::string_view letters();
 
   std::string_view text_;

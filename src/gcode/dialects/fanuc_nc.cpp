@@ -4,6 +4,7 @@
 // G10 L2 in G91), and the hand-over to the RS274NGC interpreter.
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -19,8 +20,22 @@ bool is_distance(char l) {
   return std::string_view("XYZUVWABCIJKRQ").find(l) != std::string_view::npos;
 }
 
+// A code as a whole number, rounded half away from zero as std::lround
+// does, without a library call per word of every block (the codes are
+// asked for dozens of times a block); far out of range: no code.
+long whole(double v) {
+  if (!(v > -1e9 && v < 1e9)) return std::numeric_limits<long>::min();
+  return static_cast<long>(v < 0 ? v - 0.5 : v + 0.5);
+}
+
+// `whole` as an int; far out of range: no code any block asks for.
+int as_code(long v) {
+  return v >= -100'000'000 && v <= 100'000'000 ? static_cast<int>(v)
+                                               : std::numeric_limits<int>::min();
+}
+
 int tenths(double v) {
-  return static_cast<int>(std::lround(v * 10.0));
+  return as_code(whole(v * 10.0));
 }
 
 bool is_cycle(int g) {
@@ -49,26 +64,32 @@ double Words::get(char letter, double fallback) {
   return w != nullptr ? w->value : fallback;
 }
 
+int Words::code(const NcWord& w) {
+  if (w.code != NcWord::kNoCode) return w.code;
+  return w.letter == 'G' ? tenths(w.value) : as_code(whole(w.value));
+}
+
 bool Words::has_g(int t) const {
+  if ((g_bits & g_bit(t)) == 0) return false;
   for (const NcWord& w : list)
-    if (w.letter == 'G' && !w.taken && tenths(w.value) == t) return true;
+    if (w.letter == 'G' && !w.taken && code(w) == t) return true;
   return false;
 }
 
 bool Words::has_m(int m) const {
   for (const NcWord& w : list)
-    if (w.letter == 'M' && !w.taken && std::lround(w.value) == m) return true;
+    if (w.letter == 'M' && !w.taken && code(w) == m) return true;
   return false;
 }
 
 void Words::take_g(int t) {
   for (NcWord& w : list)
-    if (w.letter == 'G' && tenths(w.value) == t) w.taken = true;
+    if (w.letter == 'G' && code(w) == t) w.taken = true;
 }
 
 void Words::take_m(int m) {
   for (NcWord& w : list)
-    if (w.letter == 'M' && std::lround(w.value) == m) w.taken = true;
+    if (w.letter == 'M' && code(w) == m) w.taken = true;
 }
 
 void Words::take(char letter) {
@@ -129,7 +150,10 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     word.integer_literal = r.literal() && !r.had_point();
     word.vacant = v->vacant && r.single_variable();
     word.pos = at;
-    w.list.push_back(word);
+    // Codes are asked for dozens of times a block: read them once.
+    if (l == 'G') word.code = tenths(word.value);
+    if (l == 'M') word.code = as_code(whole(word.value));
+    w.add(word);
     if (l == 'G') {
       g20 = g20 || tenths(word.value) == 200;
       g21 = g21 || tenths(word.value) == 210;
@@ -212,7 +236,8 @@ bool Engine::macro_call(const TapeBlock& b, Words& w) {
 }
 
 bool Engine::nc_block(const TapeBlock& b) {
-  Words w;
+  Words& w = words_;  // its list's storage serves every block
+  w.clear();
   if (!read_words(b, w)) return false;
   decimal_point(b, w);
   for (const NcWord& g : w.list) {
@@ -330,7 +355,7 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
     } else if (starts && (cycle_p_ || motion == 820 || motion == 860 || motion == 890)) {
       // The dwell is modal on Fanuc; LinuxCNC wants P when a cycle starts.
       const double v = cycle_p_.value_or(0.0);
-      w.list.push_back({'P', v, v, false, false, false, 0});
+      w.add({'P', v, v, false, false, false, 0});
     }
     if (NcWord* q = w.find('Q')) q->value = std::fabs(q->value);
     if (NcWord* k = w.find('K')) k->letter = 'L';
@@ -357,11 +382,11 @@ void Engine::cycle_levels(Words& w, bool incremental) {
   if (r_abs) cycle_r_ = r_abs;
   if (r == nullptr && cycle_r_) {
     const double v = incremental ? *cycle_r_ - initial : *cycle_r_;
-    w.list.push_back({'R', v, v, false, false, false, 0});
+    w.add({'R', v, v, false, false, false, 0});
   }
   if (z == nullptr && cycle_z_ && cycle_r_) {
     const double v = incremental ? *cycle_z_ - *cycle_r_ : *cycle_z_;
-    w.list.push_back({'Z', v, v, false, false, false, 0});
+    w.add({'Z', v, v, false, false, false, 0});
   }
 }
 
@@ -460,7 +485,7 @@ void Engine::group_one_motion(Words& w) {
         t == 520 || t == 530 || t == 920 || t == 431)
       return;
   }
-  if (axes) w.list.push_back({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
+  if (axes) w.add({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
 }
 
 // The block's words down the interpreter's one road: its G codes in

@@ -143,8 +143,8 @@ bool Engine::offset_codes(const TapeBlock& b, Words& w) {
     w.take_g(410);
     w.take_g(420);
     const double g = side + 0.1;
-    w.list.push_back({'G', g, g, false, false, false, 0});
-    w.list.push_back({'D', 2 * std::fabs(r), 2 * std::fabs(r), false, false, false, 0});
+    w.add({'G', g, g, false, false, false, 0});
+    w.add({'D', 2 * std::fabs(r), 2 * std::fabs(r), false, false, false, 0});
   }
   return true;
 }

@@ -96,7 +96,7 @@ bool Engine::work_codes(const TapeBlock& b, Words& w) {
   w.take('P');
   additional_p_ = n;
   if (!load_additional(b)) return false;
-  w.list.push_back({'G', 59.3, 59.3, false, false, false, 0});
+  w.add({'G', 59.3, 59.3, false, false, false, 0});
   return true;
 }
 
