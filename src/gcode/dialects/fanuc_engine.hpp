@@ -63,7 +63,10 @@ struct Words {
   bool has(char letter) { return find(letter) != nullptr; }
 
   double get(char letter, double fallback);
-  bool has_g(int tenths) const;
+
+  bool has_g(int tenths) const { return (g_bits & g_bit(tenths)) != 0 && holds_g(tenths); }
+
+  bool holds_g(int tenths) const;
   bool has_m(int m) const;
   void take_g(int tenths);
   void take_m(int m);

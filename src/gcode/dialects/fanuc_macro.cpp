@@ -1,5 +1,6 @@
 #include "gcode/dialects/fanuc_macro.hpp"
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <numbers>
@@ -121,25 +122,70 @@ bool MacroReader::keyword(std::string_view word) {
   return true;
 }
 
+namespace {
+
+// The place values after the point, 0.1 then each a tenth of the last,
+// made once: the same values as dividing digit by digit.
+const std::array<double, 24> kPlaces = [] {
+  std::array<double, 24> p{};
+  double d = 0.1;
+  for (double& x : p) {
+    x = d;
+    d /= 10;
+  }
+  return p;
+}();
+
+// One digit more of a number being read; `place` counts the digits after
+// the point (0: none yet, or no point).
+void add_digit(double& v, double& scale, std::size_t& place, char c) {
+  if (scale == 0) {
+    v = v * 10 + (c - '0');
+  } else {
+    v += (c - '0') * scale;
+    scale = ++place < kPlaces.size() ? kPlaces[place] : scale / 10;
+  }
+}
+
+}  // namespace
+
+bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_point) {
+  double scale = 0;
+  std::size_t place = 0;
+  std::size_t j = i;
+  v = 0;
+  had_point = false;
+  for (; j < text.size(); ++j) {
+    const char c = text[j];
+    if (c >= '0' && c <= '9') {
+      add_digit(v, scale, place, c);
+    } else if (c == '.' && !had_point) {
+      had_point = true;
+      scale = 0.1;
+    } else {
+      break;
+    }
+  }
+  if (j == i || (j == i + 1 && had_point)) return false;
+  i = j;
+  return std::isfinite(v);
+}
+
 std::optional<double> MacroReader::number() {
   blanks();
   const std::size_t start = i_;
   double v = 0;
   double scale = 0;
+  std::size_t place = 0;
   bool any = false;
   had_point_ = false;
   for (; i_ < text_.size(); ++i_) {
     const char c = text_[i_];
     if (c == '(') {
       i_ = skip_comment(text_, i_) - 1;  // a blank inside the number
-    } else if (std::isdigit(static_cast<unsigned char>(c))) {
+    } else if (c >= '0' && c <= '9') {
       any = true;
-      if (scale == 0) {
-        v = v * 10 + (c - '0');
-      } else {
-        v += (c - '0') * scale;
-        scale /= 10;
-      }
+      add_digit(v, scale, place, c);
     } else if (c == '.' && !had_point_) {
       had_point_ = true;
       scale = 0.1;
@@ -188,7 +234,7 @@ std::optional<Value> MacroReader::plain_number() {
   }
   const char c = i_ < text_.size() ? text_[i_] : '\0';
   if ((c >= '0' && c <= '9') || c == '.') {
-    const MacroError before = err_;
+    // A number too long for a double fails here as it would below.
     if (auto n = number()) {
       const char next = i_ < text_.size() ? text_[i_] : '\0';
       if (next == '\0' || (is_letter(next) && !is_operator_word(letters()))) {
@@ -196,7 +242,6 @@ std::optional<Value> MacroReader::plain_number() {
         return Value{negative ? -*n : *n};
       }
     }
-    err_ = before;
   }
   i_ = start;
   return std::nullopt;

@@ -69,8 +69,7 @@ int Words::code(const NcWord& w) {
   return w.letter == 'G' ? tenths(w.value) : as_code(whole(w.value));
 }
 
-bool Words::has_g(int t) const {
-  if ((g_bits & g_bit(t)) == 0) return false;
+bool Words::holds_g(int t) const {
   for (const NcWord& w : list)
     if (w.letter == 'G' && !w.taken && code(w) == t) return true;
   return false;
@@ -122,7 +121,61 @@ bool Engine::word_in_range(const TapeBlock& b, char letter, std::size_t at, cons
   return true;
 }
 
+namespace {
+
+// Whether a plain block's word may end at text[i]: at the end, a blank, or
+// the next word's letter (not an exponent of the number).
+bool word_may_end(std::string_view text, std::size_t i) {
+  if (i >= text.size()) return true;
+  const char c = text[i];
+  return c == ' ' || c == '\t' || (c >= 'A' && c <= 'Z' && c != 'E');
+}
+
+// The words of a block made of letters and signed numbers only ("G1
+// X-1.25 Y0.5"), most blocks of a long program, read without the macro
+// reader, with the values it gives; false with `w` empty for any other
+// block (variables, brackets, functions, comments, lower case...).
+bool plain_block_words(std::string_view text, Words& w) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char l = text[i];
+    if (l == ' ' || l == '\t') {
+      ++i;
+      continue;
+    }
+    if (l < 'A' || l > 'Z') break;
+    std::size_t j = i + 1;
+    const bool negative = j < text.size() && text[j] == '-';
+    if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
+    NcWord word;
+    bool point = false;
+    if (!plain_digits(text, j, word.value, point) || !word_may_end(text, j)) break;
+    if (negative) word.value = -word.value;
+    word.letter = l;
+    word.raw = word.value;
+    word.integer_literal = !point;
+    word.pos = i;
+    if (l == 'G') word.code = tenths(word.value);
+    if (l == 'M') word.code = as_code(whole(word.value));
+    w.add(word);
+    i = j;
+  }
+  if (i >= text.size()) return true;
+  w.clear();
+  return false;
+}
+
+}  // namespace
+
 bool Engine::read_words(const TapeBlock& b, Words& w) {
+  if (plain_block_words(b.text, w)) {
+    // The checks of read_words below, for the words as they are.
+    for (const NcWord& word : w.list) {
+      if (auto why = word_out_of_range(word.letter, word.value))
+        return error(core::Code::ValueOutOfRange, b, word.pos, *why);
+    }
+    return true;
+  }
   MacroReader r(b.text, *this);
   // The units the words read so far are in, kept as they come: asking the
   // list for G20/G21 before each word made a block quadratic in its length.
@@ -493,6 +546,7 @@ void Engine::group_one_motion(Words& w) {
 // as whole numbers, each word at the column the user wrote it at.
 bool Engine::hand_over(const TapeBlock& b, Words& w) {
   handed_.clear();
+  const std::uint32_t col0 = loc_of(b, 0).col;  // a word's column is col0 + its position
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
     // Read in range (word_in_range), a value leaves it only by the scaling
@@ -512,7 +566,7 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     } else if (word.letter == 'M' || word.letter == 'L') {
       v = static_cast<double>(std::lround(v));
     }
-    handed_.push_back({word.letter, v, loc_of(b, word.pos).col});
+    handed_.push_back({word.letter, v, col0 + static_cast<std::uint32_t>(word.pos)});
   }
   return hand(b, handed_);
 }

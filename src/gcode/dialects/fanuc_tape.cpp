@@ -1,6 +1,7 @@
 #include "gcode/dialects/fanuc_tape.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 
 namespace usina::gcode::fanuc {
@@ -35,6 +36,17 @@ long digits(std::string_view s, std::size_t& i) {
   if (v >= 0) i = j;
   return v;
 }
+
+// The characters a block is made of, as against the blanks, comments,
+// block ends and '%' the tape is cut at.
+constexpr std::array<bool, 256> kWordChar = [] {
+  std::array<bool, 256> t{};
+  for (bool& x : t)
+    x = true;
+  for (unsigned char c : {' ', '\t', '\r', '(', '%', ';', '\n'})
+    t[c] = false;
+  return t;
+}();
 
 // The offset of the first line from `start` on that starts with '%'
 // (blanks before it allowed), or npos.
@@ -163,6 +175,15 @@ TapeBlock Tape::cut(TapePos at) const {
   TapeBlock b;
   for (std::size_t i = at.offset; i < text.size(); ++i) {
     const char c = text[i];
+    if (kWordChar[static_cast<unsigned char>(c)]) {
+      // A run of the block's own characters: nothing to decide in it.
+      std::size_t j = i + 1;
+      while (j < text.size() && kWordChar[static_cast<unsigned char>(text[j])])
+        ++j;
+      p.content_end = j;
+      i = j - 1;
+      continue;
+    }
     if (c == '(') {
       bool shut = false;
       const std::size_t after = comment_end(text, i, shut);
