@@ -17,6 +17,10 @@ constexpr int kMaxLoopNesting = 3;
 constexpr int kMaxMacroLevels = 4;   // G65/G66 levels on 0i/16i [16PB]
 constexpr int kMaxCallNesting = 10;  // M98 + G65 on 0i-D/31i
 
+char ascii_upper(char c) {
+  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+}
+
 // DO m / END m of a block, without evaluating it: 1 for DO, 2 for END.
 // A GOTO target as a whole number; out of range values become -1 (no such
 // block) rather than overflowing.
@@ -110,9 +114,7 @@ std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
 // A position in a block's text is a column of its line: the text is the
 // file's own, comments and all.
 core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
-  const std::string_view src = sources_.get(b.file)->text();
-  const auto col = static_cast<std::uint32_t>(b.text.data() - src.data() - b.line_offset + pos + 1);
-  return {b.file, b.line, col, 1, b.line_offset};
+  return {b.file, b.line, b.text_col + static_cast<std::uint32_t>(pos), 1, b.line_offset};
 }
 
 bool Engine::error(core::Code code, const TapeBlock& b, std::size_t pos, std::string message) {
@@ -207,10 +209,8 @@ bool Engine::step() {
   if (parameter_mode_) return parameter_block(b);
   if (b.sequence >= 0) n_ = static_cast<double>(b.sequence);
   if (b.text.empty()) return true;
-  const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[0])));
-  const char second = b.text.size() > 1
-                          ? static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[1])))
-                          : '\0';
+  const char c = ascii_upper(b.text[0]);
+  const char second = b.text.size() > 1 ? ascii_upper(b.text[1]) : '\0';
   if (c == '#' || c == 'I' || c == 'W' || c == 'E' || ((c == 'D' || c == 'G') && second == 'O')) {
     return statement(b);
   }

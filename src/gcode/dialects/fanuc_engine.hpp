@@ -48,15 +48,27 @@ struct Words {
 
   void add(const NcWord& w) {
     list.push_back(w);
+    letters |= letter_bit(w.letter);
     if (w.letter == 'G') g_bits |= g_bit(code(w));
   }
 
   void clear() {
     list.clear();
     g_bits = 0;
+    letters = 0;
   }
 
-  NcWord* find(char letter);
+  // A word read as another address (G04's X is its P).
+  void relabel(NcWord& w, char letter) {
+    w.letter = letter;
+    letters |= letter_bit(letter);
+  }
+
+  NcWord* find(char letter) {
+    return (letters & letter_bit(letter)) != 0 ? lookup(letter) : nullptr;
+  }
+
+  NcWord* lookup(char letter);
   // A G word's code in tenths or an M word's whole code.
   static int code(const NcWord& w);
 
@@ -66,19 +78,32 @@ struct Words {
 
   bool has_g(int tenths) const { return (g_bits & g_bit(tenths)) != 0 && holds_g(tenths); }
 
+  bool has_m(int m) const { return (letters & letter_bit('M')) != 0 && holds_m(m); }
+
+  void take_g(int tenths) {
+    if ((g_bits & g_bit(tenths)) != 0) drop_g(tenths);
+  }
+
   bool holds_g(int tenths) const;
-  bool has_m(int m) const;
-  void take_g(int tenths);
+  bool holds_m(int m) const;
+  void drop_g(int tenths);
   void take_m(int m);
   void take(char letter);
 
-  // A bit for each G code the block holds (shared by others), so a block
-  // is not searched for each of the dozens of codes asked of it.
+  // A bit for each G code the block holds (shared by others) and for each
+  // letter: a block is not searched for each of the dozens of codes and
+  // addresses asked of it.
   static std::uint64_t g_bit(int tenths) {
     return std::uint64_t{1} << ((static_cast<std::uint32_t>(tenths) * 2654435761u) >> 26);
   }
 
+  static std::uint32_t letter_bit(char letter) {
+    return letter >= 'A' && letter <= 'Z' ? std::uint32_t{1} << (letter - 'A')
+                                          : std::uint32_t{1} << 31;
+  }
+
   std::uint64_t g_bits = 0;
+  std::uint32_t letters = 0;
 };
 
 // The transformations, applied to programmed points in the order mirror,

@@ -53,7 +53,7 @@ std::string word_number(double v) {
   return s;
 }
 
-NcWord* Words::find(char letter) {
+NcWord* Words::lookup(char letter) {
   for (NcWord& w : list)
     if (w.letter == letter && !w.taken && !w.vacant) return &w;
   return nullptr;
@@ -75,13 +75,13 @@ bool Words::holds_g(int t) const {
   return false;
 }
 
-bool Words::has_m(int m) const {
+bool Words::holds_m(int m) const {
   for (const NcWord& w : list)
     if (w.letter == 'M' && !w.taken && code(w) == m) return true;
   return false;
 }
 
-void Words::take_g(int t) {
+void Words::drop_g(int t) {
   for (NcWord& w : list)
     if (w.letter == 'G' && code(w) == t) w.taken = true;
 }
@@ -92,6 +92,7 @@ void Words::take_m(int m) {
 }
 
 void Words::take(char letter) {
+  if ((letters & letter_bit(letter)) == 0) return;
   for (NcWord& w : list)
     if (w.letter == letter) w.taken = true;
 }
@@ -383,7 +384,7 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
     if (p != nullptr) {
       p->value = p->raw / 1000.0;
     } else if (x != nullptr) {
-      x->letter = 'P';
+      w.relabel(*x, 'P');
     }
   }
   // The interpreter never enters G76/G87 (fine_boring writes its moves).
@@ -411,7 +412,7 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
       w.add({'P', v, v, false, false, false, 0});
     }
     if (NcWord* q = w.find('Q')) q->value = std::fabs(q->value);
-    if (NcWord* k = w.find('K')) k->letter = 'L';
+    if (NcWord* k = w.find('K')) w.relabel(*k, 'L');
   }
   return true;
 }

@@ -242,6 +242,7 @@ bool Tape::make_block(std::uint32_t file, std::string_view text, std::size_t sto
   const std::size_t k = read_block_head(raw, b);
   const std::size_t end = p.content_end > p.start + k ? p.content_end - p.start : k;
   b.text = raw.substr(k, end - k);
+  b.text_col = b.col + static_cast<std::uint32_t>(k);
   // Blank lines and stray ';' make no block.
   return !b.text.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty();
 }

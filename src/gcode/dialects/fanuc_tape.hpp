@@ -48,13 +48,14 @@ struct TapeBlock {
   // words stay where they are (readers skip them as blanks), so a position
   // in `text` is a column of the line.
   std::string_view text;
-  std::string_view comment;  // the first ( ) comment's text
-  std::size_t length = 0;    // of the block in the file, its head and comments included
-  long sequence = -1;        // N number, -1 when none
-  bool deleted = false;      // '/' at the start
-  long program = -1;         // O number when the block starts a program
-  TapePos at;                // where the block starts
-  TapePos next;              // where the block after it starts
+  std::uint32_t text_col = 1;  // the column of text[0] in its line
+  std::string_view comment;    // the first ( ) comment's text
+  std::size_t length = 0;      // of the block in the file, its head and comments included
+  long sequence = -1;          // N number, -1 when none
+  bool deleted = false;        // '/' at the start
+  long program = -1;           // O number when the block starts a program
+  TapePos at;                  // where the block starts
+  TapePos next;                // where the block after it starts
   // No block: the file's tape ends at `at` ('%' when `closed`, else the
   // end of the file).
   bool end = false;
