@@ -37,6 +37,7 @@ struct NcWord {
   bool vacant = false;           // one vacant variable: the word is left out
   bool taken = false;            // used by the front end, not passed on
   std::size_t pos = 0;
+  bool checked = false;  // its value as read is in range (word_out_of_range)
   // G in tenths, M whole, as read (kNoCode: not yet known, see Words::code).
   int code = kNoCode;
 
@@ -69,8 +70,11 @@ struct Words {
   }
 
   NcWord* lookup(char letter);
+
   // A G word's code in tenths or an M word's whole code.
-  static int code(const NcWord& w);
+  static int code(const NcWord& w) { return w.code != NcWord::kNoCode ? w.code : code_of(w); }
+
+  static int code_of(const NcWord& w);
 
   bool has(char letter) { return find(letter) != nullptr; }
 
@@ -97,7 +101,14 @@ struct Words {
     return std::uint64_t{1} << ((static_cast<std::uint32_t>(tenths) * 2654435761u) >> 26);
   }
 
-  static std::uint32_t letter_bit(char letter) {
+  static constexpr std::uint32_t letters_of(std::string_view set) {
+    std::uint32_t bits = 0;
+    for (char c : set)
+      bits |= letter_bit(c);
+    return bits;
+  }
+
+  static constexpr std::uint32_t letter_bit(char letter) {
     return letter >= 'A' && letter <= 'Z' ? std::uint32_t{1} << (letter - 'A')
                                           : std::uint32_t{1} << 31;
   }

@@ -17,7 +17,7 @@ namespace {
 
 // Distances and angles: the decimal-point rule applies (§2).
 bool is_distance(char l) {
-  return std::string_view("XYZUVWABCIJKRQ").find(l) != std::string_view::npos;
+  return (Words::letter_bit(l) & Words::letters_of("XYZUVWABCIJKRQ")) != 0;
 }
 
 // A code as a whole number, rounded half away from zero as std::lround
@@ -64,8 +64,7 @@ double Words::get(char letter, double fallback) {
   return w != nullptr ? w->value : fallback;
 }
 
-int Words::code(const NcWord& w) {
-  if (w.code != NcWord::kNoCode) return w.code;
+int Words::code_of(const NcWord& w) {
   return w.letter == 'G' ? tenths(w.value) : as_code(whole(w.value));
 }
 
@@ -171,9 +170,10 @@ bool plain_block_words(std::string_view text, Words& w) {
 bool Engine::read_words(const TapeBlock& b, Words& w) {
   if (plain_block_words(b.text, w)) {
     // The checks of read_words below, for the words as they are.
-    for (const NcWord& word : w.list) {
+    for (NcWord& word : w.list) {
       if (auto why = word_out_of_range(word.letter, word.value))
         return error(core::Code::ValueOutOfRange, b, word.pos, *why);
+      word.checked = true;
     }
     return true;
   }
@@ -203,6 +203,7 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     word.value = word.raw = v->v;
     word.integer_literal = r.literal() && !r.had_point();
     word.vacant = v->vacant && r.single_variable();
+    word.checked = !v->vacant;  // word_in_range
     word.pos = at;
     // Codes are asked for dozens of times a block: read them once.
     if (l == 'G') word.code = tenths(word.value);
@@ -338,7 +339,7 @@ bool Engine::nc_block(const TapeBlock& b) {
   bool moved = false;
   for (const NcWord& word : w.list)
     moved = moved || (!word.taken && !word.vacant &&
-                      std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos);
+                      (Words::letter_bit(word.letter) & Words::letters_of("XYZABCUVW")) != 0);
   if (w.has_g(760) || w.has_g(870) || ((cycle_ == 760 || cycle_ == 870) && !w.has_g(800))) {
     if (!fine_boring(b, w)) return false;
   }
@@ -532,7 +533,7 @@ void Engine::group_one_motion(Words& w) {
   bool axes = false;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
-    if (std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos) axes = true;
+    if ((Words::letter_bit(word.letter) & Words::letters_of("XYZABCUVW")) != 0) axes = true;
     if (word.letter != 'G') continue;
     const int t = tenths(word.value);
     if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
@@ -552,12 +553,13 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     if (word.taken || word.vacant) continue;
     // Read in range (word_in_range), a value leaves it only by the scaling
     // or rotation in force: say so at the word.
-    if (auto why = word_out_of_range(word.letter, word.value)) {
-      return error(core::Code::ValueOutOfRange, b, word.pos,
-                   fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
-                               "G51.1)",
-                               *why));
-    }
+    if (!(word.checked && word.value == word.raw))
+      if (auto why = word_out_of_range(word.letter, word.value)) {
+        return error(core::Code::ValueOutOfRange, b, word.pos,
+                     fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
+                                 "G51.1)",
+                                 *why));
+      }
     double v = word.value;
     if (word.letter == 'G') {
       int t = tenths(v);
