@@ -126,7 +126,7 @@ namespace {
 
 // The place values after the point, 0.1 then each a tenth of the last,
 // made once: the same values as dividing digit by digit.
-const std::array<double, 24> kPlaces = [] {
+constexpr std::array<double, 24> kPlaces = [] {
   std::array<double, 24> p{};
   double d = 0.1;
   for (double& x : p) {
@@ -138,7 +138,7 @@ const std::array<double, 24> kPlaces = [] {
 
 // One digit more of a number being read; `place` counts the digits after
 // the point (0: none yet, or no point).
-void add_digit(double& v, double& scale, std::size_t& place, char c) {
+inline void add_digit(double& v, double& scale, std::size_t& place, char c) {
   if (scale == 0) {
     v = v * 10 + (c - '0');
   } else {

@@ -15,9 +15,12 @@
 namespace usina::gcode::fanuc {
 namespace {
 
+constexpr std::uint32_t kAxisLetters = Words::letters_of("XYZABCUVW");
+
 // Distances and angles: the decimal-point rule applies (§2).
 bool is_distance(char l) {
-  return (Words::letter_bit(l) & Words::letters_of("XYZUVWABCIJKRQ")) != 0;
+  constexpr std::uint32_t kDistances = Words::letters_of("XYZUVWABCIJKRQ");
+  return (Words::letter_bit(l) & kDistances) != 0;
 }
 
 // A code as a whole number, rounded half away from zero as std::lround
@@ -338,8 +341,8 @@ bool Engine::nc_block(const TapeBlock& b) {
   }
   bool moved = false;
   for (const NcWord& word : w.list)
-    moved = moved || (!word.taken && !word.vacant &&
-                      (Words::letter_bit(word.letter) & Words::letters_of("XYZABCUVW")) != 0);
+    moved = moved ||
+            (!word.taken && !word.vacant && (Words::letter_bit(word.letter) & kAxisLetters) != 0);
   if (w.has_g(760) || w.has_g(870) || ((cycle_ == 760 || cycle_ == 870) && !w.has_g(800))) {
     if (!fine_boring(b, w)) return false;
   }
@@ -533,7 +536,7 @@ void Engine::group_one_motion(Words& w) {
   bool axes = false;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
-    if ((Words::letter_bit(word.letter) & Words::letters_of("XYZABCUVW")) != 0) axes = true;
+    if ((Words::letter_bit(word.letter) & kAxisLetters) != 0) axes = true;
     if (word.letter != 'G') continue;
     const int t = tenths(word.value);
     if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
