@@ -70,3 +70,33 @@ TEST(FanucTape, M99PReturnsToItsBlockFromEachCallSite) {
 
 }  // namespace
 }  // namespace usina::gcode
+
+namespace usina::gcode {
+namespace {
+
+// A block of letters and plain numbers is read without the macro reader
+// (fanuc_nc.cpp): its values are the macro reader's, to the last bit.
+TEST(FanucPlainWords, APlainBlockReadsAsTheMacroReaderReadsIt) {
+  const char* plain = "G1 X1.4833 Y-0.0167 Z-.3 F600.\nX123.4567 Y2 Z0.0001\nM30\n";
+  const char* macro =
+      "G1 X[1.4833] Y-[0.0167] Z-[.3] (C) F600.\nX1 23.4567 Y#0 Y2 Z[0.0001]\nM30\n";
+  auto a = fanuc_test::run_fanuc(plain);
+  auto b = fanuc_test::run_fanuc(macro);
+  ASSERT_TRUE(a->ok) << a->first_error_text();
+  ASSERT_TRUE(b->ok) << b->first_error_text();
+  ASSERT_EQ(a->ends().size(), 2u);
+  ASSERT_EQ(b->ends().size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(a->ends()[i].x, b->ends()[i].x);
+    EXPECT_EQ(a->ends()[i].y, b->ends()[i].y);
+    EXPECT_EQ(a->ends()[i].z, b->ends()[i].z);
+  }
+}
+
+TEST(FanucPlainWords, AWordBeyondTheRangeIsAnErrorAtItsWord) {
+  auto r = fanuc_test::run_fanuc("G1 X1. F100.\nG1 X99999999999999999999.\nM30\n");
+  EXPECT_EQ(r->first_error(), core::Code::ValueOutOfRange);
+}
+
+}  // namespace
+}  // namespace usina::gcode
