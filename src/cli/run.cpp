@@ -165,13 +165,14 @@ int run_program(const RunOptions& o, canon::Sink& sink,
                name);
     return 2;
   }
+  // The fanuc dialect's offset page (docs/fanuc.md): its own input.
+  if (!o.offsets.empty()) dialect_options["offsets"] = o.offsets;
   gcode::InterpOptions opts;
   opts.machine_units = o.machine_units == "inch" ? core::LengthUnit::Inch : core::LengthUnit::Mm;
   opts.peck_clearance_mm = o.peck_clearance;
   opts.max_loop_iterations = o.max_iterations;
   opts.max_total_iterations = o.max_total_iterations;
   opts.block_delete = o.block_delete;
-  opts.offset_file = o.offsets;
   opts.ignore_cutter_comp = o.ignore_cutter_comp;
   opts.start = o.start;
   opts.subroutine_path = split_path(o.subroutine_path);

@@ -342,10 +342,9 @@ std::string offsets_file() {
 }
 
 TEST(FanucEngine, G43AndG44TakeHRegistersFromTheOffsetFile) {
-  InterpOptions o;
-  o.offset_file = offsets_file();
+  const std::string o = offsets_file();
   // #5083: the tool length offset now applied on Z (the trace shows the tip).
-  auto r = run_fanuc("G43 H1\nG0 X#5083\nG44 H2\nG0 X#5083\nG49\nG0 X#5083\nM30\n", o);
+  auto r = run_fanuc_offsets("G43 H1\nG0 X#5083\nG44 H2\nG0 X#5083\nG49\nG0 X#5083\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
   ASSERT_EQ(r->ends().size(), 3u);
   EXPECT_NEAR(r->ends()[0].x, 10.0, 1e-9);  // geometry + wear
@@ -354,9 +353,8 @@ TEST(FanucEngine, G43AndG44TakeHRegistersFromTheOffsetFile) {
 }
 
 TEST(FanucEngine, G43WithAMoveAndHSelectedBefore) {
-  InterpOptions o;
-  o.offset_file = offsets_file();
-  auto r = run_fanuc("H1\nG43 Z50.\nG0 X#5083\nG43 H2 Z20.\nM30\n", o);
+  const std::string o = offsets_file();
+  auto r = run_fanuc_offsets("H1\nG43 Z50.\nG0 X#5083\nG43 H2 Z20.\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
   ASSERT_EQ(r->ends().size(), 3u);
   EXPECT_NEAR(r->ends()[0].z, 50.0, 1e-9);
@@ -365,9 +363,8 @@ TEST(FanucEngine, G43WithAMoveAndHSelectedBefore) {
 }
 
 TEST(FanucEngine, OffsetRegistersAsVariablesAndG10L10ToL13) {
-  InterpOptions o;
-  o.offset_file = offsets_file();
-  auto r = run_fanuc(
+  const std::string o = offsets_file();
+  auto r = run_fanuc_offsets(
       "G0 X#2201 Y#2001 Z#2611\nG10 L10 P3 R7.\nG91 G10 L11 P3 R1.\nG90\n"
       "G0 X[#2203 + #2003]\nM30\n",
       o);
@@ -380,34 +377,32 @@ TEST(FanucEngine, OffsetRegistersAsVariablesAndG10L10ToL13) {
 }
 
 TEST(FanucEngine, CutterCompTakesTheRadiusOfRegisterD) {
-  InterpOptions o;
-  o.offset_file = offsets_file();
-  auto r = run_fanuc("G0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X-20.\nM30\n", o);
+  const std::string o = offsets_file();
+  auto r =
+      run_fanuc_offsets("G0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X-20.\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
   ASSERT_GE(r->ends().size(), 3u);
   EXPECT_NEAR(r->ends()[2].x, -4.99, 1e-6);  // G41 on +Y travel: tool to the left (-X)
 }
 
 TEST(FanucEngine, OffsetFileErrors) {
-  InterpOptions o;
-  o.offset_file = ::testing::TempDir() + "no_such_offsets.toml";
-  EXPECT_EQ(run_fanuc("M30\n", o)->first_error(), Code::FileNotFound);
+  EXPECT_EQ(
+      run_fanuc_offsets("M30\n", ::testing::TempDir() + "no_such_offsets.toml")->first_error(),
+      Code::FileNotFound);
   const std::string bad = scratch("bad_offsets.toml");
   std::FILE* f = std::fopen(bad.c_str(), "w");
   std::fputs("[H]\n1 = [x, 2]\n", f);
   std::fclose(f);
-  o.offset_file = bad;
-  EXPECT_EQ(run_fanuc("M30\n", o)->first_error(), Code::BadToolTable);
+  EXPECT_EQ(run_fanuc_offsets("M30\n", bad)->first_error(), Code::BadToolTable);
   auto missing = run_fanuc("G43 H5\nM30\n");
   EXPECT_TRUE(missing->ok);
   EXPECT_TRUE(missing->has(Code::UnknownRegister));  // warned: taken as 0
 }
 
 TEST(FanucEngine, MirrorSwapsTheCompensationSide) {
-  InterpOptions o;
-  o.offset_file = offsets_file();
-  auto r =
-      run_fanuc("G51.1 X0\nG0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X20.\nM30\n", o);
+  const std::string o = offsets_file();
+  auto r = run_fanuc_offsets(
+      "G51.1 X0\nG0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X20.\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
   ASSERT_GE(r->ends().size(), 3u);
   EXPECT_NEAR(r->ends()[2].x, 4.99, 1e-6);  // G41 mirrored is G42: the tool on +X

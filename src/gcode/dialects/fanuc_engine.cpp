@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iterator>
 
 #include <fmt/format.h>
 
@@ -18,6 +17,10 @@ constexpr int kMaxLoopNesting = 3;
 constexpr int kMaxMacroLevels = 4;   // G65/G66 levels on 0i/16i [16PB]
 constexpr int kMaxCallNesting = 10;  // M98 + G65 on 0i-D/31i
 
+char ascii_upper(char c) {
+  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+}
+
 // DO m / END m of a block, without evaluating it: 1 for DO, 2 for END.
 // A GOTO target as a whole number; out of range values become -1 (no such
 // block) rather than overflowing.
@@ -28,8 +31,14 @@ long sequence_number(double v) {
 
 int loop_mark(std::string_view text, int& m) {
   std::string up;
-  for (char c : text)
-    if (c != ' ' && c != '\t') up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(') {
+      i = skip_comment(text, i) - 1;
+    } else if (c != ' ' && c != '\t') {
+      up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+  }
   std::size_t at = std::string::npos;
   int kind = 0;
   if (up.rfind("WHILE", 0) == 0 || up.rfind("DO", 0) == 0) {
@@ -58,9 +67,8 @@ Engine::Engine(RunContext& c)
     : sources_(c.sources),
       options_(c.options),
       diags_(c.diags),
-      columns_(c.diags),
       stroke_(c.sink, c.options.start),
-      interp_(c.sources, std::move(c.options), stroke_, columns_) {
+      interp_(c.sources, std::move(c.options), stroke_, c.diags, this) {
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
   rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";
@@ -69,7 +77,10 @@ Engine::Engine(RunContext& c)
   g76_.shift = boring_shift_bits(c.dialect_options["boring_shift"]);
   polar_axes_ = polar_axes_from(c.dialect_options["polar_axes"]).value_or(PolarAxes{});
   locals_.push_back(vacant_locals());
-  if (!options_.offset_file.empty()) offsets_ok_ = read_offsets(options_.offset_file);
+  pecks_ = {options_.peck_clearance_mm, options_.peck_clearance_mm};
+  // The offset page of --offsets: the fanuc dialect's own input.
+  if (auto it = c.dialect_options.find("offsets"); it != c.dialect_options.end())
+    offsets_ok_ = read_offsets(it->second);
 }
 
 std::array<Value, 34> vacant_locals() {
@@ -100,36 +111,10 @@ std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
   return out;
 }
 
-void ColumnMap::report(core::Diagnostic d) {
-  if (!spans_.empty() && d.loc.file == file_ && d.loc.line == line_) {
-    for (const Span& s : spans_) {
-      if (d.loc.col >= s.first && d.loc.col <= s.last) {
-        d.loc.col = s.col;
-        break;
-      }
-    }
-  }
-  next_.report(std::move(d));
-}
-
+// A position in a block's text is a column of its line: the text is the
+// file's own, comments and all.
 core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
-  const std::string_view src = sources_.get(b.file)->text();
-  std::uint32_t col = b.col;
-  if (b.text.data() >= src.data() && b.text.data() <= src.data() + src.size()) {
-    col = static_cast<std::uint32_t>(b.text.data() - src.data() - b.line_offset + pos + 1);
-  } else {
-    // The text is a copy without the block's comments: add back what each
-    // comment before the position took.
-    const std::size_t at = b.text_start + pos;
-    // The gaps are in text order with their widths summed: the last one
-    // before the position holds the total (a search, not a walk, so a
-    // block of many comments stays linear).
-    const auto after = std::partition_point(b.gaps.begin(), b.gaps.end(),
-                                            [at](const auto& g) { return g.first < at; });
-    const std::size_t extra = after == b.gaps.begin() ? 0 : std::prev(after)->second;
-    col = static_cast<std::uint32_t>(b.col + at + extra);
-  }
-  return {b.file, b.line, col, 1, b.line_offset};
+  return {b.file, b.line, b.text_col + static_cast<std::uint32_t>(pos), 1, b.line_offset};
 }
 
 bool Engine::error(core::Code code, const TapeBlock& b, std::size_t pos, std::string message) {
@@ -147,15 +132,14 @@ bool Engine::macro_error(const MacroReader& r, const TapeBlock& b) {
 }
 
 bool Engine::run(std::uint32_t file) {
-  const core::SourceFile* f = sources_.get(file);
+  core::SourceFile* f = sources_.get(file);
   if (f == nullptr || !offsets_ok_) return false;
   main_file_ = file;
-  tape_.add_file(file, f->text(), skip_byte_order_mark(f->text(), file, diags_));
-  main_end_ = tape_.size() > 0 ? tape_.program_end(0) : 0;
-  if (tape_.size() > 0) {
+  main_start_ = tape_.add_file(file, f->text(), skip_byte_order_mark(f->text(), file, diags_));
+  pc_ = main_start_;
+  if (const TapeBlock first = tape_.cut(main_start_); !first.end) {
     // Fanuc's power-on return mode is G98 (LinuxCNC starts in G99).
-    const TapeBlock& first = tape_.at(0);
-    interp_.run_block("G98", {first.file, first.line, first.line_offset});
+    hand(first, {{'G', 98}});
   }
   apply_start_external();
   while (!done_ && !failed_ && !interp_.failed() && !interp_.ended()) {
@@ -168,8 +152,17 @@ bool Engine::run(std::uint32_t file) {
   return !stroke_violation() && ok && !interp_.failed();
 }
 
-bool Engine::end_of_program() {
-  if (tape_.size() == 0) {
+// An O block ends the program that runs: the main program once a block
+// with words or its own O block was read (a leader of comments before the
+// O block belongs to it), a called one at any O block but its own.
+bool Engine::ends_program(const TapeBlock& b) {
+  if (b.program < 0) return false;
+  if (!frames_.empty()) return !(b.at == frames_.back().start);
+  return main_started_;
+}
+
+bool Engine::end_of_program(const TapeBlock& end) {
+  if (!read_any_) {
     done_ = true;
     diags_.report({core::Code::NoProgramEnd,
                    core::Severity::Warning,
@@ -177,29 +170,33 @@ bool Engine::end_of_program() {
                    "the program is empty"});
     return true;
   }
-  const TapeBlock& last = tape_.at(pc_ == 0 ? 0 : pc_ - 1);
   if (parameter_mode_) {
-    return error(core::Code::UnclosedBlock, last, 0,
+    return error(core::Code::UnclosedBlock, last_, 0,
                  "the program ends in parameter input mode: G10 L50 without G11");
   }
   if (!frames_.empty()) {
-    return error(core::Code::UnclosedBlock, last, 0,
+    return error(core::Code::UnclosedBlock, last_, 0,
                  "the subprogram ends without M99 (Fanuc: it would run into the next program)");
   }
   done_ = true;
-  if (!tape_.closed(pc_ == 0 ? 0 : pc_ - 1) || pc_ < tape_.size()) {
-    diags_.report({core::Code::NoProgramEnd, core::Severity::Warning, loc_of(last, 0),
+  if (!end.end || !end.closed) {
+    diags_.report({core::Code::NoProgramEnd, core::Severity::Warning, loc_of(last_, 0),
                    "the program ends without M02, M30 or '%'; taken as its end"});
   }
   return true;
 }
 
 bool Engine::step() {
-  const std::size_t end = frames_.empty() ? main_end_ : frames_.back().end;
-  if (pc_ >= end || pc_ >= tape_.size()) return end_of_program();
-  const TapeBlock& b = tape_.at(pc_);
-  ++pc_;
-  const std::string_view src = sources_.get(b.file)->text();
+  const TapeBlock b = tape_.cut(pc_);
+  if (b.end || ends_program(b)) return end_of_program(b);
+  pc_ = b.next;
+  last_ = b;
+  read_any_ = true;
+  if (frames_.empty() && (b.program >= 0 || !b.text.empty())) main_started_ = true;
+  core::SourceFile* file = sources_.get(b.file);
+  // The text behind the reader may leave memory (it comes back on a jump).
+  file->release_before(b.line_offset);
+  const std::string_view src = file->text();
   const std::size_t start = b.line_offset + b.col - 1;
   if (auto too_long =
           block_too_long(src.substr(start, b.length), {b.file, b.line, b.col, 1, b.line_offset})) {
@@ -212,10 +209,8 @@ bool Engine::step() {
   if (parameter_mode_) return parameter_block(b);
   if (b.sequence >= 0) n_ = static_cast<double>(b.sequence);
   if (b.text.empty()) return true;
-  const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[0])));
-  const char second = b.text.size() > 1
-                          ? static_cast<char>(std::toupper(static_cast<unsigned char>(b.text[1])))
-                          : '\0';
+  const char c = ascii_upper(b.text[0]);
+  const char second = b.text.size() > 1 ? ascii_upper(b.text[1]) : '\0';
   if (c == '#' || c == 'I' || c == 'W' || c == 'E' || ((c == 'D' || c == 'G') && second == 'O')) {
     return statement(b);
   }
@@ -285,32 +280,36 @@ bool Engine::count_jump(const TapeBlock& b) {
                            options_.max_total_iterations));
 }
 
-std::size_t Engine::find_end(std::size_t do_block, int m, const TapeBlock& b) {
-  const std::size_t end = tape_.program_end(do_block);
+// The END m of the loop that DO m opens, searched once per DO block (the
+// program's blocks up to its end).
+std::optional<Engine::LoopEnd> Engine::find_end(const TapeBlock& do_block, int m) {
+  if (auto it = loop_ends_.find(do_block.at.key()); it != loop_ends_.end()) return it->second;
   std::vector<int> open;
-  for (std::size_t k = do_block + 1; k < end; ++k) {
+  TapeBlock k = tape_.cut(do_block.next);
+  for (; !k.end && k.program < 0; k = tape_.cut(k.next)) {
     int mk = 0;
-    const int kind = loop_mark(tape_.at(k).text, mk);
+    const int kind = loop_mark(k.text, mk);
     if (kind == 1) {
       open.push_back(mk);
     } else if (kind == 2) {
       if (open.empty()) {
-        if (mk == m) return k;
-        error(core::Code::BadLoop, tape_.at(k), 0,
+        if (mk == m) return loop_ends_[do_block.at.key()] = LoopEnd{k.at, k.next};
+        error(core::Code::BadLoop, k, 0,
               fmt::format("END {} closes a loop opened as DO {}: loops overlap (Fanuc alarm 124)",
                           mk, m));
-        return Tape::npos;
+        return std::nullopt;
       }
       if (open.back() != mk) {
-        error(core::Code::BadLoop, tape_.at(k), 0,
+        error(core::Code::BadLoop, k, 0,
               fmt::format("END {} closes DO {}: loops overlap (Fanuc alarm 124)", mk, open.back()));
-        return Tape::npos;
+        return std::nullopt;
       }
       open.pop_back();
     }
   }
-  error(core::Code::BadLoop, b, 0, fmt::format("DO {} has no END {} (Fanuc alarm 124)", m, m));
-  return Tape::npos;
+  error(core::Code::BadLoop, do_block, 0,
+        fmt::format("DO {} has no END {} (Fanuc alarm 124)", m, m));
+  return std::nullopt;
 }
 
 bool Engine::while_do(MacroReader& r, const TapeBlock& b, std::optional<bool> cond) {
@@ -321,21 +320,20 @@ bool Engine::while_do(MacroReader& r, const TapeBlock& b, std::optional<bool> co
   if (!r.at_end()) return error(core::Code::MacroFormat, b, r.pos(), "text after DO m");
   if (m->v != 1 && m->v != 2 && m->v != 3)
     return error(core::Code::BadLoop, b, at, "DO takes 1, 2 or 3 (Fanuc alarm 126)");
-  const std::size_t here = pc_ - 1;
-  const std::size_t end = find_end(here, static_cast<int>(m->v), b);
-  if (end == Tape::npos) return false;
+  const auto end = find_end(b, static_cast<int>(m->v));
+  if (!end) return false;
   std::vector<Loop>& active = loops();
-  const bool running = !active.empty() && active.back().do_block == here;
+  const bool running = !active.empty() && active.back().do_block == b.at;
   if (!*cond) {
     if (running) active.pop_back();
-    pc_ = end + 1;
+    pc_ = end->after;
     return true;
   }
   if (!running) {
     if (static_cast<int>(active.size()) >= kMaxLoopNesting)
       return error(core::Code::BadLoop, b, 0, "WHILE loops nest deeper than 3 (Fanuc alarm 126)");
-    active.push_back({here, end});
-    loop_runs_.erase(here);
+    active.push_back({b.at, end->end_block});
+    loop_runs_.erase(b.at.key());
   }
   return true;
 }
@@ -344,12 +342,11 @@ bool Engine::end_loop(MacroReader& r, const TapeBlock& b) {
   auto m = r.expression();
   if (!m) return macro_error(r, b);
   std::vector<Loop>& active = loops();
-  const std::size_t here = pc_ - 1;
-  if (active.empty() || active.back().end_block != here) {
+  if (active.empty() || !(active.back().end_block == b.at)) {
     return error(core::Code::BadLoop, b, 0,
                  fmt::format("END {} without its WHILE .. DO {} (Fanuc alarm 124)", m->v, m->v));
   }
-  if (++loop_runs_[active.back().do_block] > options_.max_loop_iterations) {
+  if (++loop_runs_[active.back().do_block.key()] > options_.max_loop_iterations) {
     return error(core::Code::TooManyIterations, b, 0,
                  fmt::format("the loop ran more than {} times; raise the limit with "
                              "--max-iterations",
@@ -360,47 +357,66 @@ bool Engine::end_loop(MacroReader& r, const TapeBlock& b) {
   return true;
 }
 
+// Block N`n` of the running program: from `from` to the program's end,
+// then from its start up to `from`.
+std::optional<TapePos> Engine::find_sequence(long n, TapePos from, TapePos start) const {
+  for (TapeBlock k = tape_.cut(from); !k.end && (k.program < 0 || k.at == start);
+       k = tape_.cut(k.next)) {
+    if (k.sequence == n) return k.at;
+  }
+  for (TapeBlock k = tape_.cut(start); !k.end && k.at < from; k = tape_.cut(k.next)) {
+    if (k.sequence == n) return k.at;
+  }
+  return std::nullopt;
+}
+
+// Where GOTO n of block b leads, searched once per site (and program).
+const Engine::Jump& Engine::jump(long n, const TapeBlock& b) {
+  const TapePos start = program_start();
+  const JumpKey key{b.at.key(), start.key(), n};
+  if (auto it = jumps_.find(key); it != jumps_.end()) return it->second;
+  Jump j;
+  if (n >= 1 && n <= 99999) j.target = find_sequence(n, b.next, start);
+  if (j.target) {
+    std::vector<std::uint64_t> open;
+    for (TapeBlock k = tape_.cut(start); !k.end && k.at < *j.target; k = tape_.cut(k.next)) {
+      int m = 0;
+      const int kind = loop_mark(k.text, m);
+      if (kind == 1) open.push_back(k.at.key());
+      if (kind == 2 && !open.empty()) open.pop_back();
+    }
+    j.open_loops = std::move(open);
+  }
+  return jumps_[key] = std::move(j);
+}
+
 bool Engine::goto_block(long n, const TapeBlock& b, std::size_t pos) {
-  const std::size_t here = pc_ - 1;
-  const std::size_t start = frames_.empty() ? 0 : tape_.program_start(here);
-  const std::size_t end = frames_.empty() ? main_end_ : frames_.back().end;
-  std::size_t target = Tape::npos;
-  for (std::size_t k = here + 1; k < end && target == Tape::npos; ++k)
-    if (tape_.at(k).sequence == n) target = k;
-  for (std::size_t k = start; k <= here && target == Tape::npos; ++k)
-    if (tape_.at(k).sequence == n) target = k;
-  if (n < 1 || n > 99999 || target == Tape::npos) {
+  const Jump& j = jump(n, b);
+  if (!j.target) {
     return error(core::Code::UnknownBlockNumber, b, pos,
                  fmt::format("GOTO {}: no block N{} in this program (Fanuc alarm 128)", n, n));
   }
+  const TapePos target = *j.target;
   // The loops around the target must be running: no jump into a loop.
-  std::vector<std::size_t> open;
-  for (std::size_t k = start; k < target; ++k) {
-    int m = 0;
-    const int kind = loop_mark(tape_.at(k).text, m);
-    if (kind == 1) open.push_back(k);
-    if (kind == 2 && !open.empty()) open.pop_back();
-  }
   std::vector<Loop>& active = loops();
-  for (std::size_t d : open) {
+  for (std::uint64_t d : j.open_loops) {
     bool running = false;
     for (const Loop& l : active)
-      running = running || l.do_block == d;
-    if (!running && d != target) {
+      running = running || l.do_block.key() == d;
+    if (!running && d != target.key()) {
       return error(core::Code::BadLoop, b, pos,
                    fmt::format("GOTO {} jumps into a WHILE loop (Fanuc alarm 128)", n));
     }
   }
-  while (!active.empty() && (target <= active.back().do_block || target > active.back().end_block))
+  while (!active.empty() && (target <= active.back().do_block || active.back().end_block < target))
     active.pop_back();
-  if (target <= here && !count_jump(b)) return false;
+  if (target <= b.at && !count_jump(b)) return false;
   pc_ = target;
   return true;
 }
 
-std::size_t Engine::find_program(long number) {
-  const std::size_t at = tape_.program(number);
-  if (at != Tape::npos) return at;
+std::optional<TapePos> Engine::find_program(long number) {
+  if (auto at = tape_.program(number)) return at;
   namespace fs = std::filesystem;
   const std::string names[] = {fmt::format("O{:04}", number),    fmt::format("O{}", number),
                                fmt::format("O{:04}.nc", number), fmt::format("O{}.nc", number),
@@ -416,19 +432,18 @@ std::size_t Engine::find_program(long number) {
       if (!file) continue;
       const std::uint32_t id = sources_.add(std::move(file));
       const std::string_view text = sources_.get(id)->text();
-      const std::size_t first = tape_.add_file(id, text, skip_byte_order_mark(text, id, diags_));
-      const std::size_t o = tape_.program(number);
-      if (o != Tape::npos) return o;
-      if (first < tape_.size()) return first;
+      const TapePos first = tape_.add_file(id, text, skip_byte_order_mark(text, id, diags_));
+      if (auto at = tape_.program(number)) return at;
+      if (!tape_.cut(first).end) return first;
     }
   }
-  return Tape::npos;
+  return std::nullopt;
 }
 
 bool Engine::call(long program, long times, bool macro, const std::array<Value, 34>* args,
                   const TapeBlock& b, std::size_t pos, bool modal) {
-  const std::size_t o = find_program(program);
-  if (o == Tape::npos) {
+  const std::optional<TapePos> o = find_program(program);
+  if (!o) {
     return error(core::Code::UnknownSubroutine, b, pos,
                  fmt::format("no program O{:04} in this file or the subroutine path (Fanuc "
                              "alarm 078)",
@@ -447,8 +462,9 @@ bool Engine::call(long program, long times, bool macro, const std::array<Value, 
   if (times < 1) return true;
   Frame f;
   f.ret = pc_;
-  f.body = tape_.at(o).program >= 0 ? o + 1 : o;
-  f.end = tape_.program_end(o);
+  f.start = *o;
+  const TapeBlock head = tape_.cut(*o);
+  f.body = head.program >= 0 ? head.next : *o;
   f.repeats_left = times - 1;
   f.macro = macro;
   f.modal_call = modal;
@@ -475,24 +491,18 @@ bool Engine::give_back(long sequence, const TapeBlock& b, std::size_t pos) {
     pc_ = f.body;
     return true;
   }
-  const std::size_t ret = f.ret;
+  const TapePos ret = f.ret;
   if (f.macro) locals_.pop_back();
   frames_.pop_back();
   pc_ = ret;
   if (sequence < 0) return true;
-  const std::size_t start = frames_.empty() ? 0 : tape_.program_start(ret - 1);
-  const std::size_t end = frames_.empty() ? main_end_ : frames_.back().end;
-  for (std::size_t k = ret; k < end; ++k) {
-    if (tape_.at(k).sequence == sequence) {
-      pc_ = k;
-      return true;
-    }
-  }
-  for (std::size_t k = start; k < ret; ++k) {
-    if (tape_.at(k).sequence == sequence) {
-      pc_ = k;
-      return true;
-    }
+  const JumpKey key{b.at.key(), ret.key(), sequence};
+  auto it = returns_.find(key);
+  if (it == returns_.end())
+    it = returns_.emplace(key, find_sequence(sequence, ret, program_start())).first;
+  if (it->second) {
+    pc_ = *it->second;
+    return true;
   }
   return error(core::Code::UnknownBlockNumber, b, pos,
                fmt::format("M99 P{}: no block N{} in the calling program", sequence, sequence));

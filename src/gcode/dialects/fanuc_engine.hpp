@@ -3,14 +3,18 @@
 // statements itself (variables with vacancy, IF, WHILE, GOTO, M98/M99,
 // G65/G66), applies Fanuc's number rules and the transformations LinuxCNC
 // lacks (G16 polar, G51 scaling, G51.1 mirror, G68 rotation), and hands
-// each NC block, as RS274NGC words with numbers, to the interpreter.
+// each NC block to the interpreter as evaluated words (the one road below
+// the text: interp/evaluated_block.hpp).
 #pragma once
 
 #include <array>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "gcode/dialect.hpp"
@@ -20,8 +24,8 @@
 
 namespace usina::gcode::fanuc {
 
-// A value as the front end writes it into an RS274NGC word for the
-// interpreter: up to 10 decimals, no trailing zeros ("12.5", "-3", "0").
+// A value as a message shows it: up to 10 decimals, no trailing zeros
+// ("12.5", "-3", "0").
 std::string word_number(double v);
 
 // One word of an NC block after its value was read.
@@ -33,20 +37,84 @@ struct NcWord {
   bool vacant = false;           // one vacant variable: the word is left out
   bool taken = false;            // used by the front end, not passed on
   std::size_t pos = 0;
+  bool checked = false;  // its value as read is in range (word_out_of_range)
+  // G in tenths, M whole, as read (kNoCode: not yet known, see Words::code).
+  int code = kNoCode;
+
+  static constexpr int kNoCode = -1;
 };
 
 struct Words {
   std::vector<NcWord> list;
-  NcWord* find(char letter);
+
+  void add(const NcWord& w) {
+    list.push_back(w);
+    letters |= letter_bit(w.letter);
+    if (w.letter == 'G') g_bits |= g_bit(code(w));
+  }
+
+  void clear() {
+    list.clear();
+    g_bits = 0;
+    letters = 0;
+  }
+
+  // A word read as another address (G04's X is its P).
+  void relabel(NcWord& w, char letter) {
+    w.letter = letter;
+    letters |= letter_bit(letter);
+  }
+
+  NcWord* find(char letter) {
+    return (letters & letter_bit(letter)) != 0 ? lookup(letter) : nullptr;
+  }
+
+  NcWord* lookup(char letter);
+
+  // A G word's code in tenths or an M word's whole code.
+  static int code(const NcWord& w) { return w.code != NcWord::kNoCode ? w.code : code_of(w); }
+
+  static int code_of(const NcWord& w);
 
   bool has(char letter) { return find(letter) != nullptr; }
 
   double get(char letter, double fallback);
-  bool has_g(int tenths) const;
-  bool has_m(int m) const;
-  void take_g(int tenths);
+
+  bool has_g(int tenths) const { return (g_bits & g_bit(tenths)) != 0 && holds_g(tenths); }
+
+  bool has_m(int m) const { return (letters & letter_bit('M')) != 0 && holds_m(m); }
+
+  void take_g(int tenths) {
+    if ((g_bits & g_bit(tenths)) != 0) drop_g(tenths);
+  }
+
+  bool holds_g(int tenths) const;
+  bool holds_m(int m) const;
+  void drop_g(int tenths);
   void take_m(int m);
   void take(char letter);
+
+  // A bit for each G code the block holds (shared by others) and for each
+  // letter: a block is not searched for each of the dozens of codes and
+  // addresses asked of it.
+  static std::uint64_t g_bit(int tenths) {
+    return std::uint64_t{1} << ((static_cast<std::uint32_t>(tenths) * 2654435761u) >> 26);
+  }
+
+  static constexpr std::uint32_t letters_of(std::string_view set) {
+    std::uint32_t bits = 0;
+    for (char c : set)
+      bits |= letter_bit(c);
+    return bits;
+  }
+
+  static constexpr std::uint32_t letter_bit(char letter) {
+    return letter >= 'A' && letter <= 'Z' ? std::uint32_t{1} << (letter - 'A')
+                                          : std::uint32_t{1} << 31;
+  }
+
+  std::uint64_t g_bits = 0;
+  std::uint32_t letters = 0;
 };
 
 // The transformations, applied to programmed points in the order mirror,
@@ -127,35 +195,7 @@ class StrokeCheck final : public canon::Sink {
   std::optional<Violation> violation_;
 };
 
-// Points the interpreter's diagnostics about a block the front end rewrote
-// at the Fanuc words they came from: each rewritten word's columns map to
-// its word's column in the program's line.
-class ColumnMap final : public core::DiagnosticSink {
- public:
-  struct Span {
-    std::uint32_t first = 0, last = 0;  // columns in the rewritten text
-    std::uint32_t col = 0;              // the word's column in the line
-  };
-
-  explicit ColumnMap(core::DiagnosticSink& next) : next_(next) {}
-
-  void report(core::Diagnostic d) override;
-
-  void set(std::uint32_t file, std::uint32_t line, std::vector<Span> spans) {
-    file_ = file;
-    line_ = line;
-    spans_ = std::move(spans);
-  }
-
-  void clear() { spans_.clear(); }
-
- private:
-  core::DiagnosticSink& next_;
-  std::uint32_t file_ = 0, line_ = 0;
-  std::vector<Span> spans_;
-};
-
-class Engine final : public ProgramRunner, private VariableSource {
+class Engine final : public ProgramRunner, private VariableSource, private CycleHooks {
  public:
   explicit Engine(RunContext& c);
   void set_parameter(int index, double value) override;
@@ -164,14 +204,20 @@ class Engine final : public ProgramRunner, private VariableSource {
 
  private:
   struct Loop {
-    std::size_t do_block;
-    std::size_t end_block;
+    TapePos do_block;
+    TapePos end_block;
+  };
+
+  // Where a loop's END stands and where the block after it starts.
+  struct LoopEnd {
+    TapePos end_block;
+    TapePos after;
   };
 
   struct Frame {
-    std::size_t ret = 0;   // block after the call
-    std::size_t body = 0;  // first block of the called program
-    std::size_t end = 0;   // exclusive
+    TapePos ret;    // block after the call
+    TapePos start;  // the called program's O block (its first block without one)
+    TapePos body;   // first block of the called program
     long repeats_left = 0;
     bool macro = false;       // G65/G66: a new local level
     bool modal_call = false;  // G66: its blocks do not trigger the call
@@ -184,22 +230,36 @@ class Engine final : public ProgramRunner, private VariableSource {
     std::array<Value, 34> args{};
   };
 
+  // Where a GOTO leads, found once per jump site, number and program: the
+  // target and the loops (DO blocks) open around it.
+  struct Jump {
+    std::optional<TapePos> target;
+    std::vector<std::uint64_t> open_loops;
+  };
+
+  using JumpKey = std::tuple<std::uint64_t, std::uint64_t, long>;  // site, from, number
+
   // Flow (fanuc_engine.cpp).
   bool step();
-  bool end_of_program();
+  bool ends_program(const TapeBlock& b);
+  bool end_of_program(const TapeBlock& end);
   bool statement(const TapeBlock& b);
   bool assignment(MacroReader& r, const TapeBlock& b, bool run);
   bool goto_block(long n, const TapeBlock& b, std::size_t pos);
+  const Jump& jump(long n, const TapeBlock& b);
+  std::optional<TapePos> find_sequence(long n, TapePos from, TapePos start) const;
   bool while_do(MacroReader& r, const TapeBlock& b, std::optional<bool> cond);
   bool end_loop(MacroReader& r, const TapeBlock& b);
-  std::size_t find_end(std::size_t do_block, int m, const TapeBlock& b);
+  std::optional<LoopEnd> find_end(const TapeBlock& do_block, int m);
   bool call(long program, long times, bool macro, const std::array<Value, 34>* args,
             const TapeBlock& b, std::size_t pos, bool modal);
   bool give_back(long sequence, const TapeBlock& b, std::size_t pos);
-  std::size_t find_program(long number);
+  std::optional<TapePos> find_program(long number);
   bool count_jump(const TapeBlock& b);
 
   std::vector<Loop>& loops() { return frames_.empty() ? main_loops_ : frames_.back().loops; }
+
+  TapePos program_start() const { return frames_.empty() ? main_start_ : frames_.back().start; }
 
   // NC blocks (fanuc_nc.cpp).
   bool nc_block(const TapeBlock& b);
@@ -212,7 +272,22 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool fanuc_codes(const TapeBlock& b, Words& w);
   bool convert_codes(const TapeBlock& b, Words& w);
   void cycle_levels(Words& w, bool incremental);
+
+  // The initial level the interpreter's cycles took (mm on the plane's
+  // normal), in force while its motion mode is a drilling cycle: in G91
+  // R counts from it (interp/cycle_hooks.hpp).
+  void cycle_ran(double initial_level_mm) override { cycle_level_ = initial_level_mm; }
+
+  std::optional<double> cycle_level() const;
+  std::optional<double> cycle_level_;
+  // The hand-over: evaluated words down the interpreter's one road
+  // (interp/evaluated_block.hpp), each at the column it was written at.
   bool hand_over(const TapeBlock& b, Words& w);
+  bool hand(const TapeBlock& b, std::span<const EvaluatedWord> words);
+  bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);
+  core::SourceLoc block_loc(const TapeBlock& b) const;
+  std::vector<EvaluatedWord> handed_;  // reused from block to block
+  Words words_;                        // the NC block's words, reused likewise
   void group_one_motion(Words& w);
   bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);
@@ -234,6 +309,10 @@ class Engine final : public ProgramRunner, private VariableSource {
   bool polar_interp_codes(const TapeBlock& b, Words& w);
   bool polar_interp_switch(const TapeBlock& b, Words& w, bool on, bool off);
   bool polar_interp_move(const TapeBlock& b, Words& w);
+  // The axes outside the polar plane (X Y Z A B C): where they go, from, to.
+  using PolarOthers = std::array<std::optional<std::pair<double, double>>, 6>;
+  bool polar_pieces(const TapeBlock& b, const std::vector<PolarPoint>& points,
+                    const PolarOthers& others, std::optional<double> feed);
   std::optional<core::Vec2> polar_interp_centre(const TapeBlock& b, Words& w, core::Vec2 from,
                                                 core::Vec2 to, bool ccw);
   PolarAxes polar_axes_;  // polar_axes option (parameters 5460/5461)
@@ -277,6 +356,12 @@ class Engine final : public ProgramRunner, private VariableSource {
                                      long modeled);
   bool parameter_mode_ = false;
 
+  // 5114 and 5115: G73's back-off and G83's clearance, which the
+  // interpreter asks for at each cycle (interp/cycle_hooks.hpp).
+  PeckDistances peck_distances() const override { return pecks_; }
+
+  PeckDistances pecks_;
+
   // G22/G23 stored stroke check 2 (fanuc_stroke.cpp).
   bool stroke_codes(const TapeBlock& b, Words& w);
   bool stroke_violation();
@@ -297,22 +382,27 @@ class Engine final : public ProgramRunner, private VariableSource {
   core::SourceManager& sources_;
   InterpOptions options_;
   core::DiagnosticSink& diags_;
-  ColumnMap columns_;   // the interpreter's diagnostics go through it
-  StrokeCheck stroke_;  // and its ops through this
+  StrokeCheck stroke_;  // the interpreter's ops go through it
   Interpreter interp_;
   bool dpi_fanuc_ = false;  // decimal_point=fanuc
   int program_digits_ = 4;
 
   Tape tape_;
-  std::size_t pc_ = 0;
+  TapePos pc_;  // the next block
   std::uint32_t main_file_ = 0;
-  std::size_t main_end_ = 0;
+  TapePos main_start_;
+  bool main_started_ = false;  // a block with words or an O number was read
+  TapeBlock last_;             // the last block read
+  bool read_any_ = false;
+  std::map<std::uint64_t, LoopEnd> loop_ends_;         // by DO block
+  std::map<JumpKey, Jump> jumps_;                      // GOTO
+  std::map<JumpKey, std::optional<TapePos>> returns_;  // M99 P: site, return point, N
   bool done_ = false;
   bool failed_ = false;
   bool offsets_ok_ = true;
   bool warned_integer_ = false;
   long total_jumps_ = 0;
-  std::map<std::size_t, long> loop_runs_;
+  std::map<std::uint64_t, long> loop_runs_;  // by DO block
   std::vector<Frame> frames_;
   std::vector<Loop> main_loops_;
   std::vector<std::array<Value, 34>> locals_;

@@ -1,10 +1,13 @@
 #include "gcode/dialects/fanuc_macro.hpp"
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
+
+#include "gcode/dialects/fanuc_tape.hpp"
 
 namespace usina::gcode::fanuc {
 namespace {
@@ -12,12 +15,23 @@ namespace {
 constexpr double kRad = std::numbers::pi / 180.0;
 constexpr int kMaxBrackets = 5;  // [16L]: alarm 118 past 5 levels
 
+// ASCII, as a tape is: no locale asked per character.
 bool is_letter(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) != 0;
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
 }
 
 char upper(char c) {
-  return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+}
+
+bool is_operator_word(std::string_view l) {
+  auto is = [&](std::string_view w) {
+    if (l.size() != w.size()) return false;
+    for (std::size_t k = 0; k < l.size(); ++k)
+      if (upper(l[k]) != w[k]) return false;
+    return true;
+  };
+  return is("OR") || is("XOR") || is("AND") || is("MOD");
 }
 
 // Rounded and kept within ±1e15, so a huge or NaN value never overflows
@@ -67,9 +81,11 @@ std::nullopt_t MacroReader::fail(core::Code code, std::string message) {
   return std::nullopt;
 }
 
+// A comment reads as a blank where it stands (fanuc_tape.hpp).
 void MacroReader::blanks() {
-  while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t'))
-    ++i_;
+  while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '(')) {
+    i_ = text_[i_] == '(' ? skip_comment(text_, i_) : i_ + 1;
+  }
 }
 
 bool MacroReader::at_end() {
@@ -106,23 +122,70 @@ bool MacroReader::keyword(std::string_view word) {
   return true;
 }
 
+namespace {
+
+// The place values after the point, 0.1 then each a tenth of the last,
+// made once: the same values as dividing digit by digit.
+constexpr std::array<double, 24> kPlaces = [] {
+  std::array<double, 24> p{};
+  double d = 0.1;
+  for (double& x : p) {
+    x = d;
+    d /= 10;
+  }
+  return p;
+}();
+
+// One digit more of a number being read; `place` counts the digits after
+// the point (0: none yet, or no point).
+inline void add_digit(double& v, double& scale, std::size_t& place, char c) {
+  if (scale == 0) {
+    v = v * 10 + (c - '0');
+  } else {
+    v += (c - '0') * scale;
+    scale = ++place < kPlaces.size() ? kPlaces[place] : scale / 10;
+  }
+}
+
+}  // namespace
+
+bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_point) {
+  double scale = 0;
+  std::size_t place = 0;
+  std::size_t j = i;
+  v = 0;
+  had_point = false;
+  for (; j < text.size(); ++j) {
+    const char c = text[j];
+    if (c >= '0' && c <= '9') {
+      add_digit(v, scale, place, c);
+    } else if (c == '.' && !had_point) {
+      had_point = true;
+      scale = 0.1;
+    } else {
+      break;
+    }
+  }
+  if (j == i || (j == i + 1 && had_point)) return false;
+  i = j;
+  return std::isfinite(v);
+}
+
 std::optional<double> MacroReader::number() {
   blanks();
   const std::size_t start = i_;
   double v = 0;
   double scale = 0;
+  std::size_t place = 0;
   bool any = false;
   had_point_ = false;
   for (; i_ < text_.size(); ++i_) {
     const char c = text_[i_];
-    if (std::isdigit(static_cast<unsigned char>(c))) {
+    if (c == '(') {
+      i_ = skip_comment(text_, i_) - 1;  // a blank inside the number
+    } else if (c >= '0' && c <= '9') {
       any = true;
-      if (scale == 0) {
-        v = v * 10 + (c - '0');
-      } else {
-        v += (c - '0') * scale;
-        scale /= 10;
-      }
+      add_digit(v, scale, place, c);
     } else if (c == '.' && !had_point_) {
       had_point_ = true;
       scale = 0.1;
@@ -159,11 +222,37 @@ std::optional<long> MacroReader::variable_number() {
   return to_integer(*n);
 }
 
+// The common word value, a signed number and nothing else ("X-1.25"),
+// read without the descent through sum, product and unary; the same digits
+// give the same value. nullopt (and the position back) for anything else.
+std::optional<Value> MacroReader::plain_number() {
+  const std::size_t start = i_;
+  bool negative = false;
+  for (char c = peek(); c == '-' || c == '+'; c = peek()) {
+    ++i_;
+    negative = negative != (c == '-');
+  }
+  const char c = i_ < text_.size() ? text_[i_] : '\0';
+  if ((c >= '0' && c <= '9') || c == '.') {
+    // A number too long for a double fails here as it would below.
+    if (auto n = number()) {
+      const char next = i_ < text_.size() ? text_[i_] : '\0';
+      if (next == '\0' || (is_letter(next) && !is_operator_word(letters()))) {
+        literal_ = true;
+        return Value{negative ? -*n : *n};
+      }
+    }
+  }
+  i_ = start;
+  return std::nullopt;
+}
+
 std::optional<Value> MacroReader::expression() {
   single_var_ = false;
   literal_ = false;
   relation_ = false;
   const std::size_t start = i_;
+  if (auto plain = plain_number()) return plain;
   auto v = sum();
   if (!v) return std::nullopt;
   // One variable reference alone keeps its vacancy; anything else computed

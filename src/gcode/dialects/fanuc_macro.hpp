@@ -84,6 +84,7 @@ class MacroReader {
   std::optional<Value> bracket();
   std::optional<Value> function(std::string_view name);
   std::optional<double> number();
+  std::optional<Value> plain_number();
   std::string_view letters();
 
   std::string_view text_;
@@ -99,6 +100,12 @@ class MacroReader {
 };
 
 // Fanuc's functions and operators on plain numbers (unit-tested apart).
+// Digits with at most one point from text[i] on, read as
+// MacroReader::number reads them (the same value for the same digits); `i`
+// ends at the first other character. False, `i` unchanged, when there is
+// neither digit nor point.
+bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_point);
+
 double fix(double x);  // toward zero
 double fup(double x);  // away from zero
 double round_half_away(double x);

@@ -4,6 +4,7 @@
 // G10 L2 in G91), and the hand-over to the RS274NGC interpreter.
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -14,13 +15,30 @@
 namespace usina::gcode::fanuc {
 namespace {
 
+constexpr std::uint32_t kAxisLetters = Words::letters_of("XYZABCUVW");
+
 // Distances and angles: the decimal-point rule applies (§2).
 bool is_distance(char l) {
-  return std::string_view("XYZUVWABCIJKRQ").find(l) != std::string_view::npos;
+  constexpr std::uint32_t kDistances = Words::letters_of("XYZUVWABCIJKRQ");
+  return (Words::letter_bit(l) & kDistances) != 0;
+}
+
+// A code as a whole number, rounded half away from zero as std::lround
+// does, without a library call per word of every block (the codes are
+// asked for dozens of times a block); far out of range: no code.
+long whole(double v) {
+  if (!(v > -1e9 && v < 1e9)) return std::numeric_limits<long>::min();
+  return static_cast<long>(v < 0 ? v - 0.5 : v + 0.5);
+}
+
+// `whole` as an int; far out of range: no code any block asks for.
+int as_code(long v) {
+  return v >= -100'000'000 && v <= 100'000'000 ? static_cast<int>(v)
+                                               : std::numeric_limits<int>::min();
 }
 
 int tenths(double v) {
-  return static_cast<int>(std::lround(v * 10.0));
+  return as_code(whole(v * 10.0));
 }
 
 bool is_cycle(int g) {
@@ -38,7 +56,7 @@ std::string word_number(double v) {
   return s;
 }
 
-NcWord* Words::find(char letter) {
+NcWord* Words::lookup(char letter) {
   for (NcWord& w : list)
     if (w.letter == letter && !w.taken && !w.vacant) return &w;
   return nullptr;
@@ -49,29 +67,34 @@ double Words::get(char letter, double fallback) {
   return w != nullptr ? w->value : fallback;
 }
 
-bool Words::has_g(int t) const {
+int Words::code_of(const NcWord& w) {
+  return w.letter == 'G' ? tenths(w.value) : as_code(whole(w.value));
+}
+
+bool Words::holds_g(int t) const {
   for (const NcWord& w : list)
-    if (w.letter == 'G' && !w.taken && tenths(w.value) == t) return true;
+    if (w.letter == 'G' && !w.taken && code(w) == t) return true;
   return false;
 }
 
-bool Words::has_m(int m) const {
+bool Words::holds_m(int m) const {
   for (const NcWord& w : list)
-    if (w.letter == 'M' && !w.taken && std::lround(w.value) == m) return true;
+    if (w.letter == 'M' && !w.taken && code(w) == m) return true;
   return false;
 }
 
-void Words::take_g(int t) {
+void Words::drop_g(int t) {
   for (NcWord& w : list)
-    if (w.letter == 'G' && tenths(w.value) == t) w.taken = true;
+    if (w.letter == 'G' && code(w) == t) w.taken = true;
 }
 
 void Words::take_m(int m) {
   for (NcWord& w : list)
-    if (w.letter == 'M' && std::lround(w.value) == m) w.taken = true;
+    if (w.letter == 'M' && code(w) == m) w.taken = true;
 }
 
 void Words::take(char letter) {
+  if ((letters & letter_bit(letter)) == 0) return;
   for (NcWord& w : list)
     if (w.letter == letter) w.taken = true;
 }
@@ -101,7 +124,62 @@ bool Engine::word_in_range(const TapeBlock& b, char letter, std::size_t at, cons
   return true;
 }
 
+namespace {
+
+// Whether a plain block's word may end at text[i]: at the end, a blank, or
+// the next word's letter (not an exponent of the number).
+bool word_may_end(std::string_view text, std::size_t i) {
+  if (i >= text.size()) return true;
+  const char c = text[i];
+  return c == ' ' || c == '\t' || (c >= 'A' && c <= 'Z' && c != 'E');
+}
+
+// The words of a block made of letters and signed numbers only ("G1
+// X-1.25 Y0.5"), most blocks of a long program, read without the macro
+// reader, with the values it gives; false with `w` empty for any other
+// block (variables, brackets, functions, comments, lower case...).
+bool plain_block_words(std::string_view text, Words& w) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char l = text[i];
+    if (l == ' ' || l == '\t') {
+      ++i;
+      continue;
+    }
+    if (l < 'A' || l > 'Z') break;
+    std::size_t j = i + 1;
+    const bool negative = j < text.size() && text[j] == '-';
+    if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
+    NcWord word;
+    bool point = false;
+    if (!plain_digits(text, j, word.value, point) || !word_may_end(text, j)) break;
+    if (negative) word.value = -word.value;
+    word.letter = l;
+    word.raw = word.value;
+    word.integer_literal = !point;
+    word.pos = i;
+    if (l == 'G') word.code = tenths(word.value);
+    if (l == 'M') word.code = as_code(whole(word.value));
+    w.add(word);
+    i = j;
+  }
+  if (i >= text.size()) return true;
+  w.clear();
+  return false;
+}
+
+}  // namespace
+
 bool Engine::read_words(const TapeBlock& b, Words& w) {
+  if (plain_block_words(b.text, w)) {
+    // The checks of read_words below, for the words as they are.
+    for (NcWord& word : w.list) {
+      if (auto why = word_out_of_range(word.letter, word.value))
+        return error(core::Code::ValueOutOfRange, b, word.pos, *why);
+      word.checked = true;
+    }
+    return true;
+  }
   MacroReader r(b.text, *this);
   // The units the words read so far are in, kept as they come: asking the
   // list for G20/G21 before each word made a block quadratic in its length.
@@ -128,8 +206,12 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     word.value = word.raw = v->v;
     word.integer_literal = r.literal() && !r.had_point();
     word.vacant = v->vacant && r.single_variable();
+    word.checked = !v->vacant;  // word_in_range
     word.pos = at;
-    w.list.push_back(word);
+    // Codes are asked for dozens of times a block: read them once.
+    if (l == 'G') word.code = tenths(word.value);
+    if (l == 'M') word.code = as_code(whole(word.value));
+    w.add(word);
     if (l == 'G') {
       g20 = g20 || tenths(word.value) == 200;
       g21 = g21 || tenths(word.value) == 210;
@@ -212,7 +294,8 @@ bool Engine::macro_call(const TapeBlock& b, Words& w) {
 }
 
 bool Engine::nc_block(const TapeBlock& b) {
-  Words w;
+  Words& w = words_;  // its list's storage serves every block
+  w.clear();
   if (!read_words(b, w)) return false;
   decimal_point(b, w);
   for (const NcWord& g : w.list) {
@@ -258,15 +341,13 @@ bool Engine::nc_block(const TapeBlock& b) {
   }
   bool moved = false;
   for (const NcWord& word : w.list)
-    moved = moved || (!word.taken && !word.vacant &&
-                      std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos);
+    moved = moved ||
+            (!word.taken && !word.vacant && (Words::letter_bit(word.letter) & kAxisLetters) != 0);
   if (w.has_g(760) || w.has_g(870) || ((cycle_ == 760 || cycle_ == 870) && !w.has_g(800))) {
     if (!fine_boring(b, w)) return false;
   }
   group_one_motion(w);
-  const bool cancels_cycle = w.has_g(800);
   if (!hand_over(b, w)) return false;
-  if (cancels_cycle) interp_.forget_cycle_level();
   if (!xf_.active() && !polar_) reset_program_point();
   if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
   if (back) return give_back(*back, b, call_pos);
@@ -307,7 +388,7 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
     if (p != nullptr) {
       p->value = p->raw / 1000.0;
     } else if (x != nullptr) {
-      x->letter = 'P';
+      w.relabel(*x, 'P');
     }
   }
   // The interpreter never enters G76/G87 (fine_boring writes its moves).
@@ -332,12 +413,16 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
     } else if (starts && (cycle_p_ || motion == 820 || motion == 860 || motion == 890)) {
       // The dwell is modal on Fanuc; LinuxCNC wants P when a cycle starts.
       const double v = cycle_p_.value_or(0.0);
-      w.list.push_back({'P', v, v, false, false, false, 0});
+      w.add({'P', v, v, false, false, false, 0});
     }
     if (NcWord* q = w.find('Q')) q->value = std::fabs(q->value);
-    if (NcWord* k = w.find('K')) k->letter = 'L';
+    if (NcWord* k = w.find('K')) w.relabel(*k, 'L');
   }
   return true;
+}
+
+std::optional<double> Engine::cycle_level() const {
+  return is_cycle(interp_.state().motion) ? cycle_level_ : std::nullopt;
 }
 
 // R and Z of a cycle block: given, they are remembered as positions; left
@@ -346,7 +431,7 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
 void Engine::cycle_levels(Words& w, bool incremental) {
   const double per = core::mm_per(interp_.state().units);
   const double z_now = interp_.state().pos[2] / per;
-  const double initial = interp_.cycle_initial_level().value_or(z_now);
+  const double initial = cycle_level() ? *cycle_level() / per : z_now;
   NcWord* r = w.find('R');
   NcWord* z = w.find('Z');
   const std::optional<double> r_abs =
@@ -355,16 +440,16 @@ void Engine::cycle_levels(Words& w, bool incremental) {
   if (r_abs) cycle_r_ = r_abs;
   if (r == nullptr && cycle_r_) {
     const double v = incremental ? *cycle_r_ - initial : *cycle_r_;
-    w.list.push_back({'R', v, v, false, false, false, 0});
+    w.add({'R', v, v, false, false, false, 0});
   }
   if (z == nullptr && cycle_z_ && cycle_r_) {
     const double v = incremental ? *cycle_z_ - *cycle_r_ : *cycle_z_;
-    w.list.push_back({'Z', v, v, false, false, false, 0});
+    w.add({'Z', v, v, false, false, false, 0});
   }
 }
 
-// G76 fine boring and G87 back boring (docs/fanuc.md §7), written as
-// RS274NGC blocks for the interpreter. R and Z are kept as positions as in
+// G76 fine boring and G87 back boring (docs/fanuc.md §7), handed to the
+// interpreter as the moves they make. R and Z are kept as positions as in
 // the other cycles: in G91, R is the distance from the initial level and Z
 // from the R point, X Y from the current point, and each of the K repeats
 // steps the hole by X Y again (in G90 K bores the same hole K times).
@@ -418,31 +503,30 @@ bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Ve
   // program, so the shift is added after them (the hole is transformed).
   const double dx = g76_.shift == 0 ? q : g76_.shift == 1 ? -q : 0.0;
   const double dy = g76_.shift == 2 ? q : g76_.shift == 3 ? -q : 0.0;
-  const LinePos where{b.file, b.line, b.line_offset};
-  if (!interp_.run_block("G90", where)) return false;
+  if (!hand(b, {{'G', 90}})) return false;
   for (long n = 0; n < repeats; ++n) {
     const double x = first.x + step.x * static_cast<double>(n);
     const double y = first.y + step.y * static_cast<double>(n);
-    const std::string hole = fmt::format("G0 X{} Y{}", word_number(x), word_number(y));
-    const std::string shifted = fmt::format("G0 X{} Y{}", word_number(x + dx), word_number(y + dy));
-    std::vector<std::string> blocks{hole};
-    if (code == 760) {
-      blocks.insert(blocks.end(), {fmt::format("G0 Z{}", word_number(r)),
-                                   fmt::format("G1 Z{} F{}", word_number(z), word_number(g76_.f)),
-                                   fmt::format("G4 P{}", word_number(g76_.p)), "M19", shifted,
-                                   fmt::format("G0 Z{}", word_number(back)), hole, "M3"});
-    } else {
-      // G87: in shifted, down to R (the bottom), back, bore up to Z, out.
-      blocks.insert(blocks.end(),
-                    {"M19", shifted, fmt::format("G0 Z{}", word_number(r)), hole, "M3",
-                     fmt::format("G1 Z{} F{}", word_number(z), word_number(g76_.f)),
-                     fmt::format("G4 P{}", word_number(g76_.p)), "M19", shifted,
-                     fmt::format("G0 Z{}", word_number(top)), hole, "M3"});
-    }
-    for (const std::string& text : blocks)
-      if (!interp_.run_block(text, where)) return false;
+    const auto hole = [&] { return hand(b, {{'G', 0}, {'X', x}, {'Y', y}}); };
+    const auto shifted = [&] { return hand(b, {{'G', 0}, {'X', x + dx}, {'Y', y + dy}}); };
+    const auto orient = [&] { return hand(b, {{'M', 19}}); };
+    const auto bore = [&] {
+      return hand(b, {{'G', 1}, {'Z', z}, {'F', g76_.f}}) && hand(b, {{'G', 4}, {'P', g76_.p}});
+    };
+    const auto out = [&](double level) {
+      return hand(b, {{'G', 0}, {'Z', level}}) && hole() && hand(b, {{'M', 3}});
+    };
+    // G76: down to Z, dwell, orient, shift off the wall, out, back on the
+    // hole's axis. G87: in shifted, down to R (the bottom), back on the
+    // axis, bore up to Z, dwell, orient, shift, out above the part.
+    if (!hole()) return false;
+    const bool ok =
+        code == 760 ? hand(b, {{'G', 0}, {'Z', r}}) && bore() && orient() && shifted() && out(back)
+                    : orient() && shifted() && hand(b, {{'G', 0}, {'Z', r}}) && hole() &&
+                          hand(b, {{'M', 3}}) && bore() && orient() && shifted() && out(top);
+    if (!ok) return false;
   }
-  return !was_incremental || interp_.run_block("G91", where);
+  return !was_incremental || hand(b, {{'G', 91}});
 }
 
 // Fanuc's G80 is a group of its own: after it (and at power-on) axis words
@@ -452,50 +536,62 @@ void Engine::group_one_motion(Words& w) {
   bool axes = false;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
-    if (std::string_view("XYZABCUVW").find(word.letter) != std::string_view::npos) axes = true;
+    if ((Words::letter_bit(word.letter) & kAxisLetters) != 0) axes = true;
     if (word.letter != 'G') continue;
     const int t = tenths(word.value);
     if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
         t == 520 || t == 530 || t == 920 || t == 431)
       return;
   }
-  if (axes) w.list.push_back({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
+  if (axes) w.add({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
 }
 
+// The block's words down the interpreter's one road: its G codes in
+// tenths (one mirrored axis swaps the side of cutter compensation), M and L
+// as whole numbers, each word at the column the user wrote it at.
 bool Engine::hand_over(const TapeBlock& b, Words& w) {
-  const core::SourceLoc loc = loc_of(b, 0);
-  std::string text(loc.col > 1 ? loc.col - 1 : 0, ' ');
-  std::vector<ColumnMap::Span> spans;
+  handed_.clear();
+  const std::uint32_t col0 = loc_of(b, 0).col;  // a word's column is col0 + its position
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
     // Read in range (word_in_range), a value leaves it only by the scaling
-    // or rotation in force: say so at the word, before it becomes text.
-    if (auto why = word_out_of_range(word.letter, word.value)) {
-      return error(core::Code::ValueOutOfRange, b, word.pos,
-                   fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
-                               "G51.1)",
-                               *why));
-    }
-    spans.push_back({static_cast<std::uint32_t>(text.size() + 1), 0, loc_of(b, word.pos).col});
+    // or rotation in force: say so at the word.
+    if (!(word.checked && word.value == word.raw))
+      if (auto why = word_out_of_range(word.letter, word.value)) {
+        return error(core::Code::ValueOutOfRange, b, word.pos,
+                     fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
+                                 "G51.1)",
+                                 *why));
+      }
+    double v = word.value;
     if (word.letter == 'G') {
-      int t = tenths(word.value);
-      // One mirrored axis swaps the side of cutter compensation.
+      int t = tenths(v);
       if (xf_.reverses(interp_.state().plane) && (t == 410 || t == 420 || t == 411 || t == 421))
         t = t < 415 ? t + 10 : t - 10;
-      text += t % 10 == 0 ? fmt::format("G{} ", t / 10) : fmt::format("G{}.{} ", t / 10, t % 10);
+      v = t / 10.0;
     } else if (word.letter == 'M' || word.letter == 'L') {
-      text += fmt::format("{}{} ", word.letter, std::lround(word.value));
-    } else {
-      text += fmt::format("{}{} ", word.letter, word_number(word.value));
+      v = static_cast<double>(std::lround(v));
     }
-    spans.back().last = static_cast<std::uint32_t>(text.size());
+    handed_.push_back({word.letter, v, col0 + static_cast<std::uint32_t>(word.pos)});
   }
-  // The interpreter's diagnostics point at the Fanuc words, not at the
-  // rewritten text's columns.
-  columns_.set(b.file, b.line, std::move(spans));
-  const bool ok = interp_.run_block(text, {b.file, b.line, b.line_offset});
-  columns_.clear();
-  return ok;
+  return hand(b, handed_);
+}
+
+// The block's place: where its text starts (after '/', O and N); its
+// operations carry it, and the interpreter's diagnostics where no word
+// applies.
+core::SourceLoc Engine::block_loc(const TapeBlock& b) const {
+  core::SourceLoc loc = loc_of(b, 0);
+  loc.length = 0;
+  return loc;
+}
+
+bool Engine::hand(const TapeBlock& b, std::span<const EvaluatedWord> words) {
+  return interp_.run_evaluated({block_loc(b), words, {}, {}});
+}
+
+bool Engine::hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words) {
+  return hand(b, std::span<const EvaluatedWord>(words.begin(), words.size()));
 }
 
 }  // namespace usina::gcode::fanuc

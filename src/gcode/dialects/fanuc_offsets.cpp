@@ -127,8 +127,7 @@ bool Engine::offset_codes(const TapeBlock& b, Words& w) {
       return error(core::Code::ValueOutOfRange, b, h != nullptr ? h->pos : 0,
                    fmt::format("the length in offset register H{}: {}", h_register_, *why));
     }
-    if (!interp_.run_block(fmt::format("G43.1 Z{:.10f}", v), {b.file, b.line, b.line_offset}))
-      return false;
+    if (!hand(b, {{'G', 43.1}, {'Z', v}})) return false;
   }
   w.take_g(430);
   w.take_g(440);
@@ -144,8 +143,8 @@ bool Engine::offset_codes(const TapeBlock& b, Words& w) {
     w.take_g(410);
     w.take_g(420);
     const double g = side + 0.1;
-    w.list.push_back({'G', g, g, false, false, false, 0});
-    w.list.push_back({'D', 2 * std::fabs(r), 2 * std::fabs(r), false, false, false, 0});
+    w.add({'G', g, g, false, false, false, 0});
+    w.add({'D', 2 * std::fabs(r), 2 * std::fabs(r), false, false, false, 0});
   }
   return true;
 }

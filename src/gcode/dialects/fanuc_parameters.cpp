@@ -103,8 +103,8 @@ bool Engine::set_fanuc_parameter(const TapeBlock& b, long number, Words& w) {
     if (!mm) return false;
     // 5114: G73's back-off after each peck; 5115: G83's clearance above the
     // last peck.
-    if (number == 5114) interp_.set_peck_distances(*mm, interp_.peck_clearance_mm());
-    if (number == 5115) interp_.set_peck_distances(interp_.peck_retract_mm(), *mm);
+    if (number == 5114) pecks_.g73_retract_mm = *mm;
+    if (number == 5115) pecks_.g83_clearance_mm = *mm;
     return true;
   }
   const auto bits = parameter_bits(b, number, r, number == 5101 ? 0x30 : 1);

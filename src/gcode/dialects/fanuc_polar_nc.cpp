@@ -45,30 +45,30 @@ bool allowed_in_mode(int t) {
   }
 }
 
-using OtherAxes = std::array<std::optional<std::pair<double, double>>, 6>;  // from, to
+}  // namespace
 
-// The RS274NGC blocks of the machine moves, absolute (G90); the axes
-// outside the plane (X Y Z A B C order) at their share of the path.
-std::vector<std::string> piece_blocks(const PolarAxes& axes, const std::vector<PolarPoint>& points,
-                                      const OtherAxes& others, const std::string& feed) {
+// The machine moves of a virtual line or arc, absolute (G90) whatever the
+// program's mode; the axes outside the plane (X Y Z A B C order) at their
+// share of the path; the programmed feed on the first.
+bool Engine::polar_pieces(const TapeBlock& b, const std::vector<PolarPoint>& points,
+                          const PolarOthers& others, std::optional<double> feed) {
   static constexpr std::string_view kLetters = "XYZABC";
-  std::vector<std::string> out;
   for (const PolarPoint& p : points) {
-    std::string text = out.empty() ? "G90 G1" : "G1";
-    text += fmt::format(" {}{} {}{}", axes.linear_letter(), word_number(p.linear),
-                        axes.rotary_letter(), word_number(p.rotary));
+    handed_.clear();
+    if (&p == &points.front()) handed_.push_back({'G', 90});
+    handed_.push_back({'G', 1});
+    handed_.push_back({polar_axes_.linear_letter(), p.linear});
+    handed_.push_back({polar_axes_.rotary_letter(), p.rotary});
     for (std::size_t i = 0; i < others.size(); ++i) {
       if (!others[i]) continue;
       const auto [from, to] = *others[i];
-      text += fmt::format(" {}{}", kLetters[i], word_number(from + (to - from) * p.t));
+      handed_.push_back({kLetters[i], from + (to - from) * p.t});
     }
-    if (out.empty()) text += feed;
-    out.push_back(std::move(text));
+    if (feed && &p == &points.front()) handed_.push_back({'F', *feed});
+    if (!hand(b, handed_)) return false;
   }
-  return out;
+  return true;
 }
-
-}  // namespace
 
 bool Engine::polar_interp_codes(const TapeBlock& b, Words& w) {
   const bool on = w.has_g(121) || w.has_g(1120);
@@ -217,7 +217,7 @@ bool Engine::polar_interp_move(const TapeBlock& b, Words& w) {
     path = virtual_arc(from, to, *centre, motion == 30);
   }
   // The axes outside the plane move along, in proportion.
-  OtherAxes others{};
+  PolarOthers others{};
   for (std::size_t i = 0; i < kAxes.size(); ++i) {
     const char l = kAxes[i];
     const NcWord* word = w.find(l);
@@ -240,18 +240,16 @@ bool Engine::polar_interp_move(const TapeBlock& b, Words& w) {
                              "(Fanuc alarm OT0512; the manual's F < L·R·π/180 with L = 0)",
                              kPolarChordTolerance));
   }
-  std::string feed;
-  if (const NcWord* f = w.find('F')) feed = fmt::format(" F{}", word_number(f->value));
+  const NcWord* f = w.find('F');
+  const std::optional<double> feed = f != nullptr ? std::optional<double>(f->value) : std::nullopt;
   for (char l : std::string_view("XYZABCIJKRF"))
     w.take(l);
   w.take_g(10);
   w.take_g(20);
   w.take_g(30);
   const bool was_incremental = interp_.state().incremental;
-  const LinePos where{b.file, b.line, b.line_offset};
-  for (const std::string& text : piece_blocks(polar_axes_, points, others, feed))
-    if (!interp_.run_block(text, where)) return false;
-  if (was_incremental && !interp_.run_block("G91", where)) return false;
+  if (!polar_pieces(b, points, others, feed)) return false;
+  if (was_incremental && !hand(b, {{'G', 91}})) return false;
   if (end) polar_interp_.stop();
   return true;
 }

@@ -108,10 +108,14 @@ std::optional<std::string> StrokeCheck::path(const std::vector<core::Vec3>& poin
 
 void StrokeCheck::on(const canon::Op& op) {
   if (violation_) return;  // the control stopped at the alarm
+  // A straight move, most ops of a program: its end, and a list of points
+  // only when an area is armed.
+  const core::Vec3* to = nullptr;
+  if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) to = &t->to;
+  if (const auto* f = std::get_if<canon::Feed>(&op.kind)) to = &f->to;
+  if (const auto* p = std::get_if<canon::Probe>(&op.kind)) to = &p->to;
   std::vector<core::Vec3> points;
-  if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) points = {t->to};
-  if (const auto* f = std::get_if<canon::Feed>(&op.kind)) points = {f->to};
-  if (const auto* p = std::get_if<canon::Probe>(&op.kind)) points = {p->to};
+  if (to != nullptr && area_) points = {*to};
   if (const auto* s = std::get_if<canon::Spline>(&op.kind)) points = s->points;
   if (const auto* a = std::get_if<canon::Arc>(&op.kind)) points = arc_points(at_, *a);
   if (area_ && !points.empty()) {
@@ -121,6 +125,7 @@ void StrokeCheck::on(const canon::Op& op) {
     }
   }
   if (!points.empty()) at_ = points.back();
+  if (to != nullptr) at_ = *to;
   next_.on(op);
 }
 

@@ -1,6 +1,7 @@
 #include "gcode/dialects/fanuc_tape.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 
 namespace usina::gcode::fanuc {
@@ -10,11 +11,24 @@ bool blank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-// Reads a run of digits (blanks allowed between them) at `i`; -1 if none.
+// Skips blanks and comments (a comment reads as a blank).
+void skip_space(std::string_view s, std::size_t& i) {
+  while (i < s.size() && (blank(s[i]) || s[i] == '(')) {
+    i = s[i] == '(' ? skip_comment(s, i) : i + 1;
+  }
+}
+
+// Reads a run of digits (blanks and comments allowed between them) at `i`;
+// -1 if none.
 long digits(std::string_view s, std::size_t& i) {
   long v = -1;
   std::size_t j = i;
-  while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || blank(s[j]))) {
+  while (j < s.size() &&
+         (std::isdigit(static_cast<unsigned char>(s[j])) || blank(s[j]) || s[j] == '(')) {
+    if (s[j] == '(') {
+      j = skip_comment(s, j);
+      continue;
+    }
     if (!blank(s[j])) v = (v < 0 ? 0 : v) * 10 + (s[j] - '0');
     if (v > 99'999'999) break;
     ++j;
@@ -22,6 +36,17 @@ long digits(std::string_view s, std::size_t& i) {
   if (v >= 0) i = j;
   return v;
 }
+
+// The characters a block is made of, as against the blanks, comments,
+// block ends and '%' the tape is cut at.
+constexpr std::array<bool, 256> kWordChar = [] {
+  std::array<bool, 256> t{};
+  for (bool& x : t)
+    x = true;
+  for (unsigned char c : {' ', '\t', '\r', '(', '%', ';', '\n'})
+    t[c] = false;
+  return t;
+}();
 
 // The offset of the first line from `start` on that starts with '%'
 // (blanks before it allowed), or npos.
@@ -38,24 +63,38 @@ std::size_t first_percent_line(std::string_view text, std::size_t start) {
   return std::string_view::npos;
 }
 
-void skip_blanks(std::string_view s, std::size_t& i) {
-  while (i < s.size() && blank(s[i]))
-    ++i;
+}  // namespace
+
+namespace {
+
+// skip_comment(), and whether the comment was closed.
+std::size_t comment_end(std::string_view text, std::size_t open, bool& closed) {
+  int depth = 1;
+  closed = true;
+  for (std::size_t k = open + 1; k < text.size() && text[k] != '\n'; ++k) {
+    if (text[k] == '(') ++depth;
+    if (text[k] == ')' && --depth == 0) return k + 1;
+  }
+  closed = false;
+  return std::min(text.find('\n', open + 1), text.size());
 }
 
 }  // namespace
 
-// The block being cut from the tape: where it started, and, once a
-// comment was met, its text copied without the comments (so the words
-// around a comment read as one block).
+std::size_t skip_comment(std::string_view text, std::size_t open) {
+  bool closed = false;
+  return comment_end(text, open, closed);
+}
+
+// The block being cut from the tape: where it started, its first comment,
+// and where its last character outside a comment ends (blanks and comments
+// after it are not part of its text).
 struct Tape::PendingBlock {
   std::size_t start = 0;
   std::uint32_t line = 1;
   std::size_t line_start = 0;
   std::string_view comment;
-  std::string cleaned;
-  bool has_comment = false;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
+  std::size_t content_end = 0;
 };
 
 namespace {
@@ -81,46 +120,17 @@ Tape::PendingBlock tape_start(std::string_view text, std::size_t from, std::size
   return p;
 }
 
-// Takes the comment opening at text[open] out of the pending block, leaving
-// one blank in its place; returns the index of its last character.
-std::size_t take_comment(std::string_view text, std::size_t open, Tape::PendingBlock& p) {
-  // Inner '( )' pairs are read as part of the comment (programs quote
-  // settings in comments: "(READ WITH (DPI=0) ...)").
-  std::size_t close = std::string_view::npos;
-  int depth = 1;
-  for (std::size_t k = open + 1; k < text.size() && text[k] != '\n'; ++k) {
-    if (text[k] == '(') ++depth;
-    if (text[k] == ')' && --depth == 0) {
-      close = k;
-      break;
-    }
-  }
-  if (close == std::string_view::npos) close = text.find('\n', open + 1);
-  const std::size_t stop = close == std::string_view::npos ? text.size() : close;
-  if (!p.has_comment) p.cleaned.assign(text.substr(p.start, open - p.start));
-  if (p.comment.empty()) p.comment = text.substr(open + 1, stop - open - 1);
-  p.has_comment = true;
-  const std::size_t last =
-      (close != std::string_view::npos && text[close] == ')') ? close : stop - 1;
-  // Widths are kept summed, so a column is found by a binary search.
-  const std::uint32_t before = p.gaps.empty() ? 0 : p.gaps.back().second;
-  p.gaps.emplace_back(static_cast<std::uint32_t>(p.cleaned.size()),
-                      before + static_cast<std::uint32_t>(last - open));
-  p.cleaned += ' ';
-  return last;
-}
-
 // Reads a block's head: the '/' of block delete (with its optional switch
 // digit), the O (or ':') program number and the N sequence number, in the
 // order Fanuc allows them; returns where the block's words start.
 std::size_t read_block_head(std::string_view raw, TapeBlock& b) {
   std::size_t k = 0;
-  skip_blanks(raw, k);
+  skip_space(raw, k);
   if (k < raw.size() && raw[k] == '/') {
     b.deleted = true;
     ++k;
     if (k < raw.size() && std::isdigit(static_cast<unsigned char>(raw[k]))) ++k;
-    skip_blanks(raw, k);
+    skip_space(raw, k);
   }
   if (k < raw.size() && (raw[k] == 'O' || raw[k] == 'o' || raw[k] == ':')) {
     std::size_t j = k + 1;
@@ -138,106 +148,120 @@ std::size_t read_block_head(std::string_view raw, TapeBlock& b) {
       k = j;
     }
   }
-  skip_blanks(raw, k);
+  skip_space(raw, k);
   return k;
 }
 
 }  // namespace
 
-std::size_t Tape::add_file(std::uint32_t file, std::string_view text, std::size_t from) {
-  const std::size_t first = blocks_.size();
+TapePos Tape::add_file(std::uint32_t file, std::string_view text, std::size_t from) {
   std::size_t i = 0;
-  PendingBlock p = tape_start(text, std::min(from, text.size()), i);
-  bool closed = false;
-  for (; i < text.size(); ++i) {
+  const PendingBlock p = tape_start(text, std::min(from, text.size()), i);
+  const TapePos start{file, p.line, i, p.line_start};
+  files_.push_back({file, text, start, false});
+  return start;
+}
+
+std::string_view Tape::text_of(std::uint32_t file) const {
+  for (const File& f : files_) {
+    if (f.id == file) return f.text;
+  }
+  return {};
+}
+
+TapeBlock Tape::cut(TapePos at) const {
+  const std::string_view text = text_of(at.file);
+  PendingBlock p{at.offset, at.line, at.line_start, {}, at.offset};
+  TapeBlock b;
+  for (std::size_t i = at.offset; i < text.size(); ++i) {
     const char c = text[i];
+    if (kWordChar[static_cast<unsigned char>(c)]) {
+      // A run of the block's own characters: nothing to decide in it.
+      std::size_t j = i + 1;
+      while (j < text.size() && kWordChar[static_cast<unsigned char>(text[j])])
+        ++j;
+      p.content_end = j;
+      i = j - 1;
+      continue;
+    }
     if (c == '(') {
-      i = take_comment(text, i, p);
+      bool shut = false;
+      const std::size_t after = comment_end(text, i, shut);
+      if (p.comment.empty()) p.comment = text.substr(i + 1, after - i - (shut ? 2 : 1));
+      i = after - 1;
       continue;
     }
     if (c == '%') {
-      end_block(file, text, i, p);
-      closed = true;
-      break;
+      if (make_block(at.file, text, i, p, b)) {
+        b.next = {at.file, p.line, i, p.line_start};
+        return b;
+      }
+      b = TapeBlock{};
+      b.at = {at.file, p.line, i, p.line_start};
+      b.end = b.closed = true;
+      return b;
     }
     if (c == ';' || c == '\n') {
-      end_block(file, text, i, p);
+      const bool made = make_block(at.file, text, i, p, b);
       p.start = i + 1;
+      p.comment = {};
       if (c == '\n') {
         ++p.line;
         p.line_start = i + 1;
       }
+      if (made) {
+        b.next = {at.file, p.line, p.start, p.line_start};
+        return b;
+      }
       continue;
     }
-    if (p.has_comment) p.cleaned += c;
+    if (!blank(c)) p.content_end = i + 1;
   }
-  if (!closed && p.start < text.size()) end_block(file, text, text.size(), p);
-  files_.push_back({first, blocks_.size(), closed});
-  return first;
+  if (p.start < text.size() && make_block(at.file, text, text.size(), p, b)) {
+    b.next = {at.file, p.line, text.size(), p.line_start};
+    return b;
+  }
+  b = TapeBlock{};
+  b.at = {at.file, p.line, std::max<std::uint64_t>(at.offset, text.size()), p.line_start};
+  b.end = true;
+  return b;
 }
 
-void Tape::end_block(std::uint32_t file, std::string_view text, std::size_t stop, PendingBlock& p) {
-  std::string_view raw =
-      p.has_comment ? std::string_view(p.cleaned) : text.substr(p.start, stop - p.start);
-  TapeBlock b;
+// The pending block cut at `stop` into `b`; false when it is empty.
+bool Tape::make_block(std::uint32_t file, std::string_view text, std::size_t stop,
+                      const PendingBlock& p, TapeBlock& b) const {
+  const std::string_view raw = text.substr(p.start, stop - p.start);
+  b = TapeBlock{};
   b.file = file;
   b.line = p.line;
   b.line_offset = p.line_start;
   b.col = static_cast<std::uint32_t>(p.start - p.line_start + 1);
   b.comment = p.comment;
   b.length = stop - p.start;
+  b.at = {file, p.line, p.start, p.line_start};
   const std::size_t k = read_block_head(raw, b);
-  if (b.program >= 0) programs_.emplace(b.program, blocks_.size());
-  std::string_view rest = raw.substr(k);
-  while (!rest.empty() && blank(rest.back()))
-    rest.remove_suffix(1);
-  if (p.has_comment) {
-    // The copy dies with the pending block; the tape keeps its own.
-    b.text_start = static_cast<std::uint32_t>(rest.data() - raw.data());
-    b.gaps = p.gaps;
-    stripped_.emplace_back(rest);
-    rest = stripped_.back();
-  }
-  b.text = rest;
+  const std::size_t end = p.content_end > p.start + k ? p.content_end - p.start : k;
+  b.text = raw.substr(k, end - k);
+  b.text_col = b.col + static_cast<std::uint32_t>(k);
   // Blank lines and stray ';' make no block.
-  if (!rest.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty())
-    blocks_.push_back(b);
-  p.cleaned.clear();
-  p.has_comment = false;
-  p.comment = {};
-  p.gaps.clear();
+  return !b.text.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty();
 }
 
-const Tape::FileSpan& Tape::span_of(std::size_t i) const {
-  for (const FileSpan& f : files_) {
-    if (i >= f.first && i < f.end) return f;
+std::optional<TapePos> Tape::program(long number) {
+  if (auto it = programs_.find(number); it != programs_.end()) return it->second;
+  for (File& f : files_) {
+    while (!f.all_indexed) {
+      const TapeBlock b = cut(f.indexed);
+      if (b.end) {
+        f.all_indexed = true;
+        break;
+      }
+      f.indexed = b.next;
+      if (b.program >= 0 && programs_.emplace(b.program, b.at).second && b.program == number)
+        return b.at;
+    }
   }
-  return files_.back();
-}
-
-std::size_t Tape::program(long number) const {
-  auto it = programs_.find(number);
-  return it == programs_.end() ? npos : it->second;
-}
-
-std::size_t Tape::program_end(std::size_t i) const {
-  const FileSpan& f = span_of(i);
-  for (std::size_t k = i + 1; k < f.end; ++k) {
-    if (blocks_[k].program >= 0) return k;
-  }
-  return f.end;
-}
-
-std::size_t Tape::program_start(std::size_t i) const {
-  const FileSpan& f = span_of(i);
-  for (std::size_t k = i + 1; k-- > f.first;) {
-    if (blocks_[k].program >= 0) return k;
-  }
-  return f.first;
-}
-
-bool Tape::closed(std::size_t i) const {
-  return span_of(i).closed;
+  return std::nullopt;
 }
 
 }  // namespace usina::gcode::fanuc

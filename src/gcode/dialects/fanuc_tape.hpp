@@ -5,75 +5,97 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 namespace usina::gcode::fanuc {
+
+// Where a comment that opens at text[open] ends: after its ')' (inner
+// '( )' pairs belong to it: "(READ WITH (DPI=0) ...)"), or at the end of
+// its line when it is never closed. The tape, the block head and the macro
+// reader all skip a comment as one blank where it stands.
+std::size_t skip_comment(std::string_view text, std::size_t open);
+
+// Where a block starts on the tape: its file (a SourceManager id), its
+// offset there, and the line it is on. Blocks are named by where they
+// stand, so the tape holds no list of blocks and streams in constant memory.
+struct TapePos {
+  std::uint32_t file = 0;
+  std::uint32_t line = 1;
+  std::uint64_t offset = 0;
+  std::uint64_t line_start = 0;  // offset of the line's first character
+
+  // One number that orders positions of a file (files apart).
+  std::uint64_t key() const { return (std::uint64_t{file} << 40) | offset; }
+
+  friend bool operator==(const TapePos& a, const TapePos& b) { return a.key() == b.key(); }
+
+  friend bool operator<(const TapePos& a, const TapePos& b) { return a.key() < b.key(); }
+
+  friend bool operator<=(const TapePos& a, const TapePos& b) { return a.key() <= b.key(); }
+};
 
 struct TapeBlock {
   std::uint32_t file = 0;
   std::uint32_t line = 0;
   std::uint32_t col = 1;  // of the block's first character in its line
   std::uint64_t line_offset = 0;
-  std::string_view text;     // without '/', the N word and comments
-  std::string_view comment;  // the first ( ) comment's text
-  std::size_t length = 0;    // of the block in the file, its head and comments included
-  long sequence = -1;        // N number, -1 when none
-  bool deleted = false;      // '/' at the start
-  long program = -1;         // O number when the block starts a program
-  // A block with a comment has its text copied without it: where `text`
-  // started in the block (from `col`), and each comment's place in that
-  // copy with the characters it took beyond its one blank, so a position
-  // in `text` finds its column again (the widths summed up to each
-  // comment, in the order of the text).
-  std::uint32_t text_start = 0;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> gaps;
+  // The block's words and statements in the file, after '/', O and N and
+  // without the blanks and comments around them; comments between the
+  // words stay where they are (readers skip them as blanks), so a position
+  // in `text` is a column of the line.
+  std::string_view text;
+  std::uint32_t text_col = 1;  // the column of text[0] in its line
+  std::string_view comment;    // the first ( ) comment's text
+  std::size_t length = 0;      // of the block in the file, its head and comments included
+  long sequence = -1;          // N number, -1 when none
+  bool deleted = false;        // '/' at the start
+  long program = -1;           // O number when the block starts a program
+  TapePos at;                  // where the block starts
+  TapePos next;                // where the block after it starts
+  // No block: the file's tape ends at `at` ('%' when `closed`, else the
+  // end of the file).
+  bool end = false;
+  bool closed = false;
 };
 
+// The blocks of the program's files, cut from the text where they stand
+// when they are read; an index of the O blocks is made as far as a call
+// needs it (the first program of each number counts, files in the order
+// they were added).
 class Tape {
  public:
-  // Appends the blocks of one file, read from `from` on (past a byte-order
-  // mark); returns the index of its first block.
-  std::size_t add_file(std::uint32_t file, std::string_view text, std::size_t from = 0);
+  // Adds a file whose tape is read from `from` on (past a byte-order
+  // mark); returns where its first block may start.
+  TapePos add_file(std::uint32_t file, std::string_view text, std::size_t from = 0);
+
+  // The block that starts at `p` or after it (blank lines and stray ';'
+  // make no block), or the end of the file's tape.
+  TapeBlock cut(TapePos p) const;
+
+  // Where the O block of program `number` stands, if a file holds one.
+  std::optional<TapePos> program(long number);
 
   // The block add_file is cutting (defined in fanuc_tape.cpp; public only so
   // the file's helpers can name it).
   struct PendingBlock;
 
-  const TapeBlock& at(std::size_t i) const { return blocks_[i]; }
-
-  std::size_t size() const { return blocks_.size(); }
-
-  // The block that starts program `number` (its O block), or npos.
-  std::size_t program(long number) const;
-  // The last block of the program holding block i (before the next O block
-  // or the end of that file's blocks), exclusive.
-  std::size_t program_end(std::size_t i) const;
-  // The first block of the program holding block i.
-  std::size_t program_start(std::size_t i) const;
-  // Whether the file holding block i closed its tape with '%'.
-  bool closed(std::size_t i) const;
-
-  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-
  private:
-  struct FileSpan {
-    std::size_t first = 0;
-    std::size_t end = 0;
-    bool closed = false;
+  struct File {
+    std::uint32_t id = 0;
+    std::string_view text;
+    TapePos indexed;  // O blocks before it are in programs_
+    bool all_indexed = false;
   };
 
-  const FileSpan& span_of(std::size_t i) const;
-  // Cuts the pending block at `stop` and appends it unless it is empty.
-  void end_block(std::uint32_t file, std::string_view text, std::size_t stop, PendingBlock& p);
-  std::vector<TapeBlock> blocks_;
-  std::vector<FileSpan> files_;
-  std::map<long, std::size_t> programs_;
-  std::deque<std::string> stripped_;  // block texts with comments removed
+  std::string_view text_of(std::uint32_t file) const;
+  bool make_block(std::uint32_t file, std::string_view text, std::size_t stop,
+                  const PendingBlock& p, TapeBlock& b) const;
+  std::vector<File> files_;
+  std::map<long, TapePos> programs_;
 };
 
 }  // namespace usina::gcode::fanuc

@@ -316,7 +316,7 @@ bool Engine::transform_words(const TapeBlock& b, Words& w) {
     const double out = incremental ? q[n] - actual[n] : q[n];
     w.take(kAxes[i]);
     // At the word it came from, for the diagnostics of its value.
-    w.list.push_back({kAxes[i], out, out, false, false, false, axis[i] ? axis[i]->pos : 0});
+    w.add({kAxes[i], out, out, false, false, false, axis[i] ? axis[i]->pos : 0});
   }
   return !arc || transformed_arc(b, w, plane, centre, start_prog);
 }
@@ -343,7 +343,7 @@ bool Engine::transformed_arc(const TapeBlock& b, Words& w, core::Plane plane,
   for (NcWord& word : w.list)
     if (word.letter == 'G' && (tenths(word.value) == 20 || tenths(word.value) == 30))
       word.taken = true;
-  w.list.push_back({'G', g / 10.0, g / 10.0, false, false, false, 0});
+  w.add({'G', g / 10.0, g / 10.0, false, false, false, 0});
   if (centre[first] || centre[second]) {
     core::Vec3 c = start_prog;
     for (std::size_t i : {first, second})
@@ -353,7 +353,7 @@ bool Engine::transformed_arc(const TapeBlock& b, Words& w, core::Plane plane,
     for (std::size_t i : {first, second}) {
       const double v = cq[static_cast<int>(i)] - actual[static_cast<int>(i)];
       w.take(kCentres[i]);
-      w.list.push_back({kCentres[i], v, v, false, false, false, 0});
+      w.add({kCentres[i], v, v, false, false, false, 0});
     }
   } else if (NcWord* r = w.find('R'); r != nullptr && xf_.scaling) {
     r->value *= std::fabs(xf_.scale[pa.first]);

@@ -51,15 +51,14 @@ void Engine::apply_start_external() {
                             interp_.parameters().get(n) + external_[static_cast<std::size_t>(a)]);
     }
   }
-  if (tape_.size() > 0) reselect(tape_.at(0));
+  if (const TapeBlock first = tape_.cut(main_start_); !first.end) reselect(first);
 }
 
 // The interpreter applies a system's parameters when it is selected: select
 // the active one again after its parameters changed.
 bool Engine::reselect(const TapeBlock& b) {
   const int n = interp_.state().coord_system;
-  const std::string code = n <= 6 ? fmt::format("G{}", 53 + n) : "G59.3";
-  return interp_.run_block(code, {b.file, b.line, b.line_offset});
+  return hand(b, {{'G', n <= 6 ? 53.0 + n : 59.3}});
 }
 
 // The active G54.1 system (plus EXT) into the G59.3 slot.
@@ -97,7 +96,7 @@ bool Engine::work_codes(const TapeBlock& b, Words& w) {
   w.take('P');
   additional_p_ = n;
   if (!load_additional(b)) return false;
-  w.list.push_back({'G', 59.3, 59.3, false, false, false, 0});
+  w.add({'G', 59.3, 59.3, false, false, false, 0});
   return true;
 }
 

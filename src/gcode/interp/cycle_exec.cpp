@@ -39,7 +39,11 @@ bool Interpreter::cycle(BlockWords& w, GCode g, GCode previous) {
   cm.motion_mode_changed = previous != g;
   cm.spindle = state_.spindle;
   cm.peck_clearance = options_.peck_clearance_mm;
-  cm.peck_retract = options_.peck_retract_mm;
+  if (cycle_hooks_ != nullptr) {
+    const PeckDistances d = cycle_hooks_->peck_distances();
+    cm.peck_clearance = d.g83_clearance_mm;
+    cm.peck_retract = d.g73_retract_mm;
+  }
   cm.length_unit = core::mm_per(state_.units);
   cm.diameter_mode = state_.lathe_diameter;
   machine_.set_origin(canon::Origin::Cycle);
@@ -47,6 +51,9 @@ bool Interpreter::cycle(BlockWords& w, GCode g, GCode previous) {
   machine_.set_origin(canon::Origin::Program);
   if (e) return error(*e);
   set_xyz(state_.pos, cycles_.end_point());
+  if (cycle_hooks_ != nullptr && cycles_.initial_level()) {
+    cycle_hooks_->cycle_ran(*cycles_.initial_level());
+  }
   return true;
 }
 

@@ -17,8 +17,8 @@ double Interpreter::tool_diameter(int tool) const {
   return t != nullptr ? t->diameter : 0.0;
 }
 
-bool Interpreter::comments(const Block& b) {
-  for (const CommentText& c : b.comments) {
+bool Interpreter::comments(std::span<const CommentText> notes) {
+  for (const CommentText& c : notes) {
     std::string_view t = c.text;
     while (!t.empty() && (t.front() == ' ' || t.front() == '\t'))
       t.remove_prefix(1);
@@ -46,8 +46,8 @@ void Interpreter::in_order(std::function<void()> effect) {
       loc_, [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
 }
 
-bool Interpreter::execute(const Block& b, BlockWords& w) {
-  comments(b);
+bool Interpreter::execute(std::span<const CommentText> notes, BlockWords& w) {
+  comments(notes);
   if (!tool_and_spindle(w)) return false;
   if (w.g[kGroupNonModal] == 40) {
     if (!w.has('P') || w.get('P') < 0) {

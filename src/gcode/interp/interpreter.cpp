@@ -12,9 +12,10 @@
 namespace usina::gcode {
 
 Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
-                         core::DiagnosticSink& diags)
+                         core::DiagnosticSink& diags, CycleHooks* cycle_hooks)
     : sources_(sources),
       options_(std::move(options)),
+      cycle_hooks_(cycle_hooks),
       sink_(sink),
       diags_(diags),
       machine_(sink, state_, diags),
@@ -123,15 +124,24 @@ Interpreter::Flow Interpreter::step() {
   if (block_.deleted && options_.block_delete) return Flow::Next;
   if (block_.o) return control(*block_.o, where.offset);
   if (block_.empty()) return Flow::Next;
+  if (!evaluate(block_) || !run_evaluated(evaluated(block_))) return Flow::Error;
+  return ended_ ? Flow::End : Flow::Next;
+}
+
+bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
+  if (failed_ || ended_) return !failed_;
+  loc_ = block.loc;
+  machine_.set_source(loc_);
+  if (block.empty()) return true;
   BlockWords& w = *words_;
-  if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return Flow::Error;
+  if (!sort_words(block.words, w) || !assign(block.assigns) || !check(w)) return false;
   // The block works on a copy of the modal state: a failed block changes nothing.
   const ModalState before = state_;
-  if (!execute(block_, w) || machine_faulted()) {
+  if (!execute(block.comments, w) || machine_faulted()) {
     state_ = before;
-    return Flow::Error;
+    return false;
   }
-  return ended_ ? Flow::End : Flow::Next;
+  return true;
 }
 
 bool Interpreter::run_block(std::string_view text, const LinePos& where) {
@@ -143,14 +153,7 @@ bool Interpreter::run_block(std::string_view text, const LinePos& where) {
   loc_ = block_.loc;
   machine_.set_source(loc_);
   if (block_.empty()) return true;
-  BlockWords& w = *words_;
-  if (!evaluate(block_, w) || !assign_parameters(block_) || !check(w)) return false;
-  const ModalState before = state_;
-  if (!execute(block_, w) || machine_faulted()) {
-    state_ = before;
-    return false;
-  }
-  return true;
+  return evaluate(block_) && run_evaluated(evaluated(block_));
 }
 
 bool Interpreter::finish() {
@@ -169,76 +172,48 @@ bool Interpreter::machine_faulted() {
   return machine_.faulted();
 }
 
-bool Interpreter::evaluate(const Block& b, BlockWords& w) {
+bool Interpreter::sort_words(std::span<const EvaluatedWord> words, BlockWords& w) {
   w.reset();
-  EvalError err;
-  for (const Word& word : b.words) {
-    // Most words are plain numbers: no evaluator needed.
-    const ExprNode& node = b.expr(word.value);
-    auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
-                                           : gcode::evaluate(b, word.value, *this, err);
-    if (!v) return error(err.error, err.col);
-    if (auto why = word_out_of_range(word.letter, *v)) {
-      return error(core::Code::ValueOutOfRange, word.col, *why);
-    }
-    if (word.letter == 'G' || word.letter == 'M') {
-      // Codes are read in tenths (G38.2 → 382); M codes must be integers.
-      const double tenths = std::round(*v * 10.0);
-      if (!(*v >= 0 && tenths <= 99990) || std::fabs(*v * 10.0 - tenths) > 1e-6 ||
-          (word.letter == 'M' && static_cast<long>(tenths) % 10 != 0)) {
-        return error(word.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode,
-                     word.col, fmt::format("{}{} is not a code", word.letter, *v));
-      }
-      const int code = static_cast<int>(tenths);
-      if (!(word.letter == 'G' ? place_g(w, code, word.col) : place_m(w, code / 10, word.col))) {
-        return false;
-      }
-      continue;
-    }
-    if (w.has(word.letter)) {
-      return error(core::Code::RepeatedWord, word.col,
-                   fmt::format("{} word appears twice in the block", word.letter));
-    }
-    w.set(word.letter, *v, word.col);
+  for (const EvaluatedWord& word : words) {
+    if (!sort_word(word, w)) return false;
   }
   return true;
 }
 
-bool Interpreter::assign_parameters(const Block& b) {
-  // RS274NGC 3.2.1: every value of the block is read before any assignment
-  // takes effect, so all right-hand sides are evaluated first.
-  struct Pending {
-    int index;
-    std::string name;
-    double value;
-    std::uint32_t col;
-  };
-
-  std::vector<Pending> pending;
-  EvalError err;
-  for (const ParamAssign& a : b.assigns) {
-    auto v = gcode::evaluate(b, a.value, *this, err);
-    if (!v) return error(err.error, err.col);
-    if (a.index == kNoExpr) {
-      std::string name = normalise_name(a.name);
-      if (predefined(name)) {
-        return error(core::Code::ReadOnlyParameter, a.col,
-                     fmt::format("#<{}> is a read-only parameter", name));
-      }
-      pending.push_back({0, std::move(name), *v, a.col});
-      continue;
-    }
-    auto idx = gcode::evaluate(b, a.index, *this, err);
-    if (!idx) return error(err.error, err.col);
-    auto index = parameter_index(*idx, a.col, err);
-    if (!index) return error(err.error, err.col);
-    pending.push_back({*index, {}, *v, a.col});
+// A word into its place: a code into its modal group (codes are read in
+// tenths, G38.2 → 382; M codes are whole numbers), any other letter once.
+bool Interpreter::sort_word(const EvaluatedWord& word, BlockWords& w) {
+  const double v = word.value;
+  if (auto why = word_out_of_range(word.letter, v)) {
+    return error(core::Code::ValueOutOfRange, word.col, *why);
   }
-  for (const Pending& p : pending) {
-    if (p.index > 0) {
-      params_.set(p.index, p.value);
+  if (word.letter == 'G' || word.letter == 'M') {
+    const double tenths = std::round(v * 10.0);
+    if (!(v >= 0 && tenths <= 99990) || std::fabs(v * 10.0 - tenths) > 1e-6 ||
+        (word.letter == 'M' && static_cast<long>(tenths) % 10 != 0)) {
+      return error(word.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode,
+                   word.col, fmt::format("{}{} is not a code", word.letter, v));
+    }
+    const int code = static_cast<int>(tenths);
+    return word.letter == 'G' ? place_g(w, code, word.col) : place_m(w, code / 10, word.col);
+  }
+  if (w.has(word.letter)) {
+    return error(core::Code::RepeatedWord, word.col,
+                 fmt::format("{} word appears twice in the block", word.letter));
+  }
+  w.set(word.letter, v, word.col);
+  return true;
+}
+
+bool Interpreter::assign(std::span<const EvaluatedAssign> assigns) {
+  for (const EvaluatedAssign& a : assigns) {
+    if (a.index > 0) {
+      params_.set(a.index, a.value);
+    } else if (predefined(a.name)) {
+      return error(core::Code::ReadOnlyParameter, a.col,
+                   fmt::format("#<{}> is a read-only parameter", a.name));
     } else {
-      params_.set_named(p.name, p.value);
+      params_.set_named(a.name, a.value);
     }
   }
   return true;

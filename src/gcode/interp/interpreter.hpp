@@ -18,6 +18,8 @@
 #include "gcode/interp/canned_cycles.hpp"
 #include "gcode/interp/canon_machine.hpp"
 #include "gcode/interp/cutter_comp.hpp"
+#include "gcode/interp/cycle_hooks.hpp"
+#include "gcode/interp/evaluated_block.hpp"
 #include "gcode/interp/state.hpp"
 #include "gcode/parameters.hpp"
 #include "gcode/parser.hpp"
@@ -28,21 +30,20 @@ namespace usina::gcode {
 
 struct InterpOptions {
   core::LengthUnit machine_units = core::LengthUnit::Mm;  // of the tool table and parameters
-  double peck_clearance_mm = 1.0;                         // G73/G83 retract above the last peck
-  std::vector<std::string> subroutine_path;               // folders searched for o<name> call
-  long max_loop_iterations = 10'000'000;   // per run of a loop, so a runaway loop ends
-  long max_total_iterations = 10'000'000;  // all loops of the program together
+  // G73's back-off and G83's clearance above the last peck, unless the
+  // front end gives CycleHooks (cycle_hooks.hpp).
+  double peck_clearance_mm = 1.0;
+  std::vector<std::string> subroutine_path;  // folders searched for o<name> call
+  long max_loop_iterations = 10'000'000;     // per run of a loop, so a runaway loop ends
+  long max_total_iterations = 10'000'000;    // all loops of the program together
   int max_call_depth = 200;
   double spline_tolerance_mm = 0.001;
-  // G73's back-off after each peck; empty: peck_clearance_mm.
-  std::optional<double> peck_retract_mm;
   bool block_delete = false;  // '/' blocks skipped (the operator's switch; off as in LinuxCNC)
   // G41/G42 are checked but offset nothing: the moves are the programmed
   // contour (what a part drawing shows), not the tool centre.
   bool ignore_cutter_comp = false;
   ToolTable tools;
-  std::string offset_file;  // fanuc: the H and D offset registers (docs/fanuc.md)
-  core::Vec3 start{};       // where the tool is when the program starts (usina draw --start)
+  core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
   // The motion mode at the start, in tenths: LinuxCNC's G80; a controller
   // that powers up in another (Grbl: G0) sets it.
   GCode start_motion = 800;
@@ -57,8 +58,10 @@ struct BlockWords;
 
 class Interpreter final : private ParameterSource {
  public:
+  // `cycle_hooks`: a dialect's own cycle state (cycle_hooks.hpp: the peck
+  // distances a program may change, the initial level); null for LinuxCNC's.
   Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
-              core::DiagnosticSink& diags);
+              core::DiagnosticSink& diags, CycleHooks* cycle_hooks = nullptr);
   ~Interpreter() override;
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
@@ -72,9 +75,19 @@ class Interpreter final : private ParameterSource {
 
   const ModalState& state() const { return state_; }
 
-  // For a front end that cuts and expands blocks itself (the fanuc
-  // dialect): runs one RS274NGC block of text, located at `where` for its
-  // diagnostics. False after an error. `finish` ends such a run.
+  // The entry below the text (evaluated_block.hpp): steps 2-4 of one block
+  // a front end has evaluated. The words are sorted into modal groups (an
+  // unknown code, two codes of one group, a repeated word or a value out of
+  // range is an error at its word), the assignments take effect, the block
+  // is checked, planned and executed on a copy of the modal state that
+  // replaces the state only when the block succeeded. False after an error
+  // (reported; the run stops there). Interpreter::run() sends every block of
+  // an RS274NGC program through it; a front end with its own reader calls it
+  // block by block and ends with finish().
+  bool run_evaluated(const EvaluatedBlock& block);
+  // One line of RS274NGC text read by this interpreter's own reader, then
+  // run down the same road (Grbl's front end, until it hands its words
+  // evaluated: issue 12). No control flow: an O-word is not run here.
   bool run_block(std::string_view text, const LinePos& where);
   bool finish();
   // What run() does before the first block: the work offset and G92 a
@@ -92,25 +105,6 @@ class Interpreter final : private ParameterSource {
   void roll_back();
 
   bool ended() const { return ended_; }
-
-  // Fanuc: G80 ends a cycle mode, so the next cycle's initial level is
-  // where it starts (LinuxCNC keeps its cycle_il until another motion).
-  void forget_cycle_level() { cycles_.note_other_motion(); }
-
-  std::optional<double> cycle_initial_level() const { return cycles_.initial_level(); }
-
-  // The machine settings of G73's back-off and G83's clearance, changed
-  // during a run (a control's parameters set by the program).
-  void set_peck_distances(double g73_retract_mm, double g83_clearance_mm) {
-    options_.peck_retract_mm = g73_retract_mm;
-    options_.peck_clearance_mm = g83_clearance_mm;
-  }
-
-  double peck_retract_mm() const {
-    return options_.peck_retract_mm.value_or(options_.peck_clearance_mm);
-  }
-
-  double peck_clearance_mm() const { return options_.peck_clearance_mm; }
 
   bool failed() const { return failed_; }
 
@@ -185,15 +179,25 @@ class Interpreter final : private ParameterSource {
   void jump_to(std::uint32_t file, const OEntry& e, bool after);
   bool end_of_file();
 
-  // Block steps (interpreter.cpp, execute.cpp).
-  bool evaluate(const Block& b, BlockWords& w);
-  bool assign_parameters(const Block& b);
+  // Step 1 of an RS274NGC block (evaluate.cpp): its values into
+  // evaluated_ and assigns_.
+  bool evaluate(const Block& b);
+  bool evaluate_assigns(const Block& b);
+  bool evaluation_failed(core::Code code, std::uint32_t col, std::string message);
+  EvaluatedBlock evaluated(const Block& b) const;
+  std::vector<EvaluatedWord> evaluated_;
+  std::vector<EvaluatedAssign> assigns_;
+
+  // Steps 2-4 (interpreter.cpp, check.cpp, execute.cpp).
+  bool sort_words(std::span<const EvaluatedWord> words, BlockWords& w);
+  bool sort_word(const EvaluatedWord& word, BlockWords& w);
+  bool assign(std::span<const EvaluatedAssign> assigns);
   bool place_g(BlockWords& w, GCode g, std::uint32_t col);
   bool place_m(BlockWords& w, int m, std::uint32_t col);
   bool check(BlockWords& w);
   bool check_unused(const BlockWords& w);
-  bool execute(const Block& b, BlockWords& w);
-  bool comments(const Block& b);
+  bool execute(std::span<const CommentText> notes, BlockWords& w);
+  bool comments(std::span<const CommentText> notes);
   bool tool_and_spindle(BlockWords& w);
   bool modal_settings(BlockWords& w);
   bool modal_zero(BlockWords& w);
@@ -244,6 +248,7 @@ class Interpreter final : private ParameterSource {
 
   core::SourceManager& sources_;
   InterpOptions options_;
+  CycleHooks* cycle_hooks_;
   canon::Sink& sink_;
   core::DiagnosticSink& diags_;
   ModalState state_;

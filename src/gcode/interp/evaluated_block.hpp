@@ -1,0 +1,63 @@
+// A block after step 1 (evaluation): what a dialect's front end hands the
+// interpreter, which runs steps 2-4 on it (DESIGN.md, "One road below the
+// text"; docs/dialects.md, "How dialects are built"). A front end reads its
+// own syntax (macro statements, block ends, lower-case increments, polar
+// words), evaluates every value, and gives the interpreter numbers with the
+// places the user wrote them at; it never writes G-code text for the
+// interpreter to read again. From here on the road is the same for every
+// dialect: rs274ngc's own reader, fanuc, and the front ends to come.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "core/diagnostic.hpp"
+#include "gcode/block.hpp"
+
+namespace usina::gcode {
+
+// One word: its letter, its value, and the column the user wrote it at.
+struct EvaluatedWord {
+  char letter = 0;  // 'A'..'Z' in upper case; '@' and '^' are LinuxCNC's polar words
+  // G and M words carry the code as written (38.2 for G38.2): the
+  // interpreter reads codes in tenths and refuses anything else.
+  double value = 0.0;
+  // The word's column in its line, where its diagnostics point; 0 for a
+  // word the front end made (a dialect's cycle, a kept modal value): its
+  // diagnostics point at the block.
+  std::uint32_t col = 0;
+};
+
+// An RS274NGC parameter assignment with its value read (RS274NGC 3.2.1:
+// every value of a block is read before any assignment of the block takes
+// effect). The front end has checked that the parameter may be written.
+struct EvaluatedAssign {
+  int index = 0;     // #index; 0 for a named parameter
+  std::string name;  // #<name>, normalised (lower case, no blanks)
+  double value = 0.0;
+  std::uint32_t col = 0;
+};
+
+// One block, evaluated. Block delete ('/') is decided before evaluation,
+// by the front end: a deleted block is neither evaluated nor handed over.
+// Control flow (subroutines, loops, jumps) is the front end's too; M98 and
+// M99 among the words run RS274NGC's Fanuc-style subprograms of the file
+// Interpreter::run() reads, so a front end with its own subprograms takes
+// them first.
+struct EvaluatedBlock {
+  // The block: file, line, column of its first character. Its operations
+  // carry it, and so do its diagnostics where no word's column applies.
+  core::SourceLoc loc;
+  std::span<const EvaluatedWord> words;  // in the order written, G and M codes included
+  // Applied once the words are sorted into modal groups, before the check.
+  std::span<const EvaluatedAssign> assigns;
+  // Comments become canon Comment operations; "(MSG, text)" is also an
+  // operator message (N_MESSAGE). A front end whose control shows nothing
+  // of its comments hands none.
+  std::span<const CommentText> comments;
+
+  bool empty() const { return words.empty() && assigns.empty() && comments.empty(); }
+};
+
+}  // namespace usina::gcode
