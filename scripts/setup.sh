@@ -12,6 +12,7 @@ pkgs=(
   clang-14 libclang-rt-14-dev clang-format
   libsqlite3-dev libpqxx-dev libssl-dev libsodium-dev postgresql
   libboost-dev libboost-system-dev socat
+  libmosquitto-dev mosquitto
 )
 [ "${1:-}" = "--with-linuxcnc" ] && pkgs+=(linuxcnc-uspace)
 missing=()

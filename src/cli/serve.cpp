@@ -135,6 +135,10 @@ int run_server(const ServeOptions& o) {
   const auto at = (*server)->endpoint();
   fmt::print(stderr, "usina serve: listening on http://{}:{} ({} machines)\n",
              at.address().to_string(), at.port(), (*server)->machines().all().size());
+  if (const auto shdr = (*server)->mtconnect_endpoint()) {
+    fmt::print(stderr, "usina serve: MTConnect SHDR adapter on {}:{}\n",
+               shdr->address().to_string(), shdr->port());
+  }
   boost::asio::signal_set signals(io, SIGTERM, SIGINT);
   signals.async_wait([&](const boost::system::error_code& ec, int signal) {
     if (ec) return;

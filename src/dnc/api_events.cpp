@@ -81,6 +81,8 @@ void EventHub::publish(std::string_view type, nlohmann::json event) {
   for (const auto& w : sessions_) {
     if (auto s = w.lock()) s->send(text);
   }
+  for (const EventListener& l : listeners_)
+    l(type, event);
 }
 
 void EventHub::close_all() {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,9 +43,16 @@ class EventSession : public std::enable_shared_from_this<EventSession> {
   bool writing_ = false;
 };
 
+// What else hears the events on the loop (the MTConnect adapter, MQTT):
+// the event's type and its JSON, "type" and "seq" included.
+using EventListener = std::function<void(std::string_view type, const nlohmann::json& event)>;
+
 class EventHub {
  public:
   void add(std::shared_ptr<EventSession> s);
+
+  void listen(EventListener l) { listeners_.push_back(std::move(l)); }
+
   // `event` gets a "type" and a "seq" (one more per event).
   void publish(std::string_view type, nlohmann::json event);
   void close_all();
@@ -53,6 +61,7 @@ class EventHub {
 
  private:
   std::vector<std::weak_ptr<EventSession>> sessions_;
+  std::vector<EventListener> listeners_;
   std::uint64_t seq_ = 0;
 };
 

@@ -39,14 +39,8 @@ nlohmann::json machine_json(ApiCall& c, MachineRuntime& m) {
   if (m.current) {
     if (auto live = c.ctx.machines.job(m.current->id)) out["job"] = job_json(*live);
   }
-  if (auto parts = machine_part_count(c.ctx.store, l.name)) {
-    out["part_count"] = parts->parts;
-    out["last_cycle_seconds"] =
-        parts->last_cycle_seconds ? nlohmann::json(*parts->last_cycle_seconds) : nullptr;
-    out["last_program"] = parts->last_program;
-    out["last_run_at_us"] = parts->last_run_at_us;
-    out["part_count_source"] = "drip feeds run to their end";
-  }
+  out.update(parts_json(c.ctx.store, m));  // server_mdc.cpp
+  out["part_count_source"] = "drip feeds run to their end, and the control's part lines";
   return out;
 }
 

@@ -14,12 +14,32 @@
 namespace usina::dnc {
 namespace {
 
-constexpr std::array<std::string_view, 23> kKeys{
-    "name",          "dialect",       "port",        "baud",         "data_bits",
-    "parity",        "stop_bits",     "flow",        "code",         "eob",
-    "mode",          "skid",          "xon",         "xoff",         "leader",
-    "trailer",       "wait_for_xon",  "xon_timeout", "receive_idle", "request_program",
-    "request_lines", "machine_class", "profile"};
+// machine_class, profile and the data patterns are the server's (server_config.cpp).
+constexpr std::array<std::string_view, 25> kKeys{"name",
+                                                 "dialect",
+                                                 "port",
+                                                 "baud",
+                                                 "data_bits",
+                                                 "parity",
+                                                 "stop_bits",
+                                                 "flow",
+                                                 "code",
+                                                 "eob",
+                                                 "mode",
+                                                 "skid",
+                                                 "xon",
+                                                 "xoff",
+                                                 "leader",
+                                                 "trailer",
+                                                 "wait_for_xon",
+                                                 "xon_timeout",
+                                                 "receive_idle",
+                                                 "request_program",
+                                                 "request_lines",
+                                                 "machine_class",
+                                                 "profile",
+                                                 "part_count_pattern",
+                                                 "cycle_time_pattern"};
 
 class Reader {
  public:

@@ -56,6 +56,7 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
   HttpLimits limits;
   limits.body_bytes = config_.max_upload;
   listener_ = std::make_shared<HttpListener>(io_, std::move(handlers), limits);
+  add_data_outputs();
 }
 
 std::string Server::start(const std::string& listen) {
@@ -64,6 +65,7 @@ std::string Server::start(const std::string& listen) {
     return fmt::format("cannot read the address `{}`; give host:port, as 127.0.0.1:8080", listen);
   if (std::string error = listener_->listen(*at); !error.empty())
     return fmt::format("cannot listen on {}: {}", listen, error);
+  if (std::string error = start_data_outputs(); !error.empty()) return error;
   listener_->start();
   machines_->start();
   return {};
@@ -73,6 +75,8 @@ void Server::stop(const std::string& reason, std::function<void()> stopped) {
   listener_->stop();
   machines_->stop(reason, [this, stopped = std::move(stopped)] {
     events_.close_all();
+    if (shdr_) shdr_->stop();
+    if (mqtt_) mqtt_->stop();
     if (stopped) stopped();
   });
 }

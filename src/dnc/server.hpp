@@ -16,6 +16,8 @@
 #include "dnc/api_events.hpp"
 #include "dnc/api_router.hpp"
 #include "dnc/http_listener.hpp"
+#include "dnc/mqtt_publisher.hpp"
+#include "dnc/mtconnect_adapter.hpp"
 #include "dnc/server_config.hpp"
 #include "dnc/server_machines.hpp"
 #include "dnc/store.hpp"
@@ -45,8 +47,13 @@ class Server {
 
   EventHub& events() { return events_; }
 
+  // The MTConnect adapter's address ([mtconnect]); nothing when it is off.
+  std::optional<boost::asio::ip::tcp::endpoint> mtconnect_endpoint() const;
+
  private:
   Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig config);
+  void add_data_outputs();
+  std::string start_data_outputs();
 
   asio::io_context& io_;
   std::unique_ptr<Store> store_;
@@ -55,6 +62,8 @@ class Server {
   std::unique_ptr<Machines> machines_;
   std::unique_ptr<Api> api_;
   std::shared_ptr<HttpListener> listener_;
+  std::unique_ptr<ShdrAdapter> shdr_;
+  std::unique_ptr<MqttPublisher> mqtt_;
 };
 
 // "host:port" ("[::1]:8080" for IPv6); nothing when malformed.

@@ -59,6 +59,22 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
   return ok;
 }
 
+// The machine's data patterns must be regular expressions (ECMAScript).
+bool read_patterns_ok(const ServerMachine& m, const toml::table* t, std::uint32_t file_id,
+                      core::DiagnosticSink& diags) {
+  bool ok = true;
+  for (const auto& [key, pattern] : {std::pair{"part_count_pattern", &m.part_count_pattern},
+                                     std::pair{"cycle_time_pattern", &m.cycle_time_pattern}}) {
+    if (std::string why = pattern_error(*pattern); !why.empty()) {
+      const toml::node* n = t != nullptr ? t->get(key) : nullptr;
+      fail(diags, file_id, n != nullptr ? n->source() : toml::source_region{},
+           fmt::format("machine `{}`: {} is not a regular expression: {}", m.link.name, key, why));
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 // `machine_class` of each [[machine]] (machine_config.cpp accepts the key).
 bool read_machine_classes(const toml::table& root, ServerConfig& c, std::uint32_t file_id,
                           core::DiagnosticSink& diags) {
@@ -67,8 +83,11 @@ bool read_machine_classes(const toml::table& root, ServerConfig& c, std::uint32_
   bool ok = true;
   for (std::size_t i = 0; i < list->size() && i < c.machines.size(); ++i) {
     const toml::table* t = list->get(i)->as_table();
-    for (const auto& [key, into] : {std::pair{"machine_class", &c.machines[i].machine_class},
-                                    std::pair{"profile", &c.machines[i].profile}}) {
+    ServerMachine& m = c.machines[i];
+    for (const auto& [key, into] :
+         {std::pair{"machine_class", &m.machine_class}, std::pair{"profile", &m.profile},
+          std::pair{"part_count_pattern", &m.part_count_pattern},
+          std::pair{"cycle_time_pattern", &m.cycle_time_pattern}}) {
       const toml::node* n = t != nullptr ? t->get(key) : nullptr;
       if (n == nullptr) continue;
       if (auto v = n->value<std::string>()) {
@@ -78,6 +97,7 @@ bool read_machine_classes(const toml::table& root, ServerConfig& c, std::uint32_
         ok = false;
       }
     }
+    if (!read_patterns_ok(m, t, file_id, diags)) ok = false;
     if (!c.machines[i].profile.empty() && c.machines[i].machine_class.empty()) {
       fail(diags, file_id, t->source(),
            fmt::format("machine `{}`: a profile belongs to a machine class; give machine_class",
@@ -137,7 +157,8 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   } catch (const toml::parse_error&) {
     return std::nullopt;  // reported by read_machine_links
   }
-  const bool ok = read_server_table(root, c, file_id, diags);
+  bool ok = read_server_table(root, c, file_id, diags);
+  ok = read_data_tables(root, c.mtconnect, c.mqtt, file_id, diags) && ok;
   if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;
   return c;
 }

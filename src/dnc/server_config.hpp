@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/diagnostic.hpp"
+#include "dnc/data_config.hpp"
 #include "dnc/link_config.hpp"
 #include "sim/machine_profile.hpp"
 
@@ -24,6 +25,11 @@ struct ServerMachine {
   LinkConfig link;
   std::string machine_class;  // empty: any class
   std::string profile;        // the class's machine profile (a file), checked uploads' travel
+  // What the control punches while idle that is machine data, not a program
+  // (DPRNT lines): ECMAScript, case-insensitive; group 1 the control's
+  // count, or the cycle's seconds. Empty: not looked for.
+  std::string part_count_pattern = R"(PART\s*COUNT\s*[:=]?\s*([0-9]+)?)";
+  std::string cycle_time_pattern = R"(CYCLE\s*TIME\s*[:=]?\s*([0-9]+(\.[0-9]*)?))";
 };
 
 struct ServerConfig {
@@ -31,10 +37,15 @@ struct ServerConfig {
   std::string listen = "127.0.0.1:8080";
   std::uint64_t max_upload = 64ull << 20;
   double session_hours = 8.0;
+  MtconnectConfig mtconnect;  // [mtconnect]: the SHDR adapter (data_config.hpp)
+  MqttConfig mqtt;            // [mqtt]: events to a broker
   // Each machine class's profile (load_profiles): the store's check of an
   // upload of that class runs on it, travel included.
   std::map<std::string, sim::MachineProfile> profiles;
 };
+
+// Why `pattern` is not an ECMAScript regular expression; empty when it is.
+std::string pattern_error(const std::string& pattern);
 
 // The configuration in `toml_text`, or nothing when it has an error
 // (reported to `diags`, E_DNC_CONFIG at its line).

@@ -158,6 +158,7 @@ void Machines::on_job_done(MachineRuntime& m, const JobReport& r) {
   m.current.reset();
   save(job, Actor{job.actor, "server"});
   publish_job(job);
+  if (job.mode == "drip" && job.state == "done") count_part(m, job);
   finish_stop();  // when the server is stopping, this may have been the last job
 }
 

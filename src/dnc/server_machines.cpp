@@ -60,7 +60,9 @@ StationEvents Machines::station_events(MachineRuntime& m) {
                     {{"machine", m.config.link.name}, {"state", station_state_name(s)}});
     if (s == StationState::Idle) start_next(m);
   };
-  e.punched = [this, &m](const ReceivedProgram& r) { on_punch(m, r); };
+  e.punched = [this, &m](const ReceivedProgram& r) {
+    if (!machine_data(m, r)) on_punch(m, r);
+  };
   e.request = [this, &m](const LinkConfig&, const RemoteRequest& r, AnswerFunction answer) {
     on_request(m, r, answer);
   };

@@ -25,6 +25,16 @@
 
 namespace usina::dnc {
 
+// What the control itself said since the server started (DPRNT lines,
+// `(MSG` comments): server_mdc.cpp.
+struct ControlReports {
+  std::int64_t parts = 0;                     // part lines seen
+  std::optional<std::int64_t> control_count;  // the count the control printed last
+  std::optional<double> last_cycle_seconds;   // printed, or between two part lines
+  std::int64_t last_part_at_us = 0;
+  std::string last_message;
+};
+
 struct MachineRuntime {
   ServerMachine config;
   std::shared_ptr<Station> station;
@@ -34,6 +44,7 @@ struct MachineRuntime {
   unsigned ticks_since_saved = 0;      // progress is written every few seconds
   std::optional<JobRecord> answering;  // the job of a remote request being answered
   std::string link_error;              // why the port did not open, last time
+  ControlReports reported;
 };
 
 struct JobOrder {
@@ -74,6 +85,9 @@ class Machines {
   bool launch(MachineRuntime& m, JobRecord job);
   void fail_job(JobRecord job, const std::string& reason);
   void on_job_done(MachineRuntime& m, const JobReport& r);
+  void count_part(MachineRuntime& m, const JobRecord& job);  // server_parts.cpp
+  // A punch without an O number read as machine data; false when nothing in it was.
+  bool machine_data(MachineRuntime& m, const ReceivedProgram& r);  // server_mdc.cpp
   void on_punch(MachineRuntime& m, const ReceivedProgram& r);
   void on_request(MachineRuntime& m, const RemoteRequest& r, const AnswerFunction& answer);
   void on_request_answered(MachineRuntime& m, const JobReport& r);
@@ -99,5 +113,8 @@ void apply_report(JobRecord& job, const JobReport& r);
 tl::expected<std::uint64_t, std::string> wire_bytes(const LinkConfig& link, std::string_view text);
 
 nlohmann::json job_json(const JobRecord& j);
+// The part count and last cycle of the machine: its drip feeds (the store)
+// and what its control reported.
+nlohmann::json parts_json(Store& store, const MachineRuntime& m);
 
 }  // namespace usina::dnc

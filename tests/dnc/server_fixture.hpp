@@ -87,6 +87,8 @@ class RunningServer {
 
   ApiClient client() const { return ApiClient(port_); }
 
+  dnc::Server& server() { return *server_; }
+
  private:
   void add_users() {
     dnc::Store& store = server_->store();

@@ -1,0 +1,105 @@
+#include "dnc/data_config.hpp"
+
+#include <charconv>
+
+#include <fmt/format.h>
+
+namespace usina::dnc {
+namespace {
+
+void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source_region& at,
+          std::string message) {
+  core::Diagnostic d;
+  d.code = core::Code::DncConfig;
+  d.severity = core::Severity::Error;
+  d.loc.file = file_id;
+  d.loc.line = at.begin.line;
+  d.loc.col = at.begin.column;
+  d.message = std::move(message);
+  diags.report(std::move(d));
+}
+
+// A string key of `t` into `into`; false (reported) when it is not a string.
+bool read_string(const toml::table& t, const char* table, const char* key, std::string& into,
+                 std::uint32_t file_id, core::DiagnosticSink& diags) {
+  const toml::node* n = t.get(key);
+  if (n == nullptr) return true;
+  if (auto v = n->value<std::string>()) {
+    into = *v;
+    return true;
+  }
+  fail(diags, file_id, n->source(), fmt::format("{}.{} must be a string", table, key));
+  return false;
+}
+
+bool read_mtconnect(const toml::table& t, MtconnectConfig& c, std::uint32_t file_id,
+                    core::DiagnosticSink& diags) {
+  c.enabled = true;
+  bool ok = read_string(t, "mtconnect", "listen", c.listen, file_id, diags);
+  if (const toml::node* n = t.get("heartbeat_ms")) {
+    const auto v = n->value<std::int64_t>();
+    if (v && *v >= 1000 && *v <= 600000) {
+      c.heartbeat_ms = static_cast<std::uint32_t>(*v);
+    } else {
+      fail(diags, file_id, n->source(),
+           "mtconnect.heartbeat_ms must be a count of milliseconds, 1000 to 600000");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+bool read_mqtt(const toml::table& t, MqttConfig& c, std::uint32_t file_id,
+               core::DiagnosticSink& diags) {
+  c.enabled = true;
+  bool ok = read_string(t, "mqtt", "url", c.url, file_id, diags);
+  ok = read_string(t, "mqtt", "prefix", c.prefix, file_id, diags) && ok;
+  ok = read_string(t, "mqtt", "client_id", c.client_id, file_id, diags) && ok;
+  if (ok && !parse_mqtt_url(c.url, c)) {
+    fail(diags, file_id, t.get("url")->source(),
+         fmt::format("mqtt.url `{}` is not mqtt://host:port (mqtts:// is not built yet)", c.url));
+    ok = false;
+  }
+  if (ok && (c.prefix.empty() || c.prefix.find_first_of("+#") != std::string::npos)) {
+    fail(diags, file_id, t.get("prefix")->source(),
+         "mqtt.prefix must be a topic level, not empty, without + or #");
+    ok = false;
+  }
+  return ok;
+}
+
+}  // namespace
+
+bool parse_mqtt_url(std::string_view url, MqttConfig& into) {
+  constexpr std::string_view kScheme = "mqtt://";
+  if (!url.starts_with(kScheme)) return false;
+  std::string_view rest = url.substr(kScheme.size());
+  if (!rest.empty() && rest.back() == '/') rest.remove_suffix(1);
+  std::string_view host = rest;
+  unsigned port = 1883;
+  if (const std::size_t colon = rest.rfind(':');
+      colon != std::string_view::npos && rest.find(']', colon) == std::string_view::npos) {
+    host = rest.substr(0, colon);
+    const std::string_view p = rest.substr(colon + 1);
+    const auto [end, ec] = std::from_chars(p.data(), p.data() + p.size(), port);
+    if (ec != std::errc() || end != p.data() + p.size() || port == 0 || port > 65535) return false;
+  }
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
+  if (host.empty() || host.find_first_of("/@ ") != std::string_view::npos) return false;
+  into.host = std::string(host);
+  into.port = static_cast<std::uint16_t>(port);
+  return true;
+}
+
+bool read_data_tables(const toml::table& root, MtconnectConfig& mtconnect, MqttConfig& mqtt,
+                      std::uint32_t file_id, core::DiagnosticSink& diags) {
+  bool ok = true;
+  if (const toml::table* t = root["mtconnect"].as_table())
+    ok = read_mtconnect(*t, mtconnect, file_id, diags);
+  if (const toml::table* t = root["mqtt"].as_table())
+    ok = read_mqtt(*t, mqtt, file_id, diags) && ok;
+  return ok;
+}
+
+}  // namespace usina::dnc

@@ -1,0 +1,174 @@
+// Machine data the control punches while idle (DPRNT lines, (MSG comments):
+// part counts and cycle times in GET /api/machines/{machine}, on the
+// MTConnect adapter; the machine's own patterns; bad patterns refused.
+#include <gtest/gtest.h>
+
+#include "api_control.hpp"
+#include "core/diagnostic.hpp"
+#include "line_client.hpp"
+
+namespace usina::dnc {
+namespace {
+
+// The control punches `rows` (on the server's loop, which owns the link).
+void punch(RunningServer& s, Control& control, const std::string& rows) {
+  s.on_loop([&] {
+    auto keep = std::make_shared<std::string>(rows);
+    control.link->async_write(
+        std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(keep->data()),
+                                      keep->size()),
+        [keep](const ErrorCode&, std::size_t) {});
+    return 0;
+  });
+}
+
+// A server with `mill-1` on a pty whose punches end after 0.2 s of silence.
+Control start_mill(RunningServer& s, ServerMachine* with = nullptr) {
+  auto pair = open_pty_pair(s.io());
+  EXPECT_TRUE(pair) << pair.error();
+  Control c;
+  c.link = std::move(pair->master);
+  c.sim = std::make_shared<SimCnc>(s.io(), *c.link, SimCncConfig{});
+  c.sim->start();
+  ServerMachine m = with != nullptr ? *with : ServerMachine{};
+  const ServerMachine pty = pty_machine("mill-1", pair->slave_path, 115200);
+  m.link = pty.link;
+  m.link.receive_idle = 0.2;
+  ServerConfig config;
+  config.machines.push_back(m);
+  config.mtconnect.enabled = true;
+  config.mtconnect.listen = "127.0.0.1:0";
+  s.start(config);
+  return c;
+}
+
+// The machine once `ready` holds (polled as a client would), or after 30 s.
+template <typename F>
+nlohmann::json machine_when(const ApiClient& c, const std::string& token, F ready) {
+  nlohmann::json m;
+  for (int i = 0; i < 600; ++i) {
+    m = c.get("/api/machines/mill-1", token).json();
+    if (ready(m)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return m;
+}
+
+bool idle(const nlohmann::json& m) {
+  return m.value("state", "") == "idle";
+}
+
+TEST(MachineData, DprntPartAndCycleLinesCountAPartWithTheControlsCycleTime) {
+  RunningServer s;
+  Control control = start_mill(s);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", test::kPassword);
+  ASSERT_TRUE(idle(machine_when(c, oper, idle)));
+  test::LineClient agent(*s.server().mtconnect_endpoint());
+  punch(s, control, "CYCLE TIME 83.5\r\nPART COUNT 41\r\n");
+  const auto m =
+      machine_when(c, oper, [](const nlohmann::json& j) { return j.value("part_count", 0) == 1; });
+  EXPECT_EQ(m["part_count"], 1);
+  EXPECT_EQ(m["control_part_count"], 41);
+  EXPECT_DOUBLE_EQ(m["last_cycle_seconds"].get<double>(), 83.5);
+  EXPECT_TRUE(agent.wait_for_text("|mill-1:part_count|1"));
+  // Not a program: nothing was stored.
+  EXPECT_EQ(c.get("/api/programs", oper).json()["programs"].size(), 0u);
+}
+
+TEST(MachineData, AMsgCommentIsTheMachinesMessage) {
+  RunningServer s;
+  Control control = start_mill(s);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", test::kPassword);
+  ASSERT_TRUE(idle(machine_when(c, oper, idle)));
+  test::LineClient agent(*s.server().mtconnect_endpoint());
+  punch(s, control, "(MSG, TOOL 5 WORN | CHANGE)\n");
+  const auto m = machine_when(
+      c, oper, [](const nlohmann::json& j) { return !j.value("last_message", "").empty(); });
+  EXPECT_EQ(m["last_message"], "TOOL 5 WORN | CHANGE");
+  EXPECT_EQ(m["part_count"], 0);
+  // The pipe is escaped, the value quoted (SHDR).
+  EXPECT_TRUE(agent.wait_for_text(R"(|mill-1:message||"TOOL 5 WORN \| CHANGE")"));
+}
+
+TEST(MachineData, TheMachinesOwnPatternCountsPartsTimedBetweenTwoLines) {
+  RunningServer s;
+  ServerMachine with;
+  with.part_count_pattern = "^END OF PART";
+  with.cycle_time_pattern = "";
+  Control control = start_mill(s, &with);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", test::kPassword);
+  ASSERT_TRUE(idle(machine_when(c, oper, idle)));
+  punch(s, control, "PART COUNT 3\nend of part\n");  // the default pattern is replaced
+  auto m =
+      machine_when(c, oper, [](const nlohmann::json& j) { return j.value("part_count", 0) == 1; });
+  EXPECT_EQ(m["part_count"], 1);
+  EXPECT_TRUE(m["control_part_count"].is_null());
+  EXPECT_TRUE(m["last_cycle_seconds"].is_null());  // one line: no cycle yet
+  ASSERT_TRUE(idle(machine_when(c, oper, idle)));
+  punch(s, control, "END OF PART\n");
+  m = machine_when(c, oper, [](const nlohmann::json& j) { return j.value("part_count", 0) == 2; });
+  EXPECT_EQ(m["part_count"], 2);
+  ASSERT_TRUE(m["last_cycle_seconds"].is_number()) << m.dump();
+  EXPECT_GT(m["last_cycle_seconds"].get<double>(), 0.0);
+}
+
+TEST(MachineData, APunchWithoutANameOrMachineDataIsStillRefused) {
+  RunningServer s;
+  Control control = start_mill(s);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", test::kPassword);
+  ASSERT_TRUE(idle(machine_when(c, oper, idle)));
+  punch(s, control, "%\nG0 X1\nM30\n%");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto m = machine_when(c, oper, idle);
+  EXPECT_EQ(m["part_count"], 0);
+  EXPECT_EQ(m["last_message"], "");
+}
+
+TEST(MachineData, ConfigReadsTheDataTablesAndRefusesABadPattern) {
+  core::DiagnosticList diags;
+  const auto good = read_server_config(R"toml(
+[mtconnect]
+listen = "127.0.0.1:7979"
+heartbeat_ms = 5000
+[mqtt]
+url = "mqtt://10.0.0.5:1884"
+prefix = "plant7"
+[[machine]]
+name = "m1"
+port = "/dev/ttyS0"
+part_count_pattern = "PIECE (\\d+)"
+)toml",
+                                       0, diags);
+  ASSERT_TRUE(good);
+  EXPECT_TRUE(good->mtconnect.enabled);
+  EXPECT_EQ(good->mtconnect.listen, "127.0.0.1:7979");
+  EXPECT_EQ(good->mtconnect.heartbeat_ms, 5000u);
+  EXPECT_TRUE(good->mqtt.enabled);
+  EXPECT_EQ(good->mqtt.host, "10.0.0.5");
+  EXPECT_EQ(good->mqtt.port, 1884);
+  EXPECT_EQ(good->mqtt.prefix, "plant7");
+  EXPECT_EQ(good->machines[0].part_count_pattern, "PIECE (\\d+)");
+  EXPECT_TRUE(diags.all().empty());
+
+  const auto off =
+      read_server_config("[[machine]]\nname = \"m1\"\nport = \"/dev/ttyS0\"\n", 0, diags);
+  ASSERT_TRUE(off);
+  EXPECT_FALSE(off->mtconnect.enabled);
+  EXPECT_FALSE(off->mqtt.enabled);
+
+  for (const char* bad : {"[[machine]]\nname = \"m1\"\nport = \"x\"\npart_count_pattern = \"(\"\n",
+                          "[mqtt]\nurl = \"http://x\"\n", "[mqtt]\nprefix = \"a/#\"\n",
+                          "[mtconnect]\nheartbeat_ms = 5\n"}) {
+    core::DiagnosticList d;
+    EXPECT_FALSE(read_server_config(bad, 0, d)) << bad;
+    ASSERT_FALSE(d.all().empty()) << bad;
+    EXPECT_EQ(d.all()[0].code, core::Code::DncConfig) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace usina::dnc
