@@ -1,6 +1,9 @@
 // A job started at a block or a tool (docs/resume.md): the simulated
 // control gets the restart's preamble and the program's rest, framed and
 // hashed like any job; a start usina cannot restore is 400 with the reason.
+#include <chrono>
+#include <thread>
+
 #include <gtest/gtest.h>
 
 #include "api_control.hpp"
@@ -59,6 +62,53 @@ TEST(ApiResume, AStartThatCannotBeRestoredIs400WithTheReason) {
   EXPECT_EQ(tool.status, 400);
   EXPECT_NE(tool.body.find("T7"), std::string::npos) << tool.body;
   EXPECT_EQ(order("start_block", "X12").status, 400);
+}
+
+// The control punches `rows` (on the server's loop, which owns the link).
+void punch(RunningServer& s, Control& control, const std::string& rows) {
+  s.on_loop([&] {
+    auto keep = std::make_shared<std::string>(rows);
+    control.link->async_write(
+        std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(keep->data()),
+                                      keep->size()),
+        [keep](const ErrorCode&, std::size_t) {});
+    return 0;
+  });
+}
+
+// What the control has received, once it holds `part` (or after 30 s).
+std::string received_once(RunningServer& s, Control& control, const std::string& part) {
+  std::string got;
+  for (int i = 0; i < 600; ++i) {
+    got = s.on_loop(
+        [&] { return std::string(control.sim->data().begin(), control.sim->data().end()); });
+    if (got.find(part) != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return got;
+}
+
+TEST(ApiResume, ARemoteRequestWithAStartBlockGetsTheRestartProgram) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  released(c, "O1234", kProgram);
+  punch(s, control, "%\nO9999\n(/REQ 1234 /BL 50)\n%");
+  const auto restart = resume_program(kProgram, "rs274ngc", {gcode::ResumeStart::Kind::NWord, 50});
+  ASSERT_TRUE(restart) << restart.error();
+  const std::string wire = "%\n" + *restart + "%";
+  EXPECT_EQ(received_once(s, control, wire), wire);
+}
+
+TEST(ApiResume, ARemoteRequestWithAToolNeverUsedGetsTheReason) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  released(c, "O1234", kProgram);
+  punch(s, control, "%\nO9999\n(PRG=1234 TO=9)\n%");
+  const std::string got = received_once(s, control, "NEVER");
+  EXPECT_NE(got.find("T9 IS NEVER"), std::string::npos) << got;
+  EXPECT_EQ(got.find("G21"), std::string::npos) << "no program is sent";
 }
 
 }  // namespace
