@@ -13,6 +13,7 @@ void add_draw(CLI::App& app);
 void add_convert(CLI::App& app);
 void add_gen(CLI::App& app);
 void add_serve(CLI::App& app);
+void add_resume(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();

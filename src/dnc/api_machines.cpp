@@ -7,6 +7,7 @@
 
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/resume.hpp"
 #include "dnc/store_revisions.hpp"
 
 namespace usina::dnc {
@@ -59,27 +60,45 @@ tl::expected<JobOrder, std::string> read_order(const HttpRequest& req) {
   if (**mode != "send" && **mode != "drip")
     return tl::unexpected(fmt::format("mode must be \"send\" or \"drip\", not \"{}\"", **mode));
   order.mode = **mode == "drip" ? JobMode::Drip : JobMode::Send;
-  for (const std::string_view key : {"start_block", "start_tool"}) {
-    auto n = count_field(*body, key);
-    if (!n) return tl::unexpected(n.error());
-  }
   return order;
 }
 
-// start_block and start_tool need the resume preamble (issue 13), which
-// is not built: say so rather than send the program from its start.
-std::optional<std::string> start_not_built(const HttpRequest& req) {
+// start_block: a line of the file (a number, or "120") or an N word
+// ("N120"); start_tool: the first change to that tool (docs/resume.md).
+tl::expected<std::optional<gcode::ResumeStart>, std::string> read_start(const HttpRequest& req) {
   const auto body = nlohmann::json::parse(req.body(), nullptr, false);
-  for (const char* key : {"start_block", "start_tool"}) {
-    if (body.contains(key) && !body[key].is_null()) {
-      return fmt::format(
-          "{} is not built yet: usina cannot yet compute the modal state and the "
-          "safe approach a start inside the program needs; send the whole "
-          "program, or start at the control",
-          key);
-    }
+  const bool block = body.contains("start_block") && !body["start_block"].is_null();
+  const bool tool = body.contains("start_tool") && !body["start_tool"].is_null();
+  if (block && tool) return tl::unexpected(std::string("give start_block or start_tool, not both"));
+  if (tool) {
+    auto n = count_field(body, "start_tool");
+    if (!n) return tl::unexpected(n.error());
+    return gcode::ResumeStart{gcode::ResumeStart::Kind::Tool, static_cast<long>(**n)};
   }
-  return std::nullopt;
+  if (!block) return std::nullopt;
+  const auto& v = body["start_block"];
+  std::optional<gcode::ResumeStart> start;
+  if (v.is_number_unsigned()) {
+    start = gcode::ResumeStart{gcode::ResumeStart::Kind::Line, v.get<long>()};
+  } else if (v.is_string()) {
+    start = gcode::parse_start_block(v.get<std::string>());
+  }
+  if (!start)
+    return tl::unexpected(
+        std::string("start_block must be a line number (120) or an N word (\"N120\")"));
+  return start;
+}
+
+// The restart program of the revision, or why there is none (a 400).
+tl::expected<std::shared_ptr<const std::string>, std::string> restart_text(
+    ApiCall& c, const JobOrder& order, const gcode::ResumeStart& start) {
+  auto program = find_program(c.ctx.store, order.program);
+  if (!program) return tl::unexpected(program.error().message);
+  auto bytes = revision_bytes(c.ctx.store, order.program, order.revision);
+  if (!bytes) return tl::unexpected(bytes.error().message);
+  auto text = resume_program(*bytes, program->dialect, start);
+  if (!text) return tl::unexpected(text.error());
+  return std::make_shared<const std::string>(std::move(*text));
 }
 
 std::optional<std::int64_t> job_id(const std::string& s) {
@@ -109,8 +128,8 @@ HttpResponse api_start_job(ApiCall& c) {
   if (m == nullptr) return no_machine(c);
   auto order = read_order(c.req);
   if (!order) return bad(c, order.error());
-  if (auto why = start_not_built(c.req))
-    return error_response(c.req, http::status::not_implemented, *why);
+  auto start = read_start(c.req);
+  if (!start) return bad(c, start.error());
   if (order->revision.empty()) {
     auto released = released_revision(c.ctx.store, order->program);
     if (!released) return store_failure(c, released.error());
@@ -119,6 +138,12 @@ HttpResponse api_start_job(ApiCall& c) {
                             fmt::format("{} has no released revision; give one", order->program));
     }
     order->revision = (*released)->hash;
+  }
+  if (*start) {
+    if (auto ok = c.ctx.machines.may_take(*m, *order); !ok) return store_failure(c, ok.error());
+    auto text = restart_text(c, *order, **start);
+    if (!text) return bad(c, text.error());
+    order->restart = *text;
   }
   auto job = c.ctx.machines.submit(*m, *order, c.actor());
   if (!job) return store_failure(c, job.error());

@@ -88,6 +88,7 @@ StoreResult<JobRecord> Machines::submit(MachineRuntime& m, const JobOrder& order
   job.actor = actor.user;
   auto made = create_job(store_, job, actor);
   if (!made) return made;
+  if (order.restart) restarts_[made->id] = order.restart;
   publish_job(*made);
   m.queue.push_back(made->id);
   start_next(m);
@@ -116,7 +117,7 @@ void Machines::fail_job(JobRecord job, const std::string& reason) {
 // and hands it to the station; false when the job failed instead.
 bool Machines::launch(MachineRuntime& m, JobRecord job) {
   const JobOrder order{job.program, job.revision,
-                       job.mode == "drip" ? JobMode::Drip : JobMode::Send};
+                       job.mode == "drip" ? JobMode::Drip : JobMode::Send, nullptr};
   if (auto ok = may_take(m, order); !ok) {
     fail_job(job, ok.error().message);
     return false;
@@ -125,6 +126,10 @@ bool Machines::launch(MachineRuntime& m, JobRecord job) {
   if (!bytes) {
     fail_job(job, bytes.error().message);
     return false;
+  }
+  if (auto restart = restarts_.find(job.id); restart != restarts_.end()) {
+    *bytes = *restart->second;  // checked against the revision when it was asked for
+    restarts_.erase(restart);
   }
   auto total = wire_bytes(m.config.link, *bytes);
   if (!total) {

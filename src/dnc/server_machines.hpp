@@ -10,6 +10,7 @@
 #include <chrono>
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,9 @@ struct JobOrder {
   std::string program;
   std::string revision;
   JobMode mode = JobMode::Send;
+  // A restart (start_block / start_tool): the restart program (dnc/resume.hpp)
+  // that goes on the wire instead of the revision's bytes; null: the revision.
+  std::shared_ptr<const std::string> restart;
 };
 
 class Machines {
@@ -75,12 +79,13 @@ class Machines {
   // Queues a job (and starts it when the machine is idle). NotFound for an
   // unknown program or revision; Refused when the machine may not take it.
   StoreResult<JobRecord> submit(MachineRuntime& m, const JobOrder& order, const Actor& actor);
+  // Whether the machine may take the revision (production: released only).
+  StoreResult<void> may_take(const MachineRuntime& m, const JobOrder& order);
   // The job as stored, with the running job's live progress.
   StoreResult<JobRecord> job(std::int64_t id);
 
  private:
   StationEvents station_events(MachineRuntime& m);
-  StoreResult<void> may_take(const MachineRuntime& m, const JobOrder& order);
   void start_next(MachineRuntime& m);
   bool launch(MachineRuntime& m, JobRecord job);
   void fail_job(JobRecord job, const std::string& reason);
@@ -104,6 +109,9 @@ class Machines {
   std::function<void()> stopped_;
   const std::map<std::string, sim::MachineProfile>* profiles_ = nullptr;
   bool stopping_ = false;
+  // The restart programs of queued restart jobs, by job id (a job queued
+  // before a restart of the server is interrupted, so memory is enough).
+  std::map<std::int64_t, std::shared_ptr<const std::string>> restarts_;
 };
 
 // The job's record updated from the sender's report (state, bytes, line,

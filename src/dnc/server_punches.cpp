@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "dnc/program_source.hpp"
+#include "dnc/resume.hpp"
 #include "dnc/server_machines.hpp"
 #include "dnc/store_revisions.hpp"
 
@@ -16,6 +17,15 @@ std::vector<std::string> candidate_names(const std::string& asked) {
   const bool digits = !asked.empty() && asked.find_first_not_of("0123456789") == std::string::npos;
   if (digits) return {"O" + asked, asked};
   return {asked};
+}
+
+// /BL is a block's N word, /LI a line of the file, TO= a tool.
+std::optional<gcode::ResumeStart> requested_start(const RemoteRequest& r) {
+  using K = gcode::ResumeStart::Kind;
+  if (r.start_tool) return gcode::ResumeStart{K::Tool, static_cast<long>(*r.start_tool)};
+  if (r.start_block) return gcode::ResumeStart{K::NWord, static_cast<long>(*r.start_block)};
+  if (r.start_line) return gcode::ResumeStart{K::Line, static_cast<long>(*r.start_line)};
+  return std::nullopt;
 }
 
 }  // namespace
@@ -51,10 +61,6 @@ void Machines::on_punch(MachineRuntime& m, const ReceivedProgram& r) {
 }
 
 void Machines::on_request(MachineRuntime& m, const RemoteRequest& r, const AnswerFunction& answer) {
-  if (r.start_block || r.start_line || r.start_tool) {
-    answer(RequestAnswer{nullptr, "START FROM A BLOCK OR TOOL IS NOT BUILT YET"});
-    return;
-  }
   for (const std::string& name : candidate_names(r.program)) {
     auto program = find_program(store_, name);
     if (!program) continue;
@@ -63,7 +69,7 @@ void Machines::on_request(MachineRuntime& m, const RemoteRequest& r, const Answe
       answer(RequestAnswer{nullptr, fmt::format("PROGRAM {} IS NOT RELEASED", r.program)});
       return;
     }
-    const JobOrder order{name, (*released)->hash, JobMode::Send};
+    const JobOrder order{name, (*released)->hash, JobMode::Send, nullptr};
     if (auto ok = may_take(m, order); !ok) {
       answer(RequestAnswer{nullptr, fmt::format("PROGRAM {} IS NOT FOR THIS MACHINE", r.program)});
       return;
@@ -72,6 +78,15 @@ void Machines::on_request(MachineRuntime& m, const RemoteRequest& r, const Answe
     if (!bytes) {
       answer(RequestAnswer{nullptr, fmt::format("PROGRAM {} CANNOT BE READ", r.program)});
       return;
+    }
+    if (auto start = requested_start(r)) {
+      auto text = resume_program(*bytes, program->dialect, *start);
+      if (!text) {
+        answer(
+            RequestAnswer{nullptr, fmt::format("NO RESTART OF {}: {}", r.program, text.error())});
+        return;
+      }
+      *bytes = std::move(*text);
     }
     JobRecord job;
     job.machine = m.config.link.name;

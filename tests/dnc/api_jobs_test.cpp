@@ -1,6 +1,6 @@
 // Jobs over HTTP to a simulated control on a pty: what reaches the control
 // is what the job's hash says; only a revision the machine may take goes;
-// a start inside the program is refused as not built; a job cut off by the
+// (a start inside the program: api_resume_test.cpp); a job cut off by the
 // server stopping (or dying) is interrupted, never resent.
 #include <chrono>
 #include <thread>
@@ -83,21 +83,6 @@ TEST(ApiJobs, OnlyTheReleasedRevisionGoesToAProductionMachine) {
                    {{"program", "O720"}, {"revision", draft}, {"mode", "punch"}}, prog)
                 .status,
             400);
-}
-
-TEST(ApiJobs, StartingFromABlockOrToolSaysItIsNotBuiltYet) {
-  RunningServer s;
-  Control control = start_with_control(s);
-  const ApiClient c = s.client();
-  const std::string rev = released(c, "O730", kProgram);
-  const std::string oper = c.log_in("oper", test::kPassword);
-  for (const char* key : {"start_block", "start_tool"}) {
-    const test::Reply r =
-        c.post("/api/machines/mill-1/jobs",
-               {{"program", "O730"}, {"revision", rev}, {"mode", "drip"}, {key, 20}}, oper);
-    EXPECT_EQ(r.status, 501) << key;
-    EXPECT_NE(r.body.find("not built yet"), std::string::npos) << r.body;
-  }
 }
 
 TEST(ApiJobs, AJobCutOffByTheServerStoppingIsInterruptedAndStaysSo) {
