@@ -42,4 +42,26 @@ TEST(CliGrbl, StopOptionAndBadOption) {
   EXPECT_NE(bad.err.find("continue|stop"), std::string::npos) << bad.err;
 }
 
+// Grbl reads N as a word like any other, wherever it stands (gcode.c,
+// case 'N'); the interpreter gets Grbl's words, not RS274NGC's reading of
+// the text, which wanted N first (a false error:20 before).
+TEST(CliGrbl, ALineNumberAnywhereInTheBlockIsGrbls) {
+  const Result r = usina("trace --dialect grbl -", "G1 X1 N10 F100\nM2\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("{\"op\":\"feed\",\"src\":[1,1],\"to\":[1,0,0],\"f\":100}"),
+            std::string::npos)
+      << r.out;
+}
+
+// A jog's move and the modes it keeps are words the front end makes: the
+// next line moves in the program's own modes again.
+TEST(CliGrbl, AJogKeepsTheProgramsModes) {
+  const Result r = usina("trace --dialect grbl -", "G90 G1 F100\n$J=G91 X5 F500\nX1\nM2\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"to\":[5,0,0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("{\"op\":\"feed\",\"src\":[3,1],\"to\":[1,0,0],\"f\":100}"),
+            std::string::npos)
+      << r.out;
+}
+
 }  // namespace

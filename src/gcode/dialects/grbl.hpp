@@ -15,6 +15,7 @@
 #include "core/diagnostic.hpp"
 #include "core/vec3.hpp"
 #include "gcode/dialect.hpp"
+#include "gcode/interp/evaluated_block.hpp"
 
 namespace usina::gcode::grbl {
 
@@ -162,11 +163,28 @@ struct MachineFacts {
   bool homing = false;  // $H: not checked (Grbl's homing is not)
 };
 
-// A `$` line. `interp_line` receives what the interpreter runs in its place
-// (a jog's or a homing's move), empty when nothing; `notes` warnings.
+// What a line hands the interpreter (evaluated_block.hpp): Grbl's own words
+// as it read them, and the words usina adds for it (a jog's or a homing's
+// move, the modes a jog kept; column 0: their diagnostics point at the line).
+struct HandedBlock {
+  std::vector<EvaluatedWord> words;
+  std::vector<EvaluatedAssign> assigns;
+
+  void clear() {
+    words.clear();
+    assigns.clear();
+  }
+
+  bool empty() const { return words.empty() && assigns.empty(); }
+
+  void add(char letter, double value) { words.push_back({letter, value, 0}); }
+};
+
+// A `$` line. `handed` receives what the interpreter runs in its place (a
+// jog's or a homing's move, a reset's modes), empty when nothing.
 struct SystemResult {
   std::optional<Failure> failure;
-  std::string interp_line;
+  HandedBlock handed;
   bool restore_modes = false;  // the move changed modes Grbl keeps: put them back
   bool reset = false;          // a soft reset follows ($RST=): the modal state is Grbl's power-on
   bool homing = false;         // $H

@@ -2,7 +2,6 @@
 // gc_execute_line and system_execute_line do with a line, up to the moves.
 #include "gcode/dialects/grbl_reader.hpp"
 
-#include <iterator>
 #include <utility>
 
 #include <fmt/format.h>
@@ -16,11 +15,6 @@ namespace {
 std::size_t line_length(const OptionValues& o) {
   const auto it = o.find("line_buffer");
   return it == o.end() ? kMaxLineLength : std::stoul(it->second) - 1;
-}
-
-std::string motion_name(int tenths) {
-  return tenths % 10 == 0 ? fmt::format("G{}", tenths / 10)
-                          : fmt::format("G{}.{}", tenths / 10, tenths % 10);
 }
 
 }  // namespace
@@ -91,18 +85,18 @@ void LineReader::warnings_of_the_line() {
   }
 }
 
-// A G-code line: Grbl's checks on a copy of its modal state, then the
-// user's line for the interpreter.
+// A G-code line: Grbl's checks on a copy of its modal state, then Grbl's
+// words for the interpreter, as Grbl read them (N is Grbl's line number,
+// no word of the block).
 LineKind LineReader::block() {
   if (auto f = read_words(stripped_.text, stripped_.cols, words_)) return fail(*f);
   Accepted acc;
   if (auto f = check_block(codes_, options_, words_, next_.modal, acc)) return fail(*f);
-  if (stripped_.verbatim) {
-    interp_text_ = line_;
-  } else {
-    blanked_line(line_, stripped_, interp_);
-    interp_text_ = interp_;
+  handed_.clear();
+  for (const Word& w : words_) {
+    if (w.letter != 'N') handed_.words.push_back({w.letter, w.value, w.col});
   }
+  block_col_ = stripped_.cols.empty() ? 1 : stripped_.cols.front();
   append_kept_modes(acc);
   if (acc.program_end) next_.ended = true;
   facts_.tool_length_mm = next_.modal.tool_length_mm;
@@ -117,21 +111,16 @@ void LineReader::append_kept_modes(const Accepted& acc) {
     if (acc.uses_motion || acc.sets_motion) r.motion = false;
     return;
   }
-  if (interp_text_.data() != interp_.data()) interp_.assign(interp_text_);
   const double per_unit = now_.modal.inch ? 25.4 : 1.0;
   if (r.modes) {
     const Modal& p = r.before;
-    if (!acc.sets_distance) interp_ += p.incremental ? " G91" : " G90";
-    if (!acc.sets_feed_mode) interp_ += p.inverse_time ? " G93" : " G94";
-    if (!acc.sets_feed) {
-      fmt::format_to(std::back_inserter(interp_), " F{:.12f}",
-                     p.inverse_time ? p.feed_mm : p.feed_mm / per_unit);
-    }
+    if (!acc.sets_distance) handed_.add('G', p.incremental ? 91 : 90);
+    if (!acc.sets_feed_mode) handed_.add('G', p.inverse_time ? 93 : 94);
+    if (!acc.sets_feed) handed_.add('F', p.inverse_time ? p.feed_mm : p.feed_mm / per_unit);
     r.modes = false;
   }
-  if (acc.uses_motion && r.motion) interp_ += " " + motion_name(r.before.motion);
+  if (acc.uses_motion && r.motion) handed_.add('G', r.before.motion / 10.0);
   if (acc.uses_motion || acc.sets_motion) r.motion = false;
-  interp_text_ = interp_;
 }
 
 // A `$` line, on a copy of the settings.
@@ -153,12 +142,12 @@ LineKind LineReader::system() {
     kept.motion = true;
   }
   facts_ = {Travel::of(*next_settings_), next_.modal.tool_length_mm, r.jog, r.homing};
-  if (r.interp_line.empty()) {
+  if (r.handed.empty()) {
     accept();
     return LineKind::Nothing;
   }
-  interp_ = std::move(r.interp_line);
-  interp_text_ = interp_;
+  handed_ = std::move(r.handed);
+  block_col_ = 1;
   return LineKind::Run;
 }
 

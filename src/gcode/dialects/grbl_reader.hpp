@@ -1,6 +1,6 @@
 // Grbl's side of each line of a program, read one at a time: its line
 // reader, its checks with Grbl's error numbers, its `$` commands, and the
-// text the interpreter runs for the line. What a line changes (Grbl's modal
+// words the interpreter runs for the line. What a line changes (Grbl's modal
 // state, settings, the modes a jog keeps) stands only once the interpreter
 // and the checks of its moves accepted it, as Grbl discards a refused line
 // whole (grbl_runner.cpp).
@@ -22,7 +22,7 @@ namespace usina::gcode::grbl {
 enum class LineKind {
   Nothing,  // nothing to run: blank, comments, '%', a setting, a report, after the end
   Refused,  // Grbl refuses it (reported)
-  Run,      // the interpreter runs interp_text(); accept() once it and the checks pass
+  Run,      // the interpreter runs handed(); accept() once it and the checks pass
 };
 
 class LineReader {
@@ -34,10 +34,13 @@ class LineReader {
   LineKind read(std::uint32_t n, std::uint64_t offset, std::string_view text,
                 std::vector<core::Diagnostic>& diags);
 
-  // After Run: the line as the interpreter runs it (the user's line with
-  // what Grbl drops turned to blanks, so columns are the user's; a `$`
-  // command's move), and what the checks of its moves need.
-  std::string_view interp_text() const { return interp_text_; }
+  // After Run: what the interpreter runs for the line (Grbl's words as it
+  // read them, at the user's columns, and the modes a jog kept; a `$`
+  // command's move), the column its block starts at, and what the checks
+  // of its moves need.
+  const HandedBlock& handed() const { return handed_; }
+
+  std::uint32_t block_col() const { return block_col_; }
 
   const MachineFacts& facts() const { return facts_; }
 
@@ -84,8 +87,8 @@ class LineReader {
   StrippedLine stripped_;
   std::vector<Word> words_;
   std::string_view line_;
-  std::string interp_;            // when the line itself will not do
-  std::string_view interp_text_;  // the line or interp_
+  HandedBlock handed_;
+  std::uint32_t block_col_ = 1;
   MachineFacts facts_;
 };
 

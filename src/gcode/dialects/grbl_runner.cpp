@@ -106,16 +106,16 @@ void Pass::line(std::uint32_t n, std::uint64_t offset, std::string_view text) {
   report_line();
 }
 
-// The line's text to the interpreter, and its ops to Grbl's checks from
+// The line's words to the interpreter, and its ops to Grbl's checks from
 // the position; true when both accept it, and its ops are then passed on.
 // A refused line is rolled back in the interpreter, its ops dropped.
 bool Pass::hand_over(std::uint32_t n, std::uint64_t offset) {
   ops_.ops.clear();
   interp_diags_.clear();
   interp_.checkpoint();
-  // The text is the user's line (issue 12: the interpreter's entry of
-  // evaluated words takes Grbl's words here once it lands).
-  const bool ran = interp_.run_block(reader_.interp_text(), {file_, n, offset});
+  const HandedBlock& block = reader_.handed();
+  const core::SourceLoc loc{file_, n, reader_.block_col(), 0, offset};
+  const bool ran = interp_.run_evaluated({loc, block.words, block.assigns, {}});
   std::optional<core::Diagnostic> failure = check_.block(ops_.ops, reader_.facts());
   if (!failure && !ran) failure = first_error(interp_diags_);
   if (!ran || failure) {

@@ -60,10 +60,6 @@ std::optional<Failure> step_rate(int n, double v, std::uint32_t col, const Setti
                              spm, rate, spm * rate / 60.0, limit_hz)};
 }
 
-std::string number_text(double v) {
-  return fmt::format("{:.12f}", v);  // no exponent: the interpreter reads it back
-}
-
 std::optional<Failure> setting(std::string_view text, std::uint32_t col, Settings& settings,
                                const OptionValues& options) {
   const std::size_t eq = text.find('=');
@@ -108,12 +104,12 @@ SystemResult homing(const Modal& state, std::uint32_t col, const Settings& setti
   const double unit = state.inch ? 25.4 : 1.0;
   const int negative = static_cast<int>(settings.get(23));
   const double pull_off = settings.get(27);
-  std::string line = "G53 G0";
+  r.handed.add('G', 53);
+  r.handed.add('G', 0);
   for (int a = 0; a < 3; ++a) {
     const double mm = (negative >> a) & 1 ? pull_off - settings.get(130 + a) : -pull_off;
-    line += fmt::format(" {}{}", "XYZ"[a], number_text(mm / unit));
+    r.handed.add("XYZ"[a], mm / unit);
   }
-  r.interp_line = line;
   r.restore_modes = true;
   r.homing = true;
   return r;
@@ -135,13 +131,13 @@ SystemResult jog(std::string_view text, const std::vector<std::uint32_t>& cols,
   }
   bool inch = state.inch;
   // Explicit: a jog before may have left the interpreter in its own mode.
-  std::string distance = state.incremental ? " G91" : " G90";
+  int distance = state.incremental ? 91 : 90;
   bool g53 = false;
   std::map<char, double> values;
   for (const Word& w : words) {
     if (w.letter == 'G' && jog_code_allowed(w.value)) {
       if (w.value == 20 || w.value == 21) inch = w.value == 20;
-      if (w.value == 90 || w.value == 91) distance = w.value == 90 ? " G90" : " G91";
+      if (w.value == 90 || w.value == 91) distance = w.value == 90 ? 90 : 91;
       if (w.value == 53) g53 = true;
       continue;
     }
@@ -164,12 +160,13 @@ SystemResult jog(std::string_view text, const std::vector<std::uint32_t>& cols,
   // The jog's values in the program's current units: the jog's G20/G21 is
   // for the jog only.
   const double scale = inch == state.inch ? 1.0 : (inch ? 25.4 : 1.0 / 25.4);
-  std::string line =
-      fmt::format("G1{}{}{}", state.inverse_time ? " G94" : "", distance, g53 ? " G53" : "");
+  r.handed.add('G', 1);
+  if (state.inverse_time) r.handed.add('G', 94);
+  r.handed.add('G', distance);
+  if (g53) r.handed.add('G', 53);
   for (char a : std::string_view("XYZF")) {
-    if (values.count(a)) line += fmt::format(" {}{}", a, number_text(values[a] * scale));
+    if (values.count(a)) r.handed.add(a, values[a] * scale);
   }
-  r.interp_line = line;
   r.restore_modes = true;
   r.jog = true;
   return r;
@@ -189,10 +186,14 @@ SystemResult restore(std::string_view what, std::uint32_t col, Settings& setting
     // The interpreter's parameters: G28 5161, G30 5181, G54..G59 5221 + 20 n.
     for (int base : {5161, 5181, 5221, 5241, 5261, 5281, 5301, 5321}) {
       for (int a = 0; a < 3; ++a)
-        r.interp_line += fmt::format("#{}=0 ", base + a);
+        r.handed.assigns.push_back({base + a, {}, 0.0, 0});
     }
   }
-  r.interp_line += "G54 G17 G21 G90 G94 G49 G92.1 M5 M9";  // G0: grbl_runner.cpp
+  // G0: grbl_reader.cpp puts it on the next line moving with the modal motion.
+  for (double g : {54.0, 17.0, 21.0, 90.0, 94.0, 49.0, 92.1})
+    r.handed.add('G', g);
+  r.handed.add('M', 5);
+  r.handed.add('M', 9);
   r.reset = true;
   r.warnings.push_back(
       fmt::format("$RST={} ends in a soft reset: the modes are Grbl's power-on ones, F is "

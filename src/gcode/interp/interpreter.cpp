@@ -144,18 +144,6 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
   return true;
 }
 
-bool Interpreter::run_block(std::string_view text, const LinePos& where) {
-  if (failed_ || ended_) return !failed_;
-  if (!parse_block(text, where, block_, diags_)) {
-    failed_ = true;
-    return false;
-  }
-  loc_ = block_.loc;
-  machine_.set_source(loc_);
-  if (block_.empty()) return true;
-  return evaluate(block_) && run_evaluated(evaluated(block_));
-}
-
 bool Interpreter::finish() {
   if (!failed_ && !ended_) {
     if (auto e = comp_.flush(machine_)) error(*e);

@@ -85,13 +85,9 @@ class Interpreter final : private ParameterSource {
   // an RS274NGC program through it; a front end with its own reader calls it
   // block by block and ends with finish().
   bool run_evaluated(const EvaluatedBlock& block);
-  // One line of RS274NGC text read by this interpreter's own reader, then
-  // run down the same road (Grbl's front end, until it hands its words
-  // evaluated: issue 12). No control flow: an O-word is not run here.
-  bool run_block(std::string_view text, const LinePos& where);
   bool finish();
   // What run() does before the first block: the work offset and G92 a
-  // parameter file holds are put in force. For a run of run_block calls.
+  // parameter file holds are put in force. For a run of run_evaluated calls.
   void start_from_parameters();
 
   // For a front end that reports a refused block and reads on (Grbl's
@@ -99,7 +95,7 @@ class Interpreter final : private ParameterSource {
   // before a block; roll_back() puts back what the block changed (modal
   // state, canonical machine, cycle values, numbered parameters, the
   // program end) after the block, or the front end's check of its ops,
-  // refused it, and lets run_block go on. Blocks of cutter compensation,
+  // refused it, and lets run_evaluated go on. Blocks of cutter compensation,
   // subroutines, loops and named parameters are not covered.
   void checkpoint();
   void roll_back();
