@@ -4,7 +4,7 @@
 // options are data; the handlers are functions registered by name in the
 // dialect's own files. The runner is the interpreter that reads the table:
 // the RS274NGC interpreter (interp/) or a dialect's own block engine.
-// Adding a control is adding files under dialects/ and one line in
+// Adding a control is adding a folder src/gcode/<dialect>/ and one line in
 // dialect.cpp's list.
 #pragma once
 

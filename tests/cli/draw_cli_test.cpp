@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "usina_process.hpp"
+#include "support/usina_process.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
-#include "usina_process.hpp"
+#include "support/usina_process.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "usina_process.hpp"
+#include "support/usina_process.hpp"
 
 namespace usina {
 namespace {

@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 
-#include "usina_process.hpp"
+#include "support/usina_process.hpp"
 
 namespace usina::test {
 namespace {

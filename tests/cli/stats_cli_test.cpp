@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "usina_process.hpp"
+#include "support/usina_process.hpp"
 
 namespace {
 

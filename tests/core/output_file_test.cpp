@@ -12,7 +12,7 @@
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 
-#include "../cli/usina_process.hpp"
+#include "support/usina_process.hpp"
 
 namespace usina::core {
 namespace {

@@ -12,41 +12,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/files.hpp"
+
 namespace usina::core {
 namespace {
 
-// A temporary folder removed with its files when the test ends.
-class TempDir {
- public:
-  TempDir() {
-    char tmpl[] = "/tmp/usina_source_test_XXXXXX";
-    const char* d = mkdtemp(tmpl);
-    EXPECT_NE(d, nullptr);
-    path_ = d != nullptr ? d : "/tmp";
-  }
-
-  ~TempDir() {
-    for (const std::string& f : files_)
-      ::unlink(f.c_str());
-    ::rmdir(path_.c_str());
-  }
-
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string p = path_ + "/" + name;
-    std::ofstream(p, std::ios::binary) << text;
-    files_.push_back(p);
-    return p;
-  }
-
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-  std::vector<std::string> files_;
-};
+using test::TempDir;
 
 TEST(SourceFile, FromStringKeepsNameAndText) {
   auto f = SourceFile::from_string("<stdin>", "G0 X1\n");

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gcode/dialects/romi_engine.hpp"
+#include "gcode/romi/engine.hpp"
 
 namespace usina::gcode {
 namespace {

@@ -8,13 +8,13 @@
 
 #include <gtest/gtest.h>
 
-#include "romi_test_support.hpp"
+#include "support/dialect_run.hpp"
 
 namespace usina::gcode {
 namespace {
 
 using core::Code;
-using romi_test::run_in;
+using dialect_test::run_in;
 
 struct First {
   Code code = Code::Message;

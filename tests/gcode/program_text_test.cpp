@@ -13,13 +13,13 @@
 #include <gtest/gtest.h>
 
 #include "gcode/parser.hpp"
-#include "romi_test_support.hpp"
+#include "support/dialect_run.hpp"
 
 namespace usina::gcode {
 namespace {
 
-using romi_test::Run;
-using romi_test::run_in;
+using dialect_test::Run;
+using dialect_test::run_in;
 
 constexpr const char* kDialects[] = {"rs274ngc", "fanuc", "romi", "grbl"};
 

@@ -91,7 +91,7 @@ class Interpreter final : private ParameterSource {
   void start_from_parameters();
 
   // For a front end that reports a refused block and reads on (Grbl's
-  // "report and continue", grbl_runner.cpp): checkpoint() marks the state
+  // "report and continue", grbl/runner.cpp): checkpoint() marks the state
   // before a block; roll_back() puts back what the block changed (modal
   // state, canonical machine, cycle values, numbered parameters, the
   // program end) after the block, or the front end's check of its ops,

@@ -1,0 +1,217 @@
+// Grbl's line reader ([proto] of docs/grbl.md): what reaches the parser of a
+// line streamed to the firmware, and the words it is read into.
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "gcode/grbl/dialect.hpp"
+
+namespace usina::gcode::grbl {
+namespace {
+
+bool is_realtime(unsigned char c) {
+  // Picked out of the serial stream before the line buffer (status report,
+  // cycle start, feed hold, soft reset).
+  return c == '?' || c == '~' || c == '!' || c == 0x18;
+}
+
+// A character Grbl keeps as it is outside comments (upper-cased): most of
+// a line, so the others are told apart once, by this table.
+constexpr std::array<bool, 256> kPlain = [] {
+  std::array<bool, 256> t{};
+  for (int c = '!'; c < 0x80; ++c)
+    t[static_cast<std::size_t>(c)] = true;
+  for (const unsigned char c : std::string_view("?~!/(;"))
+    t[c] = false;
+  return t;
+}();
+
+}  // namespace
+
+StrippedLine strip_line(std::string_view line) {
+  StrippedLine out;
+  strip_line(line, out);
+  return out;
+}
+
+void strip_line(std::string_view line, StrippedLine& out) {
+  out.text.resize(line.size());
+  out.cols.resize(line.size());
+  out.realtime_col = out.control_col = 0;
+  out.control = 0;
+  out.verbatim = true;
+  std::size_t kept = 0;
+  bool in_parens = false;
+  bool in_semicolon = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const auto c = static_cast<unsigned char>(line[i]);
+    const auto col = static_cast<std::uint32_t>(i + 1);
+    if (kPlain[c] && !in_parens && !in_semicolon) {
+      const char up =
+          (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : static_cast<char>(c);
+      if (up != line[i]) out.verbatim = false;
+      out.text[kept] = up;
+      out.cols[kept] = col;
+      ++kept;
+      continue;
+    }
+    if (c != ' ') out.verbatim = false;
+    if (is_realtime(c)) {
+      if (out.realtime_col == 0) out.realtime_col = col;
+      continue;
+    }
+    // Bytes above 0x7F are extended real-time commands or thrown away by
+    // the serial interrupt: a UTF-8 comment never reaches the line.
+    if (c >= 0x80 || in_semicolon) continue;
+    if (in_parens) {
+      if (c == ')') in_parens = false;
+      continue;
+    }
+    // Blanks and control characters are dropped (a NUL too: X1<NUL>20 is
+    // X120 to Grbl); no block delete.
+    if (c < ' ' && c != '\t' && out.control_col == 0) {
+      out.control_col = col;
+      out.control = c;
+    }
+    // What is left besides blanks and '/' is '(' or ';': the rest is plain.
+    if (c == '(') in_parens = true;
+    if (c == ';') in_semicolon = true;
+  }
+  out.text.resize(kept);
+  out.cols.resize(kept);
+}
+
+void blanked_line(std::string_view line, const StrippedLine& s, std::string& out) {
+  out.assign(line.size(), ' ');
+  for (std::size_t k = 0; k < s.text.size(); ++k)
+    out[s.cols[k] - 1] = s.text[k];
+}
+
+// Where the line starting at `at` ends: at the first LF or CR. Searched a
+// piece at a time, so a file of CR ends is not searched to its end for an
+// LF at every line.
+std::size_t line_end(std::string_view text, std::size_t at) {
+  constexpr std::size_t kPiece = 256;
+  for (std::size_t from = at; from < text.size(); from += kPiece) {
+    const char* p = text.data() + from;
+    const std::size_t length = std::min(kPiece, text.size() - from);
+    const auto* lf = static_cast<const char*>(std::memchr(p, '\n', length));
+    const std::size_t before_lf = lf != nullptr ? static_cast<std::size_t>(lf - p) : length;
+    const auto* cr = static_cast<const char*>(std::memchr(p, '\r', before_lf));
+    if (cr != nullptr) return from + static_cast<std::size_t>(cr - p);
+    if (lf != nullptr) return from + before_lf;
+  }
+  return text.size();
+}
+
+LineSpan read_line(std::string_view text, std::uint64_t offset) {
+  const std::size_t at = static_cast<std::size_t>(offset);
+  const std::size_t end = line_end(text, at);
+  LineSpan out{offset, end - at, std::min<std::uint64_t>(end + 1, text.size())};
+  // CR LF is one line end, and so is CR CR LF (a CR LF file converted
+  // once more): an editor shows one line there, and Grbl skips the blank.
+  std::size_t crs = end;
+  while (crs < text.size() && text[crs] == '\r')
+    ++crs;
+  if (crs > end && crs < text.size() && text[crs] == '\n') out.next = crs + 1;
+  return out;
+}
+
+namespace {
+
+// Digits with at most one point as a finite number, by from_chars, which
+// takes no sign and is given a digit before the point. A number as long as
+// a line fits the buffer, so nothing is allocated.
+bool read_unsigned(std::string_view t, double& v) {
+  std::array<char, 512> buffer;
+  std::string longer;
+  const char* first = t.data();
+  std::size_t length = t.size();
+  if (t.front() == '.') {
+    if (t.size() < buffer.size()) {
+      buffer[0] = '0';
+      std::memcpy(buffer.data() + 1, t.data(), t.size());
+      first = buffer.data();
+    } else {
+      longer = "0";
+      longer += t;
+      first = longer.data();
+    }
+    ++length;
+  }
+  const auto r = std::from_chars(first, first + length, v);
+  return r.ec == std::errc{} && std::isfinite(v);
+}
+
+// Grbl's read_float: an optional sign, then digits with at most one point,
+// at least one digit. Returns the characters read, 0 when it is no number.
+std::size_t read_number(std::string_view s, double& value) {
+  // Clinger's fast path: at most 15 digits and 22 decimals make an exact
+  // integer and an exact power of ten, whose quotient is rounded once, so
+  // it is the correctly rounded value from_chars gives.
+  static constexpr std::array<double, 23> kPowers = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+  const std::size_t start = i;
+  std::uint64_t digits = 0;
+  std::size_t count = 0;
+  std::size_t decimals = 0;
+  bool point = false;
+  for (; i < s.size(); ++i) {
+    if (s[i] >= '0' && s[i] <= '9') {
+      if (++count <= 15) digits = digits * 10 + static_cast<std::uint64_t>(s[i] - '0');
+      if (point) ++decimals;
+    } else if (s[i] == '.' && !point) {
+      point = true;
+    } else {
+      break;
+    }
+  }
+  if (count == 0) return 0;
+  double v = 0.0;
+  if (count <= 15) {
+    v = static_cast<double>(digits) / kPowers[decimals];
+  } else if (!read_unsigned(s.substr(start, i - start), v)) {
+    return 0;
+  }
+  value = s[0] == '-' ? -v : v;
+  return i;
+}
+
+std::string not_a_letter(char c) {
+  std::string what = c == '#'   ? "'#' (Grbl has no parameters)"
+                     : c == '[' ? "'[' (Grbl has no expressions)"
+                     : c == '%' ? "'%' inside a line"
+                                : std::string("'") + c + "'";
+  return what + " where a word's letter must be";
+}
+
+}  // namespace
+
+std::optional<Failure> read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
+                                  std::vector<Word>& out) {
+  out.clear();
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char letter = text[i];
+    const std::uint32_t col = cols[i];
+    if (letter < 'A' || letter > 'Z') {
+      return Failure{1, col, not_a_letter(letter)};
+    }
+    double value = 0.0;
+    const std::size_t n = read_number(text.substr(i + 1), value);
+    if (n == 0) {
+      return Failure{2, col, std::string(1, letter) + " is not followed by a number"};
+    }
+    out.push_back({letter, value, col});
+    i += 1 + n;
+  }
+  return std::nullopt;
+}
+
+}  // namespace usina::gcode::grbl

@@ -1,0 +1,104 @@
+// The romi dialect's G/M table (romi/dialect.cpp: code → modal group → handler
+// name), resolved once when the table is made: each code's handler is a
+// member function of the executor, its group a rank in the order of
+// execution, and a code is found by index, never by name per block.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gcode/dialect.hpp"
+
+namespace usina::gcode::romi {
+
+class Executor;
+
+// Runs one code of the block (code in tenths); false after reporting an
+// error. Every handler has this signature.
+using Handler = bool (Executor::*)(int code);
+
+// One code of the table, resolved.
+struct Code {
+  const CodeEntry* entry = nullptr;
+  int rank = 0;  // its group's place in the order of execution
+  Handler handler = nullptr;
+};
+
+class CodeTable {
+ public:
+  // Groups a dialect may have: a block's codes fit one bit each.
+  static constexpr int kMaxGroups = 32;
+  // Codes are whole tenths from 0 to 9990 (G00 to G999): a larger value
+  // is not a code (the front end says so before it looks a code up).
+  static constexpr int kMaxTenths = 9990;
+
+  // `resolve` gives the handler of a name, or nullptr. Groups from
+  // `after_move` on run after the block's move. A handler name nothing
+  // resolves, a code out of range or too many groups is a programming
+  // error (std::logic_error): the dialect's table is wrong.
+  CodeTable(const Dialect& dialect, Handler (*resolve)(std::string_view), int after_move);
+
+  // The code, or nullptr when the table has none (letter 'G' or 'M').
+  const Code* find(char letter, int tenths) const {
+    if (tenths < 0 || tenths > kMaxTenths || (letter != 'G' && letter != 'M')) return nullptr;
+    const std::uint8_t i = index_[slot(letter, tenths)];
+    return i == 0 ? nullptr : &codes_[i - 1];
+  }
+
+  // The rank of the first group that runs after the block's move.
+  int first_after_move() const { return first_after_move_; }
+
+  int ranks() const { return ranks_; }
+
+  std::string_view dialect_name() const { return dialect_name_; }
+
+ private:
+  static std::size_t slot(char letter, int tenths) {
+    const std::size_t m_codes = letter == 'M' ? std::size_t{kMaxTenths} + 1 : 0;
+    return m_codes + static_cast<std::size_t>(tenths);
+  }
+
+  std::string_view dialect_name_;
+  std::vector<Code> codes_;
+  std::vector<std::uint8_t> index_;  // by slot(): 0 none, else 1 + position in codes_
+  int ranks_ = 0;
+  int first_after_move_ = 0;
+};
+
+// "G01", "M06", "G38.2".
+std::string code_name(char letter, int tenths);
+
+// The codes of one block, at most one a group, in the order of execution.
+class BlockCodes {
+ public:
+  void clear() { present_ = 0; }
+
+  // The code already placed in `c`'s group, or nullptr after placing `c`.
+  const Code* place(const Code& c) {
+    const std::uint32_t bit = 1u << c.rank;
+    if ((present_ & bit) != 0) return by_rank_[static_cast<std::size_t>(c.rank)];
+    present_ |= bit;
+    by_rank_[static_cast<std::size_t>(c.rank)] = &c;
+    return nullptr;
+  }
+
+  // Runs `f(const Code&)` on the codes of ranks [from, to) in order while
+  // it returns true; false when one returned false.
+  template <typename F>
+  bool each(int from, int to, F&& f) const {
+    for (int r = from; r < to; ++r) {
+      if (((present_ >> r) & 1u) == 0) continue;
+      if (!f(*by_rank_[static_cast<std::size_t>(r)])) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::array<const Code*, CodeTable::kMaxGroups> by_rank_{};
+  std::uint32_t present_ = 0;
+};
+
+}  // namespace usina::gcode::romi

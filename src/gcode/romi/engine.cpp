@@ -1,0 +1,147 @@
+#include "gcode/romi/engine.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/program_text.hpp"
+#include "gcode/word_range.hpp"
+
+namespace usina::gcode::romi {
+
+Engine::Engine(const Dialect& dialect, const CodeTable& codes, RunContext context)
+    : dialect_(dialect),
+      sources_(context.sources),
+      options_(std::move(context.options)),
+      dialect_options_(Options::from(dialect, context.dialect_options)),
+      sink_(context.sink),
+      diags_(context.diags),
+      run_(context.diags, options_.max_total_iterations),
+      exec_(codes, run_, options_, dialect_options_, context.sink, context.diags) {}
+
+void Engine::set_parameter(int index, double value) {
+  if (index >= 0 && index <= kMaxParam) params_[static_cast<std::size_t>(index)] = value;
+}
+
+double Engine::numbered(int) const {
+  return 0.0;
+}
+
+std::optional<double> Engine::named(std::string_view name) const {
+  // "p12": the parser only makes names of P and 1-3 digits.
+  if (name.size() < 2 || name[0] != 'p') return std::nullopt;
+  int n = 0;
+  for (const char c : name.substr(1)) {
+    if (c < '0' || c > '9') return std::nullopt;
+    n = n * 10 + (c - '0');
+    if (n > kMaxParam) return std::nullopt;
+  }
+  return params_[static_cast<std::size_t>(n)];
+}
+
+bool Engine::run(std::uint32_t file) {
+  file_ = file;
+  cursor_ = {};
+  const core::SourceFile* f = sources_.get(file);
+  if (f == nullptr) return false;
+  cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
+  exec_.start(dialect_.start_codes, {file, 1, 1, 0, 0});
+  while (!exec_.ended() && !run_.failed() && cursor_.offset < f->text().size()) {
+    step();
+    if (sink_.stopped()) run_.fail();  // the operation budget ran out
+    // The canonical machine refused an op for a number out of range (reported).
+    if (exec_.faulted()) run_.fail();
+  }
+  end_of_program();
+  sink_.finish();
+  return !run_.failed();
+}
+
+// A program that ends without M02/M30: what compensation holds goes out,
+// and a warning says the end was taken.
+void Engine::end_of_program() {
+  if (!run_.failed() && !exec_.ended()) exec_.finish();
+  if (exec_.faulted()) run_.fail();
+  if (!run_.failed() && !exec_.ended()) {
+    run_.at({file_, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0});
+    run_.note(core::Code::NoProgramEnd, core::Severity::Warning, 0,
+              "the program ends without M02 or M30; taken as its end");
+  }
+}
+
+void Engine::step() {
+  core::SourceFile* f = sources_.get(file_);
+  const BlockText bt = block_at(f->text(), cursor_.offset);
+  const auto col = static_cast<std::uint32_t>(cursor_.offset - cursor_.line_start + 1);
+  const LinePos where{file_, cursor_.line, cursor_.line_start};
+  cursor_.offset = bt.next;
+  if (bt.ends_line) {
+    ++cursor_.line;
+    cursor_.line_start = bt.next;
+  }
+  if (auto too_long = block_too_long(bt.text, {file_, where.line, col, 1, where.offset})) {
+    diags_.report(std::move(*too_long));
+    run_.fail();
+    return;
+  }
+  if (!parse_romi_block(bt.text, where, col, block_, diags_)) {
+    run_.fail();
+    return;
+  }
+  if (block_.base.percent) return;
+  exec_.begin_block(block_.base.loc, block_.base.comments);
+  const bool ok = block();
+  exec_.end_block(ok);
+  if (!ok) {
+    run_.fail();
+    return;
+  }
+  if (!exec_.ended() && !run_.failed()) after_block_number();
+}
+
+// The block's steps around the executor's: the dashes read as minus signs,
+// the comments, the assignments, the words evaluated and imported, the execution, the
+// jumps.
+bool Engine::block() {
+  for (const std::uint32_t dash : block_.dashes) {
+    if (dialect_options_.typographic_dash_is_error) {
+      return error(core::Code::TypographicDash, dash,
+                   "a typographic dash instead of '-' (typographic_dash=error)");
+    }
+    run_.note(core::Code::TypographicDash, core::Severity::Warning, dash,
+              "a typographic dash read as a minus sign");
+  }
+  exec_.comments();
+  if (!statements(false)) return false;
+  if (!evaluate_words() || !exec_.execute()) return false;
+  return statements(true);
+}
+
+// Step 1: every word's value, handed to the executor as it comes (step 2
+// checks each on arrival, as grbl imports its words).
+bool Engine::evaluate_words() {
+  EvalError err;
+  for (const RomiWord& w : block_.words) {
+    const ExprNode& node = block_.base.expr(w.value);
+    auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
+                                           : gcode::evaluate(block_.base, w.value, *this, err);
+    if (!v) return error(err.error.code, err.col, err.error.message);
+    if (auto why = word_out_of_range(w.letter, *v)) {
+      return error(core::Code::ValueOutOfRange, w.col, *why);
+    }
+    if (w.letter == 'G' || w.letter == 'M') {
+      const double tenths = std::round(*v * 10.0);
+      if (!(*v >= 0 && tenths <= CodeTable::kMaxTenths) || std::fabs(*v * 10.0 - tenths) > 1e-6) {
+        return error(w.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode, w.col,
+                     fmt::format("{}{} is not a code", w.letter, *v));
+      }
+      if (!exec_.import_code(w.letter, static_cast<int>(tenths), w.col)) return false;
+      continue;
+    }
+    const bool incremental = w.lower && dialect_options_.lowercase_incremental;
+    if (!exec_.import_word(w.letter, *v, incremental, w.col)) return false;
+  }
+  return true;
+}
+
+}  // namespace usina::gcode::romi

@@ -1,0 +1,213 @@
+// The romi dialect's handlers of modes and machine functions: plane,
+// distance, units, retract, motion, cutter compensation, the
+// transformations (G30/G31 mirror, G72 scale, G73 rotation), tool change,
+// spindle, coolant, stop and end (spec/romi.md). Each works on the block's
+// copy of the modal state.
+#include <charconv>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "gcode/romi/exec.hpp"
+
+namespace usina::gcode::romi {
+
+Vec2 Transform::apply(Vec2 p) const {
+  Vec2 q = p;
+  if (rotation_deg != 0.0) {
+    const Vec2 r = core::rotate(Vec2{q.x - rotation_at.x, q.y - rotation_at.y},
+                                core::deg_to_rad(rotation_deg));
+    q = {r.x + rotation_at.x, r.y + rotation_at.y};
+  }
+  q = {q.x * scale_x, q.y * scale_y};
+  if (mirror_x) q.x = 2.0 * mirror_at.x - q.x;
+  if (mirror_y) q.y = 2.0 * mirror_at.y - q.y;
+  return q;
+}
+
+// G17 only: the table has no G18/G19. A member, as every handler is.
+bool Executor::h_plane(int) {  // NOLINT(readability-convert-member-functions-to-static)
+  return true;
+}
+
+bool Executor::h_distance(int code) {
+  work_.incremental = code == 910;
+  return true;
+}
+
+bool Executor::h_units(int code) {
+  work_.units = code == 700 ? core::LengthUnit::Inch : core::LengthUnit::Mm;
+  return true;
+}
+
+bool Executor::h_retract(int code) {
+  work_.retract_to_r = code == 990;
+  return true;
+}
+
+bool Executor::h_motion(int code) {
+  work_.motion = code / 10;
+  if (dialect_options_.motion_cancels_cycle) work_.drill.active = false;
+  return true;
+}
+
+bool Executor::h_comp(int code) {
+  CutterComp& comp = work_.comp;
+  if (code == 400) {
+    const auto programmed = comp.programmed_position();
+    if (auto e = comp.stop(machine_)) return error(*e);
+    if (programmed) set_xyz(work_.machine.pos, *programmed);
+    return true;
+  }
+  if (comp.active()) {
+    return error(core::Code::CompNotAllowed, 0, "cutter compensation is already on: G40 first");
+  }
+  double diameter = work_.tool_diameter;
+  if (dialect_options_.comp_radius_from_register && work_.offset_register > 0) {
+    if (const ToolEntry* t = options_.tools.find(work_.offset_register)) diameter = t->diameter;
+  }
+  double radius = options_.ignore_cutter_comp ? 0.0 : diameter / 2.0;
+  // With one axis mirrored the part is drawn the other way round: the
+  // side swaps (spec/romi.md, "Transformations").
+  const bool left = (code == 410) != work_.tf.flips();
+  if (auto e = comp.start(left ? CompSide::Left : CompSide::Right, radius, core::Plane::XY)) {
+    return error(*e);
+  }
+  return true;
+}
+
+bool Executor::h_mirror(int code) {
+  if (code == 300) {
+    work_.tf.mirror_x = work_.tf.mirror_y = false;
+    return true;
+  }
+  const auto x = words_.take('X');
+  const auto y = words_.take('Y');
+  if (!x && !y) return error(core::Code::MissingWord, 0, "G31 needs X and/or Y: the mirror line");
+  work_.tf.mirror_x = x.has_value();
+  work_.tf.mirror_y = y.has_value();
+  work_.tf.mirror_at = {x ? mm(*x) : 0.0, y ? mm(*y) : 0.0};
+  return true;
+}
+
+bool Executor::h_scale(int) {
+  const auto k = words_.take('K');
+  const auto x = words_.take('X');
+  const auto y = words_.take('Y');
+  if (!k && !x && !y) return error(core::Code::MissingWord, 0, "G72 needs K, or X and/or Y");
+  for (const char c : {'K', 'X', 'Y'}) {
+    if (!words_.has(c)) continue;
+    const double f = words_.get(c);
+    if (!(f >= 0.05 && f <= 20.0)) {
+      return error(core::Code::ScaleOutOfRange, words_.col(c),
+                   fmt::format("scale factor {}{} is outside 0.05 to 20", c, f));
+    }
+  }
+  if (k) {
+    work_.tf.scale_x = work_.tf.scale_y = *k;
+  } else {
+    work_.tf.scale_x = x ? *x : 1.0;
+    work_.tf.scale_y = y ? *y : 1.0;
+  }
+  return true;
+}
+
+bool Executor::h_rotate(int) {
+  const auto c = words_.take('C');
+  if (!c) return error(core::Code::MissingWord, 0, "G73 needs C: the angle (C0 cancels)");
+  const auto i = words_.take('I');
+  const auto j = words_.take('J');
+  work_.tf.rotation_deg = *c;
+  work_.tf.rotation_at = {i ? mm(*i) : 0.0, j ? mm(*j) : 0.0};
+  return true;
+}
+
+std::optional<double> Executor::tool_diameter_from_comments() const {
+  if (comments_ == nullptr) return std::nullopt;
+  for (const CommentText& c : *comments_) {
+    const std::string_view t = c.text;
+    for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+      const bool start = i == 0 || t[i - 1] == ' ' || t[i - 1] == '\t';
+      if (!start || (t[i] != 'd' && t[i] != 'D')) continue;
+      std::size_t j = i + 1;
+      double v = 0.0;
+      const auto r = std::from_chars(t.data() + j, t.data() + t.size(), v);
+      if (r.ec == std::errc() && v > 0 && std::isfinite(v)) return v;
+    }
+  }
+  return std::nullopt;
+}
+
+bool Executor::h_tool_change(int) {
+  if (work_.comp.active()) {
+    return error(core::Code::CompNotAllowed, 0,
+                 "a tool change with cutter radius compensation on: G40 first");
+  }
+  if (work_.selected_tool < 0) {
+    return error(core::Code::MissingWord, 0, "M06 with no T: give T<n>");
+  }
+  const int tool = work_.selected_tool;
+  std::optional<double> d;
+  if (const ToolEntry* t = options_.tools.find(tool); t != nullptr && t->diameter > 0) {
+    d = t->diameter;
+  } else {
+    d = tool_diameter_from_comments();
+  }
+  if (!d) {
+    return error(core::Code::UnknownToolDiameter, 0,
+                 fmt::format("the diameter of tool T{:02} is unknown: give a tool table "
+                             "(--tool-table) or write d<diameter> in the block's comment",
+                             tool));
+  }
+  const auto x = words_.take('X');
+  const auto y = words_.take('Y');
+  const Vec3 back = xyz(work_.machine.pos);
+  // The tool-change position is the machine's, not a programmed point:
+  // no transformation, and the program goes on from where it was.
+  machine_.set_origin(canon::Origin::ToolChange);
+  if (x || y) machine_.traverse({x ? mm(*x) : back.x, y ? mm(*y) : back.y, back.z});
+  work_.machine.tool = tool;
+  work_.tool_diameter = *d;
+  machine_.set_tool_diameter(*d);
+  machine_.emit(canon::ToolChange{tool, *d});
+  if (x || y) machine_.traverse(back);
+  machine_.set_origin(canon::Origin::Program);
+  return true;
+}
+
+bool Executor::h_spindle(int code) {
+  const auto dir = code == 30 ? canon::SpindleDir::Cw
+                              : (code == 40 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
+  in_order([this, dir] { machine_.spindle(dir); });
+  return true;
+}
+
+bool Executor::h_coolant(int code) {
+  ModalState& m = work_.machine;
+  if (code == 70) m.mist = true;
+  if (code == 80) m.flood = true;
+  if (code == 90) m.mist = m.flood = false;
+  in_order([this, c = canon::Coolant{m.mist, m.flood}] { machine_.emit(c); });
+  return true;
+}
+
+bool Executor::h_stop(int code) {
+  if (auto e = work_.comp.flush(machine_)) return error(*e);
+  machine_.emit(canon::Comment{fmt::format("M{:02} (program stop)", code / 10)});
+  return true;
+}
+
+bool Executor::h_end(int) {
+  if (work_.blend) {
+    return error(core::Code::BlendNeedsMove, 0,
+                 "an arc with only R blends into the next move, and the program ends");
+  }
+  if (auto e = work_.comp.flush(machine_)) return error(*e);
+  work_.comp.reset();
+  if (work_.machine.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
+  machine_.emit(canon::ProgramEnd{});
+  ended_ = true;
+  return true;
+}
+
+}  // namespace usina::gcode::romi

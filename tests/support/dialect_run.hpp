@@ -1,0 +1,93 @@
+// Runs a program in a dialect by name, as the usina command does, and keeps
+// the ops and diagnostics it wrote (the gcode tests of every dialect).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "canon/toolpath.hpp"
+#include "core/source.hpp"
+#include "gcode/dialect.hpp"
+
+namespace usina::gcode::dialect_test {
+
+using core::Vec3;
+
+struct Run {
+  core::SourceManager sources;
+  core::DiagnosticList diags;
+  canon::Toolpath path;
+  bool ok = false;
+
+  template <typename T>
+  std::vector<T> all() const {
+    std::vector<T> out;
+    for (const canon::Op& op : path.ops()) {
+      if (const T* t = std::get_if<T>(&op.kind)) out.push_back(*t);
+    }
+    return out;
+  }
+
+  // End points of every move, in order.
+  std::vector<Vec3> ends() const {
+    std::vector<Vec3> out;
+    for (const canon::Op& op : path.ops()) {
+      if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) out.push_back(t->to);
+      if (const auto* f = std::get_if<canon::Feed>(&op.kind)) out.push_back(f->to);
+      if (const auto* a = std::get_if<canon::Arc>(&op.kind)) out.push_back(a->to);
+    }
+    return out;
+  }
+
+  bool has(core::Code code) const {
+    for (const core::Diagnostic& d : diags.all()) {
+      if (d.code == code) return true;
+    }
+    return false;
+  }
+
+  // The first error's code, or Message when none.
+  core::Code first_error() const {
+    for (const core::Diagnostic& d : diags.all()) {
+      if (d.severity == core::Severity::Error) return d.code;
+    }
+    return core::Code::Message;
+  }
+
+  std::string first_error_text() const {
+    for (const core::Diagnostic& d : diags.all()) {
+      if (d.severity == core::Severity::Error) return d.message;
+    }
+    return {};
+  }
+};
+
+// `text` run by the dialect `name` with `options` (NAME=VALUE); the fanuc
+// tests use it too.
+inline std::unique_ptr<Run> run_in(const char* name, const std::string& text,
+                                   InterpOptions opts = {},
+                                   const std::vector<std::string>& options = {}) {
+  auto r = std::make_unique<Run>();
+  const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
+  const Dialect* d = find_dialect(name);
+  EXPECT_NE(d, nullptr);
+  OptionValues values;
+  EXPECT_FALSE(resolve_options(*d, options, values).has_value());
+  auto runner =
+      d->make_runner(RunContext{r->sources, std::move(opts), std::move(values), r->path, r->diags});
+  r->ok = runner->run(id);
+  return r;
+}
+
+inline void expect_near(const Vec3& got, const Vec3& want, double tol = 1e-6) {
+  EXPECT_NEAR(got.x, want.x, tol) << "x";
+  EXPECT_NEAR(got.y, want.y, tol) << "y";
+  EXPECT_NEAR(got.z, want.z, tol) << "z";
+}
+
+}  // namespace usina::gcode::dialect_test
