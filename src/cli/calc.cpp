@@ -177,7 +177,7 @@ void print_json(std::string_view name, json inputs, json results) {
 template <typename T>
 bool checked(std::string_view verb, const sim::Checked<T>& r) {
   if (!r) fail(verb, r.error());
-  return r.ok();
+  return r.has_value();
 }
 
 // Rows shared by both loops when the move is not a whole number of pulses.

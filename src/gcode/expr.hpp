@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "gcode/block.hpp"
-#include "gcode/interp/motion.hpp"
+#include "gcode/interp/interp_error.hpp"
 
 namespace usina::gcode {
 

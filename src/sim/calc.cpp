@@ -73,10 +73,9 @@ Error whole_count(double pulses, std::int64_t& whole) {
 }  // namespace
 
 Checked<OpenLoop> open_loop(const OpenLoopInput& in) {
-  using Result = Checked<OpenLoop>;
   if (Error e = check_move(in.drive, "the steps per revolution n_s", in.steps_per_rev,
                            in.distance_mm, in.feed_mm_per_min)) {
-    return Result::failure(*e);
+    return tl::unexpected(*e);
   }
   const double p = in.drive.pitch_mm;
   const double rg = in.drive.gear_ratio;
@@ -93,18 +92,17 @@ Checked<OpenLoop> open_loop(const OpenLoopInput& in) {
   r.pulse_frequency_hz = fr * ns * rg / (60.0 * p);  // (7.11)
   if (!all_finite({r.screw_angle_deg, r.motor_angle_deg, r.pulses, r.screw_rpm, r.motor_rpm,
                    r.pulse_frequency_hz})) {
-    return Result::failure(overflow());
+    return tl::unexpected(overflow());
   }
-  if (Error e = whole_count(r.pulses, r.whole_pulses)) return Result::failure(*e);
+  if (Error e = whole_count(r.pulses, r.whole_pulses)) return tl::unexpected(*e);
   r.distance_reached_mm = static_cast<double>(r.whole_pulses) * p / (ns * rg);  // (7.8)
   return r;
 }
 
 Checked<ClosedLoop> closed_loop(const ClosedLoopInput& in) {
-  using Result = Checked<ClosedLoop>;
   if (Error e = check_move(in.drive, "the encoder slots n_s", in.encoder_slots, in.distance_mm,
                            in.feed_mm_per_min)) {
-    return Result::failure(*e);
+    return tl::unexpected(*e);
   }
   const double p = in.drive.pitch_mm;
   const double rg = in.drive.gear_ratio;
@@ -121,15 +119,14 @@ Checked<ClosedLoop> closed_loop(const ClosedLoopInput& in) {
   // misprint of r_g f_r / p: its numbers are 5(500)/6.
   r.motor_rpm = rg * r.screw_rpm;
   if (!all_finite({r.screw_angle_deg, r.pulses, r.pulse_frequency_hz, r.screw_rpm, r.motor_rpm})) {
-    return Result::failure(overflow());
+    return tl::unexpected(overflow());
   }
-  if (Error e = whole_count(r.pulses, r.whole_pulses)) return Result::failure(*e);
+  if (Error e = whole_count(r.pulses, r.whole_pulses)) return tl::unexpected(*e);
   r.distance_reached_mm = p * static_cast<double>(r.whole_pulses) / ns;  // (7.14)
   return r;
 }
 
 Checked<Precision> precision(const PrecisionInput& in) {
-  using Result = Checked<Precision>;
   Error e =
       first({check_drive(in.drive), need_count("the steps per revolution n_s", in.steps_per_rev),
              need_positive("the axis travel L", in.travel_mm, "mm")});
@@ -140,7 +137,7 @@ Checked<Precision> precision(const PrecisionInput& in) {
     e = fmt::format("the standard deviation sigma must be a number of mm of 0 or more, not {}",
                     in.sigma_mm);
   }
-  if (e) return Result::failure(*e);
+  if (e) return tl::unexpected(*e);
   Precision r;
   // (7.16)
   r.cr1_mm = in.drive.pitch_mm / (static_cast<double>(in.steps_per_rev) * in.drive.gear_ratio);
@@ -151,13 +148,12 @@ Checked<Precision> precision(const PrecisionInput& in) {
   r.accuracy_mm = r.control_resolution_mm / 2.0 + 3.0 * in.sigma_mm;  // (7.19)
   r.repeatability_mm = 3.0 * in.sigma_mm;                             // (7.20)
   if (!all_finite({r.cr1_mm, r.cr2_mm, r.accuracy_mm, r.repeatability_mm})) {
-    return Result::failure(overflow());
+    return tl::unexpected(overflow());
   }
   return r;
 }
 
 Checked<Cutting> cutting(const CuttingInput& in) {
-  using Result = Checked<Cutting>;
   Error e = first({need_positive("the cutting speed v", in.speed_m_per_min, "m/min"),
                    need_positive("the cutter diameter D", in.diameter_mm, "mm")});
   if (!e && in.teeth.has_value() != in.chip_load_mm.has_value()) {
@@ -168,7 +164,7 @@ Checked<Cutting> cutting(const CuttingInput& in) {
   if (!e && in.chip_load_mm) {
     e = need_positive("the chip load f", *in.chip_load_mm, "mm per tooth");
   }
-  if (e) return Result::failure(*e);
+  if (e) return tl::unexpected(*e);
   Cutting r;
   // (7.1) with v in m/min and D in mm: 1000 mm to the metre.
   r.spindle_rpm = 1000.0 * in.speed_m_per_min / (std::numbers::pi * in.diameter_mm);
@@ -176,7 +172,7 @@ Checked<Cutting> cutting(const CuttingInput& in) {
     r.feed_mm_per_min = r.spindle_rpm * static_cast<double>(*in.teeth) * *in.chip_load_mm;  // (7.2)
   }
   if (!all_finite({r.spindle_rpm, r.feed_mm_per_min.value_or(0.0)})) {
-    return Result::failure(overflow());
+    return tl::unexpected(overflow());
   }
   return r;
 }
@@ -208,7 +204,7 @@ Error check_numeral(std::string_view s) {
 }  // namespace
 
 Checked<Bcd> bcd(std::string_view numeral) {
-  if (Error e = check_numeral(numeral)) return Checked<Bcd>::failure(*e);
+  if (Error e = check_numeral(numeral)) return tl::unexpected(*e);
   Bcd r;
   std::uint64_t place = 1;
   for (std::size_t i = 1; i < numeral.size(); ++i)

@@ -12,33 +12,14 @@
 #include <utility>
 #include <vector>
 
+#include <tl/expected.hpp>
+
 namespace usina::sim {
 
 // A calculator's answer: the figures, or a message saying which input is
 // wrong, with its value, and what to give instead.
 template <typename T>
-class Checked {
- public:
-  Checked(T value) : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
-
-  static Checked failure(std::string message) { return Checked(std::move(message), 0); }
-
-  bool ok() const { return value_.has_value(); }
-
-  explicit operator bool() const { return ok(); }
-
-  const T& operator*() const { return *value_; }
-
-  const T* operator->() const { return &*value_; }
-
-  const std::string& error() const { return error_; }
-
- private:
-  Checked(std::string message, int /*tag*/) : error_(std::move(message)) {}
-
-  std::optional<T> value_;
-  std::string error_;
-};
+using Checked = tl::expected<T, std::string>;
 
 // The mechanics common to both loops: a lead screw of pitch p driven by a
 // motor through a gear box of ratio r_g (motor revolutions per screw

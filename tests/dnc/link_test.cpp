@@ -167,9 +167,14 @@ TEST(SerialLink, ASocatPtyPairCarriesAFeed) {
     EXPECT_EQ(f.sim.received, f.report.bytes_sent);
     EXPECT_EQ(f.sim_sha, f.report.sha256);
   }
-  const std::string kill = "kill $(cat " + (dir / "pid").string() + ")";
+  // socat removes its links as it exits: wait for it, so the folder is not
+  // emptied under its feet (remove_all threw when a link vanished first).
+  const std::string kill = "p=$(cat " + (dir / "pid").string() +
+                           "); kill $p && while kill -0 $p 2> /dev/null; do sleep 0.01; done";
   EXPECT_EQ(std::system(kill.c_str()), 0);
-  std::filesystem::remove_all(dir);
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
+  EXPECT_FALSE(ec) << ec.message();
 }
 
 // A device server that usina connects to, and one that connects to usina.

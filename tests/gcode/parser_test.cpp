@@ -1,5 +1,6 @@
 #include "gcode/parser.hpp"
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>

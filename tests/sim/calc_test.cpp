@@ -42,7 +42,7 @@ PrecisionInput example_7_3() {
 
 TEST(CalcOpenLoop, Example71ReproducesThePrintedAnswers) {
   const auto r = open_loop(example_7_1());
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   EXPECT_DOUBLE_EQ(r->screw_angle_deg, 15000.0);  // A = 15.000 deg
   EXPECT_DOUBLE_EQ(r->step_angle_deg, 7.5);       // alpha = 7,5
   EXPECT_DOUBLE_EQ(r->pulses, 10000.0);           // 10.000 pulsos
@@ -58,7 +58,7 @@ TEST(CalcOpenLoop, Example71ReproducesThePrintedAnswers) {
 TEST(CalcOpenLoop, PulseFrequencyAgreesWithScrewSpeed) {
   // (7.9) read back: N = 60 f_p / (n_s r_g) must give (7.10)'s N.
   const auto r = open_loop(example_7_1());
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(60.0 * r->pulse_frequency_hz / (48.0 * 5.0), r->screw_rpm);
 }
 
@@ -66,7 +66,7 @@ TEST(CalcOpenLoop, AFractionOfAStepRoundsToTheNearestWholeStep) {
   OpenLoopInput in = example_7_1();
   in.distance_mm = 250.01;  // 10000.4 steps; CR = 0.025 mm
   const auto r = open_loop(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_NEAR(r->pulses, 10000.4, 1e-9);
   EXPECT_EQ(r->whole_pulses, 10000);
   EXPECT_DOUBLE_EQ(r->distance_reached_mm, 250.0);
@@ -76,7 +76,7 @@ TEST(CalcOpenLoop, NegativeDistanceCountsPulsesTheOtherWay) {
   OpenLoopInput in = example_7_1();
   in.distance_mm = -250.0;
   const auto r = open_loop(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->pulses, -10000.0);
   EXPECT_EQ(r->whole_pulses, -10000);
   EXPECT_DOUBLE_EQ(r->distance_reached_mm, -250.0);
@@ -87,7 +87,7 @@ TEST(CalcOpenLoop, ZeroDistanceNeedsNoPulses) {
   OpenLoopInput in = example_7_1();
   in.distance_mm = 0.0;
   const auto r = open_loop(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->pulses, 0.0);
   EXPECT_EQ(r->whole_pulses, 0);
 }
@@ -96,7 +96,7 @@ TEST(CalcOpenLoop, DirectDriveHasEqualScrewAndMotorSpeeds) {
   OpenLoopInput in = example_7_1();
   in.drive.gear_ratio = 1.0;
   const auto r = open_loop(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->screw_rpm, r->motor_rpm);
   EXPECT_DOUBLE_EQ(r->pulses, 2000.0);
 }
@@ -106,7 +106,7 @@ TEST(CalcOpenLoop, RejectsZeroOrNegativePitchRatioStepsAndFeed) {
     OpenLoopInput in = example_7_1();
     in.drive.pitch_mm = bad;
     const auto r = open_loop(in);
-    EXPECT_FALSE(r.ok()) << bad;
+    EXPECT_FALSE(r.has_value()) << bad;
     EXPECT_TRUE(mentions(r.error(), "pitch")) << r.error();
   }
   for (const double bad : {0.0, -5.0, kNaN}) {
@@ -146,7 +146,7 @@ TEST(CalcOpenLoop, OverflowIsAnErrorNotInfinity) {
   in.drive.pitch_mm = 1e-300;
   in.distance_mm = 1e300;
   const auto r = open_loop(in);
-  EXPECT_FALSE(r.ok());
+  EXPECT_FALSE(r.has_value());
   EXPECT_TRUE(mentions(r.error(), "overflow")) << r.error();
 }
 
@@ -154,7 +154,7 @@ TEST(CalcOpenLoop, MoreThanTwoToThe53PulsesIsAnError) {
   OpenLoopInput in = example_7_1();
   in.distance_mm = 1e15;  // 4e16 pulses
   const auto r = open_loop(in);
-  EXPECT_FALSE(r.ok());
+  EXPECT_FALSE(r.has_value());
   EXPECT_TRUE(mentions(r.error(), "2^53")) << r.error();
 }
 
@@ -162,7 +162,7 @@ TEST(CalcOpenLoop, MoreThanTwoToThe53PulsesIsAnError) {
 
 TEST(CalcClosedLoop, Example72ReproducesThePrintedAnswers) {
   const auto r = closed_loop(example_7_2());
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   EXPECT_DOUBLE_EQ(r->pulses, 2000.0);  // 2.000 pulsos
   EXPECT_EQ(r->whole_pulses, 2000);
   EXPECT_NEAR(r->pulse_frequency_hz, 66.667, kPrinted);  // 66,667 Hz
@@ -175,7 +175,7 @@ TEST(CalcClosedLoop, Example72ReproducesThePrintedAnswers) {
 TEST(CalcClosedLoop, PulsesAreScrewAngleOverSlotAngle) {
   // (7.13) and (7.14) count the same pulses.
   const auto r = closed_loop(example_7_2());
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->screw_angle_deg / r->slot_angle_deg, r->pulses);
 }
 
@@ -183,7 +183,7 @@ TEST(CalcClosedLoop, GearRatioChangesOnlyTheMotorSpeed) {
   ClosedLoopInput in = example_7_2();
   in.drive.gear_ratio = 10.0;
   const auto r = closed_loop(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->pulses, 2000.0);
   EXPECT_DOUBLE_EQ(r->pulse_frequency_hz, 200.0 / 3.0);
   EXPECT_NEAR(r->motor_rpm, 833.333, kPrinted);
@@ -193,7 +193,7 @@ TEST(CalcClosedLoop, FractionalCountRoundsAndSaysWhereTheTableStops) {
   ClosedLoopInput in = example_7_2();
   in.distance_mm = 250.1;  // 2000.8 pulses; one pulse is 0.125 mm
   const auto r = closed_loop(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->whole_pulses, 2001);
   EXPECT_DOUBLE_EQ(r->distance_reached_mm, 250.125);
 }
@@ -224,7 +224,7 @@ TEST(CalcClosedLoop, OverflowIsAnError) {
 
 TEST(CalcPrecision, Example73ReproducesThePrintedAnswers) {
   const auto r = precision(example_7_3());
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   EXPECT_DOUBLE_EQ(r->cr1_mm, 0.025);         // 6 / (48 x 5)
   EXPECT_NEAR(r->cr2_mm, 0.01526, 0.000005);  // 1000 / 65.535
   EXPECT_DOUBLE_EQ(r->cr2_mm, 1000.0 / 65535.0);
@@ -238,7 +238,7 @@ TEST(CalcPrecision, FewBitsMakeTheRegisterTheLimit) {
   PrecisionInput in = example_7_3();
   in.bits = 8;
   const auto r = precision(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->cr2_mm, 1000.0 / 255.0);
   EXPECT_DOUBLE_EQ(r->control_resolution_mm, r->cr2_mm);
   EXPECT_TRUE(r->limited_by_register);
@@ -249,7 +249,7 @@ TEST(CalcPrecision, OneBitSplitsTheTravelIntoOneGap) {
   PrecisionInput in = example_7_3();
   in.bits = 1;
   const auto r = precision(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->cr2_mm, 1000.0);
 }
 
@@ -257,7 +257,7 @@ TEST(CalcPrecision, SixtyFourBitsStayFinite) {
   PrecisionInput in = example_7_3();
   in.bits = 64;
   const auto r = precision(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_TRUE(std::isfinite(r->cr2_mm));
   EXPECT_GT(r->cr2_mm, 0.0);
   EXPECT_LT(r->cr2_mm, 1e-15);
@@ -267,7 +267,7 @@ TEST(CalcPrecision, PerfectMechanicsLeaveHalfTheResolution) {
   PrecisionInput in = example_7_3();
   in.sigma_mm = 0.0;
   const auto r = precision(in);
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_DOUBLE_EQ(r->accuracy_mm, 0.0125);
   EXPECT_EQ(r->repeatability_mm, 0.0);
 }
@@ -277,7 +277,7 @@ TEST(CalcPrecision, BitsOutsideOneToSixtyFourAreAnError) {
     PrecisionInput in = example_7_3();
     in.bits = bad;
     const auto r = precision(in);
-    EXPECT_FALSE(r.ok()) << bad;
+    EXPECT_FALSE(r.has_value()) << bad;
     EXPECT_TRUE(mentions(r.error(), "from 1 to 64")) << r.error();
   }
 }
@@ -304,7 +304,7 @@ TEST(CalcPrecision, RejectsNegativeSigmaAndZeroTravel) {
 TEST(CalcCutting, SpindleSpeedFromCuttingSpeed) {
   // (7.1): 100 m/min on a 20 mm cutter.
   const auto r = cutting({100.0, 20.0, std::nullopt, std::nullopt});
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   EXPECT_DOUBLE_EQ(r->spindle_rpm, 100000.0 / (std::numbers::pi * 20.0));
   EXPECT_NEAR(r->spindle_rpm, 1591.55, 0.005);
   EXPECT_FALSE(r->feed_mm_per_min.has_value());
@@ -313,7 +313,7 @@ TEST(CalcCutting, SpindleSpeedFromCuttingSpeed) {
 TEST(CalcCutting, FeedRateFromTeethAndChipLoad) {
   // (7.2): 4 teeth at 0.05 mm per tooth.
   const auto r = cutting({100.0, 20.0, 4, 0.05});
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   ASSERT_TRUE(r->feed_mm_per_min.has_value());
   EXPECT_DOUBLE_EQ(*r->feed_mm_per_min, r->spindle_rpm * 4 * 0.05);
   EXPECT_NEAR(*r->feed_mm_per_min, 318.31, 0.005);
@@ -344,7 +344,7 @@ TEST(CalcBcd, EveryDigitAsTable74) {
                                              "0101", "0110", "0111", "1000", "1001"};
   for (int d = 0; d <= 9; ++d) {
     const auto r = bcd(std::to_string(d));
-    ASSERT_TRUE(r.ok()) << r.error();
+    ASSERT_TRUE(r.has_value()) << r.error();
     ASSERT_EQ(r->digits.size(), 1u);
     EXPECT_EQ(r->digits[0].bits, table.at(static_cast<std::size_t>(d))) << d;
     EXPECT_EQ(r->value, static_cast<std::uint64_t>(d));
@@ -353,7 +353,7 @@ TEST(CalcBcd, EveryDigitAsTable74) {
 
 TEST(CalcBcd, The1250OfTheSeed) {
   const auto r = bcd("1250");
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   ASSERT_EQ(r->digits.size(), 4u);
   EXPECT_EQ(r->digits[0].bits, "0001");
   EXPECT_EQ(r->digits[0].place_value, 1000u);
@@ -370,7 +370,7 @@ TEST(CalcBcd, The1250OfTheSeed) {
 TEST(CalcBcd, LeadingZerosAreDigitsAsOnTape) {
   // X07000 of the seed's word-address example.
   const auto r = bcd("07000");
-  ASSERT_TRUE(r.ok());
+  ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->digits.size(), 5u);
   EXPECT_EQ(r->value, 7000u);
   EXPECT_EQ(r->code, "0000 0111 0000 0000 0000");
@@ -378,7 +378,7 @@ TEST(CalcBcd, LeadingZerosAreDigitsAsOnTape) {
 
 TEST(CalcBcd, NineteenDigitsFitTwentyDoNot) {
   const auto r = bcd("9999999999999999999");
-  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_TRUE(r.has_value()) << r.error();
   EXPECT_EQ(r->value, 9999999999999999999u);
   EXPECT_EQ(r->digits[0].place_value, 9000000000000000000u);
   EXPECT_TRUE(mentions(bcd("10000000000000000000").error(), "at most 19"));

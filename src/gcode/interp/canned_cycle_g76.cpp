@@ -37,10 +37,9 @@ struct ThreadPlan {
   Vec3 end;
 };
 
-std::optional<InterpError> read_count(const std::optional<double>& w, char letter, const char* what,
-                                      long& out) {
+InterpResult read_count(const std::optional<double>& w, char letter, const char* what, long& out) {
   out = 0;
-  if (!w) return std::nullopt;
+  if (!w) return {};
   const std::optional<long> n = whole_number(*w);
   if (!n || *n < 0) {
     return error(Code::BadWordValue,
@@ -51,15 +50,16 @@ std::optional<InterpError> read_count(const std::optional<double>& w, char lette
                  fmt::format("G76 {}{:g}: more than {} {}", letter, *w, kMaxPasses, what));
   }
   out = *n;
-  return std::nullopt;
+  return {};
 }
 
 // In LinuxCNC's order: words as read, the block's checks, then the cycle's.
-std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleModal& m,
-                                              long& spring, long& tapers) {
+InterpResult check_thread_words(const CycleWords& w, const CycleModal& m, long& spring,
+                                long& tapers) {
   const Units u{m.length_unit};
-  if (auto e = read_count(w.h, 'H', "the number of spring passes", spring)) return e;
-  if (auto e = read_count(w.l, 'L', "L (taper ends: 1 entry, 2 exit, 3 both)", tapers)) return e;
+  if (auto e = read_count(w.h, 'H', "the number of spring passes", spring); !e) return e;
+  if (auto e = read_count(w.l, 'L', "L (taper ends: 1 entry, 2 exit, 3 both)", tapers); !e)
+    return e;
   if (!w.p) return error(Code::MissingWord, "G76 needs P, the thread pitch");
   if (!w.i || !w.j || !w.k) {
     return error(Code::MissingWord,
@@ -67,7 +67,7 @@ std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleMo
                              "{} is missing",
                              !w.i ? 'I' : (!w.j ? 'J' : 'K')));
   }
-  if (auto e = check_spindle(m.motion, m.spindle)) return e;
+  if (auto e = check_spindle(m.motion, m.spindle); !e) return e;
   if (*w.i == 0) {
     return error(Code::CycleBadValue,
                  "G76 I0: the thread peak offset from the drive line must not be 0 (negative for "
@@ -82,7 +82,7 @@ std::optional<InterpError> check_thread_words(const CycleWords& w, const CycleMo
                  fmt::format("G76 K{:g}: the thread depth must be greater than J{:g}", u.in(*w.k),
                              u.in(*w.j)));
   }
-  return std::nullopt;
+  return {};
 }
 
 ThreadPlan plan_thread(const CycleWords& w, const CycleModal& m, Units u, const Vec3& start) {
@@ -180,12 +180,11 @@ void cut_thread(Mover& m, const ThreadPlan& t) {
 
 // G76 (LinuxCNC convert_straight / convert_threading_cycle). Its moves are in
 // X and Z whatever the plane; LinuxCNC runs it in G17 as well.
-std::optional<InterpError> CannedCycles::run_threading(const CycleWords& words,
-                                                       const CycleModal& modal,
-                                                       MotionTarget& target) {
+InterpResult CannedCycles::run_threading(const CycleWords& words, const CycleModal& modal,
+                                         MotionTarget& target) {
   long spring = 0;
   long tapers = 0;
-  if (auto e = check_thread_words(words, modal, spring, tapers)) return e;
+  if (auto e = check_thread_words(words, modal, spring, tapers); !e) return e;
   const Units u{modal.length_unit};
   const Vec3 pos = target.position();
   const Vec3 pos_u = unit_ == u.mm && pos == end_point_ ? end_point_u_ : u.in(pos);
@@ -205,7 +204,7 @@ std::optional<InterpError> CannedCycles::run_threading(const CycleWords& words,
   end_point_u_ = t.end;
   end_point_ = u.out(t.end);
   unit_ = u.mm;
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace usina::gcode

@@ -19,8 +19,8 @@
 
 namespace usina::gcode::cycle_parts {
 
-inline InterpError error(core::Code code, std::string message) {
-  return {code, std::move(message)};
+inline tl::unexpected<InterpError> error(core::Code code, std::string message) {
+  return interp_error(code, std::move(message));
 }
 
 // LinuxCNC computes in program units; usina holds mm (v = u * 25.4). v / 25.4
@@ -99,6 +99,6 @@ class Mover {
 
 // LinuxCNC checks the spindle inside each cycle (convert_cycle_g74_g84, _g86,
 // _g87, _g88, convert_threading_cycle); the message names the cycle.
-std::optional<InterpError> check_spindle(int motion, canon::SpindleDir dir);
+InterpResult check_spindle(int motion, canon::SpindleDir dir);
 
 }  // namespace usina::gcode::cycle_parts

@@ -68,9 +68,9 @@ struct Resolved {
   std::array<double, 3> ijk{};
 };
 
-std::optional<InterpError> read_repeats(const CycleWords& w, int motion, long& repeats) {
+InterpResult read_repeats(const CycleWords& w, int motion, long& repeats) {
   repeats = 1;
-  if (!w.l) return std::nullopt;
+  if (!w.l) return {};
   if (*w.l > kMaxRepeats) {
     return error(Code::TooManyIterations,
                  fmt::format("G{} L{:g} repeats the cycle more than {:g} times", g_of(motion), *w.l,
@@ -88,13 +88,13 @@ std::optional<InterpError> read_repeats(const CycleWords& w, int motion, long& r
                              g_of(motion)));
   }
   repeats = *l;
-  return std::nullopt;
+  return {};
 }
 
 // R and the bottom: from the block, or kept from the last block of the same
 // cycle (LinuxCNC convert_cycle: cycle_r; convert_cycle_xy: cycle_cc).
-std::optional<InterpError> resolve_levels(const CycleWords& w, const CycleModal& m,
-                                          const CannedCycles::Sticky& s, Resolved& out) {
+InterpResult resolve_levels(const CycleWords& w, const CycleModal& m, const CannedCycles::Sticky& s,
+                            Resolved& out) {
   const int g = g_of(m.motion);
   if (!w.r && m.motion_mode_changed) {
     return error(
@@ -112,12 +112,12 @@ std::optional<InterpError> resolve_levels(const CycleWords& w, const CycleModal&
   }
   out.r = w.r.value_or(s.r);
   out.bottom = bottom.value_or(s.bottom);
-  return std::nullopt;
+  return {};
 }
 
 // P, Q, I, J, K as each cycle needs them (convert_cycle_xy, per cycle).
-std::optional<InterpError> resolve_cycle_words(const CycleWords& w, const CycleModal& m,
-                                               const CannedCycles::Sticky& s, Resolved& out) {
+InterpResult resolve_cycle_words(const CycleWords& w, const CycleModal& m,
+                                 const CannedCycles::Sticky& s, Resolved& out) {
   const int g = g_of(m.motion);
   const Units u{m.length_unit};
   const bool dwells = g == 82 || g == 86 || g == 88 || g == 89;
@@ -153,7 +153,7 @@ std::optional<InterpError> resolve_cycle_words(const CycleWords& w, const CycleM
     }
     out.ijk[n] = ijk[n]->value_or(kept[n]);
   }
-  return std::nullopt;
+  return {};
 }
 
 // The hole position: G91 steps it each repeat (CYCLE_MACRO's increments, NCMS
@@ -185,8 +185,8 @@ void plan_position(const CycleWords& w, const CycleModal& m, Units u, DrillPlan&
 
 // convert_cycle_xy/_zx/_yz: R, the bottom and the clear level in program
 // units. Under G91 R counts from the initial level and the bottom from R.
-std::optional<InterpError> plan_levels(const CycleModal& m, const Resolved& v, Units u,
-                                       double initial, DrillPlan& p) {
+InterpResult plan_levels(const CycleModal& m, const Resolved& v, Units u, double initial,
+                         DrillPlan& p) {
   const core::PlaneAxes ax = core::axes_of(m.plane);
   p.r = m.incremental ? u.in(v.r) + initial : u.in(v.r);
   p.bottom = m.incremental ? p.r + u.in(v.bottom) : u.in(v.bottom);
@@ -206,7 +206,7 @@ std::optional<InterpError> plan_levels(const CycleModal& m, const Resolved& v, U
   p.middle = m.incremental ? p.bottom + k : k;  // G87: K from the bottom under G91
   p.off_a = u.in(v.ijk[static_cast<std::size_t>(ax.first)]);
   p.off_b = u.in(v.ijk[static_cast<std::size_t>(ax.second)]);
-  return std::nullopt;
+  return {};
 }
 
 // CYCLE_MACRO's increments for one repeat; false at the origin, where an
@@ -244,8 +244,8 @@ long count_pecks(const DrillPlan& p) {
 }
 
 // Everything that could still fail, before the first move.
-std::optional<InterpError> check_plan(const DrillPlan& p) {
-  if (auto e = check_spindle(p.motion, p.spindle)) return e;
+InterpResult check_plan(const DrillPlan& p) {
+  if (auto e = check_spindle(p.motion, p.spindle); !e) return e;
   double a = p.a;
   double b = p.b;
   for (long n = 0; n < p.repeats; ++n) {
@@ -265,7 +265,7 @@ std::optional<InterpError> check_plan(const DrillPlan& p) {
                              "depth, or L too large)",
                              g_of(p.motion), kMaxMoves, p.peck));
   }
-  return std::nullopt;
+  return {};
 }
 
 // The moves to the hole (CYCLE_MACRO): the first repeat moves in the plane at
@@ -434,7 +434,7 @@ void keep_sticky(CannedCycles::Sticky& sticky, const Resolved& v, int motion) {
 }
 
 // NaN or infinity from an expression would make moves to nowhere.
-std::optional<InterpError> check_finite(const CycleWords& w, int motion) {
+InterpResult check_finite(const CycleWords& w, int motion) {
   const std::array<std::pair<char, const std::optional<double>*>, 14> all{{{'X', &w.x},
                                                                            {'Y', &w.y},
                                                                            {'Z', &w.z},
@@ -455,7 +455,7 @@ std::optional<InterpError> check_finite(const CycleWords& w, int motion) {
                    fmt::format("G{:g}: {} is not a finite number", motion / 10.0, letter));
     }
   }
-  return std::nullopt;
+  return {};
 }
 
 bool is_drilling_cycle(int motion) {
@@ -464,7 +464,7 @@ bool is_drilling_cycle(int motion) {
 
 }  // namespace
 
-std::optional<InterpError> cycle_parts::check_spindle(int motion, SpindleDir dir) {
+InterpResult cycle_parts::check_spindle(int motion, SpindleDir dir) {
   const int g = g_of(motion);
   const auto turning = [](SpindleDir d) { return d == SpindleDir::Off ? "stopped" : "turning"; };
   if (g == 84 && dir != SpindleDir::Cw) {
@@ -483,12 +483,12 @@ std::optional<InterpError> cycle_parts::check_spindle(int motion, SpindleDir dir
     return error(Code::NotAllowedInMode,
                  fmt::format("G{} needs the spindle turning: start it with M3 or M4 first", g));
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<InterpError> CannedCycles::run(const CycleWords& words, const CycleModal& modal,
-                                             MotionTarget& target) {
-  if (auto e = check_finite(words, modal.motion)) return e;
+InterpResult CannedCycles::run(const CycleWords& words, const CycleModal& modal,
+                               MotionTarget& target) {
+  if (auto e = check_finite(words, modal.motion); !e) return e;
   if (modal.motion == 760) return run_threading(words, modal, target);
   if (!is_drilling_cycle(modal.motion)) {
     return error(Code::Unsupported,
@@ -497,9 +497,8 @@ std::optional<InterpError> CannedCycles::run(const CycleWords& words, const Cycl
   return run_drilling(words, modal, target);
 }
 
-std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
-                                                      const CycleModal& modal,
-                                                      MotionTarget& target) {
+InterpResult CannedCycles::run_drilling(const CycleWords& words, const CycleModal& modal,
+                                        MotionTarget& target) {
   if ((words.polar_radius || words.polar_angle) && modal.plane != Plane::XY) {
     return error(Code::NotAllowedInMode,
                  fmt::format("G{}: polar coordinates (@, ^) work only in the XY plane (G17)",
@@ -507,9 +506,9 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   }
   Resolved v;
   DrillPlan p;
-  if (auto e = resolve_levels(words, modal, sticky_, v)) return e;
-  if (auto e = read_repeats(words, modal.motion, p.repeats)) return e;
-  if (auto e = resolve_cycle_words(words, modal, sticky_, v)) return e;
+  if (auto e = resolve_levels(words, modal, sticky_, v); !e) return e;
+  if (auto e = read_repeats(words, modal.motion, p.repeats); !e) return e;
+  if (auto e = resolve_cycle_words(words, modal, sticky_, v); !e) return e;
   const Units u{modal.length_unit};
   // LinuxCNC's numbers for the current point and the initial level: kept
   // from the last block when they are still the same, as 0.345 - 0.095 and
@@ -527,13 +526,13 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   p.cur_b = cur.y;
   p.cur_c = pos_u[normal];
   plan_position(words, modal, u, p);
-  if (auto e = plan_levels(modal, v, u, initial, p)) return e;
+  if (auto e = plan_levels(modal, v, u, initial, p); !e) return e;
   p.dwell = v.p;
   p.peck = u.in(v.q);
   p.clearance = modal.peck_clearance / u.mm;
   p.retract = modal.peck_retract.value_or(modal.peck_clearance) / u.mm;
   p.spindle = modal.spindle;
-  if (auto e = check_plan(p)) return e;
+  if (auto e = check_plan(p); !e) return e;
 
   Mover m(target, p.plane, u);
   end_point_u_ = drill(m, p);
@@ -542,7 +541,7 @@ std::optional<InterpError> CannedCycles::run_drilling(const CycleWords& words,
   initial_level_ = u.out(initial);
   unit_ = u.mm;
   keep_sticky(sticky_, v, modal.motion);
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace usina::gcode

@@ -58,8 +58,7 @@ class CannedCycles {
   // Executes one cycle block (motion mode G73/G74/G76/G81-G89) on `target`,
   // starting from target.position(). On error nothing has moved and no
   // sticky value changed.
-  std::optional<InterpError> run(const CycleWords& words, const CycleModal& modal,
-                                 MotionTarget& target);
+  InterpResult run(const CycleWords& words, const CycleModal& modal, MotionTarget& target);
 
   // A motion that is not G73/G74/G81-G89 ran (G0-G3, G33, G38.x, G76, G80,
   // ...): the next cycle takes its initial level (G98) from where it starts.
@@ -89,10 +88,9 @@ class CannedCycles {
   };
 
  private:
-  std::optional<InterpError> run_drilling(const CycleWords& words, const CycleModal& modal,
-                                          MotionTarget& target);
-  std::optional<InterpError> run_threading(const CycleWords& words, const CycleModal& modal,
-                                           MotionTarget& target);
+  InterpResult run_drilling(const CycleWords& words, const CycleModal& modal, MotionTarget& target);
+  InterpResult run_threading(const CycleWords& words, const CycleModal& modal,
+                             MotionTarget& target);
 
   Sticky sticky_;
   // LinuxCNC's cycle_il, on the plane's normal, in mm and as LinuxCNC holds

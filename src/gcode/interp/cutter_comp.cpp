@@ -31,14 +31,14 @@ double angle_of(Vec2 v) {
   return std::atan2(v.y, v.x);
 }
 
-InterpError error(Code code, std::string message) {
-  return {code, std::move(message)};
+tl::unexpected<InterpError> error(Code code, std::string message) {
+  return interp_error(code, std::move(message));
 }
 
 }  // namespace
 
-std::optional<InterpError> CutterComp::start(CompSide side, double radius, core::Plane plane,
-                                             int orientation, bool metric) {
+InterpResult CutterComp::start(CompSide side, double radius, core::Plane plane, int orientation,
+                               bool metric) {
   // interp_convert.cc convert_cutter_compensation_on.
   if (side == CompSide::Off) {
     return error(Code::CompNotAllowed,
@@ -67,7 +67,7 @@ std::optional<InterpError> CutterComp::start(CompSide side, double radius, core:
   orientation_ = orientation;
   metric_ = metric;
   first_move_ = true;
-  return std::nullopt;
+  return {};
 }
 
 std::optional<Vec3> CutterComp::programmed_position() const {
@@ -75,8 +75,8 @@ std::optional<Vec3> CutterComp::programmed_position() const {
   return core::from_plane(programmed_, axial_, plane_);
 }
 
-std::optional<InterpError> CutterComp::straight(const Vec3& programmed_end, bool rapid,
-                                                const core::SourceLoc& loc, MotionTarget& target) {
+InterpResult CutterComp::straight(const Vec3& programmed_end, bool rapid,
+                                  const core::SourceLoc& loc, MotionTarget& target) {
   // convert_straight: any straight move allows arcs again.
   if (!compensating()) return pass_straight(programmed_end, rapid, loc, target);
   arc_not_allowed_ = false;
@@ -86,9 +86,8 @@ std::optional<InterpError> CutterComp::straight(const Vec3& programmed_end, bool
   return next_straight(end, axial, rapid, loc, target);
 }
 
-std::optional<InterpError> CutterComp::pass_straight(const Vec3& end, bool rapid,
-                                                     const core::SourceLoc& loc,
-                                                     MotionTarget& target) {
+InterpResult CutterComp::pass_straight(const Vec3& end, bool rapid, const core::SourceLoc& loc,
+                                       MotionTarget& target) {
   arc_not_allowed_ = false;
   target.set_source(loc);
   if (rapid) {
@@ -96,14 +95,13 @@ std::optional<InterpError> CutterComp::pass_straight(const Vec3& end, bool rapid
   } else {
     target.feed(end);
   }
-  return std::nullopt;
+  return {};
 }
 
 // interp_convert.cc convert_straight_comp1: the entry move ends a tool
 // radius from the programmed end, perpendicular to the entry move.
-std::optional<InterpError> CutterComp::entry_straight(Vec2 end, double axial, bool rapid,
-                                                      const core::SourceLoc& loc,
-                                                      const MotionTarget& target) {
+InterpResult CutterComp::entry_straight(Vec2 end, double axial, bool rapid,
+                                        const core::SourceLoc& loc, const MotionTarget& target) {
   const Vec2 from = core::in_plane(target.position(), plane_);
   const double length = distance(from, end);
   if (not_beyond_radius(length)) {
@@ -121,20 +119,19 @@ std::optional<InterpError> CutterComp::entry_straight(Vec2 end, double axial, bo
   tool_ = tool;
   programmed_ = end;
   axial_ = axial;
-  return std::nullopt;
+  return {};
 }
 
 // interp_convert.cc convert_straight_comp2.
-std::optional<InterpError> CutterComp::next_straight(Vec2 end, double axial, bool rapid,
-                                                     const core::SourceLoc& loc,
-                                                     MotionTarget& target) {
+InterpResult CutterComp::next_straight(Vec2 end, double axial, bool rapid,
+                                       const core::SourceLoc& loc, MotionTarget& target) {
   const Kind kind = rapid ? Kind::Traverse : Kind::Feed;
   if (end == programmed_) {
     // No motion in the plane: held with the move before it, so it happens
     // at that move's (possibly moved) end.
     hold(straight_move(kind, loc, tool_, axial));
     axial_ = axial;
-    return std::nullopt;
+    return {};
   }
   const Vec2 along = end - programmed_;
   const double out_of = angle_of(along);
@@ -150,11 +147,11 @@ std::optional<InterpError> CutterComp::next_straight(Vec2 end, double axial, boo
       const bool after_arc = queue_.front().kind == Kind::Arc;
       const std::optional<Vec2> corner = after_arc ? arc_line_corner(end) : line_line_corner(beta);
       const char* what = after_arc ? "arc to straight" : "straight to straight";
-      if (auto e = trim_concave(corner, what, target)) return e;
+      if (auto e = trim_concave(corner, what, target); !e) return e;
     }
   } else if (beta > kTangent) {
     // Convex: the held move keeps its end; an arc round the corner.
-    if (auto e = move_end_and_release(tool_, target)) return e;
+    if (auto e = move_end_and_release(tool_, target); !e) return e;
     emit_corner(programmed_ + normal * radius_, programmed_, rapid, loc, target);
   } else {
     release(target);
@@ -165,7 +162,7 @@ std::optional<InterpError> CutterComp::next_straight(Vec2 end, double axial, boo
   tool_ = tool;
   programmed_ = end;
   axial_ = axial;
-  return std::nullopt;
+  return {};
 }
 
 // The retreat along the held straight move from its end, half the inside
@@ -188,22 +185,22 @@ void CutterComp::emit_corner(Vec2 to, Vec2 about, bool rapid, const core::Source
 }
 
 // interp_convert.cc convert_cutter_compensation_off.
-std::optional<InterpError> CutterComp::stop(MotionTarget& target) {
+InterpResult CutterComp::stop(MotionTarget& target) {
   if (compensating() && !first_move_) {
-    if (auto e = move_end_and_release(tool_, target)) return e;
+    if (auto e = move_end_and_release(tool_, target); !e) return e;
     queue_start_.reset();
     arc_not_allowed_ = true;
   }
   side_ = CompSide::Off;
   first_move_ = true;
-  return std::nullopt;
+  return {};
 }
 
 // interp_convert.cc convert_stop.
-std::optional<InterpError> CutterComp::flush(MotionTarget& target) {
-  if (auto e = move_end_and_release(tool_, target)) return e;
+InterpResult CutterComp::flush(MotionTarget& target) {
+  if (auto e = move_end_and_release(tool_, target); !e) return e;
   release(target);
-  return std::nullopt;
+  return {};
 }
 
 void CutterComp::defer(const core::SourceLoc& loc, Deferred op, MotionTarget& target) {
@@ -301,33 +298,33 @@ void CutterComp::release(MotionTarget& target) {
 // interp_queue.cc move_endpoint_and_flush: every held move now ends at
 // `to`; an error, and nothing changed, if that reverses a straight move or
 // lengthens an arc.
-std::optional<InterpError> CutterComp::move_end_and_release(Vec2 to, MotionTarget& target) {
-  if (queue_.empty()) return std::nullopt;
+InterpResult CutterComp::move_end_and_release(Vec2 to, MotionTarget& target) {
+  if (queue_.empty()) return {};
   for (const Held& h : queue_) {
-    if (auto e = check_move_end(h, to)) return e;
+    if (auto e = check_move_end(h, to); !e) return e;
   }
   for (Held& h : queue_) {
     if (h.kind != Kind::Deferred) h.end = to;
   }
   release(target);
   queue_start_ = to;
-  return std::nullopt;
+  return {};
 }
 
-std::optional<InterpError> CutterComp::check_move_end(const Held& h, Vec2 to) const {
-  if (!queue_start_ || h.kind == Kind::Deferred) return std::nullopt;
+InterpResult CutterComp::check_move_end(const Held& h, Vec2 to) const {
+  if (!queue_start_ || h.kind == Kind::Deferred) return {};
   const Vec2 from = *queue_start_;
   if (h.kind == Kind::Arc) {
     const double sweep = core::arc_sweep(from, to, h.center, h.turn > 0, std::abs(h.turn));
     const double slack = metric_ ? kSweepSlackMetric : kSweepSlack;
-    if (h.sweep == 0.0 || std::fabs(sweep) <= std::fabs(h.sweep) + slack) return std::nullopt;
+    if (h.sweep == 0.0 || std::fabs(sweep) <= std::fabs(h.sweep) + slack) return {};
     return error(Code::CutterGouge,
                  fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit the "
                              "concave corner after the previous arc; that arc would have to end "
                              "before it starts; use a smaller tool or a longer arc",
                              radius_));
   }
-  if (dot(h.direction, to - from) >= 0.0) return std::nullopt;
+  if (dot(h.direction, to - from) >= 0.0) return {};
   return error(Code::CutterGouge,
                fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit the concave "
                            "corner after the previous straight move; that move would have to run "
@@ -335,8 +332,8 @@ std::optional<InterpError> CutterComp::check_move_end(const Held& h, Vec2 to) co
                            radius_));
 }
 
-std::optional<InterpError> CutterComp::trim_concave(std::optional<Vec2> corner, const char* what,
-                                                    MotionTarget& target) {
+InterpResult CutterComp::trim_concave(std::optional<Vec2> corner, const char* what,
+                                      MotionTarget& target) {
   if (!corner) {
     return error(Code::CutterGouge,
                  fmt::format("cutter gouging: the tool (radius {:.4g} mm) does not fit this "

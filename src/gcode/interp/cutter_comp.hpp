@@ -81,28 +81,28 @@ class CutterComp {
   // of its nose radius (LinuxCNC interp_queue.cc latheorigin_x/z).
   // `metric`: the program is in G21, where LinuxCNC lets a concave corner
   // lengthen an arc more (see kSweepSlack in cutter_comp.cpp).
-  std::optional<InterpError> start(CompSide side, double radius, core::Plane plane,
-                                   int orientation = 0, bool metric = false);
+  InterpResult start(CompSide side, double radius, core::Plane plane, int orientation = 0,
+                     bool metric = false);
 
   // A programmed straight move (G0 when `rapid`, else G1) to `programmed_end`.
-  std::optional<InterpError> straight(const Vec3& programmed_end, bool rapid,
-                                      const core::SourceLoc& loc, MotionTarget& target);
+  InterpResult straight(const Vec3& programmed_end, bool rapid, const core::SourceLoc& loc,
+                        MotionTarget& target);
 
   // A programmed arc (G2: turn < 0, G3: turn > 0; |turn| > 1 with P) to
   // `programmed_end` about `programmed_center`, found from the programmed
   // start; the axial part of the end makes a helix.
-  std::optional<InterpError> arc(const Vec3& programmed_end, const Vec3& programmed_center,
-                                 int turn, const core::SourceLoc& loc, MotionTarget& target);
+  InterpResult arc(const Vec3& programmed_end, const Vec3& programmed_center, int turn,
+                   const core::SourceLoc& loc, MotionTarget& target);
 
   // Runs `op` now when no move is held, else after the held moves.
   void defer(const core::SourceLoc& loc, Deferred op, MotionTarget& target);
 
   // G40: releases the held moves where they end and turns compensation off.
-  std::optional<InterpError> stop(MotionTarget& target);
+  InterpResult stop(MotionTarget& target);
 
   // M0/M1/M2/M30/M60: releases the held moves where they end; compensation
   // stays as it is (the next corner then has nothing to trim).
-  std::optional<InterpError> flush(MotionTarget& target);
+  InterpResult flush(MotionTarget& target);
 
   // M2/M30 after flush(), and a new program: off, nothing held or pending.
   void reset() { *this = CutterComp{}; }
@@ -173,31 +173,28 @@ class CutterComp {
   double corner_turn(double into, double out_of) const;
   Vec3 to_program(Vec2 p, double axial) const;
 
-  std::optional<InterpError> pass_straight(const Vec3& end, bool rapid, const core::SourceLoc& loc,
-                                           MotionTarget& target);
-  std::optional<InterpError> entry_straight(Vec2 end, double axial, bool rapid,
-                                            const core::SourceLoc& loc, const MotionTarget& target);
-  std::optional<InterpError> next_straight(Vec2 end, double axial, bool rapid,
-                                           const core::SourceLoc& loc, MotionTarget& target);
-  std::optional<InterpError> entry_arc(const ArcIn& in, const core::SourceLoc& loc,
-                                       const MotionTarget& target);
-  std::optional<InterpError> next_arc(const ArcIn& in, const core::SourceLoc& loc,
-                                      MotionTarget& target);
+  InterpResult pass_straight(const Vec3& end, bool rapid, const core::SourceLoc& loc,
+                             MotionTarget& target);
+  InterpResult entry_straight(Vec2 end, double axial, bool rapid, const core::SourceLoc& loc,
+                              const MotionTarget& target);
+  InterpResult next_straight(Vec2 end, double axial, bool rapid, const core::SourceLoc& loc,
+                             MotionTarget& target);
+  InterpResult entry_arc(const ArcIn& in, const core::SourceLoc& loc, const MotionTarget& target);
+  InterpResult next_arc(const ArcIn& in, const core::SourceLoc& loc, MotionTarget& target);
 
   // Concave corners: where the held move must end.
   std::optional<Vec2> line_line_corner(double beta) const;
   std::optional<Vec2> arc_line_corner(Vec2 end) const;
   std::optional<Vec2> line_arc_corner(const ArcIn& in, double into) const;
   std::optional<Vec2> arc_arc_corner(const ArcIn& in) const;
-  std::optional<InterpError> trim_concave(std::optional<Vec2> corner, const char* what,
-                                          MotionTarget& target);
+  InterpResult trim_concave(std::optional<Vec2> corner, const char* what, MotionTarget& target);
 
   void hold(Held h) { queue_.push_back(std::move(h)); }
 
   void emit(const Held& h, MotionTarget& target) const;
   void release(MotionTarget& target);
-  std::optional<InterpError> move_end_and_release(Vec2 to, MotionTarget& target);
-  std::optional<InterpError> check_move_end(const Held& h, Vec2 to) const;
+  InterpResult move_end_and_release(Vec2 to, MotionTarget& target);
+  InterpResult check_move_end(const Held& h, Vec2 to) const;
   void emit_corner(Vec2 to, Vec2 about, bool rapid, const core::SourceLoc& loc,
                    MotionTarget& target);
 

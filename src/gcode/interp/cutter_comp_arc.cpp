@@ -31,11 +31,12 @@ Vec2 unit(Vec2 v) {
   return v / norm(v);
 }
 
-InterpError tool_too_big(double arc_radius, double tool_radius) {
-  return {Code::CompToolTooBig,
-          fmt::format("the arc's radius {:.4g} mm is not larger than the tool radius {:.4g} mm, "
-                      "and the tool is inside it; use a smaller tool or a larger arc",
-                      arc_radius, tool_radius)};
+tl::unexpected<InterpError> tool_too_big(double arc_radius, double tool_radius) {
+  return interp_error(
+      Code::CompToolTooBig,
+      fmt::format("the arc's radius {:.4g} mm is not larger than the tool radius {:.4g} mm, "
+                  "and the tool is inside it; use a smaller tool or a larger arc",
+                  arc_radius, tool_radius));
 }
 
 // Where the line `from` + λ·`along` (a unit vector) meets the circle about
@@ -51,19 +52,18 @@ std::optional<Vec2> line_meets_circle(Vec2 from, Vec2 along, Vec2 center, double
 
 }  // namespace
 
-std::optional<InterpError> CutterComp::arc(const Vec3& programmed_end,
-                                           const Vec3& programmed_center, int turn,
-                                           const core::SourceLoc& loc, MotionTarget& target) {
+InterpResult CutterComp::arc(const Vec3& programmed_end, const Vec3& programmed_center, int turn,
+                             const core::SourceLoc& loc, MotionTarget& target) {
   // interp_convert.cc convert_arc.
   if (arc_not_allowed_) {
-    return InterpError{Code::CompNotAllowed,
-                       "the move just after G40 must be straight, not an arc; add a straight "
-                       "exit move"};
+    return interp_error(Code::CompNotAllowed,
+                        "the move just after G40 must be straight, not an arc; add a straight "
+                        "exit move");
   }
   if (!compensating()) {
     target.set_source(loc);
     target.arc(programmed_end, programmed_center, turn);
-    return std::nullopt;
+    return {};
   }
   const ArcIn in{.end = core::in_plane(programmed_end, plane_),
                  .center = core::in_plane(programmed_center, plane_),
@@ -75,18 +75,18 @@ std::optional<InterpError> CutterComp::arc(const Vec3& programmed_end,
 // interp_convert.cc convert_arc_comp1: the entry arc ends a tool radius from
 // the programmed end along the arc's radius; it starts where the tool is, on
 // a circle whose centre is on the line from that end to the programmed centre.
-std::optional<InterpError> CutterComp::entry_arc(const ArcIn& in, const core::SourceLoc& loc,
-                                                 const MotionTarget& target) {
+InterpResult CutterComp::entry_arc(const ArcIn& in, const core::SourceLoc& loc,
+                                   const MotionTarget& target) {
   const Vec3 at = target.position();
   const Vec2 from = core::in_plane(at, plane_);
   const double from_axial = at[core::axes_of(plane_).axial];
   const double chord = distance(from, in.end);
   if (not_beyond_radius(chord)) {
-    return InterpError{Code::CompEntryMove,
-                       fmt::format("cutter compensation entry arc ends {:.4g} mm from its start, "
-                                   "not farther than the tool radius {:.4g} mm; start farther "
-                                   "from the contour",
-                                   chord, radius_)};
+    return interp_error(Code::CompEntryMove,
+                        fmt::format("cutter compensation entry arc ends {:.4g} mm from its start, "
+                                    "not farther than the tool radius {:.4g} mm; start farther "
+                                    "from the contour",
+                                    chord, radius_));
   }
   const bool inside = tool_inside(in.turn);
   // interp_arc.cc arc_data_comp_ijk measures the radius at the start.
@@ -110,13 +110,13 @@ std::optional<InterpError> CutterComp::entry_arc(const ArcIn& in, const core::So
   tool_ = tool;
   programmed_ = in.end;
   axial_ = in.axial;
-  return std::nullopt;
+  return {};
 }
 
 // interp_convert.cc convert_arc_comp2: the arc keeps its centre and changes
 // its radius by the tool radius.
-std::optional<InterpError> CutterComp::next_arc(const ArcIn& in, const core::SourceLoc& loc,
-                                                MotionTarget& target) {
+InterpResult CutterComp::next_arc(const ArcIn& in, const core::SourceLoc& loc,
+                                  MotionTarget& target) {
   const bool inside = tool_inside(in.turn);
   const double arc_radius = distance(in.center, in.end);
   if (inside && not_beyond_radius(arc_radius)) return tool_too_big(arc_radius, radius_);
@@ -134,7 +134,7 @@ std::optional<InterpError> CutterComp::next_arc(const ArcIn& in, const core::Sou
       const bool after_arc = queue_.front().kind == Kind::Arc;
       const std::optional<Vec2> corner = after_arc ? arc_arc_corner(in) : line_arc_corner(in, into);
       const char* what = after_arc ? "arc to arc" : "straight to arc";
-      if (auto e = trim_concave(corner, what, target)) return e;
+      if (auto e = trim_concave(corner, what, target); !e) return e;
     }
   } else if (beta > kTangent) {
     // Convex: round the corner to where the offset arc starts.
@@ -149,7 +149,7 @@ std::optional<InterpError> CutterComp::next_arc(const ArcIn& in, const core::Sou
   programmed_ = in.end;
   axial_ = in.axial;
   hold(move);
-  return std::nullopt;
+  return {};
 }
 
 // Straight then arc: the held straight move ends where its offset line meets

@@ -49,7 +49,7 @@ bool Interpreter::cycle(BlockWords& w, GCode g, GCode previous) {
   machine_.set_origin(canon::Origin::Cycle);
   auto e = cycles_.run(cw, cm, machine_);
   machine_.set_origin(canon::Origin::Program);
-  if (e) return error(*e);
+  if (!e) return error(e.error());
   set_xyz(state_.pos, cycles_.end_point());
   if (cycle_hooks_ != nullptr && cycles_.initial_level()) {
     cycle_hooks_->cycle_ran(*cycles_.initial_level());

@@ -235,7 +235,7 @@ bool Interpreter::stop(const BlockWords& w) {
   switch (w.m[kMGroupStop]) {
   case 2:
   case 30: {
-    if (auto e = comp_.flush(machine_)) return error(*e);
+    if (auto e = comp_.flush(machine_); !e) return error(e.error());
     comp_.reset();
     state_.comp = CompSideState::Off;
     // LinuxCNC's program end: spindle and coolant off, then the end.
@@ -247,7 +247,7 @@ bool Interpreter::stop(const BlockWords& w) {
   case 0:
   case 1:
   case 60:
-    if (auto e = comp_.flush(machine_)) return error(*e);
+    if (auto e = comp_.flush(machine_); !e) return error(e.error());
     machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])});
     break;
   default: break;

@@ -89,7 +89,7 @@ bool Interpreter::run(std::uint32_t file) {
     if (sink_.stopped()) failed_ = true;
   }
   if (!failed_ && !ended_) {
-    if (auto e = comp_.flush(machine_)) error(*e);
+    if (auto e = comp_.flush(machine_); !e) error(e.error());
   }
   machine_faulted();
   if (!failed_ && !ended_) {
@@ -146,7 +146,7 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
 
 bool Interpreter::finish() {
   if (!failed_ && !ended_) {
-    if (auto e = comp_.flush(machine_)) error(*e);
+    if (auto e = comp_.flush(machine_); !e) error(e.error());
   }
   machine_faulted();
   sink_.finish();

@@ -11,17 +11,12 @@
 #include "canon/op.hpp"
 #include "core/diagnostic.hpp"
 #include "core/vec3.hpp"
+#include "gcode/interp/interp_error.hpp"
 
 namespace usina::gcode {
 
 using core::Vec2;
 using core::Vec3;
-
-// An error found while executing a block; the interpreter adds the location.
-struct InterpError {
-  core::Code code = core::Code::Unsupported;
-  std::string message;
-};
 
 class MotionTarget {
  public:

@@ -94,7 +94,7 @@ bool Interpreter::straight(BlockWords& w, GCode g, const Axes& end) {
   // G33/G33.1 move with the spindle (K per revolution), not at F.
   if (g == 10 && !require_feed(w)) return false;
   if ((comp_.active() || !comp_.arc_allowed()) && (g == 0 || g == 10)) {
-    if (auto e = comp_.straight(xyz(end), g == 0, loc_, machine_)) return error(*e);
+    if (auto e = comp_.straight(xyz(end), g == 0, loc_, machine_); !e) return error(e.error());
     return true;
   }
   if (g == 0) {
@@ -142,7 +142,8 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   if (!center || !arc_in_range(w, start, stop, *center, ax.first, ax.second)) return false;
   Vec3 c3 = core::from_plane(*center, start3[ax.axial], plane);
   if (comp_.active() || !comp_.arc_allowed()) {
-    if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, loc_, machine_)) return error(*e);
+    if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, loc_, machine_); !e)
+      return error(e.error());
     return true;
   }
   machine_.arc_axes(end, c3, ccw ? turns : -turns);

@@ -269,7 +269,7 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   if (g == 400) {
     // LinuxCNC: the current point becomes the programmed point.
     const auto programmed = comp_.programmed_position();
-    if (auto e = comp_.stop(machine_)) return error(*e);
+    if (auto e = comp_.stop(machine_); !e) return error(e.error());
     if (programmed) set_xyz(s.pos, *programmed);
     s.comp = CompSideState::Off;
     return true;
@@ -306,8 +306,8 @@ bool Interpreter::cutter_comp_mode(BlockWords& w) {
   const CompSide side = (g == 410 || g == 411) ? CompSide::Left : CompSide::Right;
   if (options_.ignore_cutter_comp) radius = 0.0;
   const bool metric = s.units == core::LengthUnit::Mm;
-  if (auto e = comp_.start(side, radius, s.plane, orientation, metric)) {
-    return error(*e, w.gcol[kGroupCutterComp]);
+  if (auto e = comp_.start(side, radius, s.plane, orientation, metric); !e) {
+    return error(e.error(), w.gcol[kGroupCutterComp]);
   }
   s.comp = side == CompSide::Left ? CompSideState::Left : CompSideState::Right;
   return true;

@@ -125,7 +125,7 @@ bool Executor::finish() {
     return error(core::Code::BlendNeedsMove, 0,
                  "an arc with only R blends into the next move, and the program ends");
   }
-  if (auto e = work_.comp.flush(machine_)) return error(*e);
+  if (auto e = work_.comp.flush(machine_); !e) return error(e.error());
   modal_ = work_;
   return true;
 }

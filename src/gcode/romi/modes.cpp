@@ -55,7 +55,7 @@ bool Executor::h_comp(int code) {
   CutterComp& comp = work_.comp;
   if (code == 400) {
     const auto programmed = comp.programmed_position();
-    if (auto e = comp.stop(machine_)) return error(*e);
+    if (auto e = comp.stop(machine_); !e) return error(e.error());
     if (programmed) set_xyz(work_.machine.pos, *programmed);
     return true;
   }
@@ -70,8 +70,8 @@ bool Executor::h_comp(int code) {
   // With one axis mirrored the part is drawn the other way round: the
   // side swaps (spec/romi.md, "Transformations").
   const bool left = (code == 410) != work_.tf.flips();
-  if (auto e = comp.start(left ? CompSide::Left : CompSide::Right, radius, core::Plane::XY)) {
-    return error(*e);
+  if (auto e = comp.start(left ? CompSide::Left : CompSide::Right, radius, core::Plane::XY); !e) {
+    return error(e.error());
   }
   return true;
 }
@@ -192,7 +192,7 @@ bool Executor::h_coolant(int code) {
 }
 
 bool Executor::h_stop(int code) {
-  if (auto e = work_.comp.flush(machine_)) return error(*e);
+  if (auto e = work_.comp.flush(machine_); !e) return error(e.error());
   machine_.emit(canon::Comment{fmt::format("M{:02} (program stop)", code / 10)});
   return true;
 }
@@ -202,7 +202,7 @@ bool Executor::h_end(int) {
     return error(core::Code::BlendNeedsMove, 0,
                  "an arc with only R blends into the next move, and the program ends");
   }
-  if (auto e = work_.comp.flush(machine_)) return error(*e);
+  if (auto e = work_.comp.flush(machine_); !e) return error(e.error());
   work_.comp.reset();
   if (work_.machine.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
   machine_.emit(canon::ProgramEnd{});

@@ -321,7 +321,7 @@ bool Executor::blend(const Vec3& next_end) {
 bool Executor::emit_line(const Vec3& end, bool rapid) {
   const Vec3 m = work_.tf.apply(end);
   if (work_.comp.active() || !work_.comp.arc_allowed()) {
-    if (auto e = work_.comp.straight(m, rapid, run_.loc(), machine_)) return error(*e);
+    if (auto e = work_.comp.straight(m, rapid, run_.loc(), machine_); !e) return error(e.error());
   } else if (rapid) {
     machine_.traverse(m);
   } else {
@@ -346,7 +346,7 @@ bool Executor::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
   const int turn = machine_ccw ? turns : -turns;
   const Vec3 c3{mc.x, mc.y, work_.machine.pos[2]};
   if (work_.comp.active() || !work_.comp.arc_allowed()) {
-    if (auto e = work_.comp.arc(m, c3, turn, run_.loc(), machine_)) return error(*e);
+    if (auto e = work_.comp.arc(m, c3, turn, run_.loc(), machine_); !e) return error(e.error());
   } else {
     machine_.arc(m, c3, turn);
   }

@@ -10,7 +10,7 @@
 
 #include "core/diagnostic.hpp"
 #include "gcode/dialect.hpp"
-#include "gcode/interp/motion.hpp"
+#include "gcode/interp/interp_error.hpp"
 
 namespace usina::gcode::romi {
 

@@ -147,10 +147,13 @@ class Machine {
   std::optional<InterpError> cycle(int motion, const CycleWords& w) {
     modal.motion = motion;
     modal.motion_mode_changed = motion != last_motion_;
-    auto e = cycles.run(w, modal, rec);
-    if (!e) {
+    auto r = cycles.run(w, modal, rec);
+    std::optional<InterpError> e;
+    if (r) {
       rec.pos = cycles.end_point();
       last_motion_ = motion;
+    } else {
+      e = r.error();
     }
     return e;
   }

@@ -67,6 +67,12 @@ class Recorder : public MotionTarget {
   std::uint32_t line_ = 0;
 };
 
+// A step's error, or nullopt when it succeeded (the harness reads errors).
+std::optional<InterpError> failure_of(const InterpResult& r) {
+  if (r) return std::nullopt;
+  return r.error();
+}
+
 // Drives CutterComp as cutter_comp.hpp tells the interpreter to: one block a
 // line, programmed ends in, the current point kept as the programmed end of
 // the last block. Words: G0-G3 (modal), G4 P, G17, G18, G40, G41/G42 (radius
@@ -141,7 +147,7 @@ class Blocks {
     if (auto e = motion(w, loc)) return e;
     const std::optional<double> m = get(w, 'M');
     if (m && (*m == 0 || *m == 1 || *m == 2)) {
-      if (auto e = comp.flush(out)) return e;
+      if (auto e = failure_of(comp.flush(out))) return e;
       if (*m == 2) comp.reset();
     }
     return std::nullopt;
@@ -156,11 +162,11 @@ class Blocks {
     }
     if (g == 170) plane_ = Plane::XY;
     if (g == 180) plane_ = Plane::ZX;
-    if (g == 400) return comp.stop(out);
+    if (g == 400) return failure_of(comp.stop(out));
     if (g == 410 || g == 420 || g == 411 || g == 421) {
       const CompSide side = g / 10 == 41 ? CompSide::Left : CompSide::Right;
       const double d = g % 10 == 1 ? get(w, 'D').value_or(0.0) : tool_diameter;
-      return comp.start(side, d * unit_ / 2, plane_, g % 10 == 1 ? 0 : orientation);
+      return failure_of(comp.start(side, d * unit_ / 2, plane_, g % 10 == 1 ? 0 : orientation));
     }
     return std::nullopt;
   }
@@ -178,7 +184,7 @@ class Blocks {
     if (!moves || get(w, 'G') == 4.0) return std::nullopt;
     std::optional<InterpError> e;
     if (motion_ <= 1) {
-      e = comp.straight(to, motion_ == 0, loc, out);
+      e = failure_of(comp.straight(to, motion_ == 0, loc, out));
     } else {
       Vec3 center = from + offset;
       if (auto r = get(w, 'R')) {
@@ -186,7 +192,7 @@ class Blocks {
             core::in_plane(from, plane_), core::in_plane(to, plane_), *r * unit_, motion_ == 3);
         center = core::from_plane(*c, from[core::axes_of(plane_).axial], plane_);
       }
-      e = comp.arc(to, center, motion_ == 3 ? 1 : -1, loc, out);
+      e = failure_of(comp.arc(to, center, motion_ == 3 ? 1 : -1, loc, out));
     }
     if (!e) out.at = to;
     return e;
@@ -515,11 +521,11 @@ TEST(CutterComp, StartWhileOnIsAnError) {
 
 TEST(CutterComp, StartOutsideTheXYAndZXPlanesIsAnError) {
   CutterComp comp;
-  const auto e = comp.start(CompSide::Left, 1.0, Plane::YZ);
+  const auto e = failure_of(comp.start(CompSide::Left, 1.0, Plane::YZ));
   ASSERT_TRUE(e);
   EXPECT_EQ(e->code, Code::CompNotAllowed);
   EXPECT_FALSE(comp.active());
-  const auto lathe = comp.start(CompSide::Left, 1.0, Plane::XY, 3);
+  const auto lathe = failure_of(comp.start(CompSide::Left, 1.0, Plane::XY, 3));
   ASSERT_TRUE(lathe);
   EXPECT_EQ(lathe->code, Code::CompNotAllowed);
 }
