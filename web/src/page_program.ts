@@ -1,0 +1,147 @@
+// A program: its text with line numbers and the check's diagnostics inline,
+// and the 3D viewer of its tool path (a click on a move shows its line; a
+// line's moves can be highlighted).
+import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
+import { field, h, show, status } from './dom';
+import { decodeToolpath } from './toolpath';
+import { toolColour, Viewer, type View } from './viewer';
+
+// Lines shown in the text panel; a longer program shows its start (the
+// viewer still has every move).
+const MAX_LINES = 20000;
+
+export async function programPage(main: HTMLElement, name: string, rev?: string): Promise<void> {
+  const program = await getJson<Program>(`/api/programs/${enc(name)}`);
+  const revision = program.revisions.find((r) => r.revision === rev) ?? program.revisions[0];
+  if (!revision) throw new Error(`${name} has no revisions`);
+  const base = `/api/programs/${enc(name)}/revisions/${revision.revision}`;
+  const [text, stream] = await Promise.all([getText(`${base}/text`), getBytes(`${base}/toolpath`)]);
+  const picked = status('picked-line');
+  const code = codePanel(text, revision.checks?.diagnostics ?? []);
+  const viewerHost = h('div', { class: 'viewer', id: 'viewer' });
+  show(
+    main,
+    `Program ${program.name}`,
+    summary(program, revision),
+    h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
+  );
+  const path = decodeToolpath(stream);
+  const viewer = new Viewer(viewerHost);
+  viewer.load(path);
+  viewerHost.before(viewControls(viewer, path.tools, code, picked));
+  const select = (line: number) => {
+    const moves = viewer.highlightLine(line);
+    code.mark(line);
+    picked.textContent = `Line ${line}: ${moves} ${moves === 1 ? 'move' : 'moves'} highlighted`;
+  };
+  viewer.onPick = select;
+  code.onSelect = select;
+  viewerHost.dataset.vertices = String(path.count);
+  viewerHost.dataset.moves = String(path.moves);
+  if (path.decimated) picked.textContent = `${path.moves} moves, shown as ${path.count} points`;
+}
+
+function summary(p: Program, r: Revision): HTMLElement {
+  const c = r.checks;
+  const items: [string, string][] = [
+    ['Revision', r.revision.slice(0, 12)],
+    ['State', r.state],
+    ['Dialect', p.dialect],
+    ['Author', r.author],
+    ['Check', c ? `${c.errors} errors, ${c.warnings} warnings` : 'not checked'],
+    ['Cycle time', c ? `${c.cycle_time_s.toFixed(1)} s` : '—'],
+  ];
+  return h('dl', { class: 'summary' }, ...items.flatMap(([k, v]) => [h('dt', { text: k }), h('dd', { text: v })]));
+}
+
+function diagnosticList(r: Revision): HTMLElement {
+  const d = r.checks?.diagnostics ?? [];
+  if (!d.length) return h('p', { class: 'ok', text: 'The check found nothing to report.' });
+  return h(
+    'ul',
+    { class: 'diag-list', 'aria-label': 'Diagnostics' },
+    ...d.map((x) => h('li', { class: x.severity }, h('a', { href: `#L${x.line}`, 'data-line': x.line, text: `line ${x.line}: ${x.code}` }), ` ${x.message}`)),
+  );
+}
+
+interface CodePanel {
+  element: HTMLElement;
+  mark(line: number): void;
+  onSelect: (line: number) => void;
+}
+
+function codePanel(text: string, diags: CheckDiagnostic[]): CodePanel {
+  const byLine = new Map<number, CheckDiagnostic[]>();
+  for (const d of diags) byLine.set(d.line, [...(byLine.get(d.line) ?? []), d]);
+  const lines = text.split(/\r\n|\n|\r/);
+  if (lines.length && lines[lines.length - 1] === '') lines.pop();
+  const list = h('ol', { class: 'code', 'aria-label': 'Program text' });
+  const shown = Math.min(lines.length, MAX_LINES);
+  for (let i = 0; i < shown; i++) {
+    const n = i + 1;
+    const li = h('li', { id: `L${n}`, 'data-line': n }, h('span', { class: 'ln', 'aria-hidden': 'true', text: String(n) }), h('code', { text: lines[i] }));
+    for (const d of byLine.get(n) ?? []) {
+      li.classList.add(`has-${d.severity}`);
+      li.append(h('div', { class: `diag ${d.severity}`, role: 'note' }, h('strong', { text: d.code }), ` ${d.message}`));
+    }
+    list.append(li);
+  }
+  const panel: CodePanel = {
+    element: h('div', { class: 'code-scroll' }, list, shown < lines.length ? h('p', { text: `The first ${shown} of ${lines.length} lines are shown.` }) : null),
+    mark(line: number) {
+      list.querySelector('.selected')?.classList.remove('selected');
+      const li = document.getElementById(`L${line}`);
+      li?.classList.add('selected');
+      li?.scrollIntoView({ block: 'center' });
+    },
+    onSelect: () => {},
+  };
+  const pickFrom = (e: Event) => {
+    const t = (e.target as HTMLElement).closest('[data-line]') as HTMLElement | null;
+    if (!t) return;
+    e.preventDefault();
+    panel.onSelect(Number(t.dataset.line));
+  };
+  list.addEventListener('click', pickFrom);
+  panel.element.addEventListener('click', pickFrom);
+  return panel;
+}
+
+function viewControls(viewer: Viewer, tools: Uint32Array, code: CodePanel, picked: HTMLElement): HTMLElement {
+  const views: [View, string][] = [
+    ['top', 'Top'],
+    ['front', 'Front'],
+    ['side', 'Side'],
+    ['iso', 'Iso'],
+  ];
+  const line = h('input', { type: 'number', min: 1, inputmode: 'numeric' });
+  const go = h('form', { class: 'goto' }, field('Highlight the moves of line', line, 'goto-line'), h('button', { type: 'submit', text: 'Highlight' }));
+  go.addEventListener('submit', (e) => {
+    e.preventDefault();
+    const n = Number(line.value);
+    if (Number.isInteger(n) && n > 0) code.onSelect(n);
+    else picked.textContent = 'Give a line number.';
+  });
+  const used = [...new Set(tools)].sort((a, b) => a - b);
+  const legend = h(
+    'ul',
+    { class: 'legend', 'aria-label': 'Legend' },
+    h('li', {}, h('span', { class: 'swatch rapid', 'aria-hidden': 'true' }), 'rapid (dashed)'),
+    ...used.map((t) => {
+      const sw = h('span', { class: 'swatch', 'aria-hidden': 'true' });
+      sw.style.background = `#${toolColour(t).toString(16).padStart(6, '0')}`;
+      return h('li', {}, sw, t ? `feed, tool T${t}` : 'feed, no tool');
+    }),
+  );
+  return h(
+    'div',
+    { class: 'view-controls' },
+    h('div', { role: 'group', 'aria-label': 'Standard views' }, ...views.map(([v, label]) => {
+      const b = h('button', { type: 'button', text: label, 'aria-label': `${label} view` });
+      b.addEventListener('click', () => viewer.setView(v));
+      return b;
+    })),
+    go,
+    legend,
+  );
+}
