@@ -82,7 +82,7 @@ bool inside(const fs::path& root, const fs::path& inner) {
 
 HttpResponse plain(const HttpRequest& req, http::status status, std::string_view message) {
   HttpResponse res = error_response(req, status, message);
-  res.set(http::field::x_content_type_options, "nosniff");
+  res.set("X-Content-Type-Options", "nosniff");
   return res;
 }
 
@@ -192,10 +192,10 @@ HttpResponse WebFiles::file_response(const HttpRequest& req, const fs::path& fil
   if (!body) return plain(req, http::status::internal_server_error, "the file cannot be read");
   HttpResponse res{http::status::ok, req.version()};
   res.set(http::field::server, "usina");
-  res.set(http::field::content_type, content_type_of(file.filename().string()));
-  res.set(http::field::x_content_type_options, "nosniff");
+  res.set(http::field::content_type, std::string(content_type_of(file.filename().string())));
+  res.set("X-Content-Type-Options", "nosniff");
   res.set(http::field::cache_control, "no-cache");
-  res.set(http::field::content_security_policy,
+  res.set("Content-Security-Policy",
           "default-src 'self'; connect-src 'self' ws: wss:; img-src 'self' data: blob:; "
           "object-src 'none'; base-uri 'none'; frame-ancestors 'none'");
   res.keep_alive(req.keep_alive());

@@ -1,6 +1,7 @@
 #include "dnc/web_toolpath.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -115,7 +116,7 @@ std::vector<PathVertex> merge_close(const std::vector<PathVertex>& in, float tol
   for (std::size_t i = 0; i < in.size(); ++i) {
     const PathVertex& v = in[i];
     const bool last = i + 1 == in.size();
-    if (!out.empty() && !last && out.size() > 1) {
+    if (out.size() > 1 && !last) {  // never into the start
       const PathVertex& k = out.back();
       if (k.kind == v.kind && k.tool == v.tool && gap(k, v) < tol) continue;
     }

@@ -46,7 +46,7 @@ HttpResponse api_toolpath(ApiCall& c) {
   HttpResponse res{http::status::ok, c.req.version()};
   res.set(http::field::server, "usina");
   res.set(http::field::content_type, "application/octet-stream");
-  res.set(http::field::x_content_type_options, "nosniff");
+  res.set("X-Content-Type-Options", "nosniff");
   // A revision's bytes never change (its name is their hash).
   res.set(http::field::cache_control, "private, max-age=86400");
   res.keep_alive(c.req.keep_alive());

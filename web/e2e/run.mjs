@@ -5,73 +5,20 @@
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
-import { spawn, spawnSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { arg, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
 
-const here = dirname(fileURLToPath(import.meta.url));
-const web = resolve(here, '..');
-const CHROMIUM = '/usr/bin/chromium';
-const SKIP = 77;
-
-function arg(name, fallback) {
-  const at = process.argv.indexOf(`--${name}`);
-  return at > 0 ? process.argv[at + 1] : fallback;
-}
-
-function skip(why) {
-  console.log(`SKIPPED: ${why}`);
-  process.exit(SKIP);
-}
-
-if (!existsSync(CHROMIUM)) skip(`${CHROMIUM} is not installed (scripts/setup.sh installs Debian's chromium)`);
-if (!existsSync(join(web, 'node_modules', 'playwright-core')))
-  skip('web/node_modules is missing (scripts/setup.sh runs `npm ci` in web/)');
-
-const { chromium } = await import('playwright-core');
+skipUnlessReady();
 const usina = resolve(arg('usina', join(web, '..', 'build', 'usina')));
 const seed = resolve(arg('seed', join(web, '..', 'tests', 'programs', 'romi', 'seed-000-example.nc')));
 const shots = arg('screenshots', '');
-const scratch = mkdtempSync(join(tmpdir(), 'usina-web-e2e-'));
-const children = [];
+const harness = new Harness(usina);
 let failed = false;
 
 function check(ok, what) {
   console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
   if (!ok) failed = true;
-}
-
-function cleanup() {
-  for (const c of children) if (c.exitCode === null) c.kill('SIGTERM');
-  rmSync(scratch, { recursive: true, force: true });
-}
-
-// The server's port, from its "listening on http://127.0.0.1:PORT" line.
-function startServer(args) {
-  return new Promise((done, fail) => {
-    const p = spawn(usina, args, { stdio: ['ignore', 'inherit', 'pipe'] });
-    children.push(p);
-    let said = '';
-    p.stderr.on('data', (b) => {
-      said += b.toString();
-      process.stderr.write(b);
-      const m = said.match(/listening on http:\/\/127\.0\.0\.1:(\d+)/);
-      if (m) done(Number(m[1]));
-    });
-    p.on('exit', (code) => fail(new Error(`usina serve exited with ${code}: ${said}`)));
-  });
-}
-
-// A simulated machine's serial line: a socat pty pair (when socat is there).
-function machinePort() {
-  if (spawnSync('which', ['socat']).status !== 0) return '/nonexistent/usina-e2e-tty';
-  const cnc = join(scratch, 'cnc');
-  const p = spawn('socat', [`pty,raw,echo=0,link=${join(scratch, 'ctl')}`, `pty,raw,echo=0,link=${cnc}`], { stdio: 'ignore' });
-  children.push(p);
-  for (let i = 0; i < 200 && !existsSync(cnc); i++) spawnSync('sleep', ['0.02']);
-  return cnc;
 }
 
 async function canvasPixels(page) {
@@ -105,33 +52,9 @@ async function shot(page, name) {
 }
 
 async function run() {
-  const page_dir = join(scratch, 'page');
-  const built = spawnSync(process.execPath, [join(web, 'build.mjs'), '--outdir', page_dir], { stdio: 'inherit' });
-  check(built.status === 0, 'the page builds');
-  const data = join(scratch, 'data');
-  writeFileSync(join(scratch, 'pw'), 'correct horse 1\n');
-  const init = spawnSync(usina, ['serve', '--init', '--data', data, '--admin', 'boss', '--password-file', join(scratch, 'pw')], { stdio: 'inherit' });
-  check(init.status === 0, 'usina serve --init');
-  const config = join(scratch, 'usina-serve.toml');
-  writeFileSync(
-    config,
-    `[web]\nroot = "page"\n\n[[machine]]\nname = "romi-1"\ndialect = "romi"\nport = "${machinePort()}"\n` +
-      `baud = 9600\ndata_bits = 7\nparity = "even"\nstop_bits = 2\nflow = "xonxoff"\ncode = "iso"\neob = "hash"\nmode = "tryout"\n`,
-  );
-  const port = await startServer(['serve', '--data', data, '--config', config, '--listen', '127.0.0.1:0']);
-  const base = `http://127.0.0.1:${port}`;
-
-  const context = await chromium.launchPersistentContext(join(scratch, 'profile'), {
-    executablePath: CHROMIUM,
-    headless: true,
-    viewport: { width: 1280, height: 860 },
-    args: [
-      '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      // WebGL without a GPU: SwiftShader, which Chromium no longer falls back to by itself.
-      '--enable-unsafe-swiftshader', '--use-angle=swiftshader',
-    ],
-  });
+  const base = await harness.start();
+  check(true, 'the page built, usina serve started on a fresh store');
+  const context = await harness.browser();
   const page = context.pages()[0] ?? (await context.newPage());
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -149,7 +72,7 @@ async function run() {
   await page.getByRole('button', { name: 'Log in' }).click();
   await page.getByRole('alert').waitFor();
   check(/wrong|password|user/i.test(await page.getByRole('alert').innerText()), 'a wrong password is refused with a message');
-  await page.getByLabel('Password').fill('correct horse 1');
+  await page.getByLabel('Password').fill(PASSWORD);
   await page.getByLabel('Password').press('Enter'); // the keyboard submits the form
   await page.getByRole('heading', { name: 'Library' }).waitFor();
   check(true, 'logged in from the keyboard; the library opens');
@@ -217,6 +140,6 @@ try {
 } catch (e) {
   check(false, String(e.stack ?? e));
 } finally {
-  cleanup();
+  harness.stop();
 }
 process.exit(failed ? 1 : 0);

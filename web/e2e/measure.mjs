@@ -1,0 +1,56 @@
+// Figures for docs/web.md: a large program uploaded over the API, its
+// tool-path stream timed and sized, then its page opened in chromium: the
+// time to the first picture and the page's JavaScript heap.
+//   node e2e/measure.mjs --usina build/usina --program big.ngc [--dialect rs274ngc]
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { arg, Harness, skipUnlessReady } from './harness.mjs';
+
+skipUnlessReady();
+const harness = new Harness(resolve(arg('usina', '../build/usina')));
+const text = readFileSync(resolve(arg('program', '')), 'utf8');
+const ms = (t0) => Math.round(performance.now() - t0);
+
+try {
+  const base = await harness.start();
+  const token = await harness.logIn();
+  const auth = { Authorization: `Bearer ${token}` };
+  let t0 = performance.now();
+  const up = await fetch(`${base}/api/programs`, {
+    method: 'POST',
+    headers: auth,
+    body: JSON.stringify({ name: 'BIG', dialect: arg('dialect', 'rs274ngc'), text }),
+  });
+  const rev = (await up.json()).revision;
+  console.log(`upload and check: ${ms(t0)} ms (HTTP ${up.status}), ${text.length} bytes`);
+  t0 = performance.now();
+  const stream = await fetch(`${base}/api/programs/BIG/revisions/${rev}/toolpath`, { headers: auth });
+  const bytes = new Uint8Array(await stream.arrayBuffer());
+  const v = new DataView(bytes.buffer);
+  console.log(
+    `toolpath: ${ms(t0)} ms, ${bytes.length} bytes, ${v.getUint32(8, true)} vertices, ` +
+      `${v.getBigUint64(16, true)} moves, flags ${v.getUint32(12, true)}`,
+  );
+  const context = await harness.browser();
+  const page = context.pages()[0] ?? (await context.newPage());
+  page.setDefaultTimeout(120000);
+  await page.goto(`${base}/`);
+  await page.evaluate((t) => sessionStorage.setItem('usina.token', t), token);
+  t0 = performance.now();
+  await page.goto(`${base}/#/program/BIG/${rev}`);
+  await page.waitForFunction(() => Number(document.getElementById('viewer')?.dataset.vertices) > 1);
+  console.log(`page: first picture ${ms(t0)} ms after navigation (text, stream, viewer)`);
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Performance.enable');
+  await cdp.send('HeapProfiler.collectGarbage');
+  const metrics = (await cdp.send('Performance.getMetrics')).metrics;
+  const heap = metrics.find((m) => m.name === 'JSHeapUsedSize').value;
+  console.log(`page: JavaScript heap ${(heap / 1048576).toFixed(1)} MB after the first picture`);
+  t0 = performance.now();
+  for (const view of ['Top', 'Front', 'Side', 'Iso', 'Top', 'Front', 'Side', 'Iso', 'Top', 'Iso'])
+    await page.getByRole('button', { name: `${view} view` }).click();
+  console.log(`page: ${((performance.now() - t0) / 10).toFixed(0)} ms a redraw (view buttons, SwiftShader: no GPU)`);
+  await context.close();
+} finally {
+  harness.stop();
+}
