@@ -43,7 +43,7 @@ export async function libraryPage(main: HTMLElement): Promise<void> {
 
 function uploadForm(): HTMLElement {
   const file = h('input', { type: 'file', accept: '.nc,.ngc,.tap,.txt,.cnc,.gcode,*/*', required: true });
-  const name = h('input', { required: true, autocomplete: 'off', pattern: '[A-Za-z0-9][A-Za-z0-9_.-]*' });
+  const name = h('input', { required: true, autocomplete: 'off', pattern: '[A-Za-z0-9][A-Za-z0-9_.\\-]*' });
   const machineClass = h('input', { autocomplete: 'off' });
   const dialect = h('select', {}, ...DIALECTS.map((d) => h('option', { value: d, text: d })));
   const reason = h('input', { autocomplete: 'off' });

@@ -3,7 +3,7 @@
 // line's moves can be highlighted).
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
-import { decodeToolpath } from './toolpath';
+import { decodeToolpath, Kind } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
 
 // Lines shown in the text panel; a longer program shows its start (the
@@ -28,7 +28,9 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const path = decodeToolpath(stream);
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
-  viewerHost.before(viewControls(viewer, path.tools, code, picked));
+  const feedTools: number[] = [];
+  for (let i = 1; i < path.count; i++) if (path.kinds[i] !== Kind.Rapid) feedTools.push(path.tools[i]);
+  viewerHost.before(viewControls(viewer, feedTools, code, picked));
   const select = (line: number) => {
     const moves = viewer.highlightLine(line);
     code.mark(line);
@@ -107,7 +109,7 @@ function codePanel(text: string, diags: CheckDiagnostic[]): CodePanel {
   return panel;
 }
 
-function viewControls(viewer: Viewer, tools: Uint32Array, code: CodePanel, picked: HTMLElement): HTMLElement {
+function viewControls(viewer: Viewer, feedTools: number[], code: CodePanel, picked: HTMLElement): HTMLElement {
   const views: [View, string][] = [
     ['top', 'Top'],
     ['front', 'Front'],
@@ -122,7 +124,7 @@ function viewControls(viewer: Viewer, tools: Uint32Array, code: CodePanel, picke
     if (Number.isInteger(n) && n > 0) code.onSelect(n);
     else picked.textContent = 'Give a line number.';
   });
-  const used = [...new Set(tools)].sort((a, b) => a - b);
+  const used = [...new Set(feedTools)].sort((a, b) => a - b);
   const legend = h(
     'ul',
     { class: 'legend', 'aria-label': 'Legend' },

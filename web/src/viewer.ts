@@ -116,7 +116,7 @@ export class Viewer {
   }
 
   setView(view: View): void {
-    const d = this.size * 1.6;
+    const d = this.size * 1.15;
     const dir = {
       top: new THREE.Vector3(0, -1e-4, 1),
       front: new THREE.Vector3(0, -1, 0),
