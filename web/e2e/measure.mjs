@@ -40,6 +40,10 @@ try {
   await page.goto(`${base}/#/program/BIG/${rev}`);
   await page.waitForFunction(() => Number(document.getElementById('viewer')?.dataset.vertices) > 1);
   console.log(`page: first picture ${ms(t0)} ms after navigation (text, stream, viewer)`);
+  const fetched = await page.evaluate(() =>
+    performance.getEntriesByType('resource').filter((e) => e.name.includes('/api/programs/')).map((e) => [e.name.split('/').pop(), Math.round(e.startTime), Math.round(e.responseEnd)]),
+  );
+  console.log(`page: requests (name, start ms, end ms): ${JSON.stringify(fetched)}`);
   const cdp = await context.newCDPSession(page);
   await cdp.send('Performance.enable');
   await cdp.send('HeapProfiler.collectGarbage');

@@ -85,8 +85,9 @@ async function run() {
   await page.getByLabel('Dialect').selectOption('romi');
   await page.getByRole('button', { name: 'Upload' }).click();
   await page.getByRole('heading', { name: 'Program seed-000' }).waitFor();
-  const lines = await page.locator('ol.code > li').count();
   const seedLines = readFileSync(seed, 'utf8').split('\n').filter((l, i, a) => l !== '' || i < a.length - 1).length;
+  await page.locator(`#L${seedLines}`).waitFor();
+  const lines = await page.locator('ol.code > li').count();
   check(lines === seedLines, `the text is shown with its ${seedLines} lines (${lines})`);
   const inline = await page.locator('ol.code .diag').count();
   const firstDiag = inline ? await page.locator('ol.code .diag').first().innerText() : '';
@@ -110,6 +111,15 @@ async function run() {
   await page.getByLabel('Highlight the moves of line').fill('8');
   await page.getByLabel('Highlight the moves of line').press('Enter');
   check(/^Line 8: [1-9]\d* move/.test(await page.locator('#picked-line').innerText()), "line 8's moves highlighted from the keyboard");
+  await page.getByRole('link', { name: /^line 15: W_TYPOGRAPHIC_DASH/ }).click();
+  check(
+    (await page.getByRole('heading', { name: 'Program seed-000' }).count()) === 1 &&
+      (await page.locator('#L15.selected').count()) === 1 &&
+      /^Line 15: [1-9]\d* move/.test(await page.locator('#picked-line').innerText()),
+    "a diagnostic's link shows its line and its moves",
+  );
+  await page.getByLabel('Highlight the moves of line').fill('8');
+  await page.getByLabel('Highlight the moves of line').press('Enter');
   await page.getByRole('button', { name: 'Iso view' }).click();
   await page.evaluate(() => window.scrollTo(0, 0));
   await shot(page, 'web-program.png');

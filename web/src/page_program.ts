@@ -15,32 +15,37 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const revision = program.revisions.find((r) => r.revision === rev) ?? program.revisions[0];
   if (!revision) throw new Error(`${name} has no revisions`);
   const base = `/api/programs/${enc(name)}/revisions/${revision.revision}`;
-  const [text, stream] = await Promise.all([getText(`${base}/text`), getBytes(`${base}/toolpath`)]);
+  // The stream first: the server answers one request at a time, and the
+  // picture is what the shop looks at first; the text fills in after.
+  const stream = getBytes(`${base}/toolpath`);
+  const text = getText(`${base}/text`);
   const picked = status('picked-line');
-  const code = codePanel(text, revision.checks?.diagnostics ?? []);
-  const viewerHost = h('div', { class: 'viewer', id: 'viewer' });
+  const code = codePanel(revision.checks?.diagnostics ?? []);
+  const viewerHost = h('div', { class: 'viewer', id: 'viewer' }, h('p', { class: 'status', text: 'Loading the tool path…' }));
   show(
     main,
     `Program ${program.name}`,
     summary(program, revision),
-    h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
+    h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision, (line) => code.onSelect(line)), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
   );
-  const path = decodeToolpath(stream);
+  const path = decodeToolpath(await stream);
+  viewerHost.replaceChildren();
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
-  const feedTools: number[] = [];
-  for (let i = 1; i < path.count; i++) if (path.kinds[i] !== Kind.Rapid) feedTools.push(path.tools[i]);
-  viewerHost.before(viewControls(viewer, feedTools, code, picked));
   const select = (line: number) => {
     const moves = viewer.highlightLine(line);
     code.mark(line);
     picked.textContent = `Line ${line}: ${moves} ${moves === 1 ? 'move' : 'moves'} highlighted`;
   };
+  const feedTools: number[] = [];
+  for (let i = 1; i < path.count; i++) if (path.kinds[i] !== Kind.Rapid) feedTools.push(path.tools[i]);
+  viewerHost.before(viewControls(viewer, feedTools, select, picked));
   viewer.onPick = select;
   code.onSelect = select;
   viewerHost.dataset.vertices = String(path.count);
   viewerHost.dataset.moves = String(path.moves);
   if (path.decimated) picked.textContent = `${path.moves} moves, shown as ${path.count} points`;
+  code.fill(await text);
 }
 
 function summary(p: Program, r: Revision): HTMLElement {
@@ -56,40 +61,55 @@ function summary(p: Program, r: Revision): HTMLElement {
   return h('dl', { class: 'summary' }, ...items.flatMap(([k, v]) => [h('dt', { text: k }), h('dd', { text: v })]));
 }
 
-function diagnosticList(r: Revision): HTMLElement {
+// The diagnostics above the text, each a link to its line (and its moves).
+function diagnosticList(r: Revision, select: (line: number) => void): HTMLElement {
   const d = r.checks?.diagnostics ?? [];
   if (!d.length) return h('p', { class: 'ok', text: 'The check found nothing to report.' });
-  return h(
+  const list = h(
     'ul',
     { class: 'diag-list', 'aria-label': 'Diagnostics' },
     ...d.map((x) => h('li', { class: x.severity }, h('a', { href: `#L${x.line}`, 'data-line': x.line, text: `line ${x.line}: ${x.code}` }), ` ${x.message}`)),
   );
+  list.addEventListener('click', (e) => {
+    const a = (e.target as HTMLElement).closest('a[data-line]') as HTMLElement | null;
+    if (!a) return;
+    e.preventDefault(); // the page's routes are in the hash: stay on this one
+    select(Number(a.dataset.line));
+  });
+  return list;
 }
 
 interface CodePanel {
   element: HTMLElement;
+  fill(text: string): void;
   mark(line: number): void;
   onSelect: (line: number) => void;
 }
 
-function codePanel(text: string, diags: CheckDiagnostic[]): CodePanel {
+function codePanel(diags: CheckDiagnostic[]): CodePanel {
   const byLine = new Map<number, CheckDiagnostic[]>();
   for (const d of diags) byLine.set(d.line, [...(byLine.get(d.line) ?? []), d]);
-  const lines = text.split(/\r\n|\n|\r/);
-  if (lines.length && lines[lines.length - 1] === '') lines.pop();
   const list = h('ol', { class: 'code', 'aria-label': 'Program text' });
-  const shown = Math.min(lines.length, MAX_LINES);
-  for (let i = 0; i < shown; i++) {
-    const n = i + 1;
-    const li = h('li', { id: `L${n}`, 'data-line': n }, h('span', { class: 'ln', 'aria-hidden': 'true', text: String(n) }), h('code', { text: lines[i] }));
-    for (const d of byLine.get(n) ?? []) {
-      li.classList.add(`has-${d.severity}`);
-      li.append(h('div', { class: `diag ${d.severity}`, role: 'note' }, h('strong', { text: d.code }), ` ${d.message}`));
-    }
-    list.append(li);
-  }
+  const note = h('p', { class: 'status', text: 'Loading the text…' });
   const panel: CodePanel = {
-    element: h('div', { class: 'code-scroll' }, list, shown < lines.length ? h('p', { text: `The first ${shown} of ${lines.length} lines are shown.` }) : null),
+    element: h('div', { class: 'code-scroll' }, list, note),
+    fill(text: string) {
+      const lines = text.split(/\r\n|\n|\r/);
+      if (lines.length && lines[lines.length - 1] === '') lines.pop();
+      const shown = Math.min(lines.length, MAX_LINES);
+      const items = document.createDocumentFragment();
+      for (let i = 0; i < shown; i++) {
+        const n = i + 1;
+        const li = h('li', { id: `L${n}`, 'data-line': n }, h('span', { class: 'ln', 'aria-hidden': 'true', text: String(n) }), h('code', { text: lines[i] }));
+        for (const d of byLine.get(n) ?? []) {
+          li.classList.add(`has-${d.severity}`);
+          li.append(h('div', { class: `diag ${d.severity}`, role: 'note' }, h('strong', { text: d.code }), ` ${d.message}`));
+        }
+        items.append(li);
+      }
+      list.replaceChildren(items);
+      note.textContent = shown < lines.length ? `The first ${shown} of ${lines.length} lines are shown.` : '';
+    },
     mark(line: number) {
       list.querySelector('.selected')?.classList.remove('selected');
       const li = document.getElementById(`L${line}`);
@@ -98,6 +118,7 @@ function codePanel(text: string, diags: CheckDiagnostic[]): CodePanel {
     },
     onSelect: () => {},
   };
+  // A click on a line of the text, or on a diagnostic's link above it.
   const pickFrom = (e: Event) => {
     const t = (e.target as HTMLElement).closest('[data-line]') as HTMLElement | null;
     if (!t) return;
@@ -105,11 +126,10 @@ function codePanel(text: string, diags: CheckDiagnostic[]): CodePanel {
     panel.onSelect(Number(t.dataset.line));
   };
   list.addEventListener('click', pickFrom);
-  panel.element.addEventListener('click', pickFrom);
   return panel;
 }
 
-function viewControls(viewer: Viewer, feedTools: number[], code: CodePanel, picked: HTMLElement): HTMLElement {
+function viewControls(viewer: Viewer, feedTools: number[], select: (line: number) => void, picked: HTMLElement): HTMLElement {
   const views: [View, string][] = [
     ['top', 'Top'],
     ['front', 'Front'],
@@ -121,7 +141,7 @@ function viewControls(viewer: Viewer, feedTools: number[], code: CodePanel, pick
   go.addEventListener('submit', (e) => {
     e.preventDefault();
     const n = Number(line.value);
-    if (Number.isInteger(n) && n > 0) code.onSelect(n);
+    if (Number.isInteger(n) && n > 0) select(n);
     else picked.textContent = 'Give a line number.';
   });
   const used = [...new Set(feedTools)].sort((a, b) => a - b);
