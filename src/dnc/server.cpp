@@ -52,7 +52,9 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
   HttpHandlers handlers;
   handlers.request = [this](const HttpRequest& req, const std::string& origin) {
     const std::string_view target(req.target().data(), req.target().size());
-    if (is_page_target(target)) return web_->serve(req);
+    // Only GET reads the page; any other method keeps the API's answer
+    // (404 for a path that is no route).
+    if (req.method() == http::verb::get && is_page_target(target)) return web_->serve(req);
     return api_->handle(req, origin);
   };
   handlers.upgrade = [this](boost::asio::ip::tcp::socket& socket, const HttpRequest& req) {

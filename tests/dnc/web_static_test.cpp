@@ -190,6 +190,8 @@ TEST_F(WebFilesTest, TheServerAnswersThePageBesideTheApi) {
   EXPECT_EQ(api.status, 404);
   EXPECT_EQ(api.json().value("error", ""), "no such route");
   EXPECT_EQ(client.get("/api/programs").status, 401);
+  // A method other than GET on a path outside /api/ is still no route.
+  EXPECT_EQ(client.call(boost::beast::http::verb::post, "/index.html", "{}").status, 404);
 }
 
 }  // namespace

@@ -150,7 +150,8 @@ TEST(WebToolpath, TheRouteAnswersTheStreamOfARevision) {
   const test::Reply whole = client.get(route, oper);
   ASSERT_EQ(whole.status, 200);
   EXPECT_EQ(whole.body.substr(0, 4), "USTP");
-  EXPECT_EQ(at<std::uint64_t>(whole.body, 16), 20'001u);
+  // G0, then `G1 F1000` (a feed where the tool stands, as LinuxCNC's canon has it), 20,000 feeds.
+  EXPECT_EQ(at<std::uint64_t>(whole.body, 16), 20'002u);
   const test::Reply small = client.get(route + "?max_vertices=500", oper);
   ASSERT_EQ(small.status, 200);
   const auto n = at<std::uint32_t>(small.body, 8);
