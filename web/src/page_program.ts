@@ -79,6 +79,22 @@ function diagnosticList(r: Revision, select: (line: number) => void): HTMLElemen
   return list;
 }
 
+// The first `max` lines of `text` and its count of lines, without making a
+// string of every line of a long program.
+function firstLines(text: string, max: number): { lines: string[]; total: number } {
+  const lines: string[] = [];
+  let total = 0;
+  let at = 0;
+  while (at < text.length) {
+    let end = at;
+    while (end < text.length && text[end] !== '\n' && text[end] !== '\r') end++;
+    if (lines.length < max) lines.push(text.slice(at, end));
+    total++;
+    at = end + (text.startsWith('\r\n', end) ? 2 : 1);
+  }
+  return { lines, total };
+}
+
 interface CodePanel {
   element: HTMLElement;
   fill(text: string): void;
@@ -94,9 +110,8 @@ function codePanel(diags: CheckDiagnostic[]): CodePanel {
   const panel: CodePanel = {
     element: h('div', { class: 'code-scroll' }, list, note),
     fill(text: string) {
-      const lines = text.split(/\r\n|\n|\r/);
-      if (lines.length && lines[lines.length - 1] === '') lines.pop();
-      const shown = Math.min(lines.length, MAX_LINES);
+      const { lines, total } = firstLines(text, MAX_LINES);
+      const shown = lines.length;
       const items = document.createDocumentFragment();
       for (let i = 0; i < shown; i++) {
         const n = i + 1;
@@ -108,7 +123,7 @@ function codePanel(diags: CheckDiagnostic[]): CodePanel {
         items.append(li);
       }
       list.replaceChildren(items);
-      note.textContent = shown < lines.length ? `The first ${shown} of ${lines.length} lines are shown.` : '';
+      note.textContent = shown < total ? `The first ${shown} of ${total} lines are shown.` : '';
     },
     mark(line: number) {
       list.querySelector('.selected')?.classList.remove('selected');

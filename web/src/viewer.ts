@@ -81,37 +81,42 @@ export class Viewer {
     this.setView('iso');
   }
 
-  // The segments i-1 → i of every vertex, split into rapids and the rest.
+  // The segments i-1 → i of every vertex, split into rapids and the rest,
+  // written straight into typed arrays (a million-move program's picture).
   private segments(p: Toolpath) {
-    const rapid: number[] = [];
-    const cut: number[] = [];
-    const colours: number[] = [];
-    const rapidVertex: number[] = [];
-    const cutVertex: number[] = [];
+    let rapids = 0;
+    for (let i = 1; i < p.count; i++) if (p.kinds[i] === Kind.Rapid) rapids++;
+    const cuts = Math.max(p.count - 1, 0) - rapids;
+    const rapidXyz = new Float32Array(rapids * 6);
+    const cutXyz = new Float32Array(cuts * 6);
+    const colours = new Float32Array(cuts * 6);
+    const rapidVertex = new Uint32Array(rapids);
+    const cutVertex = new Uint32Array(cuts);
     const c = new THREE.Color();
+    let r = 0;
+    let k = 0;
     for (let i = 1; i < p.count; i++) {
-      const a = p.positions.subarray((i - 1) * 3, i * 3);
-      const b = p.positions.subarray(i * 3, i * 3 + 3);
+      const segment = p.positions.subarray((i - 1) * 3, i * 3 + 3);
       if (p.kinds[i] === Kind.Rapid) {
-        rapid.push(...a, ...b);
-        rapidVertex.push(i);
+        rapidXyz.set(segment, r * 6);
+        rapidVertex[r++] = i;
       } else {
-        cut.push(...a, ...b);
-        cutVertex.push(i);
+        cutXyz.set(segment, k * 6);
         c.setHex(toolColour(p.tools[i]));
-        colours.push(c.r, c.g, c.b, c.r, c.g, c.b);
+        for (let j = 0; j < 2; j++) colours.set([c.r, c.g, c.b], k * 6 + j * 3);
+        cutVertex[k++] = i;
       }
     }
-    const geometry = (xyz: number[]) => {
+    const geometry = (xyz: Float32Array) => {
       const g = new THREE.BufferGeometry();
-      g.setAttribute('position', new THREE.Float32BufferAttribute(xyz, 3));
+      g.setAttribute('position', new THREE.BufferAttribute(xyz, 3));
       return g;
     };
-    const cutGeometry = geometry(cut);
-    cutGeometry.setAttribute('color', new THREE.Float32BufferAttribute(colours, 3));
+    const cutGeometry = geometry(cutXyz);
+    cutGeometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
     return [
-      { geometry: geometry(rapid), vertex: Uint32Array.from(rapidVertex) },
-      { geometry: cutGeometry, vertex: Uint32Array.from(cutVertex) },
+      { geometry: geometry(rapidXyz), vertex: rapidVertex },
+      { geometry: cutGeometry, vertex: cutVertex },
     ] as const;
   }
 
