@@ -48,6 +48,7 @@ async function canvasPixels(page) {
 async function shot(page, name) {
   if (!shots) return;
   mkdirSync(shots, { recursive: true });
+  await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: join(shots, name), fullPage: false });
 }
 
