@@ -13,7 +13,11 @@ pkgs=(
   libsqlite3-dev libpqxx-dev libssl-dev libsodium-dev postgresql
   libboost-dev libboost-system-dev socat
   libmosquitto-dev mosquitto
+  chromium
 )
+# Node.js and npm for the web page, from Debian when the machine has none
+# (a machine with NodeSource's nodejs has npm in it: Debian's would clash).
+command -v npm >/dev/null 2>&1 || pkgs+=(nodejs npm)
 [ "${1:-}" = "--with-linuxcnc" ] && pkgs+=(linuxcnc-uspace)
 missing=()
 for p in "${pkgs[@]}"; do
@@ -26,3 +30,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd apt-get update -qq
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+# The web page's build and browser test (docs/web.md): esbuild, three.js,
+# TypeScript and playwright-core at the versions of web/package-lock.json.
+# Playwright drives Debian's chromium; it never downloads a browser.
+(cd "$(dirname "$0")/../web" && npm ci --no-audit --no-fund)

@@ -111,6 +111,9 @@ std::optional<dnc::ServerConfig> configuration(const ServeOptions& o) {
   auto config = dnc::read_server_config(text.str(), 0, diags);
   const std::string base = std::filesystem::path(path).parent_path().string();
   if (config && !dnc::load_profiles(*config, base.empty() ? "." : base, diags)) config.reset();
+  // [web] root is relative to the configuration's folder, as a profile is.
+  if (config && !config->web_root.empty() && !base.empty())
+    config->web_root = (std::filesystem::path(base) / config->web_root).string();
   for (const core::Diagnostic& d : diags.all()) {
     fmt::print(stderr, "{}:{}:{}: {} {}: {}\n", path, d.loc.line, d.loc.col,
                core::severity_name(d.severity), core::code_name(d.code), d.message);

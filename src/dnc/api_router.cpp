@@ -24,6 +24,9 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/programs/{}/revisions/{}", A::Permission, P::ReadPrograms, api_revision},
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/text", A::Permission, P::ReadPrograms,
              api_revision_text},
+    // The viewer's binary tool path (docs/web.md).
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/toolpath", A::Permission, P::ReadPrograms,
+             api_toolpath},
     // Who may make which move is the state table's (may_change_state).
     ApiRoute{V::post, "/api/programs/{}/revisions/{}/state", A::AnyUser, P::ReadPrograms,
              api_change_state},

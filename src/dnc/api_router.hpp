@@ -78,6 +78,7 @@ HttpResponse api_upload(ApiCall& c);
 HttpResponse api_program(ApiCall& c);
 HttpResponse api_revision(ApiCall& c);
 HttpResponse api_revision_text(ApiCall& c);
+HttpResponse api_toolpath(ApiCall& c);  // web_toolpath_api.cpp
 HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);

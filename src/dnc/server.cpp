@@ -46,8 +46,15 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
   machines_ = std::make_unique<Machines>(io_, *store_, events_, config_.machines);
   machines_->use_profiles(&config_.profiles);
   api_ = std::make_unique<Api>(ApiContext{*store_, *machines_, events_, config_.profiles});
+  web_ = std::make_unique<WebFiles>(WebFilesConfig{
+      config_.web_root.empty() ? default_web_root() : std::filesystem::path(config_.web_root),
+      config_.web_max_file_bytes});
   HttpHandlers handlers;
   handlers.request = [this](const HttpRequest& req, const std::string& origin) {
+    const std::string_view target(req.target().data(), req.target().size());
+    // Only GET reads the page; any other method keeps the API's answer
+    // (404 for a path that is no route).
+    if (req.method() == http::verb::get && is_page_target(target)) return web_->serve(req);
     return api_->handle(req, origin);
   };
   handlers.upgrade = [this](boost::asio::ip::tcp::socket& socket, const HttpRequest& req) {

@@ -21,6 +21,7 @@
 #include "dnc/server_config.hpp"
 #include "dnc/server_machines.hpp"
 #include "dnc/store.hpp"
+#include "dnc/web_static.hpp"
 
 namespace usina::dnc {
 
@@ -61,6 +62,7 @@ class Server {
   EventHub events_;
   std::unique_ptr<Machines> machines_;
   std::unique_ptr<Api> api_;
+  std::unique_ptr<WebFiles> web_;  // the page: every path outside /api/
   std::shared_ptr<HttpListener> listener_;
   std::unique_ptr<ShdrAdapter> shdr_;
   std::unique_ptr<MqttPublisher> mqtt_;

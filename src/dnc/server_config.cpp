@@ -59,6 +59,34 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
   return ok;
 }
 
+// The `[web]` table; false when a value is wrong.
+bool read_web_table(const toml::table& root, ServerConfig& c, std::uint32_t file_id,
+                    core::DiagnosticSink& diags) {
+  const toml::table* t = root["web"].as_table();
+  if (t == nullptr) return true;
+  bool ok = true;
+  if (const toml::node* n = t->get("root")) {
+    const auto v = n->value<std::string>();
+    if (v && !v->empty()) {
+      c.web_root = *v;
+    } else {
+      fail(diags, file_id, n->source(), "web.root must be the folder of the built page");
+      ok = false;
+    }
+  }
+  if (const toml::node* n = t->get("max_file_bytes")) {
+    const auto v = n->value<std::int64_t>();
+    if (v && *v >= 1024) {
+      c.web_max_file_bytes = static_cast<std::uint64_t>(*v);
+    } else {
+      fail(diags, file_id, n->source(),
+           "web.max_file_bytes must be a count of bytes, 1024 or more");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 // The machine's data patterns must be regular expressions (ECMAScript).
 bool read_patterns_ok(const ServerMachine& m, const toml::table* t, std::uint32_t file_id,
                       core::DiagnosticSink& diags) {
@@ -158,6 +186,7 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
     return std::nullopt;  // reported by read_machine_links
   }
   bool ok = read_server_table(root, c, file_id, diags);
+  ok = read_web_table(root, c, file_id, diags) && ok;
   ok = read_data_tables(root, c.mtconnect, c.mqtt, file_id, diags) && ok;
   if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;
   return c;

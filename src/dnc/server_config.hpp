@@ -6,6 +6,10 @@
 //   listen = "127.0.0.1:8080"   # --listen overrides it
 //   max_upload = 67108864       # bytes of a request body; past it: 413
 //   session_hours = 8           # a login's life
+//
+//   [web]
+//   root = "web"                # the built page's folder (relative to the configuration's)
+//   max_file_bytes = 33554432   # a larger file of it is not served
 #pragma once
 
 #include <cstdint>
@@ -39,6 +43,10 @@ struct ServerConfig {
   double session_hours = 8.0;
   MtconnectConfig mtconnect;  // [mtconnect]: the SHDR adapter (data_config.hpp)
   MqttConfig mqtt;            // [mqtt]: events to a broker
+  // [web] (docs/web.md): the page's folder, as written (serve.cpp makes it
+  // relative to the configuration's folder); empty: web_static's default.
+  std::string web_root;
+  std::uint64_t web_max_file_bytes = 32ull << 20;
   // Each machine class's profile (load_profiles): the store's check of an
   // upload of that class runs on it, travel included.
   std::map<std::string, sim::MachineProfile> profiles;

@@ -1,0 +1,111 @@
+// What the browser test and the measurements share: a scratch folder, the
+// page built into it, a fresh store, a real `usina serve`, Debian's chromium.
+import { spawn, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const web = resolve(dirname(fileURLToPath(import.meta.url)), '..');
+export const CHROMIUM = '/usr/bin/chromium';
+export const PASSWORD = 'correct horse 1';
+export const SKIP = 77;
+
+export function arg(name, fallback) {
+  const at = process.argv.indexOf(`--${name}`);
+  return at > 0 ? process.argv[at + 1] : fallback;
+}
+
+// Exits 77 with the reason when the browser test cannot run here.
+export function skipUnlessReady() {
+  const why = !existsSync(CHROMIUM)
+    ? `${CHROMIUM} is not installed (scripts/setup.sh installs Debian's chromium)`
+    : !existsSync(join(web, 'node_modules', 'playwright-core'))
+      ? 'web/node_modules is missing (scripts/setup.sh runs `npm ci` in web/)'
+      : '';
+  if (!why) return;
+  console.log(`SKIPPED: ${why}`);
+  process.exit(SKIP);
+}
+
+export class Harness {
+  constructor(usina) {
+    this.usina = usina;
+    this.scratch = mkdtempSync(join(tmpdir(), 'usina-web-'));
+    this.children = [];
+  }
+
+  // Builds the page, makes the store and the configuration, starts the
+  // server; the page's address.
+  async start() {
+    const page = join(this.scratch, 'page');
+    const built = spawnSync(process.execPath, [join(web, 'build.mjs'), '--outdir', page], { stdio: 'inherit' });
+    if (built.status !== 0) throw new Error('the page does not build');
+    const data = join(this.scratch, 'data');
+    writeFileSync(join(this.scratch, 'pw'), `${PASSWORD}\n`);
+    const init = spawnSync(this.usina, ['serve', '--init', '--data', data, '--admin', 'boss', '--password-file', join(this.scratch, 'pw')], { stdio: 'inherit' });
+    if (init.status !== 0) throw new Error('usina serve --init failed');
+    const config = join(this.scratch, 'usina-serve.toml');
+    writeFileSync(
+      config,
+      `[web]\nroot = "page"\n\n[server]\nmax_upload = 134217728\n\n[[machine]]\nname = "romi-1"\ndialect = "romi"\nport = "${this.machinePort()}"\n` +
+        `baud = 9600\ndata_bits = 7\nparity = "even"\nstop_bits = 2\nflow = "xonxoff"\ncode = "iso"\neob = "hash"\nmode = "tryout"\n`,
+    );
+    const port = await this.serve(['serve', '--data', data, '--config', config, '--listen', '127.0.0.1:0']);
+    this.base = `http://127.0.0.1:${port}`;
+    return this.base;
+  }
+
+  // The server's port, from its "listening on http://127.0.0.1:PORT" line.
+  serve(args) {
+    return new Promise((done, fail) => {
+      const p = spawn(this.usina, args, { stdio: ['ignore', 'inherit', 'pipe'] });
+      this.children.push(p);
+      let said = '';
+      p.stderr.on('data', (b) => {
+        said += b.toString();
+        process.stderr.write(b);
+        const m = said.match(/listening on http:\/\/127\.0\.0\.1:(\d+)/);
+        if (m) done(Number(m[1]));
+      });
+      p.on('exit', (code) => fail(new Error(`usina serve exited with ${code}: ${said}`)));
+    });
+  }
+
+  // A simulated machine's serial line: a socat pty pair (when socat is there).
+  machinePort() {
+    if (spawnSync('sh', ['-c', 'command -v socat']).status !== 0) return '/nonexistent/usina-e2e-tty';
+    const cnc = join(this.scratch, 'cnc');
+    const p = spawn('socat', [`pty,raw,echo=0,link=${join(this.scratch, 'ctl')}`, `pty,raw,echo=0,link=${cnc}`], { stdio: 'ignore' });
+    this.children.push(p);
+    for (let i = 0; i < 250 && !existsSync(cnc); i++) spawnSync('sleep', ['0.02']);
+    return cnc;
+  }
+
+  // Debian's chromium, headless, in a fresh profile.
+  async browser() {
+    const { chromium } = await import('playwright-core');
+    return chromium.launchPersistentContext(join(this.scratch, 'profile'), {
+      executablePath: CHROMIUM,
+      headless: true,
+      viewport: { width: 1280, height: 860 },
+      args: [
+        '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+        '--disable-background-networking', '--disable-component-update', '--disable-sync',
+        // WebGL without a GPU: SwiftShader, which Chromium no longer falls back to by itself.
+        '--enable-unsafe-swiftshader', '--use-angle=swiftshader',
+      ],
+    });
+  }
+
+  // A token for the API (the measurements upload without the page).
+  async logIn(user = 'boss') {
+    const r = await fetch(`${this.base}/api/login`, { method: 'POST', body: JSON.stringify({ user, password: PASSWORD }) });
+    return (await r.json()).token;
+  }
+
+  stop() {
+    for (const c of this.children) if (c.exitCode === null) c.kill('SIGTERM');
+    rmSync(this.scratch, { recursive: true, force: true });
+  }
+}

@@ -1,0 +1,87 @@
+// Figures for docs/web.md: a large program uploaded over the API, its
+// tool-path stream timed and sized, then its page opened in chromium: the
+// time to the first picture and the page's JavaScript heap.
+//   node e2e/measure.mjs --usina build/usina --program big.ngc [--dialect rs274ngc]
+import { readdirSync, readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { arg, Harness, skipUnlessReady } from './harness.mjs';
+
+skipUnlessReady();
+const harness = new Harness(resolve(arg('usina', '../build/usina')));
+const text = readFileSync(resolve(arg('program', '')), 'utf8');
+const ms = (t0) => Math.round(performance.now() - t0);
+
+// The resident memory of chromium's processes started for `profile` (the
+// browser and every child: renderer, GPU/SwiftShader), in MB.
+function chromiumMegabytes(profile) {
+  const procs = readdirSync('/proc').filter((d) => /^\d+$/.test(d)).map((pid) => {
+    try {
+      const stat = readFileSync(`/proc/${pid}/stat`, 'utf8');
+      const ppid = stat.slice(stat.lastIndexOf(')') + 2).split(' ')[1];
+      const rss = /VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'));
+      const cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
+      return { pid, ppid, kb: rss ? Number(rss[1]) : 0, cmd };
+    } catch {
+      return null;
+    }
+  }).filter(Boolean);
+  const tree = new Set(procs.filter((p) => p.cmd.includes(profile)).map((p) => p.pid));
+  for (let grew = true; grew; ) {
+    grew = false;
+    for (const p of procs) if (!tree.has(p.pid) && tree.has(p.ppid)) tree.add(p.pid), (grew = true);
+  }
+  const kb = procs.filter((p) => tree.has(p.pid)).reduce((a, p) => a + p.kb, 0);
+  const renderer = procs.filter((p) => tree.has(p.pid) && p.cmd.includes('--type=renderer')).reduce((a, p) => a + p.kb, 0);
+  return { all: (kb / 1024).toFixed(0), renderer: (renderer / 1024).toFixed(0) };
+}
+
+try {
+  const base = await harness.start();
+  const token = await harness.logIn();
+  const auth = { Authorization: `Bearer ${token}` };
+  let t0 = performance.now();
+  const up = await fetch(`${base}/api/programs`, {
+    method: 'POST',
+    headers: auth,
+    body: JSON.stringify({ name: 'BIG', dialect: arg('dialect', 'rs274ngc'), text }),
+  });
+  const rev = (await up.json()).revision;
+  console.log(`upload and check: ${ms(t0)} ms (HTTP ${up.status}), ${text.length} bytes`);
+  t0 = performance.now();
+  const stream = await fetch(`${base}/api/programs/BIG/revisions/${rev}/toolpath`, { headers: auth });
+  const bytes = new Uint8Array(await stream.arrayBuffer());
+  const v = new DataView(bytes.buffer);
+  console.log(
+    `toolpath: ${ms(t0)} ms, ${bytes.length} bytes, ${v.getUint32(8, true)} vertices, ` +
+      `${v.getBigUint64(16, true)} moves, flags ${v.getUint32(12, true)}`,
+  );
+  const context = await harness.browser();
+  const page = context.pages()[0] ?? (await context.newPage());
+  page.setDefaultTimeout(120000);
+  await page.goto(`${base}/`);
+  await page.evaluate((t) => sessionStorage.setItem('usina.token', t), token);
+  t0 = performance.now();
+  await page.goto(`${base}/#/program/BIG/${rev}`);
+  await page.waitForFunction(() => Number(document.getElementById('viewer')?.dataset.vertices) > 1);
+  console.log(`page: first picture ${ms(t0)} ms after navigation (text, stream, viewer)`);
+  const fetched = await page.evaluate(() =>
+    performance.getEntriesByType('resource').filter((e) => e.name.includes('/api/programs/')).map((e) => [e.name.split('/').pop(), Math.round(e.startTime), Math.round(e.responseEnd)]),
+  );
+  console.log(`page: requests (name, start ms, end ms): ${JSON.stringify(fetched)}`);
+  await page.locator('#L1').waitFor();
+  console.log(`page: the text shown ${ms(t0)} ms after navigation`);
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Performance.enable');
+  await cdp.send('HeapProfiler.collectGarbage');
+  const metrics = (await cdp.send('Performance.getMetrics')).metrics;
+  const heap = metrics.find((m) => m.name === 'JSHeapUsedSize').value;
+  const mem = chromiumMegabytes(harness.scratch);
+  console.log(`page: JavaScript heap ${(heap / 1048576).toFixed(1)} MB (typed arrays aside); chromium resident ${mem.all} MB in all, the page's renderer ${mem.renderer} MB`);
+  t0 = performance.now();
+  for (const view of ['Top', 'Front', 'Side', 'Iso', 'Top', 'Front', 'Side', 'Iso', 'Top', 'Iso'])
+    await page.getByRole('button', { name: `${view} view` }).click();
+  console.log(`page: ${((performance.now() - t0) / 10).toFixed(0)} ms a redraw (view buttons, SwiftShader: no GPU)`);
+  await context.close();
+} finally {
+  harness.stop();
+}

@@ -1,0 +1,158 @@
+// The page's end-to-end test: a real `usina serve` with a fresh store, the
+// page built into a scratch folder, Debian's chromium driven headless by
+// playwright-core. Logs in, uploads the seed 000 program, checks its
+// diagnostics and its 3D view, a click on a move, the machines page.
+//   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
+//                    [--screenshots DIR]
+// Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
+import { mkdirSync, readFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { arg, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
+
+skipUnlessReady();
+const usina = resolve(arg('usina', join(web, '..', 'build', 'usina')));
+const seed = resolve(arg('seed', join(web, '..', 'tests', 'programs', 'romi', 'seed-000-example.nc')));
+const shots = arg('screenshots', '');
+const harness = new Harness(usina);
+let failed = false;
+
+function check(ok, what) {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+  if (!ok) failed = true;
+}
+
+async function canvasPixels(page) {
+  return page.evaluate(() => {
+    const c = document.querySelector('#viewer canvas');
+    const t = document.createElement('canvas');
+    t.width = c.width;
+    t.height = c.height;
+    const g = t.getContext('2d');
+    g.drawImage(c, 0, 0);
+    const d = g.getImageData(0, 0, t.width, t.height).data;
+    const bg = [0x1d, 0x23, 0x2a];
+    let drawn = 0;
+    let feed = null; // a pixel of tool 1's colour (#ffb74d): a feed to click
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) drawn++;
+      if (!feed && Math.abs(d[i] - 0xff) < 30 && Math.abs(d[i + 1] - 0xb7) < 40 && Math.abs(d[i + 2] - 0x4d) < 50) {
+        const px = (i / 4) % t.width;
+        const py = Math.floor(i / 4 / t.width);
+        feed = { x: (px * c.clientWidth) / t.width, y: (py * c.clientHeight) / t.height };
+      }
+    }
+    return { drawn, feed, total: d.length / 4 };
+  });
+}
+
+async function shot(page, name) {
+  if (!shots) return;
+  mkdirSync(shots, { recursive: true });
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.screenshot({ path: join(shots, name), fullPage: false });
+}
+
+async function run() {
+  const base = await harness.start();
+  check(true, 'the page built, usina serve started on a fresh store');
+  const context = await harness.browser();
+  const page = context.pages()[0] ?? (await context.newPage());
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  // The one refusal the test asks for (a wrong password) is no error of the page.
+  page.on('console', (m) => m.type() === 'error' && !/status of 401/.test(m.text()) && errors.push(m.text()));
+  const elsewhere = [];
+  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
+  page.setDefaultTimeout(20000);
+
+  // Login.
+  await page.goto(`${base}/`);
+  await page.getByRole('heading', { name: 'Log in' }).waitFor();
+  await shot(page, 'web-login.png');
+  await page.getByLabel('User').fill('boss');
+  await page.getByLabel('Password').fill('wrong password');
+  await page.getByRole('button', { name: 'Log in' }).click();
+  await page.getByRole('alert').waitFor();
+  check(/wrong|password|user/i.test(await page.getByRole('alert').innerText()), 'a wrong password is refused with a message');
+  await page.getByLabel('Password').fill(PASSWORD);
+  await page.getByLabel('Password').press('Enter'); // the keyboard submits the form
+  await page.getByRole('heading', { name: 'Library' }).waitFor();
+  check(true, 'logged in from the keyboard; the library opens');
+
+  // Upload the seed 000 program (ROMI).
+  await page.getByLabel('Program file').setInputFiles(seed);
+  await page.getByText(/bytes read/).waitFor();
+  await page.getByLabel('Name', { exact: true }).fill('seed-000');
+  await page.getByLabel('Dialect').selectOption('romi');
+  await page.getByRole('button', { name: 'Upload' }).click();
+  await page.getByRole('heading', { name: 'Program seed-000' }).waitFor();
+  const seedLines = readFileSync(seed, 'utf8').split('\n').filter((l, i, a) => l !== '' || i < a.length - 1).length;
+  await page.locator(`#L${seedLines}`).waitFor();
+  const lines = await page.locator('ol.code > li').count();
+  check(lines === seedLines, `the text is shown with its ${seedLines} lines (${lines})`);
+  const inline = await page.locator('ol.code .diag').count();
+  const firstDiag = inline ? await page.locator('ol.code .diag').first().innerText() : '';
+  check(inline > 0 && /^[EWN]_[A-Z_]+ \S/.test(firstDiag), `the check's diagnostics are inline with code and message (${inline}: "${firstDiag}")`);
+
+  // The 3D view drew the path.
+  await page.locator('#viewer canvas').waitFor();
+  await page.waitForFunction(() => Number(document.getElementById('viewer')?.dataset.vertices) > 1);
+  const px = await canvasPixels(page);
+  check(px.drawn > 500, `the 3D view drew the tool path (${px.drawn} of ${px.total} pixels not background)`);
+  for (const view of ['Top', 'Front', 'Side', 'Iso']) await page.getByRole('button', { name: `${view} view` }).click();
+  await page.getByRole('button', { name: 'Top view' }).click();
+  const top = await canvasPixels(page);
+  check(top.feed !== null, 'the top view shows a feed of tool 1');
+  if (top.feed) {
+    await page.locator('#viewer canvas').click({ position: top.feed });
+    const said = await page.locator('#picked-line').innerText();
+    const selected = await page.locator('ol.code li.selected').count();
+    check(/^Line \d+: [1-9]\d* move/.test(said) && selected === 1, `a click on a move highlights its line ("${said}")`);
+  }
+  await page.getByLabel('Highlight the moves of line').fill('8');
+  await page.getByLabel('Highlight the moves of line').press('Enter');
+  check(/^Line 8: [1-9]\d* move/.test(await page.locator('#picked-line').innerText()), "line 8's moves highlighted from the keyboard");
+  await page.getByRole('link', { name: /^line 15: W_TYPOGRAPHIC_DASH/ }).click();
+  check(
+    (await page.getByRole('heading', { name: 'Program seed-000' }).count()) === 1 &&
+      (await page.locator('#L15.selected').count()) === 1 &&
+      /^Line 15: [1-9]\d* move/.test(await page.locator('#picked-line').innerText()),
+    "a diagnostic's link shows its line and its moves",
+  );
+  await page.getByLabel('Highlight the moves of line').fill('8');
+  await page.getByLabel('Highlight the moves of line').press('Enter');
+  await page.getByRole('button', { name: 'Iso view' }).click();
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await shot(page, 'web-program.png');
+
+  // The library lists and finds it.
+  await page.getByRole('link', { name: 'Library' }).click();
+  await page.getByLabel('Search by name').fill('seed');
+  check(/^1 of 1 programs$/.test(await page.locator('#library-count').innerText()), 'the search finds the program by name');
+  await page.getByLabel('Search by name').fill('nothing-like-it');
+  check(/^0 of 1 programs$/.test(await page.locator('#library-count').innerText()), 'the search leaves out other names');
+  await page.getByLabel('Search by name').fill('');
+  await shot(page, 'web-library.png');
+
+  // The machines, live.
+  await page.getByRole('link', { name: 'Machines' }).click();
+  await page.getByRole('heading', { name: 'Machines' }).waitFor();
+  await page.getByText('Live updates: connected').waitFor();
+  const state = await page.locator('#machine-romi-1 .state').innerText();
+  check(['idle', 'offline', 'receiving', 'sending'].includes(state), `the machines page shows romi-1 (${state}), live`);
+  await shot(page, 'web-machines.png');
+
+  // No page file is fetched from elsewhere, and the page logged no error.
+  check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);
+  check(errors.length === 0, `no errors in the page${errors.length ? `: ${errors.join('; ')}` : ''}`);
+  await context.close();
+}
+
+try {
+  await run();
+} catch (e) {
+  check(false, String(e.stack ?? e));
+} finally {
+  harness.stop();
+}
+process.exit(failed ? 1 : 0);

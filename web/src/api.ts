@@ -1,0 +1,124 @@
+// The server's HTTP API (docs/dnc-server.md), with the login's token kept
+// for this tab only.
+
+export interface CheckDiagnostic {
+  code: string;
+  severity: string;
+  line: number;
+  column: number;
+  message: string;
+}
+
+export interface Checks {
+  dialect: string;
+  errors: number;
+  warnings: number;
+  complete: boolean;
+  diagnostics: CheckDiagnostic[];
+  cycle_time_s: number;
+  bounds: { min: number[]; max: number[] } | null;
+}
+
+export interface Revision {
+  revision: string;
+  state: string;
+  author: string;
+  reason: string;
+  size: number;
+  check_ok: boolean;
+  checks: Checks | null;
+}
+
+export interface ProgramSummary {
+  name: string;
+  machine_class: string;
+  dialect: string;
+}
+
+export interface Program extends ProgramSummary {
+  released: string | null;
+  revisions: Revision[];
+}
+
+export interface Job {
+  job: number;
+  state: string;
+  program: string;
+  bytes_sent: number;
+  bytes_total: number;
+  block: string | null;
+}
+
+export interface Machine {
+  name: string;
+  dialect: string;
+  machine_class: string;
+  mode: string;
+  port: string;
+  state: string;
+  link_error: string;
+  job: Job | null;
+  part_count?: number;
+  last_cycle_seconds?: number | null;
+}
+
+export class ApiError extends Error {
+  constructor(
+    readonly status: number,
+    message: string,
+  ) {
+    super(message);
+  }
+}
+
+const TOKEN = 'usina.token';
+
+export function token(): string {
+  return sessionStorage.getItem(TOKEN) ?? '';
+}
+
+export function setToken(t: string): void {
+  if (t) sessionStorage.setItem(TOKEN, t);
+  else sessionStorage.removeItem(TOKEN);
+}
+
+async function call(method: string, path: string, body?: unknown): Promise<Response> {
+  const headers: Record<string, string> = {};
+  if (token()) headers['Authorization'] = `Bearer ${token()}`;
+  if (body !== undefined) headers['Content-Type'] = 'application/json';
+  const res = await fetch(path, {
+    method,
+    headers,
+    body: body === undefined ? undefined : JSON.stringify(body),
+  });
+  if (!res.ok) {
+    let message = `${res.status} ${res.statusText}`;
+    try {
+      const j = (await res.json()) as { error?: string };
+      if (j.error) message = j.error;
+    } catch {
+      /* not JSON: keep the status line */
+    }
+    if (res.status === 401) setToken('');
+    throw new ApiError(res.status, message);
+  }
+  return res;
+}
+
+export async function getJson<T>(path: string): Promise<T> {
+  return (await (await call('GET', path)).json()) as T;
+}
+
+export async function postJson<T>(path: string, body: unknown): Promise<T> {
+  return (await (await call('POST', path, body)).json()) as T;
+}
+
+export async function getText(path: string): Promise<string> {
+  return (await call('GET', path)).text();
+}
+
+export async function getBytes(path: string): Promise<ArrayBuffer> {
+  return (await call('GET', path)).arrayBuffer();
+}
+
+export const enc = encodeURIComponent;

@@ -1,0 +1,58 @@
+// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines.
+import { ApiError, getJson, postJson, setToken, token } from './api';
+import { h, show } from './dom';
+import { loginPage } from './page_login';
+import { libraryPage } from './page_library';
+import { programPage } from './page_program';
+import { machinesPage, leaveMachines } from './page_machines';
+
+const main = document.getElementById('main') as HTMLElement;
+
+async function route(): Promise<void> {
+  leaveMachines();
+  const parts = location.hash.replace(/^#\/?/, '').split('/').map(decodeURIComponent);
+  const nav = document.getElementById('nav') as HTMLElement;
+  nav.hidden = !token();
+  if (!token() && parts[0] !== 'login') {
+    location.hash = '#/login';
+    return;
+  }
+  try {
+    if (parts[0] === 'login') await loginPage(main);
+    else if (parts[0] === 'program' && parts[1]) await programPage(main, parts[1], parts[2]);
+    else if (parts[0] === 'machines') await machinesPage(main);
+    else await libraryPage(main);
+  } catch (e) {
+    if (e instanceof ApiError && e.status === 401) {
+      location.hash = '#/login';
+      return;
+    }
+    show(main, 'Something went wrong', h('p', { role: 'alert', text: String((e as Error).message ?? e) }));
+  }
+}
+
+async function whoAmI(): Promise<void> {
+  const who = document.getElementById('who') as HTMLElement;
+  if (!token()) return;
+  try {
+    const s = await getJson<{ user: string; role: string }>('/api/session');
+    who.textContent = `${s.user} (${s.role})`;
+  } catch {
+    who.textContent = '';
+  }
+}
+
+document.getElementById('logout')?.addEventListener('click', async () => {
+  try {
+    await postJson('/api/logout', {});
+  } catch {
+    /* the session may have ended already */
+  }
+  setToken('');
+  location.hash = '#/login';
+});
+
+window.addEventListener('hashchange', () => void route());
+window.addEventListener('usina:login', () => void whoAmI());
+void whoAmI();
+void route();

@@ -1,0 +1,51 @@
+// The server's tool-path stream (docs/web.md, "The tool-path stream").
+
+export const enum Kind {
+  Start = 0,
+  Rapid = 1,
+  Feed = 2,
+  Arc = 3,
+  Spline = 4,
+  Probe = 5,
+}
+
+export interface Toolpath {
+  count: number;
+  decimated: boolean;
+  truncated: boolean;
+  stoppedOnError: boolean;
+  moves: number;
+  min: [number, number, number];
+  max: [number, number, number];
+  positions: Float32Array; // 3 a vertex
+  lines: Uint32Array;
+  tools: Uint32Array;
+  kinds: Uint8Array;
+}
+
+const MAGIC = 0x50545355; // "USTP"
+const HEADER = 48;
+
+export function decodeToolpath(buf: ArrayBuffer): Toolpath {
+  const v = new DataView(buf);
+  if (buf.byteLength < HEADER || v.getUint32(0, true) !== MAGIC)
+    throw new Error('not a usina tool-path stream');
+  if (v.getUint32(4, true) !== 1) throw new Error('a tool-path stream of another version');
+  const n = v.getUint32(8, true);
+  const flags = v.getUint32(12, true);
+  if (buf.byteLength !== HEADER + n * 21) throw new Error('the tool-path stream is cut short');
+  const f = (o: number) => v.getFloat32(o, true);
+  return {
+    count: n,
+    decimated: (flags & 1) !== 0,
+    truncated: (flags & 2) !== 0,
+    stoppedOnError: (flags & 4) !== 0,
+    moves: Number(v.getBigUint64(16, true)),
+    min: [f(24), f(28), f(32)],
+    max: [f(36), f(40), f(44)],
+    positions: new Float32Array(buf, HEADER, n * 3),
+    lines: new Uint32Array(buf, HEADER + n * 12, n),
+    tools: new Uint32Array(buf, HEADER + n * 16, n),
+    kinds: new Uint8Array(buf, HEADER + n * 20, n),
+  };
+}
