@@ -62,7 +62,11 @@ std::optional<std::string> resolve_options(const Dialect& d, const std::vector<s
     if (it == d.options.end()) {
       return fmt::format("unknown dialect option '{}'; {}", name, list_options(d));
     }
-    if (std::find(it->values.begin(), it->values.end(), value) == it->values.end()) {
+    const bool list = it->values.back() == "<list>" && !value.empty() &&
+                      value.find_first_not_of("0123456789,") == std::string::npos &&
+                      value.front() != ',' && value.back() != ',' &&
+                      value.find(",,") == std::string::npos;
+    if (!list && std::find(it->values.begin(), it->values.end(), value) == it->values.end()) {
       return fmt::format("dialect option {} takes {}, not '{}'", name, fmt::join(it->values, "|"),
                          value);
     }

@@ -110,6 +110,12 @@ void Writer::on(const canon::Op& op) {
           out_.block(out_.comment(k.text));
         } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
           end();
+        } else if constexpr (std::is_same_v<T, canon::MachineCode>) {
+          // The machine's own, as it came.
+          std::string w = code(k.letter, k.code);
+          if (k.p) w += fmt::format(" P{}", out_.number(*k.p));
+          if (k.q) w += fmt::format(" Q{}", out_.number(*k.q));
+          out_.block(w);
         }
         // A Pocket is a drawing's feature; its moves are in the stream.
       },

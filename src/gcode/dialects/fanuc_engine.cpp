@@ -75,6 +75,14 @@ Engine::Engine(RunContext& c)
   scale_z_by_p_ = c.dialect_options["scaling_axes"] == "xyz";
   stroke_.outside_forbidden = c.dialect_options["stroke_area"] == "outside";
   g76_.shift = boring_shift_bits(c.dialect_options["boring_shift"]);
+  if (const std::string& list = c.dialect_options["machine_m_codes"]; list != "all") {
+    machine_m_codes_.emplace();
+    for (std::size_t at = 0; at < list.size();) {
+      const std::size_t comma = std::min(list.find(',', at), list.size());
+      if (comma - at < 9) machine_m_codes_->insert(std::stoi(list.substr(at, comma - at)));
+      at = comma + 1;
+    }
+  }
   polar_axes_ = polar_axes_from(c.dialect_options["polar_axes"]).value_or(PolarAxes{});
   locals_.push_back(vacant_locals());
   pecks_ = {options_.peck_clearance_mm, options_.peck_clearance_mm};

@@ -289,6 +289,13 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   std::vector<EvaluatedWord> handed_;  // reused from block to block
   Words words_;                        // the NC block's words, reused likewise
   void group_one_motion(Words& w);
+  // M codes that are not the control's own go to the machine's logic
+  // (fanuc_nc.cpp): taken from the block, handed on as machine_code ops.
+  bool machine_codes(const TapeBlock& b, Words& w);
+  void hand_on_machine_codes(const TapeBlock& b);
+  std::optional<std::set<int>> machine_m_codes_;  // machine_m_codes option; none: all
+  std::vector<canon::MachineCode> passed_m_;      // the block's, reused
+
   bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);
 
