@@ -75,24 +75,35 @@ TEST(FanucMachineCodes, TheListOptionTakesWholeNumbersOnly) {
   EXPECT_TRUE(resolve_options(*d, {"machine_m_codes="}, values).has_value());
 }
 
-}  // namespace
-}  // namespace usina::gcode
-
-namespace usina::gcode {
-namespace {
-
 TEST(FanucMachineCodes, PAndQGoWithTheMachinesCode) {
-  auto r = fanuc_test::run_fanuc("M59 P2\nM97 P123 Q4\nG04 P1000\nM30\n");
+  auto r = run_fanuc("M59 P2\nM140 P123 Q4\nG04 P1000\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
   const auto codes = r->all<canon::MachineCode>();
   ASSERT_EQ(codes.size(), 2u);
   EXPECT_EQ(codes[0].code, 59);
   EXPECT_EQ(codes[0].p, 2.0);
   EXPECT_FALSE(codes[0].q.has_value());
+  EXPECT_EQ(codes[1].code, 140);
   EXPECT_EQ(codes[1].p, 123.0);
   EXPECT_EQ(codes[1].q, 4.0);
   ASSERT_EQ(r->all<canon::Dwell>().size(), 1u);
   EXPECT_NEAR(r->all<canon::Dwell>()[0].s, 1.0, 1e-12);  // G04's P stays G04's
+}
+
+// Haas's M97 P is a local subprogram call, something to run: usina does
+// not run it, and says so by name.
+TEST(FanucMachineCodes, HaasLocalSubprogramCallIsUnsupportedByName) {
+  auto r = run_fanuc("M97 P123\nM30\nN123\nM99\n");
+  EXPECT_FALSE(r->ok);
+  EXPECT_EQ(r->first_error(), Code::Unsupported);
+  EXPECT_NE(r->first_error_text().find("M97"), std::string::npos) << r->first_error_text();
+  EXPECT_TRUE(machine_codes(*r).empty());
+}
+
+TEST(FanucMachineCodes, AListedM97IsTheMachines) {
+  auto r = run_fanuc("M97 P123\nM30\n", {}, {"machine_m_codes=97"});
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(machine_codes(*r), (std::vector<int>{97}));
 }
 
 }  // namespace

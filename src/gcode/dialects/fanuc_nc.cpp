@@ -303,7 +303,7 @@ bool Engine::nc_block(const TapeBlock& b) {
     if (g.letter == 'D' && !g.vacant) d_ = g.value;
     if (g.letter == 'H' && !g.vacant) h_ = g.value;
   }
-  if (!machine_codes(b, w)) return false;
+  if (!machine_codes(b, w) || !machine_words(b, w)) return false;
   if (w.has_g(650) || w.has_g(660)) return macro_call(b, w);
   if (w.has_g(670)) {
     w.take_g(670);
@@ -348,10 +348,13 @@ bool Engine::nc_block(const TapeBlock& b) {
     if (!fine_boring(b, w)) return false;
   }
   group_one_motion(w);
+  std::optional<int> after_skip;  // G31: the group 1 mode after it
+  if (!skip_move(b, w, after_skip)) return false;
   // The machine's M codes after the block's moves, before its end.
   const bool ends = w.has_m(2) || w.has_m(30);
   if (ends) hand_on_machine_codes(b);
   if (!hand_over(b, w)) return false;
+  if (after_skip && !hand(b, {{'G', *after_skip / 10.0}})) return false;
   if (!ends) hand_on_machine_codes(b);
   if (!xf_.active() && !polar_) reset_program_point();
   if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
@@ -545,7 +548,7 @@ void Engine::group_one_motion(Words& w) {
     if (word.letter != 'G') continue;
     const int t = tenths(word.value);
     if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
-        t == 520 || t == 530 || t == 920 || t == 431)
+        t == 520 || t == 530 || t == 920 || t == 431 || t == 310)
       return;
   }
   if (axes) w.add({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
@@ -554,53 +557,6 @@ void Engine::group_one_motion(Words& w) {
 // The block's words down the interpreter's one road: its G codes in
 // tenths (one mirrored axis swaps the side of cutter compensation), M and L
 // as whole numbers, each word at the column the user wrote it at.
-namespace {
-
-// The M codes the control runs itself: program stop and end, subprogram
-// calls, spindle (M19 its orientation), tool change, coolant; any other is
-// the machine's.
-bool control_m_code(int m) {
-  return (m >= 0 && m <= 9) || m == 19 || m == 30 || m == 98 || m == 99 || m == 198;
-}
-
-}  // namespace
-
-bool Engine::machine_codes(const TapeBlock& b, Words& w) {
-  passed_m_.clear();
-  if (!w.has('M')) return true;
-  for (NcWord& word : w.list) {
-    if (word.letter != 'M' || word.taken || word.vacant) continue;
-    // Not a whole number, or no code at all: the interpreter says so.
-    if (word.value != std::floor(word.value) || word.value < 0 || word.value > 99999999) continue;
-    const int m = Words::code(word);
-    if (control_m_code(m)) continue;
-    if (machine_m_codes_ && !machine_m_codes_->contains(m)) {
-      return error(core::Code::UnknownMCode, b, word.pos,
-                   fmt::format("M{} is neither the control's nor one of the machine's M codes "
-                               "(--dialect-option machine_m_codes lists them)",
-                               m));
-    }
-    word.taken = true;
-    passed_m_.push_back({'M', m, {}, {}});
-  }
-  // P and Q go with the machine's code ("M59 P2") when no code of the
-  // control in the block takes them.
-  if (!passed_m_.empty() && !w.has('G') && !w.has_m(98) && !w.has_m(99) && !w.has_m(198)) {
-    for (NcWord& word : w.list) {
-      if ((word.letter != 'P' && word.letter != 'Q') || word.taken || word.vacant) continue;
-      (word.letter == 'P' ? passed_m_.front().p : passed_m_.front().q) = word.raw;
-      word.taken = true;
-    }
-  }
-  return true;
-}
-
-void Engine::hand_on_machine_codes(const TapeBlock& b) {
-  for (const canon::MachineCode& m : passed_m_)
-    stroke_.on(canon::Op{m, block_loc(b)});
-  passed_m_.clear();
-}
-
 bool Engine::hand_over(const TapeBlock& b, Words& w) {
   handed_.clear();
   const std::uint32_t col0 = loc_of(b, 0).col;  // a word's column is col0 + its position
