@@ -87,6 +87,8 @@ TEST(FanucMacroWords, LookAheadModesAndExactStopHaveNoGeometricEffect) {
   ASSERT_EQ(r->ends().size(), 3u);
   fanuc_test::expect_end(*r, {3, 0, 0});
   EXPECT_TRUE(r->all<canon::Dwell>().empty());
+  EXPECT_TRUE(r->all<canon::Spline>().empty());
+  EXPECT_FALSE(r->has(Code::IntegerCoordinate));  // G05.1's Q1 is no distance
 }
 
 TEST(FanucMacroWords, LookAheadModeValuesOutsideOnOffAreNamed) {

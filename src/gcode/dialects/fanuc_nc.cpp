@@ -231,6 +231,7 @@ void Engine::decimal_point(const TapeBlock& b, Words& w) {
   for (NcWord& word : w.list) {
     if (!word.integer_literal || !is_distance(word.letter)) continue;
     if (word.letter == 'K' && cycle_block) continue;  // a repeat count
+    if (word.letter == 'Q' && w.has_g(51)) continue;  // G05.1's Q1/Q0: on or off
     if (dpi_fanuc_) {
       word.value = word.raw * (inch ? 0.0001 : 0.001);
     } else if (!warned_integer_ && word.raw != 0.0) {
