@@ -31,10 +31,10 @@ std::unique_ptr<romi_test::Run> run_with_vars(const std::string& text,
 }
 
 TEST(FanucMacroWords, BareG53MovesNothing) {
-  auto r = run_fanuc("G0 X1. Y2.\nG53\n#100 = #5001\nG0 X[#100 + 1.]\nG1 F100.\nG53\nM30\n");
+  auto r = run_fanuc("G0 X1. Y2.\nG53\n#100 = #5001\nG0 X[#100 + 1.]\nG1 Y3. F100.\nG53\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
-  ASSERT_EQ(r->ends().size(), 2u);
-  fanuc_test::expect_end(*r, {2, 2, 0});
+  ASSERT_EQ(r->ends().size(), 3u);
+  fanuc_test::expect_end(*r, {2, 3, 0});
 }
 
 TEST(FanucMacroWords, G53WithAxisWordsStillMovesInMachineCoordinates) {
@@ -46,7 +46,7 @@ TEST(FanucMacroWords, G53WithAxisWordsStillMovesInMachineCoordinates) {
 }
 
 TEST(FanucMacroWords, G31SkipIsAProbeMoveAndKeepsTheGroupOneMode) {
-  auto r = run_fanuc("G0 X0 Y0 Z0\nG1 F100.\nG31 X10.\n#100 = #5061\nX20.\nG0 X[#100]\nM30\n");
+  auto r = run_fanuc("G0 X0 Y0 Z0\nG1 X1. F100.\nG31 X10.\n#100 = #5061\nX20.\nG0 X[#100]\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
   const auto probes = r->all<canon::Probe>();
   ASSERT_EQ(probes.size(), 1u);
@@ -54,16 +54,18 @@ TEST(FanucMacroWords, G31SkipIsAProbeMoveAndKeepsTheGroupOneMode) {
   // Not tripped, as LinuxCNC's stand-alone G38.2: the stop 0.254 mm short
   // is the skip position #5061.
   const auto feeds = r->all<canon::Feed>();
-  ASSERT_EQ(feeds.size(), 1u);  // X20. in G01, not a second probe
-  EXPECT_NEAR(feeds[0].to.x, 20.0, 1e-9);
-  fanuc_test::expect_end(*r, {10.0 - 0.254, 0, 0});
+  ASSERT_EQ(feeds.size(), 2u);  // X1., then X20. in G01, not a second probe
+  EXPECT_NEAR(feeds[1].to.x, 20.0, 1e-9);
+  fanuc_test::expect_end(*r, {10.0 - 0.254, 0, 0});  // G0 X#5061
 }
 
 TEST(FanucMacroWords, G31WithGroupOneCodeLeavesThatMode) {
   auto r = run_fanuc("G0 X0 Y0 Z0\nF100.\nG00 G31 X5.\nX8.\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
   EXPECT_EQ(r->all<canon::Probe>().size(), 1u);
-  EXPECT_EQ(r->all<canon::Traverse>().size(), 2u);  // X0.. and X8. in G00
+  const auto traverses = r->all<canon::Traverse>();
+  ASSERT_EQ(traverses.size(), 2u);  // X0, then X8. in G00
+  EXPECT_NEAR(traverses[1].to.x, 8.0, 1e-9);
 }
 
 TEST(FanucMacroWords, G31TakesP1ToP4) {

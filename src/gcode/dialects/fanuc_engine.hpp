@@ -296,7 +296,7 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   void hand_on_machine_codes(const TapeBlock& b);
   bool machine_words(const TapeBlock& b, Words& w);
   bool look_ahead_modes(const TapeBlock& b, Words& w);
-  bool skip_move(const TapeBlock& b, Words& w, std::optional<int>& restore);
+  bool skip_move(const TapeBlock& b, Words& w);
   std::optional<std::set<int>> machine_m_codes_;  // machine_m_codes option; none: all
   std::vector<canon::MachineCode> passed_m_;      // the block's, reused
 

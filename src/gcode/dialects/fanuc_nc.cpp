@@ -349,13 +349,11 @@ bool Engine::nc_block(const TapeBlock& b) {
     if (!fine_boring(b, w)) return false;
   }
   group_one_motion(w);
-  std::optional<int> after_skip;  // G31: the group 1 mode after it
-  if (!skip_move(b, w, after_skip)) return false;
+  if (!skip_move(b, w)) return false;
   // The machine's M codes after the block's moves, before its end.
   const bool ends = w.has_m(2) || w.has_m(30);
   if (ends) hand_on_machine_codes(b);
   if (!hand_over(b, w)) return false;
-  if (after_skip && !hand(b, {{'G', *after_skip / 10.0}})) return false;
   if (!ends) hand_on_machine_codes(b);
   if (!xf_.active() && !polar_) reset_program_point();
   if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
@@ -540,8 +538,9 @@ bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Ve
 
 // Fanuc's G80 is a group of its own: after it (and at power-on) axis words
 // move in the group 1 mode (G00 at first); LinuxCNC's G80 stops motion.
+// So do they after a G31 skip (one-shot; the interpreter's G38.2 is modal).
 void Engine::group_one_motion(Words& w) {
-  if (interp_.state().motion != 800) return;
+  if (interp_.state().motion != 800 && interp_.state().motion != 382) return;
   bool axes = false;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;

@@ -175,12 +175,13 @@ namespace usina::gcode::fanuc {
 
 // G31 skip (group 00): the move runs as the interpreter's G38.2 probe
 // (docs/fanuc.md "Words of real macros": traced to its target, the stop
-// and #5061-#5065 as LinuxCNC's stand-alone G38.2 reports them). The
-// group 1 mode stays what it was, or what the block set with it: `restore`.
-bool Engine::skip_move(const TapeBlock& b, Words& w, std::optional<int>& restore) {
+// and #5061-#5065 as LinuxCNC's stand-alone G38.2 reports them). The next
+// blocks move in the group 1 mode (group_one_motion): the one before, or
+// the G00-G03 of the G31 block.
+bool Engine::skip_move(const TapeBlock& b, Words& w) {
   if (!w.has_g(310)) return true;
   const int before = interp_.state().motion;
-  if (before > 30 && before != 800) {
+  if (before > 30 && before != 800 && before != 382) {
     return error(core::Code::NotAllowedInMode, b, 0,
                  fmt::format("G31 skip in canned cycle mode (G{}): cancel the cycle with G80 first",
                              word_number(before / 10.0)));
@@ -193,20 +194,17 @@ bool Engine::skip_move(const TapeBlock& b, Words& w, std::optional<int>& restore
     }
     p->taken = true;
   }
-  bool group_one = false;
   for (NcWord& g : w.list) {
     if (g.letter != 'G' || g.taken) continue;
     const int t = Words::code(g);
     if (t <= 30) {
       g.taken = true;  // the mode after the block (motion_ holds it)
-      group_one = true;
     } else if (t == 310) {
       g.value = 38.2;
       g.code = 382;
       w.g_bits |= Words::g_bit(382);
     }
   }
-  restore = group_one ? motion_ : before;
   return true;
 }
 
