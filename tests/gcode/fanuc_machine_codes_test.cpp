@@ -90,6 +90,17 @@ TEST(FanucMachineCodes, PAndQGoWithTheMachinesCode) {
   EXPECT_NEAR(r->all<canon::Dwell>()[0].s, 1.0, 1e-12);  // G04's P stays G04's
 }
 
+TEST(FanucMachineCodes, PGoesWithTheMachinesCodeInAMoveBlock) {
+  auto r = run_fanuc("G90 G1 X10. F100. M59 P2\nG4 P500 M60\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  const auto codes = r->all<canon::MachineCode>();
+  ASSERT_EQ(codes.size(), 2u);
+  EXPECT_EQ(codes[0].p, 2.0);
+  EXPECT_FALSE(codes[1].p.has_value());  // G04's P stays G04's
+  ASSERT_EQ(r->all<canon::Dwell>().size(), 1u);
+  EXPECT_NEAR(r->all<canon::Dwell>()[0].s, 0.5, 1e-12);
+}
+
 // Haas's M97 P is a local subprogram call, something to run: usina does
 // not run it, and says so by name.
 TEST(FanucMachineCodes, HaasLocalSubprogramCallIsUnsupportedByName) {

@@ -61,6 +61,39 @@ std::string g_name(int tenths) {
                           : fmt::format("G{:02}", tenths / 10);
 }
 
+// A G code of the block that takes P or Q (G04, G10, cycles, G05, G31,
+// G54.1 P, G65, ...): any but the plain modal codes of the usual block.
+bool g_takes_p_or_q(const Words& w) {
+  if ((w.letters & Words::letter_bit('G')) == 0) return false;
+  for (const NcWord& g : w.list) {
+    if (g.letter != 'G' || g.taken || g.vacant) continue;
+    switch (Words::code(g)) {
+    case 0:
+    case 10:
+    case 20:
+    case 30:
+    case 170:
+    case 180:
+    case 190:
+    case 200:
+    case 210:
+    case 400:
+    case 430:
+    case 440:
+    case 490:
+    case 800:
+    case 900:
+    case 910:
+    case 940:
+    case 950:
+    case 980:
+    case 990: continue;
+    default: return true;
+    }
+  }
+  return false;
+}
+
 bool has_axis_word(const Words& w) {
   for (const NcWord& word : w.list)
     if (!word.taken && !word.vacant && (Words::letter_bit(word.letter) & kAxisLetters) != 0)
@@ -96,7 +129,10 @@ bool Engine::machine_codes(const TapeBlock& b, Words& w) {
   }
   // P and Q go with the machine's code ("M59 P2") when no code of the
   // control in the block takes them.
-  if (!passed_m_.empty() && !w.has('G') && !w.has_m(98) && !w.has_m(99) && !w.has_m(198)) {
+  const int motion = interp_.state().motion;
+  const bool cycle = motion > 30 && motion != 800 && motion != 382;  // a repeat takes P, Q
+  if (!passed_m_.empty() && !cycle && !g_takes_p_or_q(w) && !w.has_m(98) && !w.has_m(99) &&
+      !w.has_m(198)) {
     for (NcWord& word : w.list) {
       if ((word.letter != 'P' && word.letter != 'Q') || word.taken || word.vacant) continue;
       (word.letter == 'P' ? passed_m_.front().p : passed_m_.front().q) = word.raw;
