@@ -97,7 +97,7 @@ struct Words {
   // A bit for each G code the block holds (shared by others) and for each
   // letter: a block is not searched for each of the dozens of codes and
   // addresses asked of it.
-  static std::uint64_t g_bit(int tenths) {
+  static constexpr std::uint64_t g_bit(int tenths) {
     return std::uint64_t{1} << ((static_cast<std::uint32_t>(tenths) * 2654435761u) >> 26);
   }
 

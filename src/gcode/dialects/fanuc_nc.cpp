@@ -352,9 +352,9 @@ bool Engine::nc_block(const TapeBlock& b) {
   if (!skip_move(b, w)) return false;
   // The machine's M codes after the block's moves, before its end.
   const bool ends = w.has_m(2) || w.has_m(30);
-  if (ends) hand_on_machine_codes(b);
+  if (ends && !passed_m_.empty()) hand_on_machine_codes(b);
   if (!hand_over(b, w)) return false;
-  if (!ends) hand_on_machine_codes(b);
+  if (!passed_m_.empty()) hand_on_machine_codes(b);
   if (!xf_.active() && !polar_) reset_program_point();
   if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
   if (back) return give_back(*back, b, call_pos);

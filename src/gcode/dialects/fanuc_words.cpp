@@ -22,6 +22,19 @@ bool control_m_code(int m) {
   return (m >= 0 && m <= 9) || m == 19 || m == 30 || m == 98 || m == 99 || m == 198;
 }
 
+constexpr int kUnsupported[] = {24,  34,  71,  311, 312, 313, 314, 401, 411, 421, 412, 422,
+                                434, 435, 531, 536, 542, 544, 682, 683, 684, 721, 722, 811};
+
+// The bits (Words::g_bit) of every code machine_words looks for: a block
+// with none of them (most blocks) costs one test.
+constexpr std::uint64_t kWordsBits = [] {
+  std::uint64_t bits =
+      Words::g_bit(51) | Words::g_bit(50) | Words::g_bit(80) | Words::g_bit(90) | Words::g_bit(530);
+  for (int t : kUnsupported)
+    bits |= Words::g_bit(t);
+  return bits;
+}();
+
 // Fanuc codes of 5-axis and mill-turn programs usina does not model: they
 // are the control's (never "unknown"), and running on without them would
 // draw a wrong part.
@@ -149,23 +162,28 @@ void Engine::hand_on_machine_codes(const TapeBlock& b) {
 }
 
 // Before the block's other codes: the codes usina cannot run, the modes
-// with no geometric effect, a bare G53.
+// with no geometric effect, a bare G53. One pass over the block's G words;
+// G00-G03 (most blocks) go by at once.
 bool Engine::machine_words(const TapeBlock& b, Words& w) {
-  if (!w.has('G')) return true;
+  if ((w.g_bits & kWordsBits) == 0) return true;
+  bool modes = false, g53 = false;
   for (NcWord& g : w.list) {
     if (g.letter != 'G' || g.taken || g.vacant) continue;
     const int t = Words::code(g);
+    if (t <= 30 && t % 10 == 0) continue;
     if (const char* what = unsupported_g(t)) {
       return error(
           core::Code::Unsupported, b, g.pos,
           fmt::format("{} ({}) is not supported by usina's fanuc dialect", g_name(t), what));
     }
+    modes = modes || t == 51 || t == 50 || t == 80;
+    g53 = g53 || t == 530;
+    if (t == 90) g.taken = true;  // G09 exact stop: a one-shot of the servo, no geometric effect
   }
-  if (!look_ahead_modes(b, w)) return false;
-  w.take_g(90);  // G09 exact stop: a one-shot of the servo, no geometric effect
+  if (modes && !look_ahead_modes(b, w)) return false;
   // A bare G53 moves nothing; on the control it stops the look-ahead, so
   // that system variables read after it are current.
-  if (w.has_g(530) && !has_axis_word(w)) w.take_g(530);
+  if (g53 && !has_axis_word(w)) w.take_g(530);
   return true;
 }
 
