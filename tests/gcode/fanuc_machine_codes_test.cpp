@@ -73,6 +73,7 @@ TEST(FanucMachineCodes, TheListOptionTakesWholeNumbersOnly) {
   EXPECT_TRUE(resolve_options(*d, {"machine_m_codes=29,,11"}, values).has_value());
   EXPECT_TRUE(resolve_options(*d, {"machine_m_codes=M29"}, values).has_value());
   EXPECT_TRUE(resolve_options(*d, {"machine_m_codes="}, values).has_value());
+  EXPECT_TRUE(resolve_options(*d, {"machine_m_codes=29,123456789"}, values).has_value());
 }
 
 TEST(FanucMachineCodes, PAndQGoWithTheMachinesCode) {
