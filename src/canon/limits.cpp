@@ -137,6 +137,8 @@ struct Check {
   void operator()(const Comment&) const {}
 
   void operator()(const ProgramEnd&) const {}
+
+  void operator()(const MachineCode&) const {}
 };
 
 }  // namespace

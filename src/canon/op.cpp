@@ -29,6 +29,8 @@ struct NameOf {
   const char* operator()(const Comment&) const { return "comment"; }
 
   const char* operator()(const ProgramEnd&) const { return "end"; }
+
+  const char* operator()(const MachineCode&) const { return "machine_code"; }
 };
 
 }  // namespace

@@ -119,8 +119,17 @@ struct Comment {
 
 struct ProgramEnd {};
 
+// A code the control hands to the machine's logic as it came (a Fanuc M
+// code that is not the control's own: clamps, doors, pallets, probes):
+// traced, drawn nowhere, written back by a post.
+struct MachineCode {
+  char letter = 'M';
+  int code = 0;
+  std::optional<double> p, q;  // its P and Q words ("M59 P2"), when it has them
+};
+
 using OpKind = std::variant<Traverse, Feed, Arc, Spline, Probe, Dwell, ToolChange, Spindle, Coolant,
-                            Hole, Pocket, Comment, ProgramEnd>;
+                            Hole, Pocket, Comment, ProgramEnd, MachineCode>;
 
 // Why a move was made: the program's own contour, or the expansion of a
 // canned cycle, pattern or pocket (a part drawing leaves those out and draws

@@ -220,6 +220,18 @@ struct JsonFields {
   }
 
   void operator()(const ProgramEnd&) const {}
+
+  void operator()(const MachineCode& m) const {
+    fmt::format_to(out, FMT_COMPILE(",\"code\":\"{}{}\""), m.letter, m.code);
+    if (m.p) {
+      fmt::format_to(out, FMT_COMPILE(",\"p\":"));
+      num(out, *m.p);
+    }
+    if (m.q) {
+      fmt::format_to(out, FMT_COMPILE(",\"q\":"));
+      num(out, *m.q);
+    }
+  }
 };
 
 void write_json(Out out, const Op& op, std::string_view file = {}) {
@@ -292,6 +304,12 @@ struct TextFields {
   }
 
   void operator()(const ProgramEnd&) const {}
+
+  void operator()(const MachineCode& m) const {
+    fmt::format_to(out, FMT_COMPILE(" {}{}"), m.letter, m.code);
+    if (m.p) fmt::format_to(out, FMT_COMPILE(" P{:g}"), *m.p);
+    if (m.q) fmt::format_to(out, FMT_COMPILE(" Q{:g}"), *m.q);
+  }
 };
 
 }  // namespace

@@ -45,6 +45,26 @@ std::string list_options(const Dialect& d) {
 
 }  // namespace
 
+namespace {
+
+// "29,11,262": whole numbers of up to 8 digits (a code), comma-separated.
+bool whole_number_list(const std::string& value) {
+  std::size_t digits = 0;
+  for (char c : value) {
+    if (c == ',') {
+      if (digits == 0) return false;
+      digits = 0;
+    } else if (c >= '0' && c <= '9') {
+      if (++digits > 8) return false;
+    } else {
+      return false;
+    }
+  }
+  return digits > 0;
+}
+
+}  // namespace
+
 std::optional<std::string> resolve_options(const Dialect& d, const std::vector<std::string>& given,
                                            OptionValues& out) {
   out.clear();
@@ -62,7 +82,8 @@ std::optional<std::string> resolve_options(const Dialect& d, const std::vector<s
     if (it == d.options.end()) {
       return fmt::format("unknown dialect option '{}'; {}", name, list_options(d));
     }
-    if (std::find(it->values.begin(), it->values.end(), value) == it->values.end()) {
+    const bool list = it->values.back() == "<list>" && whole_number_list(value);
+    if (!list && std::find(it->values.begin(), it->values.end(), value) == it->values.end()) {
       return fmt::format("dialect option {} takes {}, not '{}'", name, fmt::join(it->values, "|"),
                          value);
     }

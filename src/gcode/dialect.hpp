@@ -45,7 +45,9 @@ struct CodeEntry {
 // An open choice of the dialect, set with --dialect-option name=value.
 struct DialectOption {
   std::string_view name;
-  std::vector<std::string_view> values;  // the first is the default
+  // The first is the default. A last value "<list>" also takes a list of
+  // whole numbers ("29,11,262").
+  std::vector<std::string_view> values;
   std::string_view help;
 };
 

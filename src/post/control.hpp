@@ -21,6 +21,7 @@ struct Control {
   bool full_circle_halves = false;   // a full circle as two half circles (end = start is ambiguous)
   bool rotary_axes = true;           // A B C words
   bool probe = true;                 // G38.2
+  bool machine_codes = true;         // the machine's M codes as they came (Grbl: error:20)
   bool inverse_time = true;          // G93
   bool per_revolution = true;        // G95
   bool semicolon_comments = false;   // ";text" instead of "(text)"

@@ -20,6 +20,7 @@ void header(BlockOut& out, const PostOptions& o) {
 Control grbl_control() {
   Control c;
   c.name = "grbl";
+  c.machine_codes = false;  // Grbl runs only its own M codes
   c.decimals = 3;
   c.canned_cycles = false;
   c.per_revolution = false;  // Grbl 1.1 has G93 and G94, not G95

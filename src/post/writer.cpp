@@ -44,6 +44,14 @@ std::string Writer::code(char letter, int n) const {
                                   : fmt::format("{}{}", letter, n);
 }
 
+// A P or Q of the machine's code as it came: a whole number (a relay, a
+// pallet) without the point a Fanuc distance gets.
+std::string Writer::machine_word(double v) const {
+  if (v == std::floor(v) && std::fabs(v) < 1e15)
+    return fmt::format("{}", static_cast<long long>(v));
+  return out_.number(v);
+}
+
 void Writer::unsupported(const canon::Op& op, const std::string& what) {
   diags_.report({core::Code::Unsupported, core::Severity::Error, op.src,
                  fmt::format("the {} post cannot write {}", control_.name, what)});
@@ -110,6 +118,13 @@ void Writer::on(const canon::Op& op) {
           out_.block(out_.comment(k.text));
         } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
           end();
+        } else if constexpr (std::is_same_v<T, canon::MachineCode>) {
+          // The machine's own, as it came.
+          std::string w = code(k.letter, k.code);
+          if (!control_.machine_codes) return unsupported(op, "the machine's " + w);
+          if (k.p) w += " P" + machine_word(*k.p);
+          if (k.q) w += " Q" + machine_word(*k.q);
+          out_.block(w);
         }
         // A Pocket is a drawing's feature; its moves are in the stream.
       },

@@ -73,6 +73,7 @@ class Writer final : public canon::Sink {
   std::string feed_word(std::optional<double> f, const canon::Op& op);
   bool moves_rotary(const canon::Abc& abc) const;
   std::string code(char letter, int n) const;  // "G1" or "G01"
+  std::string machine_word(double v) const;
   void cancel_cycle();
   void unsupported(const canon::Op& op, const std::string& what);
   static void append(std::string& words, const std::string& w);

@@ -44,6 +44,11 @@ const Dialect& fanuc_dialect() {
        {"boring_shift",
         {"+x", "-x", "+y", "-y"},
         "the G76/G87 shift at the hole bottom, in the machine's axes (parameter 5101 RD1 RD2)"},
+       {"machine_m_codes",
+        {"all", "<list>"},
+        "the M codes of the machine's logic, which the control hands on (a machine_code op): "
+        "all = every M code that is not the control's own; a list (29,11,262) = those, any "
+        "other is E_UNKNOWN_M_CODE"},
        {"polar_axes",
         {"XC", "XA", "XB", "YA", "YB", "YC", "ZA", "ZB", "ZC"},
         "G12.1's linear and rotary axes (parameters 5460/5461): the rotary axis's words are "

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -75,6 +76,14 @@ Engine::Engine(RunContext& c)
   scale_z_by_p_ = c.dialect_options["scaling_axes"] == "xyz";
   stroke_.outside_forbidden = c.dialect_options["stroke_area"] == "outside";
   g76_.shift = boring_shift_bits(c.dialect_options["boring_shift"]);
+  if (const std::string& list = c.dialect_options["machine_m_codes"]; list != "all") {
+    machine_m_codes_.emplace();
+    for (std::size_t at = 0; at < list.size();) {
+      const std::size_t comma = std::min(list.find(',', at), list.size());
+      if (comma - at < 9) machine_m_codes_->insert(std::stoi(list.substr(at, comma - at)));
+      at = comma + 1;
+    }
+  }
   polar_axes_ = polar_axes_from(c.dialect_options["polar_axes"]).value_or(PolarAxes{});
   locals_.push_back(vacant_locals());
   pecks_ = {options_.peck_clearance_mm, options_.peck_clearance_mm};
@@ -93,11 +102,43 @@ std::array<Value, 34> vacant_locals() {
 void Engine::set_parameter(int index, double value) {
   if ((index >= 100 && index <= 199) || (index >= 500 && index <= 999)) {
     common_[index] = Value{value};
+  } else if (index >= 1000 && index <= 1015) {
+    input_signal(index, value);
+  } else if (index == 1032) {
+    input_signals(value);
   } else if (index >= 5201 && index <= 5209) {
     external_[static_cast<std::size_t>(index - 5201)] = value;  // EXT, applied at the start
   } else if (index >= 1 && index <= kMaxParameter) {
     interp_.set_parameter(index, value);
   }
+}
+
+// One interface input signal from a var file: 0 or 1.
+void Engine::input_signal(int index, double value) {
+  const auto bit = static_cast<std::uint16_t>(1u << (index - 1000));
+  if (value != 0 && value != 1) {
+    diags_.report({core::Code::VarFileLineSkipped,
+                   core::Severity::Warning,
+                   {},
+                   fmt::format("--var-file #{} = {}: an input signal is 0 or 1; left 0", index,
+                               word_number(value))});
+    return;
+  }
+  inputs_ = static_cast<std::uint16_t>(value == 1 ? inputs_ | bit : inputs_ & ~bit);
+}
+
+// #1032 from a var file: the 16 signals as one whole number.
+void Engine::input_signals(double value) {
+  if (!(value >= 0 && value <= 65535 && value == std::floor(value))) {
+    diags_.report({core::Code::VarFileLineSkipped,
+                   core::Severity::Warning,
+                   {},
+                   fmt::format("--var-file #1032 = {}: the 16 input signals make a whole number "
+                               "from 0 to 65535; left as they were",
+                               word_number(value))});
+    return;
+  }
+  inputs_ = static_cast<std::uint16_t>(value);
 }
 
 // #500-#999 as they stand; a vacant one has no line (a var file holds

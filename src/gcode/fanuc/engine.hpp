@@ -97,7 +97,7 @@ struct Words {
   // A bit for each G code the block holds (shared by others) and for each
   // letter: a block is not searched for each of the dozens of codes and
   // addresses asked of it.
-  static std::uint64_t g_bit(int tenths) {
+  static constexpr std::uint64_t g_bit(int tenths) {
     return std::uint64_t{1} << ((static_cast<std::uint32_t>(tenths) * 2654435761u) >> 26);
   }
 
@@ -289,6 +289,17 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   std::vector<EvaluatedWord> handed_;  // reused from block to block
   Words words_;                        // the NC block's words, reused likewise
   void group_one_motion(Words& w);
+  // Words of real macros (fanuc_words.cpp). M codes that are not the
+  // control's own go to the machine's logic: taken from the block, handed
+  // on as machine_code ops.
+  bool machine_codes(const TapeBlock& b, Words& w);
+  void hand_on_machine_codes(const TapeBlock& b);
+  bool machine_words(const TapeBlock& b, Words& w);
+  bool look_ahead_modes(const TapeBlock& b, Words& w);
+  bool skip_move(const TapeBlock& b, Words& w);
+  std::optional<std::set<int>> machine_m_codes_;  // machine_m_codes option; none: all
+  std::vector<canon::MachineCode> passed_m_;      // the block's, reused
+
   bool fine_boring(const TapeBlock& b, Words& w);
   std::array<Value, 34> arguments(Words& w);
 
@@ -406,6 +417,9 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   std::vector<Frame> frames_;
   std::vector<Loop> main_loops_;
   std::vector<std::array<Value, 34>> locals_;
+  std::uint16_t inputs_ = 0;  // #1000-#1015 (#1032): interface input signals, from --var-file
+  void input_signal(int index, double value);
+  void input_signals(double value);
   std::map<long, Value> common_;  // #100-#199, #500-#999, writable system variables
   std::optional<ModalCall> modal_call_;
 

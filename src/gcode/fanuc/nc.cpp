@@ -231,6 +231,7 @@ void Engine::decimal_point(const TapeBlock& b, Words& w) {
   for (NcWord& word : w.list) {
     if (!word.integer_literal || !is_distance(word.letter)) continue;
     if (word.letter == 'K' && cycle_block) continue;  // a repeat count
+    if (word.letter == 'Q' && w.has_g(51)) continue;  // G05.1's Q1/Q0: on or off
     if (dpi_fanuc_) {
       word.value = word.raw * (inch ? 0.0001 : 0.001);
     } else if (!warned_integer_ && word.raw != 0.0) {
@@ -303,6 +304,7 @@ bool Engine::nc_block(const TapeBlock& b) {
     if (g.letter == 'D' && !g.vacant) d_ = g.value;
     if (g.letter == 'H' && !g.vacant) h_ = g.value;
   }
+  if (!machine_codes(b, w) || !machine_words(b, w)) return false;
   if (w.has_g(650) || w.has_g(660)) return macro_call(b, w);
   if (w.has_g(670)) {
     w.take_g(670);
@@ -347,7 +349,12 @@ bool Engine::nc_block(const TapeBlock& b) {
     if (!fine_boring(b, w)) return false;
   }
   group_one_motion(w);
+  if (!skip_move(b, w)) return false;
+  // The machine's M codes after the block's moves, before its end.
+  const bool ends = w.has_m(2) || w.has_m(30);
+  if (ends && !passed_m_.empty()) hand_on_machine_codes(b);
   if (!hand_over(b, w)) return false;
+  if (!passed_m_.empty()) hand_on_machine_codes(b);
   if (!xf_.active() && !polar_) reset_program_point();
   if (sub) return call(*sub, times, false, nullptr, b, call_pos, false);
   if (back) return give_back(*back, b, call_pos);
@@ -531,8 +538,9 @@ bool Engine::fine_boring_holes(const TapeBlock& b, int code, bool to_r, core::Ve
 
 // Fanuc's G80 is a group of its own: after it (and at power-on) axis words
 // move in the group 1 mode (G00 at first); LinuxCNC's G80 stops motion.
+// So do they after a G31 skip (one-shot; the interpreter's G38.2 is modal).
 void Engine::group_one_motion(Words& w) {
-  if (interp_.state().motion != 800) return;
+  if (interp_.state().motion != 800 && interp_.state().motion != 382) return;
   bool axes = false;
   for (const NcWord& word : w.list) {
     if (word.taken || word.vacant) continue;
@@ -540,7 +548,7 @@ void Engine::group_one_motion(Words& w) {
     if (word.letter != 'G') continue;
     const int t = tenths(word.value);
     if (t <= 30 || is_cycle(t) || t == 800 || t == 40 || t == 100 || t == 280 || t == 300 ||
-        t == 520 || t == 530 || t == 920 || t == 431)
+        t == 520 || t == 530 || t == 920 || t == 431 || t == 310)
       return;
   }
   if (axes) w.add({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});

@@ -14,8 +14,17 @@ bool is_common(long i) {
   return (i >= 100 && i <= 199) || (i >= 500 && i <= 999);
 }
 
+// #3003 (single block / FIN wait suppression) and #3004 (feed hold,
+// override, exact stop suppression) hold bits of the servo with no
+// geometric effect: stored, read back.
 bool is_writable_system(long i) {
-  return i == 3001 || i == 3002 || i == 3901 || i == 3902;
+  return i == 3001 || i == 3002 || i == 3003 || i == 3004 || i == 3901 || i == 3902;
+}
+
+// #1000-#1015 interface input signals UI000-UI015, #1032 all 16 as one
+// number: the machine sets them, a program reads them.
+bool is_input_signal(long i) {
+  return (i >= 1000 && i <= 1015) || i == 1032;
 }
 
 double g_number(int tenths) {
@@ -31,6 +40,9 @@ std::optional<Value> Engine::read(long index, MacroError& err) {
     auto it = common_.find(index);
     return it == common_.end() ? Value{0.0, !is_writable_system(index)} : it->second;
   }
+  if (index >= 1000 && index <= 1015)
+    return Value{static_cast<double>((inputs_ >> (index - 1000)) & 1u)};
+  if (index == 1032) return Value{static_cast<double>(inputs_)};
   if (auto v = system_variable(index)) return Value{*v};
   err.code = core::Code::ParameterOutOfRange;
   err.message = index >= 1000
@@ -110,9 +122,23 @@ bool Engine::write(long index, Value v, const TapeBlock& b, std::size_t pos) {
     locals_.back()[static_cast<std::size_t>(index)] = v;
     return true;
   }
+  if (index == 3003 || index == 3004) {
+    const double most = index == 3003 ? 3 : 7;
+    if (!v.vacant && !(v.v >= 0 && v.v <= most && v.v == std::floor(v.v))) {
+      return error(core::Code::ValueOutOfRange, b, pos,
+                   fmt::format("#{} = {}: its bits make a whole number from 0 to {}", index,
+                               word_number(v.v), most));
+    }
+  }
   if (is_common(index) || is_writable_system(index)) {
     common_[index] = v;
     return true;
+  }
+  if (is_input_signal(index)) {
+    return error(core::Code::ReadOnlyParameter, b, pos,
+                 fmt::format("#{} is an interface input signal: the machine sets it, a program "
+                             "cannot write it (Fanuc alarm 116); set it with --var-file",
+                             index));
   }
   if (index == 3000) {
     const long n = std::lround(v.v);

@@ -114,6 +114,8 @@ class FiniteSink final : public canon::Sink {
   void check(const canon::Comment&) {}
 
   void check(const canon::ProgramEnd&) {}
+
+  void check(const canon::MachineCode&) {}
 };
 
 // What one dialect's programs are made of: block templates whose
