@@ -29,18 +29,7 @@ Result usina_within(const std::string& args, const std::string& input = "", bool
   const std::string run = "timeout -k 5 " + std::to_string(kTimeLimit) + " " + quote(USINA_BINARY) +
                           " " + args + " 2>" + quote(err);
   const std::string cmd = piped ? "cat " + quote(in) + " | " + run : run + " <" + quote(in);
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  EXPECT_NE(p, nullptr) << cmd;
-  if (p == nullptr) return r;
-  char buf[4096];
-  std::size_t n = 0;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0)
-    r.out.append(buf, n);
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-  r.err = usina::test::slurp(err);
-  return r;
+  return usina::test::shell(cmd, err);
 }
 
 const char* const kVerbs[] = {

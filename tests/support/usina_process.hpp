@@ -36,13 +36,8 @@ struct Run {
   std::string err;
 };
 
-// Runs `usina <args>` (args already quoted for /bin/sh) with `input` on
-// standard input; standard output and standard error are kept apart.
-inline Run usina(const std::string& args, const std::string& input = "") {
-  const TempDir io;
-  const std::string in = io.write("stdin", input);
-  const std::string err = io.path("stderr");
-  const std::string cmd = quote(USINA_BINARY) + " " + args + " <" + quote(in) + " 2>" + quote(err);
+// The /bin/sh command `cmd`, whose standard error goes to the file `err`.
+inline Run shell(const std::string& cmd, const std::string& err) {
   Run r;
   FILE* p = popen(cmd.c_str(), "r");
   EXPECT_NE(p, nullptr) << cmd;
@@ -55,6 +50,15 @@ inline Run usina(const std::string& args, const std::string& input = "") {
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
   r.err = slurp(err);
   return r;
+}
+
+// Runs `usina <args>` (args already quoted for /bin/sh) with `input` on
+// standard input; standard output and standard error are kept apart.
+inline Run usina(const std::string& args, const std::string& input = "") {
+  const TempDir io;
+  const std::string in = io.write("stdin", input);
+  const std::string err = io.path("stderr");
+  return shell(quote(USINA_BINARY) + " " + args + " <" + quote(in) + " 2>" + quote(err), err);
 }
 
 // The motion ops of a jsonl trace, moves that go nowhere dropped.

@@ -1,13 +1,13 @@
 // The RS274NGC interpreter, program text in, canon ops out. Offsets: G92, G52, work offsets, G53,
 // G28/G30: each test runs a small program and checks the ops, the parameters or the one diagnostic
-// (helpers: interp_support.hpp).
+// (helpers: support/interp_run.hpp).
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "interp_support.hpp"
+#include "support/interp_run.hpp"
 
 namespace usina::gcode::interp_test {
 namespace {

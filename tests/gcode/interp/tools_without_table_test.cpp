@@ -13,34 +13,13 @@
 #include "core/source.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/tool_table.hpp"
+#include "support/interp_run.hpp"
 
 namespace usina::gcode {
 namespace {
 
-struct Outcome {
-  core::SourceManager sources;
-  core::DiagnosticList diags;
-  canon::Toolpath path;
-  std::unique_ptr<Interpreter> interp;
-  bool ok = false;
-
-  double param(int index) const { return interp->parameters().get(index); }
-};
-
-std::unique_ptr<Outcome> run(const std::string& text, InterpOptions options = {}) {
-  auto out = std::make_unique<Outcome>();
-  const std::uint32_t id = out->sources.add(core::SourceFile::from_string("t.ngc", text));
-  out->interp =
-      std::make_unique<Interpreter>(out->sources, std::move(options), out->path, out->diags);
-  out->ok = out->interp->run(id);
-  return out;
-}
-
-bool has_code(const Outcome& o, core::Code code) {
-  for (const core::Diagnostic& d : o.diags.all())
-    if (d.code == code) return true;
-  return false;
-}
+using interp_test::run;
+using interp_test::Run;
 
 InterpOptions table_of_tool_one() {
   InterpOptions o;
@@ -56,7 +35,7 @@ TEST(ToolsWithoutTable, AToolChangeAndItsLengthAreNoError) {
   // probe_basic's duplicate_tool_test: T8 M6 then G43 (the tool in the spindle).
   const auto r = run("T8 M6\nG43\nG0 X1 Z5\nG43 H1\nG41 D3 G1 X10 F100\nG40 G1 X20\nM2\n");
   EXPECT_TRUE(r->ok);
-  EXPECT_FALSE(has_code(*r, core::Code::UnknownTool));
+  EXPECT_FALSE(r->has(core::Code::UnknownTool));
 }
 
 TEST(ToolsWithoutTable, AnUnknownToolHasNoLengthNoDiameter) {
@@ -76,16 +55,16 @@ TEST(ToolsWithoutTable, AToolTheProgramDefinesIsUsed) {
   ASSERT_TRUE(r->ok);
   EXPECT_NEAR(r->param(1), -10.0, 1e-9);
   EXPECT_NEAR(r->param(2), 0.0, 1e-9);
-  EXPECT_FALSE(has_code(*r, core::Code::UnknownTool));
+  EXPECT_FALSE(r->has(core::Code::UnknownTool));
 }
 
 TEST(ToolsWithoutTable, AToolNotInAGivenTableIsAnError) {
   const auto length = run("G43 H8\nM2\n", table_of_tool_one());
   EXPECT_FALSE(length->ok);
-  EXPECT_TRUE(has_code(*length, core::Code::UnknownTool));
+  EXPECT_TRUE(length->has(core::Code::UnknownTool));
   const auto comp = run("G41 D8\nM2\n", table_of_tool_one());
   EXPECT_FALSE(comp->ok);
-  EXPECT_TRUE(has_code(*comp, core::Code::UnknownTool));
+  EXPECT_TRUE(comp->has(core::Code::UnknownTool));
   EXPECT_TRUE(run("G43 H1\nG41 D1\nG40\nM2\n", table_of_tool_one())->ok);
 }
 
@@ -99,7 +78,7 @@ TEST(ToolsWithoutTable, AnEmptyTableGivenListsNoTool) {
   EXPECT_TRUE(table->lists_tools());
   InterpOptions o;
   o.tools = *table;
-  EXPECT_TRUE(has_code(*run("G43 H1\nM2\n", o), core::Code::UnknownTool));
+  EXPECT_TRUE(run("G43 H1\nM2\n", o)->has(core::Code::UnknownTool));
 }
 
 TEST(ToolsWithoutTable, G10DoesNotMakeATable) {

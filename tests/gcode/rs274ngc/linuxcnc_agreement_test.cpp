@@ -15,48 +15,16 @@
 #include "core/units.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/tool_table.hpp"
+#include "support/interp_run.hpp"
 
 namespace usina::gcode {
 namespace {
 
 using core::Vec3;
 
-constexpr double kTol = 1e-9;
+using namespace interp_test;  // NOLINT(google-build-using-namespace): the shared run
+
 constexpr double kPi = 3.14159265358979323846;
-
-struct Run {
-  core::SourceManager sources;
-  core::DiagnosticList diags;
-  canon::Toolpath path;
-  std::unique_ptr<Interpreter> interp;
-  bool ok = false;
-
-  // End points of every motion op, in order.
-  std::vector<Vec3> ends() const {
-    std::vector<Vec3> out;
-    for (const canon::Op& op : path.ops()) {
-      if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) out.push_back(t->to);
-      if (const auto* f = std::get_if<canon::Feed>(&op.kind)) out.push_back(f->to);
-      if (const auto* a = std::get_if<canon::Arc>(&op.kind)) out.push_back(a->to);
-      if (const auto* p = std::get_if<canon::Probe>(&op.kind)) out.push_back(p->to);
-    }
-    return out;
-  }
-
-  double param(int index) const { return interp->parameters().get(index); }
-
-  std::string first_error() const {
-    return diags.all().empty() ? std::string("(no diagnostic)") : diags.all()[0].message;
-  }
-};
-
-std::unique_ptr<Run> run(const std::string& text, InterpOptions opts = {}) {
-  auto r = std::make_unique<Run>();
-  const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.ngc", text));
-  r->interp = std::make_unique<Interpreter>(r->sources, std::move(opts), r->path, r->diags);
-  r->ok = r->interp->run(id);
-  return r;
-}
 
 // saicanon.cc STRAIGHT_PROBE backs the probe off 0.01 in under G20 and
 // 0.254 mm under G21: the same distance, not 0.01 of the program's unit.

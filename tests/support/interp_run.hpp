@@ -1,4 +1,4 @@
-// What the interpreter tests share (tests/gcode/interp/*_test.cpp): a run of
+// What the interpreter tests share (tests/gcode/interp/, rs274ngc/): a run of
 // the RS274NGC interpreter over a small program, with the ops, the
 // parameters and the diagnostics it wrote, and checks on them.
 #pragma once
@@ -96,6 +96,18 @@ struct Run {
   }
 
   double param(int index) const { return interp->parameters().get(index); }
+
+  bool has(core::Code code) const {
+    for (const core::Diagnostic& d : diags.all()) {
+      if (d.code == code) return true;
+    }
+    return false;
+  }
+
+  // The first diagnostic's message, for a failed assertion's text.
+  std::string first_error() const {
+    return diags.all().empty() ? std::string("(no diagnostic)") : diags.all()[0].message;
+  }
 };
 
 inline std::unique_ptr<Run> run(const std::string& text, InterpOptions opts = {},
