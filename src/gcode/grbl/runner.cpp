@@ -17,6 +17,9 @@
 namespace usina::gcode::grbl {
 namespace {
 
+// Grbl powers up in G0, and a G54-G59 word re-reads its system's offsets.
+constexpr DialectRules kGrbl{.start_motion = 0, .reselect_reloads_work_offsets = true};
+
 // Holds the ops of the line being run until its checks passed.
 class LineOps final : public canon::Sink {
  public:
@@ -49,7 +52,7 @@ class Pass {
         file_(file),
         stop_(c.dialect_options.at("after_error") == "stop"),
         reader_(d, c.dialect_options, file),
-        interp_(c.sources, c.options, ops_, interp_diags_),
+        interp_(c.sources, c.options, ops_, interp_diags_, nullptr, kGrbl),
         check_(c.options.start) {}
 
   Interpreter& interpreter() { return interp_; }
@@ -155,7 +158,6 @@ void Pass::report_line() {
 bool Runner::run(std::uint32_t file) {
   core::SourceFile* source = c_.sources.get(file);
   if (source == nullptr) return false;
-  c_.options.start_motion = 0;  // Grbl powers up in G0
   Pass pass(c_, dialect_, file);
   for (const auto& [index, value] : params_)
     pass.interpreter().set_parameter(index, value);

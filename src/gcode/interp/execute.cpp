@@ -160,7 +160,7 @@ bool Interpreter::modal_settings(BlockWords& w) {
   if (w.g[kGroupCoordSystem] != -1) {
     const GCode g = w.g[kGroupCoordSystem];
     const int n = g <= 590 ? g / 10 - 53 : 6 + g - 590;
-    const bool again = n == s.coord_system && !options_.reselect_reloads_work_offsets;
+    const bool again = n == s.coord_system && !rules_.reselect_reloads_work_offsets;
     if (!again && !select_coord_system(n)) return false;
   }
   if (w.g[kGroupPathControl] != -1) s.path_mode = w.g[kGroupPathControl];

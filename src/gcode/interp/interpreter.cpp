@@ -12,9 +12,10 @@
 namespace usina::gcode {
 
 Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
-                         core::DiagnosticSink& diags, CycleHooks* cycle_hooks)
+                         core::DiagnosticSink& diags, CycleHooks* cycle_hooks, DialectRules rules)
     : sources_(sources),
       options_(std::move(options)),
+      rules_(rules),
       cycle_hooks_(cycle_hooks),
       sink_(sink),
       diags_(diags),
@@ -23,7 +24,7 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
   // Programs start in mm whatever the machine's units, as LinuxCNC's
   // stand-alone interpreter does (the conformance traces depend on it).
   state_.units = core::LengthUnit::Mm;
-  state_.motion = options_.start_motion;
+  state_.motion = rules_.start_motion;
   set_xyz(state_.pos, options_.start);
 }
 

@@ -44,6 +44,11 @@ struct InterpOptions {
   bool ignore_cutter_comp = false;
   ToolTable tools;
   core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
+};
+
+// Where a control that runs on this interpreter differs from it: set by the
+// dialect's runner (rs274ngc, grbl, fanuc), never by the user's options.
+struct DialectRules {
   // The motion mode at the start, in tenths: LinuxCNC's G80; a controller
   // that powers up in another (Grbl: G0) sets it.
   GCode start_motion = 800;
@@ -60,8 +65,10 @@ class Interpreter final : private ParameterSource {
  public:
   // `cycle_hooks`: a dialect's own cycle state (cycle_hooks.hpp: the peck
   // distances a program may change, the initial level); null for LinuxCNC's.
+  // `rules`: where the dialect's control differs (DialectRules).
   Interpreter(core::SourceManager& sources, InterpOptions options, canon::Sink& sink,
-              core::DiagnosticSink& diags, CycleHooks* cycle_hooks = nullptr);
+              core::DiagnosticSink& diags, CycleHooks* cycle_hooks = nullptr,
+              DialectRules rules = {});
   ~Interpreter() override;
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
@@ -244,6 +251,7 @@ class Interpreter final : private ParameterSource {
 
   core::SourceManager& sources_;
   InterpOptions options_;
+  DialectRules rules_;
   CycleHooks* cycle_hooks_;
   canon::Sink& sink_;
   core::DiagnosticSink& diags_;

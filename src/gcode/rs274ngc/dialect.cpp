@@ -8,15 +8,12 @@ namespace usina::gcode {
 namespace {
 
 // What LinuxCNC does where the interpreter serves other controls otherwise.
-InterpOptions linuxcnc(InterpOptions o) {
-  o.reselect_reloads_work_offsets = false;
-  return o;
-}
+constexpr DialectRules kLinuxcnc{.start_motion = 800, .reselect_reloads_work_offsets = false};
 
 class Rs274Runner final : public ProgramRunner {
  public:
   explicit Rs274Runner(RunContext& c)
-      : interp_(c.sources, linuxcnc(std::move(c.options)), c.sink, c.diags) {}
+      : interp_(c.sources, std::move(c.options), c.sink, c.diags, nullptr, kLinuxcnc) {}
 
   void set_parameter(int index, double value) override {
     interp_.set_parameter(index, value);

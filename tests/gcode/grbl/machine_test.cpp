@@ -24,15 +24,15 @@ void expect_at(const core::Vec3& got, const core::Vec3& want) {
 
 const std::string kSoftLimits = "$22=1\n$20=1\n";
 
-TEST(InterpStartMotion, IsAnOption) {
-  // A general start option: G80 by default, anything a controller powers up in.
+TEST(InterpStartMotion, IsADialectRule) {
+  // A dialect's rule (DialectRules): G80 by default, anything a controller powers up in.
   for (const auto& [mode, kind] : {std::pair<GCode, const char*>{0, "traverse"}, {10, "feed"}}) {
     core::SourceManager sources;
     core::DiagnosticList diags;
     canon::Toolpath path;
-    InterpOptions o;
-    o.start_motion = mode;
-    Interpreter interp(sources, o, path, diags);
+    DialectRules rules;
+    rules.start_motion = mode;
+    Interpreter interp(sources, InterpOptions{}, path, diags, nullptr, rules);
     EXPECT_TRUE(interp.run(sources.add(core::SourceFile::from_string("t.ngc", "F100 X5\nM2\n"))));
     ASSERT_FALSE(path.ops().empty());
     EXPECT_EQ(canon::op_name(path.ops().front().kind), std::string(kind));

@@ -15,6 +15,7 @@
 #include "core/units.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/tool_table.hpp"
+#include "support/dialect_run.hpp"
 #include "support/interp_run.hpp"
 
 namespace usina::gcode {
@@ -75,10 +76,9 @@ TEST(LinuxcncAgreement, LogarithmOfTheSineOfAHalfTurnIsAnError) {
 // value written to its parameters takes effect only when the system is
 // selected again after another one.
 TEST(LinuxcncAgreement, SelectingTheActiveSystemAgainKeepsItsOffsets) {
-  InterpOptions linuxcnc;
-  linuxcnc.reselect_reloads_work_offsets = false;  // as the rs274ngc dialect runs it
-  auto r = run("G21\n#5223 = 10\nG54\nG0 Z1\nG55\nG54\nG0 Z2\nM2\n", linuxcnc);
-  ASSERT_TRUE(r->ok) << r->first_error();
+  // The rs274ngc dialect's rule (DialectRules), so run by the dialect.
+  auto r = dialect_test::run_in("rs274ngc", "G21\n#5223 = 10\nG54\nG0 Z1\nG55\nG54\nG0 Z2\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
   const std::vector<Vec3> ends = r->ends();
   ASSERT_EQ(ends.size(), 2u);
   EXPECT_NEAR(ends[0].z, 1.0, kTol);
