@@ -148,15 +148,16 @@ int run_program(const RunOptions& o, canon::Sink& sink,
                  guess.reason);
   }
   const gcode::Dialect* dialect = gcode::find_dialect(name);
-  gcode::OptionValues dialect_options;
   if (dialect == nullptr) {
     fmt::print(stderr, "usina: error: unknown dialect {}\n", name);
     return 2;
   }
-  if (auto bad = gcode::resolve_options(*dialect, o.dialect_options, dialect_options)) {
-    fmt::print(stderr, "usina: error: {}\n", *bad);
+  auto resolved = gcode::resolve_options(*dialect, o.dialect_options);
+  if (!resolved) {
+    fmt::print(stderr, "usina: error: {}\n", resolved.error());
     return 2;
   }
+  gcode::OptionValues dialect_options = std::move(*resolved);
 
   if (!o.offsets.empty() && name != "fanuc") {
     fmt::print(stderr,

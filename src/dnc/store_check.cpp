@@ -61,8 +61,7 @@ CheckResults check_program(std::string_view text, const CheckSettings& settings)
   core::SourceManager sources;
   const std::uint32_t id =
       sources.add(core::SourceFile::from_string("<revision>", std::string(text)));
-  gcode::OptionValues options;
-  gcode::resolve_options(*dialect, {}, options);
+  gcode::OptionValues options = gcode::default_options(*dialect);
   sim::StatsSink stats(profile, sim::StatsOptions{}, diags);
   canon::OpBudget budget(stats, settings.max_ops, diags);
   auto runner = dialect->make_runner(

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <iterator>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -139,6 +140,25 @@ fs::path default_web_root() {
   return {};
 }
 
+int open_beneath(const fs::path& root, const fs::path& relative) {
+  if (relative.empty() || relative.is_absolute()) return -1;
+  int dir = ::open(root.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  for (auto it = relative.begin(); dir >= 0 && it != relative.end(); ++it) {
+    const fs::path name = *it;
+    const bool last = std::next(it) == relative.end();
+    int fd = -1;
+    if (name != "." && name != "..") {
+      // Every folder of the path as a folder, never through a symlink.
+      const int flags = O_RDONLY | O_NOFOLLOW | O_CLOEXEC | (last ? O_NONBLOCK : O_DIRECTORY);
+      fd = ::openat(dir, name.c_str(), flags);
+    }
+    ::close(dir);
+    if (last) return fd;
+    dir = fd;
+  }
+  return -1;
+}
+
 WebFiles::WebFiles(WebFilesConfig config) : config_(std::move(config)) {
   std::error_code ec;
   if (!config_.root.empty() && fs::is_directory(config_.root, ec))
@@ -172,8 +192,10 @@ HttpResponse WebFiles::serve(const HttpRequest& req) const {
 }
 
 HttpResponse WebFiles::file_response(const HttpRequest& req, const fs::path& file) const {
-  // The checks hold for the descriptor read, not for a name that may change.
-  const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+  // The checks hold for the descriptor read, not for a name that may change:
+  // the canonical path checked, opened beneath the root without following
+  // a symlink at any level.
+  const int fd = open_beneath(root_, file.lexically_relative(root_));
   if (fd < 0) return plain(req, http::status::not_found, "no such file");
 
   struct stat st {};

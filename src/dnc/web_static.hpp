@@ -33,6 +33,13 @@ std::string_view content_type_of(std::string_view file_name);
 // prefix's `share/usina/web`. Empty when neither exists.
 std::filesystem::path default_web_root();
 
+// The file at `relative` beneath the folder `root` (both as fs::canonical
+// gives them: no symlink, `.` or `..`), opened for reading one component at
+// a time with O_NOFOLLOW. A folder of the path swapped for a symlink after
+// it was checked fails the open instead of being followed (O_NOFOLLOW on
+// the whole path guards only its last component). The descriptor, or -1.
+int open_beneath(const std::filesystem::path& root, const std::filesystem::path& relative);
+
 class WebFiles {
  public:
   explicit WebFiles(WebFilesConfig config);

@@ -157,8 +157,7 @@ ToolpathResult program_toolpath(std::string_view text, const ToolpathSettings& s
   core::SourceManager sources;
   const std::uint32_t id =
       sources.add(core::SourceFile::from_string("<revision>", std::string(text)));
-  gcode::OptionValues options;
-  gcode::resolve_options(*dialect, {}, options);
+  gcode::OptionValues options = gcode::default_options(*dialect);
   VertexSink vertices(r, settings.max_collected);
   canon::OpBudget budget(vertices, settings.max_ops, diags);
   auto runner = dialect->make_runner(

@@ -65,31 +65,37 @@ bool whole_number_list(const std::string& value) {
 
 }  // namespace
 
-std::optional<std::string> resolve_options(const Dialect& d, const std::vector<std::string>& given,
-                                           OptionValues& out) {
-  out.clear();
+OptionValues default_options(const Dialect& d) {
+  OptionValues out;
   for (const DialectOption& o : d.options)
     out[std::string(o.name)] = std::string(o.values.front());
+  return out;
+}
+
+tl::expected<OptionValues, std::string> resolve_options(const Dialect& d,
+                                                        const std::vector<std::string>& given) {
+  OptionValues out = default_options(d);
   for (const std::string& g : given) {
     const std::size_t eq = g.find('=');
     if (eq == std::string::npos) {
-      return fmt::format("--dialect-option {} is not name=value; {}", g, list_options(d));
+      return tl::unexpected(
+          fmt::format("--dialect-option {} is not name=value; {}", g, list_options(d)));
     }
     const std::string name = g.substr(0, eq);
     const std::string value = g.substr(eq + 1);
     auto it = std::find_if(d.options.begin(), d.options.end(),
                            [&](const DialectOption& o) { return o.name == name; });
     if (it == d.options.end()) {
-      return fmt::format("unknown dialect option '{}'; {}", name, list_options(d));
+      return tl::unexpected(fmt::format("unknown dialect option '{}'; {}", name, list_options(d)));
     }
     const bool list = it->values.back() == "<list>" && whole_number_list(value);
     if (!list && std::find(it->values.begin(), it->values.end(), value) == it->values.end()) {
-      return fmt::format("dialect option {} takes {}, not '{}'", name, fmt::join(it->values, "|"),
-                         value);
+      return tl::unexpected(fmt::format("dialect option {} takes {}, not '{}'", name,
+                                        fmt::join(it->values, "|"), value));
     }
     out[name] = value;
   }
-  return std::nullopt;
+  return out;
 }
 
 }  // namespace usina::gcode

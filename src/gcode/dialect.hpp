@@ -15,6 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include <tl/expected.hpp>
+
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
@@ -94,10 +96,13 @@ struct Dialect {
 const std::vector<const Dialect*>& all_dialects();
 const Dialect* find_dialect(std::string_view name);
 
-// Reads "name=value" settings against the dialect's options and fills in
-// the defaults. On an unknown name or value, a message listing the valid
-// ones.
-std::optional<std::string> resolve_options(const Dialect& d, const std::vector<std::string>& given,
-                                           OptionValues& out);
+// Every option of the dialect at its default (the first of its values).
+OptionValues default_options(const Dialect& d);
+
+// Reads "name=value" settings against the dialect's options, the defaults
+// filled in for the others. On an unknown name or value, the error is a
+// message listing the valid ones.
+tl::expected<OptionValues, std::string> resolve_options(const Dialect& d,
+                                                        const std::vector<std::string>& given);
 
 }  // namespace usina::gcode

@@ -5,17 +5,19 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <string_view>
+
+#include <tl/expected.hpp>
 
 namespace usina::gcode {
 
 // A number literal spans text[start, end). When an exponent (e or E, an
 // optional sign, digits) follows at `end` with no blank, and the number it
 // would make is beyond a double (1e400) or below the smallest one (1e-400):
-// the message. Otherwise nullopt (the E reads as a word, as the control reads it).
-std::optional<std::string> exponent_out_of_range(std::string_view text, std::size_t start,
-                                                 std::size_t end);
+// the message, as the error. Otherwise a value (the E reads as a word, as the
+// control reads it).
+tl::expected<void, std::string> exponent_out_of_range(std::string_view text, std::size_t start,
+                                                      std::size_t end);
 
 }  // namespace usina::gcode

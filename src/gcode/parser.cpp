@@ -246,8 +246,8 @@ ExprRef Parser::function(std::size_t pos, int depth) {
 // number the user meant is out of any range: say so (a legal "1e3" stays
 // X1 E3, as the control reads it).
 bool Parser::exponent_in_range(std::size_t start) {
-  if (auto why = exponent_out_of_range(lex_.text(), start, lex_.offset())) {
-    return fail(core::Code::NumberOutOfRange, start, *why);
+  if (const auto ok = exponent_out_of_range(lex_.text(), start, lex_.offset()); !ok) {
+    return fail(core::Code::NumberOutOfRange, start, ok.error());
   }
   return true;
 }

@@ -95,8 +95,7 @@ RunResult run_in_dialect(std::string text, const Dialect& dialect, Observer& obs
   core::DiagnosticList diags;
   const std::uint32_t id = sources.add(core::SourceFile::from_string("<program>", std::move(text)));
   obs.main_file = id;
-  OptionValues options;
-  resolve_options(dialect, {}, options);
+  OptionValues options = default_options(dialect);
   canon::OpBudget budget(obs, 10'000'000, diags);
   auto runner =
       dialect.make_runner(RunContext{sources, InterpOptions{}, std::move(options), budget, diags});

@@ -4,16 +4,17 @@
 // (LinuxCNC passes it to wordexp, which runs $(...)).
 #pragma once
 
-#include <optional>
 #include <string>
 #include <string_view>
 
+#include <tl/expected.hpp>
+
 namespace usina::gcode {
 
-// Why `name` cannot be the name of a subroutine file, or nullopt: a path
+// Why `name` cannot be the name of a subroutine file, as the error: a path
 // separator ('/', or '\' as on Windows), a leading '.' ('..', hidden
 // files), a control byte (NUL ends a C file name early), or more bytes than
 // a file name may have.
-std::optional<std::string> subroutine_name_problem(std::string_view name);
+tl::expected<void, std::string> subroutine_name_problem(std::string_view name);
 
 }  // namespace usina::gcode

@@ -6,8 +6,9 @@
 // (canon/limits.hpp, CanonMachine).
 #pragma once
 
-#include <optional>
 #include <string>
+
+#include <tl/expected.hpp>
 
 namespace usina::gcode {
 
@@ -16,8 +17,8 @@ namespace usina::gcode {
 // what it is multiplied or added into.
 inline constexpr double kMaxWordValue = 1e9;
 
-// Why the value of `letter`'s word is out of range; nullopt when it is in
-// range. G and M words are codes, checked as codes.
-std::optional<std::string> word_out_of_range(char letter, double value);
+// Why the value of `letter`'s word is out of range, as the error; a value
+// when it is in range. G and M words are codes, checked as codes.
+tl::expected<void, std::string> word_out_of_range(char letter, double value);
 
 }  // namespace usina::gcode

@@ -67,8 +67,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       given.emplace_back(kFuzzed->settings[i]);
     }
   }
-  gcode::OptionValues values;
-  if (gcode::resolve_options(*dialect, given, values)) return 0;
+  auto values = gcode::resolve_options(*dialect, given);
+  if (!values) return 0;
 
   core::SourceManager sources;
   fuzz::RenderAndDiscard diags(sources);
@@ -84,7 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   canon::NullSink sink;
   auto runner = dialect->make_runner(
-      gcode::RunContext{sources, std::move(opts), std::move(values), sink, diags});
+      gcode::RunContext{sources, std::move(opts), std::move(*values), sink, diags});
   runner->run(id);
   return 0;
 }

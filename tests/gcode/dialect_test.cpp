@@ -35,27 +35,30 @@ TEST(Dialect, EveryRomiCodeHasAHandlerAndOneEntry) {
 }
 
 TEST(Dialect, OptionsDefaultToTheFirstValue) {
-  OptionValues v;
-  EXPECT_FALSE(resolve_options(*find_dialect("romi"), {}, v));
-  EXPECT_EQ(v.at("lowercase_incremental"), "on");
-  EXPECT_EQ(v.at("typographic_dash"), "minus");
-  EXPECT_FALSE(resolve_options(*find_dialect("romi"), {"lowercase_incremental=off"}, v));
-  EXPECT_EQ(v.at("lowercase_incremental"), "off");
+  const auto v = resolve_options(*find_dialect("romi"), {});
+  ASSERT_TRUE(v) << v.error();
+  EXPECT_EQ(v->at("lowercase_incremental"), "on");
+  EXPECT_EQ(v->at("typographic_dash"), "minus");
+  EXPECT_EQ(*v, default_options(*find_dialect("romi")));
+  const auto off = resolve_options(*find_dialect("romi"), {"lowercase_incremental=off"});
+  ASSERT_TRUE(off) << off.error();
+  EXPECT_EQ(off->at("lowercase_incremental"), "off");
+  EXPECT_EQ(off->at("typographic_dash"), "minus");
 }
 
 TEST(Dialect, BadOptionsSayWhatIsValid) {
-  OptionValues v;
   const Dialect& romi = *find_dialect("romi");
-  auto unknown = resolve_options(romi, {"colour=red"}, v);
-  ASSERT_TRUE(unknown);
-  EXPECT_NE(unknown->find("comp_radius=register|tool"), std::string::npos) << *unknown;
-  auto value = resolve_options(romi, {"comp_radius=both"}, v);
-  ASSERT_TRUE(value);
-  EXPECT_NE(value->find("register|tool"), std::string::npos) << *value;
-  EXPECT_TRUE(resolve_options(romi, {"comp_radius"}, v));
-  auto none = resolve_options(*find_dialect("rs274ngc"), {"x=y"}, v);
-  ASSERT_TRUE(none);
-  EXPECT_NE(none->find("has no options"), std::string::npos);
+  auto unknown = resolve_options(romi, {"colour=red"});
+  ASSERT_FALSE(unknown);
+  EXPECT_NE(unknown.error().find("comp_radius=register|tool"), std::string::npos)
+      << unknown.error();
+  auto value = resolve_options(romi, {"comp_radius=both"});
+  ASSERT_FALSE(value);
+  EXPECT_NE(value.error().find("register|tool"), std::string::npos) << value.error();
+  EXPECT_FALSE(resolve_options(romi, {"comp_radius"}));
+  auto none = resolve_options(*find_dialect("rs274ngc"), {"x=y"});
+  ASSERT_FALSE(none);
+  EXPECT_NE(none.error().find("has no options"), std::string::npos);
 }
 
 }  // namespace

@@ -54,8 +54,7 @@ inline std::optional<std::vector<canon::Op>> interpret_in(const std::string& tex
   const std::uint32_t id = sources.add(core::SourceFile::from_string("post.nc", text));
   core::DiagnosticList diags;
   canon::Toolpath path;
-  gcode::OptionValues options;
-  EXPECT_FALSE(gcode::resolve_options(*d, {}, options).has_value());
+  const gcode::OptionValues options = gcode::default_options(*d);
   auto runner =
       d->make_runner(gcode::RunContext{sources, gcode::InterpOptions{}, options, path, diags});
   EXPECT_TRUE(runner->run(id)) << dialect;

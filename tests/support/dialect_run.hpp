@@ -76,8 +76,9 @@ inline std::unique_ptr<Run> run_in(const char* name, const std::string& text,
   const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
   const Dialect* d = find_dialect(name);
   EXPECT_NE(d, nullptr);
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, options, values).has_value());
+  auto resolved = resolve_options(*d, options);
+  EXPECT_TRUE(resolved) << resolved.error();
+  OptionValues values = resolved.value_or(OptionValues{});
   auto runner =
       d->make_runner(RunContext{r->sources, std::move(opts), std::move(values), r->path, r->diags});
   r->ok = runner->run(id);

@@ -17,6 +17,8 @@
 #include <tuple>
 #include <vector>
 
+#include <tl/expected.hpp>
+
 #include "gcode/dialect.hpp"
 #include "gcode/fanuc/macro.hpp"
 #include "gcode/fanuc/polar_interp.hpp"
@@ -179,16 +181,16 @@ class StrokeCheck final : public canon::Sink {
   bool armed() const { return area_.has_value(); }
 
   bool outside_forbidden = false;  // parameter 1300 bit 0 OUT
-  // Why `p` is forbidden, or empty when it is allowed.
-  std::optional<std::string> forbidden(core::Vec3 p) const;
+  // Why `p` is forbidden, as the error; a value when it is allowed.
+  tl::expected<void, std::string> forbidden(core::Vec3 p) const;
 
   core::Vec3 position() const { return at_; }
 
   const std::optional<Violation>& violation() const { return violation_; }
 
  private:
-  std::optional<std::string> segment(core::Vec3 a, core::Vec3 b) const;
-  std::optional<std::string> path(const std::vector<core::Vec3>& points) const;
+  tl::expected<void, std::string> segment(core::Vec3 a, core::Vec3 b) const;
+  tl::expected<void, std::string> path(const std::vector<core::Vec3>& points) const;
   canon::Sink& next_;
   core::Vec3 at_;
   std::optional<Box> area_;

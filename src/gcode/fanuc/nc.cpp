@@ -115,12 +115,12 @@ double Engine::least_increment(char letter, bool inch) const {
 bool Engine::word_in_range(const TapeBlock& b, char letter, std::size_t at, const MacroReader& r,
                            const Value& v) {
   if (r.literal()) {
-    if (auto why = exponent_out_of_range(b.text, at + 1, r.pos()))
-      return error(core::Code::NumberOutOfRange, b, at + 1, *why);
+    if (const auto ok = exponent_out_of_range(b.text, at + 1, r.pos()); !ok)
+      return error(core::Code::NumberOutOfRange, b, at + 1, ok.error());
   }
   if (v.vacant) return true;
-  if (auto why = word_out_of_range(letter, v.v))
-    return error(core::Code::ValueOutOfRange, b, at, *why);
+  if (const auto ok = word_out_of_range(letter, v.v); !ok)
+    return error(core::Code::ValueOutOfRange, b, at, ok.error());
   return true;
 }
 
@@ -174,8 +174,8 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
   if (plain_block_words(b.text, w)) {
     // The checks of read_words below, for the words as they are.
     for (NcWord& word : w.list) {
-      if (auto why = word_out_of_range(word.letter, word.value))
-        return error(core::Code::ValueOutOfRange, b, word.pos, *why);
+      if (const auto ok = word_out_of_range(word.letter, word.value); !ok)
+        return error(core::Code::ValueOutOfRange, b, word.pos, ok.error());
       word.checked = true;
     }
     return true;
@@ -565,11 +565,11 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
     // Read in range (word_in_range), a value leaves it only by the scaling
     // or rotation in force: say so at the word.
     if (!(word.checked && word.value == word.raw))
-      if (auto why = word_out_of_range(word.letter, word.value)) {
+      if (const auto ok = word_out_of_range(word.letter, word.value); !ok) {
         return error(core::Code::ValueOutOfRange, b, word.pos,
                      fmt::format("{}, after the scaling, rotation or mirror in force (G51, G68, "
                                  "G51.1)",
-                                 *why));
+                                 ok.error()));
       }
     double v = word.value;
     if (word.letter == 'G') {

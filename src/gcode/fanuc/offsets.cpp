@@ -123,9 +123,9 @@ bool Engine::offset_codes(const TapeBlock& b, Words& w) {
     // The offset first, in a block of its own: 'G43 H1 Z50.' then moves
     // to Z50 with it, as on the control.
     const double v = length_sign_ * offset_register(true, h_register_, b);
-    if (auto why = word_out_of_range('H', v)) {
+    if (const auto ok = word_out_of_range('H', v); !ok) {
       return error(core::Code::ValueOutOfRange, b, h != nullptr ? h->pos : 0,
-                   fmt::format("the length in offset register H{}: {}", h_register_, *why));
+                   fmt::format("the length in offset register H{}: {}", h_register_, ok.error()));
     }
     if (!hand(b, {{'G', 43.1}, {'Z', v}})) return false;
   }

@@ -61,28 +61,28 @@ std::vector<core::Vec3> arc_points(core::Vec3 from, const canon::Arc& c) {
 
 }  // namespace
 
-std::optional<std::string> StrokeCheck::forbidden(core::Vec3 p) const {
-  if (!area_) return std::nullopt;
+tl::expected<void, std::string> StrokeCheck::forbidden(core::Vec3 p) const {
+  if (!area_) return {};
   for (int a = 0; a < 3; ++a) {
     const bool below = p[a]<area_->lo[a] - kEps, above = p[a]> area_->hi[a] + kEps;
-    if (outside_forbidden && (below || above)) return alarm(a, above ? 1 : -1);
+    if (outside_forbidden && (below || above)) return tl::unexpected(alarm(a, above ? 1 : -1));
   }
-  if (outside_forbidden) return std::nullopt;
+  if (outside_forbidden) return {};
   for (int a = 0; a < 3; ++a)
-    if (p[a] <= area_->lo[a] + kEps || p[a] >= area_->hi[a] - kEps) return std::nullopt;
-  return alarm(0, 1);
+    if (p[a] <= area_->lo[a] + kEps || p[a] >= area_->hi[a] - kEps) return {};
+  return tl::unexpected(alarm(0, 1));
 }
 
 // The segment a-b against the box: slabs for the inside, the end point for
 // the outside (the box is convex: a segment that leaves it ends outside).
-std::optional<std::string> StrokeCheck::segment(core::Vec3 a, core::Vec3 b) const {
+tl::expected<void, std::string> StrokeCheck::segment(core::Vec3 a, core::Vec3 b) const {
   if (outside_forbidden) return forbidden(b);
   double enter = 0, leave = 1;
   int axis = 0;
   for (int k = 0; k < 3; ++k) {
     const double lo = area_->lo[k] + kEps, hi = area_->hi[k] - kEps, d = b[k] - a[k];
     if (std::fabs(d) < 1e-15) {
-      if (a[k] <= lo || a[k] >= hi) return std::nullopt;
+      if (a[k] <= lo || a[k] >= hi) return {};
       continue;
     }
     double t1 = (lo - a[k]) / d, t2 = (hi - a[k]) / d;
@@ -92,18 +92,18 @@ std::optional<std::string> StrokeCheck::segment(core::Vec3 a, core::Vec3 b) cons
       axis = k;
     }
     leave = std::min(leave, t2);
-    if (enter >= leave) return std::nullopt;
+    if (enter >= leave) return {};
   }
-  return alarm(axis, b[axis] - a[axis]);
+  return tl::unexpected(alarm(axis, b[axis] - a[axis]));
 }
 
-std::optional<std::string> StrokeCheck::path(const std::vector<core::Vec3>& points) const {
+tl::expected<void, std::string> StrokeCheck::path(const std::vector<core::Vec3>& points) const {
   core::Vec3 from = at_;
   for (const core::Vec3& p : points) {
-    if (auto why = segment(from, p)) return why;
+    if (auto ok = segment(from, p); !ok) return ok;
     from = p;
   }
-  return std::nullopt;
+  return {};
 }
 
 void StrokeCheck::on(const canon::Op& op) {
@@ -119,8 +119,8 @@ void StrokeCheck::on(const canon::Op& op) {
   if (const auto* s = std::get_if<canon::Spline>(&op.kind)) points = s->points;
   if (const auto* a = std::get_if<canon::Arc>(&op.kind)) points = arc_points(at_, *a);
   if (area_ && !points.empty()) {
-    if (auto why = path(points)) {
-      violation_ = Violation{op.src, *why};
+    if (auto ok = path(points); !ok) {
+      violation_ = Violation{op.src, ok.error()};
       return;
     }
   }
@@ -158,10 +158,10 @@ bool Engine::stroke_codes(const TapeBlock& b, Words& w) {
   for (char c : kCorners)
     w.take(c);
   stroke_.arm(box);
-  if (auto why = stroke_.forbidden(stroke_.position())) {
+  if (const auto ok = stroke_.forbidden(stroke_.position()); !ok) {
     return error(
         core::Code::ForbiddenArea, b, 0,
-        fmt::format("{}: the tool is already in the forbidden area when G22 arms it", *why));
+        fmt::format("{}: the tool is already in the forbidden area when G22 arms it", ok.error()));
   }
   return true;
 }

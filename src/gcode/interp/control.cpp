@@ -284,7 +284,7 @@ std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name)
   if (cached != sub_files_.end()) return cached->second;
   // The name is only ever a file name (gcode/sub_name.hpp); call() has
   // reported why when it is not one.
-  if (subroutine_name_problem(name)) return std::nullopt;
+  if (!subroutine_name_problem(name)) return std::nullopt;
   for (const std::string& dir : options_.subroutine_path) {
     const std::string path = (dir.empty() ? std::string(".") : dir) + "/" + name + ".ngc";
 
@@ -340,10 +340,10 @@ Interpreter::Flow Interpreter::call(const OWord& o) {
   }
   bool whole_file = false;
   if (entry == kNoEntry) {
-    if (auto why = subroutine_name_problem(label)) {
+    if (const auto ok = subroutine_name_problem(label); !ok) {
       error(core::Code::BadSubroutineName, o.col,
             fmt::format("o<{}> is not in this program and cannot be read from a file: {}",
-                        printable(label), *why));
+                        printable(label), ok.error()));
       return Flow::Error;
     }
     auto loaded = load_sub_file(label);

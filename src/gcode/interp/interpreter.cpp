@@ -173,8 +173,8 @@ bool Interpreter::sort_words(std::span<const EvaluatedWord> words, BlockWords& w
 // tenths, G38.2 → 382; M codes are whole numbers), any other letter once.
 bool Interpreter::sort_word(const EvaluatedWord& word, BlockWords& w) {
   const double v = word.value;
-  if (auto why = word_out_of_range(word.letter, v)) {
-    return error(core::Code::ValueOutOfRange, word.col, *why);
+  if (const auto ok = word_out_of_range(word.letter, v); !ok) {
+    return error(core::Code::ValueOutOfRange, word.col, ok.error());
   }
   if (word.letter == 'G' || word.letter == 'M') {
     const double tenths = std::round(v * 10.0);

@@ -126,8 +126,8 @@ bool Engine::evaluate_words() {
     auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
                                            : gcode::evaluate(block_.base, w.value, *this, err);
     if (!v) return error(err.error.code, err.col, err.error.message);
-    if (auto why = word_out_of_range(w.letter, *v)) {
-      return error(core::Code::ValueOutOfRange, w.col, *why);
+    if (const auto ok = word_out_of_range(w.letter, *v); !ok) {
+      return error(core::Code::ValueOutOfRange, w.col, ok.error());
     }
     if (w.letter == 'G' || w.letter == 'M') {
       const double tenths = std::round(*v * 10.0);

@@ -176,8 +176,8 @@ std::optional<double> Parser::number() {
     i_ = start;
     return std::nullopt;
   }
-  if (auto why = exponent_out_of_range(s_.substr(0, end_), start, i_)) {
-    fail(core::Code::NumberOutOfRange, start, *why);
+  if (const auto ok = exponent_out_of_range(s_.substr(0, end_), start, i_); !ok) {
+    fail(core::Code::NumberOutOfRange, start, ok.error());
     return std::nullopt;
   }
   double v = 0.0;

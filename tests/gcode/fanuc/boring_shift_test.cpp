@@ -53,8 +53,7 @@ TEST(FanucBoringShift, DefaultIsPlusX) {
 TEST(FanucBoringShift, AnUnknownDirectionIsRefused) {
   const Dialect* d = find_dialect("fanuc");
   ASSERT_NE(d, nullptr);
-  OptionValues values;
-  EXPECT_TRUE(resolve_options(*d, {"boring_shift=+z"}, values).has_value());
+  EXPECT_FALSE(resolve_options(*d, {"boring_shift=+z"}).has_value());
 }
 
 TEST(FanucBoringShift, G87ShiftsInAndOutTheSameWay) {

@@ -25,8 +25,7 @@ inline std::unique_ptr<Run> run_fanuc_offsets(const std::string& text, const std
   auto r = std::make_unique<Run>();
   const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
   const Dialect* d = find_dialect("fanuc");
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, {}, values).has_value());
+  OptionValues values = default_options(*d);
   values["offsets"] = path;
   auto runner =
       d->make_runner(RunContext{r->sources, InterpOptions{}, std::move(values), r->path, r->diags});

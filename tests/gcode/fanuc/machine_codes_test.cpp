@@ -67,13 +67,13 @@ TEST(FanucMachineCodes, AListOfTheMachinesMakesAnyOtherAnError) {
 
 TEST(FanucMachineCodes, TheListOptionTakesWholeNumbersOnly) {
   const Dialect* d = find_dialect("fanuc");
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, {"machine_m_codes=29,11,262"}, values).has_value());
-  EXPECT_EQ(values["machine_m_codes"], "29,11,262");
-  EXPECT_TRUE(resolve_options(*d, {"machine_m_codes=29,,11"}, values).has_value());
-  EXPECT_TRUE(resolve_options(*d, {"machine_m_codes=M29"}, values).has_value());
-  EXPECT_TRUE(resolve_options(*d, {"machine_m_codes="}, values).has_value());
-  EXPECT_TRUE(resolve_options(*d, {"machine_m_codes=29,123456789"}, values).has_value());
+  const auto values = resolve_options(*d, {"machine_m_codes=29,11,262"});
+  ASSERT_TRUE(values.has_value()) << values.error();
+  EXPECT_EQ(values->at("machine_m_codes"), "29,11,262");
+  EXPECT_FALSE(resolve_options(*d, {"machine_m_codes=29,,11"}).has_value());
+  EXPECT_FALSE(resolve_options(*d, {"machine_m_codes=M29"}).has_value());
+  EXPECT_FALSE(resolve_options(*d, {"machine_m_codes="}).has_value());
+  EXPECT_FALSE(resolve_options(*d, {"machine_m_codes=29,123456789"}).has_value());
 }
 
 TEST(FanucMachineCodes, PAndQGoWithTheMachinesCode) {

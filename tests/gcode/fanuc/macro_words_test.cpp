@@ -20,8 +20,7 @@ std::unique_ptr<dialect_test::Run> run_with_vars(const std::string& text,
   auto r = std::make_unique<dialect_test::Run>();
   const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
   const Dialect* d = find_dialect("fanuc");
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, {}, values).has_value());
+  OptionValues values = default_options(*d);
   auto runner =
       d->make_runner(RunContext{r->sources, InterpOptions{}, std::move(values), r->path, r->diags});
   for (const auto& [index, value] : vars)

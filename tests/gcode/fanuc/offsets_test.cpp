@@ -31,8 +31,7 @@ Kept run_kept(const std::string& dialect, const std::string& text,
   Kept k;
   const std::uint32_t id = k.run->sources.add(core::SourceFile::from_string("test.nc", text));
   const Dialect* d = find_dialect(dialect);
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, {}, values).has_value());
+  OptionValues values = default_options(*d);
   k.runner =
       d->make_runner(RunContext{k.run->sources, {}, std::move(values), k.run->path, k.run->diags});
   for (const auto& [n, v] : parameters)

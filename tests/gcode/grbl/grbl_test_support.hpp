@@ -65,8 +65,9 @@ inline std::unique_ptr<GrblRun> run_grbl(const std::string& text,
   const std::uint32_t id = r->sources.add(core::SourceFile::from_string("t.nc", text));
   const Dialect* d = find_dialect("grbl");
   EXPECT_NE(d, nullptr);
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(*d, opts, values).has_value());
+  auto resolved = resolve_options(*d, opts);
+  EXPECT_TRUE(resolved) << resolved.error();
+  OptionValues values = resolved.value_or(OptionValues{});
   auto runner = d->make_runner(RunContext{r->sources, {}, std::move(values), r->path, r->diags});
   r->ok = runner->run(id);
   return r;

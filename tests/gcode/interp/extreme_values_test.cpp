@@ -167,8 +167,7 @@ int run_programs(const Grammar& g, int count, std::uint64_t seed) {
     FiniteSink sink;
     sink.program = make_program(g, rng);
     const std::uint32_t id = sources.add(core::SourceFile::from_string("x.nc", sink.program));
-    OptionValues values;
-    resolve_options(*d, {}, values);
+    const OptionValues values = default_options(*d);
     auto runner = d->make_runner(RunContext{sources, InterpOptions{}, values, sink, diags});
     clean += runner->run(id) ? 1 : 0;
     if (::testing::Test::HasFailure()) break;  // one program shown is enough

@@ -90,12 +90,10 @@ TEST(RomiOptions, MissingOptionsTakeTheDialectsDefaults) {
   EXPECT_FALSE(o.typographic_dash_is_error);
   EXPECT_FALSE(o.motion_cancels_cycle);
   EXPECT_TRUE(o.comp_radius_from_register);
-  OptionValues v;
-  ASSERT_FALSE(resolve_options(d,
-                               {"lowercase_incremental=off", "typographic_dash=error",
-                                "motion_cancels_cycle=on", "comp_radius=tool"},
-                               v));
-  const Options p = Options::from(d, v);
+  const auto v = resolve_options(d, {"lowercase_incremental=off", "typographic_dash=error",
+                                     "motion_cancels_cycle=on", "comp_radius=tool"});
+  ASSERT_TRUE(v) << v.error();
+  const Options p = Options::from(d, *v);
   EXPECT_FALSE(p.lowercase_incremental);
   EXPECT_TRUE(p.typographic_dash_is_error);
   EXPECT_TRUE(p.motion_cancels_cycle);

@@ -37,8 +37,7 @@ std::unique_ptr<StateRun> run(const std::string& text, InterpOptions opts = {}) 
   auto r = std::make_unique<StateRun>();
   const std::uint32_t id = r->sources.add(core::SourceFile::from_string("test.nc", text));
   const Dialect& d = *find_dialect("romi");
-  OptionValues values;
-  EXPECT_FALSE(resolve_options(d, {}, values).has_value());
+  OptionValues values = default_options(d);
   r->engine = std::make_unique<Engine>(
       d, code_table(),
       RunContext{r->sources, std::move(opts), std::move(values), r->path, r->diags});
