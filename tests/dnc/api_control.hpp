@@ -3,7 +3,9 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <thread>
 
@@ -53,6 +55,30 @@ inline Control start_with_control(RunningServer& s, std::uint32_t baud = 115200)
   config.machines.push_back(pty_machine("mill-1", pair->slave_path, baud));
   s.start(config);
   return c;
+}
+
+// The control punches `rows` (on the server's loop, which owns the link).
+inline void punch(RunningServer& s, Control& control, const std::string& rows) {
+  s.on_loop([&] {
+    auto keep = std::make_shared<std::string>(rows);
+    control.link->async_write(
+        std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(keep->data()),
+                                      keep->size()),
+        [keep](const ErrorCode&, std::size_t) {});
+    return 0;
+  });
+}
+
+// What the control has received, once it holds `part` (or after 30 s).
+inline std::string received_once(RunningServer& s, Control& control, const std::string& part) {
+  std::string got;
+  for (int i = 0; i < 600; ++i) {
+    got = s.on_loop(
+        [&] { return std::string(control.sim->data().begin(), control.sim->data().end()); });
+    if (got.find(part) != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return got;
 }
 
 inline std::string released(const ApiClient& c, const std::string& name, const std::string& text) {

@@ -64,30 +64,6 @@ TEST(ApiResume, AStartThatCannotBeRestoredIs400WithTheReason) {
   EXPECT_EQ(order("start_block", "X12").status, 400);
 }
 
-// The control punches `rows` (on the server's loop, which owns the link).
-void punch(RunningServer& s, Control& control, const std::string& rows) {
-  s.on_loop([&] {
-    auto keep = std::make_shared<std::string>(rows);
-    control.link->async_write(
-        std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(keep->data()),
-                                      keep->size()),
-        [keep](const ErrorCode&, std::size_t) {});
-    return 0;
-  });
-}
-
-// What the control has received, once it holds `part` (or after 30 s).
-std::string received_once(RunningServer& s, Control& control, const std::string& part) {
-  std::string got;
-  for (int i = 0; i < 600; ++i) {
-    got = s.on_loop(
-        [&] { return std::string(control.sim->data().begin(), control.sim->data().end()); });
-    if (got.find(part) != std::string::npos) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  return got;
-}
-
 TEST(ApiResume, ARemoteRequestWithAStartBlockGetsTheRestartProgram) {
   RunningServer s;
   Control control = start_with_control(s);

@@ -10,18 +10,6 @@
 namespace usina::dnc {
 namespace {
 
-// The control punches `rows` (on the server's loop, which owns the link).
-void punch(RunningServer& s, Control& control, const std::string& rows) {
-  s.on_loop([&] {
-    auto keep = std::make_shared<std::string>(rows);
-    control.link->async_write(
-        std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(keep->data()),
-                                      keep->size()),
-        [keep](const ErrorCode&, std::size_t) {});
-    return 0;
-  });
-}
-
 // A server with `mill-1` on a pty whose punches end after 0.2 s of silence.
 Control start_mill(RunningServer& s, ServerMachine* with = nullptr) {
   auto pair = open_pty_pair(s.io());
