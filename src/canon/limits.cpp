@@ -149,29 +149,33 @@ std::string limit_text(double bound) {
   return fmt::format("{:g}", bound);
 }
 
-std::optional<std::string> out_of_range(const OpKind& op) {
+tl::expected<void, std::string> check_range(const OpKind& op) {
   Checker c(op_name(op));
   std::visit(Check{c}, op);
-  return c.problem;
+  if (c.problem) return tl::unexpected(std::move(*c.problem));
+  return {};
 }
 
-std::optional<std::string> length_out_of_range(const char* what, double mm) {
-  if (!std::isfinite(mm)) return fmt::format("{} ({}) is not a finite number", what, mm);
+tl::expected<void, std::string> check_length(const char* what, double mm) {
+  if (!std::isfinite(mm))
+    return tl::unexpected(fmt::format("{} ({}) is not a finite number", what, mm));
   if (std::fabs(mm) > kMaxLength)
-    return fmt::format("{} {:g} mm is beyond ±{} mm", what, mm, limit_text(kMaxLength));
-  return std::nullopt;
+    return tl::unexpected(
+        fmt::format("{} {:g} mm is beyond ±{} mm", what, mm, limit_text(kMaxLength)));
+  return {};
 }
 
-std::optional<std::string> feed_out_of_range(const char* what, double rate) {
-  if (!std::isfinite(rate)) return fmt::format("{} ({}) is not a finite number", what, rate);
+tl::expected<void, std::string> check_feed(const char* what, double rate) {
+  if (!std::isfinite(rate))
+    return tl::unexpected(fmt::format("{} ({}) is not a finite number", what, rate));
   if (std::fabs(rate) > kMaxFeed) {
-    return fmt::format("{} {:g} is beyond {}", what, rate, limit_text(kMaxFeed));
+    return tl::unexpected(fmt::format("{} {:g} is beyond {}", what, rate, limit_text(kMaxFeed)));
   }
   if (rate != 0.0 && std::fabs(rate) < kMinFeed) {
-    return fmt::format("{} {:g} is below {}, the smallest feed usina times", what, rate,
-                       limit_text(kMinFeed));
+    return tl::unexpected(fmt::format("{} {:g} is below {}, the smallest feed usina times", what,
+                                      rate, limit_text(kMinFeed)));
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace usina::canon

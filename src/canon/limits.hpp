@@ -14,6 +14,8 @@
 #include <optional>
 #include <string>
 
+#include <tl/expected.hpp>
+
 #include "canon/op.hpp"
 
 namespace usina::canon {
@@ -26,16 +28,15 @@ inline constexpr double kMaxSpindle = 1e9;   // rev/min
 inline constexpr double kMaxDwell = 1e9;     // s
 inline constexpr int kMaxTurns = 1'000'001;  // of one arc or helix
 
-// What is wrong with the first number of `op` that is out of range, e.g.
-// "the arc's centre Y (-inf) is not a finite number"; nullopt when every
-// number is in range.
-std::optional<std::string> out_of_range(const OpKind& op);
+// Every number of `op` in range; else what is wrong with the first that is
+// not, e.g. "the arc's centre Y (-inf) is not a finite number".
+tl::expected<void, std::string> check_range(const OpKind& op);
 
 // A bound as the docs write it: "1e9", "1e-6".
 std::string limit_text(double bound);
 
 // The same check for one value: `what` names it ("X", "the feed rate").
-std::optional<std::string> length_out_of_range(const char* what, double mm);
-std::optional<std::string> feed_out_of_range(const char* what, double rate);
+tl::expected<void, std::string> check_length(const char* what, double mm);
+tl::expected<void, std::string> check_feed(const char* what, double rate);
 
 }  // namespace usina::canon

@@ -228,7 +228,8 @@ std::vector<double> linuxcnc_knots(int order, std::size_t count) {
 }
 
 Nurbs make_nurbs(int order, std::vector<Vec2> points, std::vector<double> weights) {
-  if (const auto error = nurbs_error(order, points, weights)) throw std::invalid_argument(*error);
+  if (auto valid = check_nurbs(order, points, weights); !valid)
+    throw std::invalid_argument(valid.error());
   std::vector<double> knots = linuxcnc_knots(order, points.size());
   return {order, std::move(points), std::move(weights), std::move(knots)};
 }
@@ -270,37 +271,39 @@ std::vector<Vec2> linearize(const Nurbs& c, double tolerance) {
   return out;
 }
 
-std::optional<std::string> nurbs_order_error(int order) {
-  if (order >= 2) return std::nullopt;
-  return "NURBS order L" + std::to_string(order) +
-         " is below 2; give L of 2 or more (LinuxCNC's default is 3)";
+tl::expected<void, std::string> check_nurbs_order(int order) {
+  if (order >= 2) return {};
+  return tl::unexpected("NURBS order L" + std::to_string(order) +
+                        " is below 2; give L of 2 or more (LinuxCNC's default is 3)");
 }
 
-std::optional<std::string> nurbs_count_error(int order, std::size_t count) {
-  if (order < 0 || count >= static_cast<std::size_t>(order)) return std::nullopt;
-  return "NURBS of order L" + std::to_string(order) + " needs at least " + std::to_string(order) +
-         " control points, the start point included, but has " + std::to_string(count) +
-         "; add control points before G5.3 or lower L";
+tl::expected<void, std::string> check_nurbs_count(int order, std::size_t count) {
+  if (order < 0 || count >= static_cast<std::size_t>(order)) return {};
+  return tl::unexpected("NURBS of order L" + std::to_string(order) + " needs at least " +
+                        std::to_string(order) +
+                        " control points, the start point included, but has " +
+                        std::to_string(count) + "; add control points before G5.3 or lower L");
 }
 
-std::optional<std::string> nurbs_weight_error(double weight, std::size_t index) {
-  if (weight > 0.0 && std::isfinite(weight)) return std::nullopt;
-  return "NURBS control point " + std::to_string(index) + " has weight P" + format_number(weight) +
-         "; every weight must be a positive number (P1 is the usual)";
+tl::expected<void, std::string> check_nurbs_weight(double weight, std::size_t index) {
+  if (weight > 0.0 && std::isfinite(weight)) return {};
+  return tl::unexpected("NURBS control point " + std::to_string(index) + " has weight P" +
+                        format_number(weight) +
+                        "; every weight must be a positive number (P1 is the usual)");
 }
 
-std::optional<std::string> nurbs_error(int order, const std::vector<Vec2>& points,
-                                       const std::vector<double>& weights) {
-  if (auto e = nurbs_order_error(order)) return e;
-  if (auto e = nurbs_count_error(order, points.size())) return e;
+tl::expected<void, std::string> check_nurbs(int order, const std::vector<Vec2>& points,
+                                            const std::vector<double>& weights) {
+  if (auto e = check_nurbs_order(order); !e) return e;
+  if (auto e = check_nurbs_count(order, points.size()); !e) return e;
   if (points.size() != weights.size()) {
-    return "NURBS has " + std::to_string(points.size()) + " control points but " +
-           std::to_string(weights.size()) + " weights; give one weight per point";
+    return tl::unexpected("NURBS has " + std::to_string(points.size()) + " control points but " +
+                          std::to_string(weights.size()) + " weights; give one weight per point");
   }
   for (std::size_t i = 0; i < weights.size(); ++i) {
-    if (auto e = nurbs_weight_error(weights[i], i)) return e;
+    if (auto e = check_nurbs_weight(weights[i], i); !e) return e;
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace usina::core

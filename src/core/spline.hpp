@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include <tl/expected.hpp>
+
 #include "core/vec3.hpp"
 
 namespace usina::core {
@@ -71,7 +73,7 @@ std::vector<double> linuxcnc_knots(int order, std::size_t count);
 
 // The Nurbs of a G5.2 ... G5.3 block; `points` includes the start point (the
 // current position, LinuxCNC docs G5.2). Throws std::invalid_argument when
-// nurbs_error() would report a problem: check first, this is for valid input.
+// check_nurbs() would report a problem: check first, this is for valid input.
 Nurbs make_nurbs(int order, std::vector<Vec2> points, std::vector<double> weights);
 
 // Parameter range {first, last} over which the curve is defined.
@@ -98,19 +100,19 @@ std::vector<Vec2> linearize(const QuadBezier& c, double tolerance);
 std::vector<Vec2> linearize(const Nurbs& c, double tolerance);
 
 // --- Validation for diagnostics ---------------------------------------------
-// Each returns nullopt when the input is good, otherwise a message that says
-// what is wrong, with the numbers, and what to do.
+// Each passes when the input is good, otherwise its error is a message that
+// says what is wrong, with the numbers, and what to do.
 //
 // Note for the interpreter: LinuxCNC itself takes L only when it is above 3
 // and uses order 3 otherwise (interp_convert.cc, convert_nurbs), so L2 there
 // is silently order 3; these helpers check the order actually used.
 
-std::optional<std::string> nurbs_order_error(int order);
-std::optional<std::string> nurbs_count_error(int order, std::size_t count);
+tl::expected<void, std::string> check_nurbs_order(int order);
+tl::expected<void, std::string> check_nurbs_count(int order, std::size_t count);
 // `index` is the control point's position in the block (0 = start point).
-std::optional<std::string> nurbs_weight_error(double weight, std::size_t index);
+tl::expected<void, std::string> check_nurbs_weight(double weight, std::size_t index);
 // All of the above plus matching sizes; the first problem found.
-std::optional<std::string> nurbs_error(int order, const std::vector<Vec2>& points,
-                                       const std::vector<double>& weights);
+tl::expected<void, std::string> check_nurbs(int order, const std::vector<Vec2>& points,
+                                            const std::vector<double>& weights);
 
 }  // namespace usina::core

@@ -135,8 +135,8 @@ HttpResponse api_change_state(ApiCall& c) {
                           fmt::format("{} -> {}: {}", state_name(rev->state), state_name(*to),
                                       why_not(rev->state, *to)));
   }
-  if (auto why = may_change_state(c.role(), c.actor().user, rev->author, rev->state, *to))
-    return error_response(c.req, http::status::forbidden, *why);
+  if (auto may = may_change_state(c.role(), c.actor().user, rev->author, rev->state, *to); !may)
+    return error_response(c.req, http::status::forbidden, may.error());
   auto moved =
       change_state(c.ctx.store, c.params[0], c.params[1], *to, reason->value_or(""), c.actor());
   if (!moved) return store_failure(c, moved.error());

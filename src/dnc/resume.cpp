@@ -1,8 +1,6 @@
 // The restart program (resume.hpp).
 #include "dnc/resume.hpp"
 
-#include <fmt/format.h>
-
 #include "post/resume_preamble.hpp"
 
 namespace usina::dnc {
@@ -13,11 +11,7 @@ tl::expected<std::string, std::string> resume_program(std::string_view text,
   auto point = gcode::find_resume_point(text, dialect, start);
   if (!point) return tl::unexpected(point.error());
   auto preamble = post::resume_preamble(dialect, point->state);
-  if (!preamble)
-    return tl::unexpected(
-        fmt::format("usina has no post for dialect {}: it cannot write "
-                    "the restart's preamble",
-                    dialect));
+  if (!preamble) return tl::unexpected(preamble.error());
   std::string out = point->head;
   out += point->definitions;
   out += *preamble;

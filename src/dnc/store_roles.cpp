@@ -87,26 +87,29 @@ bool role_may(Role role, Permission p) {
   return false;
 }
 
-std::optional<std::string> may_change_state(Role role, std::string_view actor,
-                                            std::string_view author, RevisionState from,
-                                            RevisionState to) {
+tl::expected<void, std::string> may_change_state(Role role, std::string_view actor,
+                                                 std::string_view author, RevisionState from,
+                                                 RevisionState to) {
   if (!transition_exists(from, to)) {
-    return fmt::format("{} → {} is not allowed: {}", state_name(from), state_name(to),
-                       why_not(from, to));
+    return tl::unexpected(fmt::format("{} → {} is not allowed: {}", state_name(from),
+                                      state_name(to), why_not(from, to)));
   }
   for (const StateGrant& g : kStateGrants) {
     if (g.from != from || g.to != to) continue;
     if ((g.roles & bit(role)) == 0) {
-      return fmt::format("{} → {} is for {}; {} is {}", state_name(from), state_name(to),
-                         roles_text(g.roles), actor, role_name(role));
+      return tl::unexpected(fmt::format("{} → {} is for {}; {} is {}", state_name(from),
+                                        state_name(to), roles_text(g.roles), actor,
+                                        role_name(role)));
     }
     if (g.four_eyes && role != Role::Admin && actor == author) {
-      return fmt::format("{} wrote this revision; {} → {} needs someone else (four eyes)", actor,
-                         state_name(from), state_name(to));
+      return tl::unexpected(
+          fmt::format("{} wrote this revision; {} → {} needs someone else (four eyes)", actor,
+                      state_name(from), state_name(to)));
     }
-    return std::nullopt;
+    return {};
   }
-  return fmt::format("{} → {} has no role that may do it", state_name(from), state_name(to));
+  return tl::unexpected(
+      fmt::format("{} → {} has no role that may do it", state_name(from), state_name(to)));
 }
 
 }  // namespace usina::dnc

@@ -17,6 +17,8 @@
 #include <string>
 #include <string_view>
 
+#include <tl/expected.hpp>
+
 #include "dnc/store_states.hpp"
 
 namespace usina::dnc {
@@ -42,10 +44,10 @@ enum class Permission {
 bool role_may(Role role, Permission p);
 
 // Whether `actor` with `role` may move a revision written by `author` from
-// `from` to `to`: nullopt when allowed, else why not. The graph itself is
-// checked too, so a refusal names the first reason that applies.
-std::optional<std::string> may_change_state(Role role, std::string_view actor,
-                                            std::string_view author, RevisionState from,
-                                            RevisionState to);
+// `from` to `to`; the error says why not. The graph itself is checked too,
+// so a refusal names the first reason that applies.
+tl::expected<void, std::string> may_change_state(Role role, std::string_view actor,
+                                                 std::string_view author, RevisionState from,
+                                                 RevisionState to);
 
 }  // namespace usina::dnc

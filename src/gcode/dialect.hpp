@@ -20,28 +20,17 @@
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source.hpp"
+#include "gcode/code_entry.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/var_file.hpp"
 
 namespace usina::gcode {
 
-// How the text is cut into blocks and words.
+// How the text is cut into blocks, as far as readers other than the
+// dialect's runner need it (the store's normalised diff).
 struct LexicalRules {
   std::string_view block_ends = "\n";  // characters that end a block besides end of file
-  std::string_view comment_forms;      // e.g. "( )" or "; to block end"
-  std::string_view parameter_syntax;   // e.g. "#1 #<name>" or "P0..P999"
   bool lower_case_meaning = false;     // a lower-case letter means something else
-  bool bare_letter_is_zero = false;    // `G` alone is G0
-  bool typographic_minus = false;      // U+2013 U+2014 U+2212 read as '-'
-};
-
-// One G or M code: code in tenths (G38.2 → 382), its modal group (dialect
-// numbering) and the name of the handler that runs it.
-struct CodeEntry {
-  char letter = 'G';
-  int code = 0;
-  int group = 0;
-  std::string_view handler;
 };
 
 // An open choice of the dialect, set with --dialect-option name=value.
@@ -82,9 +71,8 @@ struct RunContext {
 
 struct Dialect {
   std::string_view name;
-  std::string_view summary;
   LexicalRules lexical;
-  std::vector<CodeEntry> codes;        // empty: the runner's built-in table
+  std::vector<CodeEntry> codes;        // the G/M table (code_table.hpp resolves it)
   std::vector<CodeEntry> start_codes;  // in force at program start
   std::vector<DialectOption> options;
   std::unique_ptr<ProgramRunner> (*make_runner)(RunContext context) = nullptr;

@@ -91,9 +91,13 @@ void approach(BlockOut& out, const Control& c, const canon::ResumeState& s) {
 
 }  // namespace
 
-std::optional<std::string> resume_preamble(std::string_view control, const canon::ResumeState& s) {
+tl::expected<std::string, std::string> resume_preamble(std::string_view control,
+                                                       const canon::ResumeState& s) {
   const auto c = control_named(control);
-  if (!c) return std::nullopt;
+  if (!c) {
+    return tl::unexpected(fmt::format(
+        "usina has no post for dialect {}: it cannot write the restart's preamble", control));
+  }
   std::ostringstream text;
   {
     BlockOut out(text, *c, false);

@@ -5,15 +5,17 @@
 // program's highest Z so far, XY over the start point, Z down in feed).
 #pragma once
 
-#include <optional>
 #include <string>
 #include <string_view>
+
+#include <tl/expected.hpp>
 
 #include "canon/resume_state.hpp"
 
 namespace usina::post {
 
-// nullopt for a control usina has no post for.
-std::optional<std::string> resume_preamble(std::string_view control, const canon::ResumeState& s);
+// The preamble's text; the error says so for a control usina has no post for.
+tl::expected<std::string, std::string> resume_preamble(std::string_view control,
+                                                       const canon::ResumeState& s);
 
 }  // namespace usina::post

@@ -94,10 +94,10 @@ StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
 void StatsSink::on(const canon::Op& op) {
   // Every front end keeps canon's range (canon/limits.hpp); a back end that
   // sums times checks it again, so no NaN or infinity enters a total.
-  if (auto why = canon::out_of_range(op.kind)) {
+  if (auto in_range = canon::check_range(op.kind); !in_range) {
     if (!refused_) {
       diags_.report({core::Code::ValueOutOfRange, core::Severity::Error, op.src,
-                     fmt::format("{}: the op is left out of the figures", *why)});
+                     fmt::format("{}: the op is left out of the figures", in_range.error())});
     }
     refused_ = true;
     return;

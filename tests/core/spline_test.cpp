@@ -367,43 +367,43 @@ TEST(Nurbs, PointClampsParameterToDomain) {
 // --- Validation --------------------------------------------------------------
 
 TEST(NurbsErrors, OrderBelowTwoIsRejected) {
-  EXPECT_FALSE(nurbs_order_error(2));
-  EXPECT_FALSE(nurbs_order_error(5));
-  const auto e = nurbs_order_error(1);
-  ASSERT_TRUE(e);
-  EXPECT_NE(e->find("L1"), std::string::npos) << *e;
-  EXPECT_TRUE(nurbs_order_error(0));
-  EXPECT_TRUE(nurbs_order_error(-3));
+  EXPECT_TRUE(check_nurbs_order(2));
+  EXPECT_TRUE(check_nurbs_order(5));
+  const auto e = check_nurbs_order(1);
+  ASSERT_FALSE(e);
+  EXPECT_NE(e.error().find("L1"), std::string::npos) << e.error();
+  EXPECT_FALSE(check_nurbs_order(0));
+  EXPECT_FALSE(check_nurbs_order(-3));
 }
 
 TEST(NurbsErrors, FewerPointsThanOrderIsRejected) {
-  EXPECT_FALSE(nurbs_count_error(3, 3));
-  EXPECT_FALSE(nurbs_count_error(3, 10));
-  const auto e = nurbs_count_error(4, 3);
-  ASSERT_TRUE(e);
-  EXPECT_NE(e->find("at least 4"), std::string::npos) << *e;
-  EXPECT_NE(e->find("has 3"), std::string::npos) << *e;
+  EXPECT_TRUE(check_nurbs_count(3, 3));
+  EXPECT_TRUE(check_nurbs_count(3, 10));
+  const auto e = check_nurbs_count(4, 3);
+  ASSERT_FALSE(e);
+  EXPECT_NE(e.error().find("at least 4"), std::string::npos) << e.error();
+  EXPECT_NE(e.error().find("has 3"), std::string::npos) << e.error();
 }
 
 TEST(NurbsErrors, NonPositiveWeightIsRejected) {
-  EXPECT_FALSE(nurbs_weight_error(0.25, 1));
+  EXPECT_TRUE(check_nurbs_weight(0.25, 1));
   for (double w : {0.0, -1.5, std::numeric_limits<double>::quiet_NaN(),
                    std::numeric_limits<double>::infinity()}) {
-    EXPECT_TRUE(nurbs_weight_error(w, 2)) << w;
+    EXPECT_FALSE(check_nurbs_weight(w, 2)) << w;
   }
-  const auto e = nurbs_weight_error(-1.5, 2);
-  ASSERT_TRUE(e);
-  EXPECT_NE(e->find("P-1.5"), std::string::npos) << *e;
-  EXPECT_NE(e->find("point 2"), std::string::npos) << *e;
+  const auto e = check_nurbs_weight(-1.5, 2);
+  ASSERT_FALSE(e);
+  EXPECT_NE(e.error().find("P-1.5"), std::string::npos) << e.error();
+  EXPECT_NE(e.error().find("point 2"), std::string::npos) << e.error();
 }
 
 TEST(NurbsErrors, WholeBlockReportsTheFirstProblem) {
   const std::vector<Vec2> pts{{0, 0}, {1, 1}, {2, 0}};
-  EXPECT_FALSE(nurbs_error(3, pts, {1, 1, 1}));
-  EXPECT_TRUE(nurbs_error(1, pts, {1, 1, 1}));
-  EXPECT_TRUE(nurbs_error(4, pts, {1, 1, 1}));
-  EXPECT_TRUE(nurbs_error(3, pts, {1, 1}));
-  EXPECT_TRUE(nurbs_error(3, pts, {1, 0, 1}));
+  EXPECT_TRUE(check_nurbs(3, pts, {1, 1, 1}));
+  EXPECT_FALSE(check_nurbs(1, pts, {1, 1, 1}));
+  EXPECT_FALSE(check_nurbs(4, pts, {1, 1, 1}));
+  EXPECT_FALSE(check_nurbs(3, pts, {1, 1}));
+  EXPECT_FALSE(check_nurbs(3, pts, {1, 0, 1}));
 }
 
 TEST(NurbsErrors, MakeNurbsThrowsOnInvalidInput) {

@@ -1,5 +1,6 @@
 // The fanuc dialect (Fanuc 0i/16i/31i milling with Custom Macro B;
-// docs/fanuc.md): its lexical rules and options. Its runner is the macro
+// docs/fanuc.md): its lexical rules, its G/M table (fanuc/codes.cpp) and
+// its options. Its runner is the macro
 // front end of fanuc/engine.hpp over the RS274NGC interpreter.
 #include "gcode/fanuc/engine.hpp"
 
@@ -15,14 +16,8 @@ std::unique_ptr<ProgramRunner> make(RunContext context) {
 const Dialect& fanuc_dialect() {
   static const Dialect d{
       "fanuc",
-      "Fanuc 0i/16i/31i milling with Custom Macro B: ';' and newline end a block, '%' tape, "
-      "O1234 programs, #1 variables with vacancy, IF/WHILE/GOTO, M98/M99, G65/G66, G16, G51, "
-      "G51.1, G68, G12.1",
-      LexicalRules{"\n;", "( ) anywhere in a block",
-                   "#0..#33 local, #100..#199, #500..#999, "
-                   "system #1000..",
-                   false, false, false},
-      {},
+      LexicalRules{"\n;", false},
+      fanuc_codes(),
       {},
       {{"decimal_point",
         {"calculator", "fanuc"},

@@ -24,7 +24,18 @@
 #include "gcode/fanuc/polar_interp.hpp"
 #include "gcode/fanuc/tape.hpp"
 
+namespace usina::gcode {
+
+// The fanuc dialect (fanuc/dialect.cpp) and its G/M table (fanuc/codes.cpp).
+const Dialect& fanuc_dialect();
+std::vector<CodeEntry> fanuc_codes();
+
+}  // namespace usina::gcode
+
 namespace usina::gcode::fanuc {
+
+// The fanuc table resolved for the interpreter.
+const InterpCodes& code_table();
 
 // A value as a message shows it: up to 10 decimals, no trailing zeros
 // ("12.5", "-3", "0").

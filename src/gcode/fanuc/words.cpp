@@ -15,57 +15,29 @@ namespace {
 
 constexpr std::uint32_t kAxisLetters = Words::letters_of("XYZABCUVW");
 
-// The M codes the control runs itself: program stop and end, subprogram
-// calls, spindle (M19 its orientation), tool change, coolant; any other is
-// the machine's.
+// The M codes the control runs itself are the M codes of the dialect's
+// table (fanuc/codes.cpp); any other is the machine's.
 bool control_m_code(int m) {
-  return (m >= 0 && m <= 9) || m == 19 || m == 30 || m == 98 || m == 99 || m == 198;
+  return m >= 0 && m <= kMaxCodeTenths / 10 && code_table().find('M', m * 10) != nullptr;
 }
 
-constexpr int kUnsupported[] = {24,  34,  71,  311, 312, 313, 314, 401, 411, 421, 412, 422,
-                                434, 435, 531, 536, 542, 544, 682, 683, 684, 721, 722, 811};
+// A code of the control usina cannot run (fanuc/codes.cpp): what it is.
+const CodeEntry* unsupported_g(int tenths) {
+  const InterpCodes::Code* c = code_table().find('G', tenths);
+  return c != nullptr && c->handler == CodeRun::Unsupported ? c->entry : nullptr;
+}
 
 // The bits (Words::g_bit) of every code machine_words looks for: a block
 // with none of them (most blocks) costs one test.
-constexpr std::uint64_t kWordsBits = [] {
-  std::uint64_t bits =
-      Words::g_bit(51) | Words::g_bit(50) | Words::g_bit(80) | Words::g_bit(90) | Words::g_bit(530);
-  for (int t : kUnsupported)
-    bits |= Words::g_bit(t);
+std::uint64_t words_bits() {
+  static const std::uint64_t bits = [] {
+    std::uint64_t b = Words::g_bit(51) | Words::g_bit(50) | Words::g_bit(80) | Words::g_bit(90) |
+                      Words::g_bit(530);
+    for (const CodeEntry& e : code_table().index().entries())
+      if (e.letter == 'G' && unsupported_g(e.code) != nullptr) b |= Words::g_bit(e.code);
+    return b;
+  }();
   return bits;
-}();
-
-// Fanuc codes of 5-axis and mill-turn programs usina does not model: they
-// are the control's (never "unknown"), and running on without them would
-// draw a wrong part.
-const char* unsupported_g(int tenths) {
-  switch (tenths) {
-  case 24: return "3-dimensional circular interpolation";
-  case 34: return "3-dimensional circular interpolation";
-  case 71: return "cylindrical interpolation";
-  case 311:
-  case 312:
-  case 313:
-  case 314: return "multi-step skip";
-  case 401:
-  case 411:
-  case 421: return "normal direction control";
-  case 412:
-  case 422: return "3-dimensional cutter compensation";
-  case 434: return "tool centre point control, type 1";
-  case 435: return "tool centre point control, type 2";
-  case 531: return "tool axis direction control";
-  case 536: return "tool axis direction control with tool centre point retention";
-  case 542: return "rotary table dynamic fixture offset";
-  case 544: return "workpiece setting error compensation";
-  case 682: return "tilted working plane";
-  case 683: return "tilted working plane by tool axis direction";
-  case 684: return "tilted working plane, incremental multi-command";
-  case 721: return "figure copying, rotation";
-  case 722: return "figure copying, parallel";
-  case 811: return "chopping";
-  default: return nullptr;
-  }
 }
 
 // A G code as Fanuc's manuals write it: G05.1, G68.2, G08.
@@ -165,16 +137,16 @@ void Engine::hand_on_machine_codes(const TapeBlock& b) {
 // with no geometric effect, a bare G53. One pass over the block's G words;
 // G00-G03 (most blocks) go by at once.
 bool Engine::machine_words(const TapeBlock& b, Words& w) {
-  if ((w.g_bits & kWordsBits) == 0) return true;
+  if ((w.g_bits & words_bits()) == 0) return true;
   bool modes = false, g53 = false;
   for (NcWord& g : w.list) {
     if (g.letter != 'G' || g.taken || g.vacant) continue;
     const int t = Words::code(g);
     if (t <= 30 && t % 10 == 0) continue;
-    if (const char* what = unsupported_g(t)) {
+    if (const CodeEntry* e = unsupported_g(t)) {
       return error(
           core::Code::Unsupported, b, g.pos,
-          fmt::format("{} ({}) is not supported by usina's fanuc dialect", g_name(t), what));
+          fmt::format("{} ({}) is not supported by usina's fanuc dialect", g_name(t), e->what));
     }
     modes = modes || t == 51 || t == 50 || t == 80;
     g53 = g53 || t == 530;

@@ -74,20 +74,23 @@ std::string code_name(char letter, double value) {
   return fmt::format("{}{}", letter, value);
 }
 
-std::optional<Failure> read_code(const CodeIndex& codes, const OptionValues& options, const Word& w,
-                                 BlockCodes& b) {
+Checked read_code(const CodeIndex& codes, const OptionValues& options, const Word& w,
+                  BlockCodes& b) {
   const double integer = std::trunc(w.value);
   if (integer < 0 || integer > 255) {
-    return Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl command"};
+    return tl::unexpected(
+        Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl command"});
   }
   const int iv = static_cast<int>(integer);
   const int mantissa = static_cast<int>(std::lround(100.0 * (w.value - integer)));
   if (w.letter == 'M' && mantissa > 0) {
-    return Failure{23, w.col, code_name('M', w.value) + ": M codes take no fraction"};
+    return tl::unexpected(
+        Failure{23, w.col, code_name('M', w.value) + ": M codes take no fraction"});
   }
   if (!codes.has_integer(w.letter, iv) ||
       (w.letter == 'M' && iv == 7 && options.count("grbl_m7") && options.at("grbl_m7") == "off")) {
-    return Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"};
+    return tl::unexpected(
+        Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"});
   }
   if (w.letter == 'G') {
     AxisCommand kind = AxisCommand::None;
@@ -97,8 +100,8 @@ std::optional<Failure> read_code(const CodeIndex& codes, const OptionValues& opt
     if (iv == 43 || iv == 49) kind = AxisCommand::ToolLength;
     if (kind != AxisCommand::None) {
       if (b.axis != AxisCommand::None) {
-        return Failure{24, w.col,
-                       code_name('G', w.value) + " and another command both use the axis words"};
+        return tl::unexpected(Failure{
+            24, w.col, code_name('G', w.value) + " and another command both use the axis words"});
       }
       b.axis = kind;
     }
@@ -106,43 +109,50 @@ std::optional<Failure> read_code(const CodeIndex& codes, const OptionValues& opt
   const CodeEntry* e = mantissa % 10 == 0 ? codes.find(w.letter, iv * 10 + mantissa / 10) : nullptr;
   if (e == nullptr) {
     if (w.letter == 'G' && fraction_family(iv)) {
-      return Failure{20, w.col, code_name('G', w.value) + " is not a Grbl 1.1 command"};
+      return tl::unexpected(
+          Failure{20, w.col, code_name('G', w.value) + " is not a Grbl 1.1 command"});
     }
-    return Failure{23, w.col, code_name(w.letter, w.value) + " must be a whole number"};
+    return tl::unexpected(
+        Failure{23, w.col, code_name(w.letter, w.value) + " must be a whole number"});
   }
   const int group = e->group;
   if (BlockCodes::slot(group) >= b.by_group.size()) {
-    return Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"};
+    return tl::unexpected(
+        Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"});
   }
   if (b.has(group)) {
-    return Failure{21, w.col,
-                   code_name(w.letter, w.value) +
-                       " is in the modal group of another "
-                       "command of the block"};
+    return tl::unexpected(Failure{21, w.col,
+                                  code_name(w.letter, w.value) +
+                                      " is in the modal group of another "
+                                      "command of the block"});
   }
   b.set_code(group, e->code);
-  return std::nullopt;
+  return {};
 }
 
-std::optional<Failure> read_value(const Word& w, BlockCodes& b) {
+Checked read_value(const Word& w, BlockCodes& b) {
   static constexpr std::string_view kLetters = "FIJKLNPRSTXYZ";
   if (kLetters.find(w.letter) == std::string_view::npos) {
-    return Failure{20, w.col,
-                   fmt::format("{} words are not in Grbl (3 axes X Y Z; no A B C D E H Q U V W, "
-                               "no O-words)",
-                               w.letter)};
+    return tl::unexpected(
+        Failure{20, w.col,
+                fmt::format("{} words are not in Grbl (3 axes X Y Z; no A B C D E H Q U V W, "
+                            "no O-words)",
+                            w.letter)});
   }
   if (w.letter == 'T' && w.value > 255) {
-    return Failure{38, w.col, fmt::format("T{} is above Grbl's largest tool number 255", w.value)};
+    return tl::unexpected(
+        Failure{38, w.col, fmt::format("T{} is above Grbl's largest tool number 255", w.value)});
   }
   if (b.has_value(w.letter)) {
-    return Failure{25, w.col, fmt::format("{} word appears twice in the block", w.letter)};
+    return tl::unexpected(
+        Failure{25, w.col, fmt::format("{} word appears twice in the block", w.letter)});
   }
   if (std::string_view("FNPTS").find(w.letter) != std::string_view::npos && w.value < 0) {
-    return Failure{4, w.col, fmt::format("{}{} must not be negative", w.letter, w.value)};
+    return tl::unexpected(
+        Failure{4, w.col, fmt::format("{}{} must not be negative", w.letter, w.value)});
   }
   b.set_value(w);
-  return std::nullopt;
+  return {};
 }
 
 struct Step3 {
@@ -177,12 +187,13 @@ std::pair<char, char> plane_offsets(int plane) {
   return {'I', 'J'};
 }
 
-std::optional<Failure> feed_rate(Step3& s) {
+Checked feed_rate(Step3& s) {
   const bool inverse = s.b.has(kFeedMode) ? s.b.code(kFeedMode) == 930 : s.next.inverse_time;
   const int motion = s.b.has(kMotion) ? s.b.code(kMotion) : s.next.motion;
   if (inverse) {
     if (s.b.axis == AxisCommand::Motion && motion != 0 && motion != 800 && !s.has('F')) {
-      return Failure{22, s.code_col(), "G93 inverse time: every feed move needs its own F"};
+      return tl::unexpected(
+          Failure{22, s.code_col(), "G93 inverse time: every feed move needs its own F"});
     }
     s.next.feed_mm = s.has('F') ? s.get('F') : 0.0;
   } else if (s.has('F')) {
@@ -192,141 +203,123 @@ std::optional<Failure> feed_rate(Step3& s) {
   }
   s.next.inverse_time = inverse;
   s.use('F');
-  return std::nullopt;
+  return {};
 }
 
-std::optional<Failure> non_modal(Step3& s) {
-  if (!s.b.has(kNonModal)) return std::nullopt;
+Checked non_modal(Step3& s) {
+  if (!s.b.has(kNonModal)) return {};
   const int g = s.b.code(kNonModal);
   if (g == 40) {
-    if (!s.has('P')) return Failure{28, s.code_col(), "G4 needs P (seconds)"};
+    if (!s.has('P')) return tl::unexpected(Failure{28, s.code_col(), "G4 needs P (seconds)"});
     s.use('P');
   } else if (g == 100) {
-    if (!s.axis_words()) return Failure{26, s.code_col(), "G10 needs axis words"};
-    if (!s.has('P') && !s.has('L')) return Failure{28, s.code_col(), "G10 needs L and P"};
+    if (!s.axis_words()) return tl::unexpected(Failure{26, s.code_col(), "G10 needs axis words"});
+    if (!s.has('P') && !s.has('L'))
+      return tl::unexpected(Failure{28, s.code_col(), "G10 needs L and P"});
     const double p = s.has('P') ? std::trunc(s.get('P')) : 0.0;
-    if (p > 6) return Failure{29, s.col('P'), fmt::format("G10 P{}: Grbl has G54-G59 (P0-P6)", p)};
+    if (p > 6)
+      return tl::unexpected(
+          Failure{29, s.col('P'), fmt::format("G10 P{}: Grbl has G54-G59 (P0-P6)", p)});
     const double l = s.has('L') ? s.get('L') : 0.0;
     if (l != 20 && (l != 2 || s.has('R'))) {
-      return Failure{
+      return tl::unexpected(Failure{
           20, s.col('L'),
-          s.has('R') && l == 2 ? "G10 L2 takes no R (no rotation)" : "G10 takes L2 or L20"};
+          s.has('R') && l == 2 ? "G10 L2 takes no R (no rotation)" : "G10 takes L2 or L20"});
     }
     s.use('P');
     s.use('L');
   } else if (g == 530) {
     const int motion = s.b.has(kMotion) ? s.b.code(kMotion) : s.next.motion;
     if (motion != 0 && motion != 10) {
-      return Failure{30, s.code_col(), "G53 needs G0 or G1 as the motion mode"};
+      return tl::unexpected(Failure{30, s.code_col(), "G53 needs G0 or G1 as the motion mode"});
     }
   } else if (g == 920) {
-    if (!s.axis_words()) return Failure{26, s.code_col(), "G92 needs axis words"};
+    if (!s.axis_words()) return tl::unexpected(Failure{26, s.code_col(), "G92 needs axis words"});
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<Failure> arc(Step3& s) {
+Checked arc(Step3& s) {
   if (!s.axis_words()) {
-    return Failure{26, s.code_col(),
-                   "G2/G3 needs axis words (Grbl has no full circle without them)"};
+    return tl::unexpected(
+        Failure{26, s.code_col(), "G2/G3 needs axis words (Grbl has no full circle without them)"});
   }
   const auto [a0, a1] = plane_axes(s.next.plane);
   if (!s.has(a0) && !s.has(a1)) {
-    return Failure{32, s.code_col(),
-                   fmt::format("G2/G3 needs {} or {}, an axis word in the plane", a0, a1)};
+    return tl::unexpected(Failure{
+        32, s.code_col(), fmt::format("G2/G3 needs {} or {}, an axis word in the plane", a0, a1)});
   }
   if (s.has('R')) {
     s.use('R');
-    return std::nullopt;
+    return {};
   }
   const auto [o0, o1] = plane_offsets(s.next.plane);
   if (!s.has(o0) && !s.has(o1)) {
-    return Failure{35, s.code_col(),
-                   fmt::format("G2/G3 needs R, or {} or {} for the centre", o0, o1)};
+    return tl::unexpected(Failure{
+        35, s.code_col(), fmt::format("G2/G3 needs R, or {} or {} for the centre", o0, o1)});
   }
   s.use('I');
   s.use('J');
   s.use('K');
-  return std::nullopt;
+  return {};
 }
 
-std::optional<Failure> motion(Step3& s) {
+Checked motion(Step3& s) {
   if (s.next.motion == 800) {
-    if (s.axis_words()) return Failure{31, s.col('X'), "axis words with G80 (no motion mode)"};
-    return std::nullopt;
+    if (s.axis_words())
+      return tl::unexpected(Failure{31, s.col('X'), "axis words with G80 (no motion mode)"});
+    return {};
   }
-  if (s.b.axis != AxisCommand::Motion) return std::nullopt;
+  if (s.b.axis != AxisCommand::Motion) return {};
   const int m = s.next.motion;
-  if (m == 0) return std::nullopt;
+  if (m == 0) return {};
   if (s.next.feed_mm == 0.0) {
-    return Failure{22, s.code_col(), "a feed move with no feed rate set (F)"};
+    return tl::unexpected(Failure{22, s.code_col(), "a feed move with no feed rate set (F)"});
   }
   if (m == 20 || m == 30) return arc(s);
   if (m >= 382 && m <= 385 && !s.axis_words()) {
-    return Failure{26, s.code_col(), "G38.x needs axis words (the probe target)"};
+    return tl::unexpected(Failure{26, s.code_col(), "G38.x needs axis words (the probe target)"});
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<Failure> step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
+Checked step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
   Step3 s{b, state, b.letters, col0};
   if (s.has('N') && s.get('N') > 10'000'000) {
-    return Failure{27, s.col('N'), "line number above 10,000,000"};
+    return tl::unexpected(Failure{27, s.col('N'), "line number above 10,000,000"});
   }
   // The block's modes first: the checks below see them (Grbl's gc_block.modal).
   if (b.has(kUnits)) s.next.inch = b.code(kUnits) == 200;
   if (b.has(kPlane)) s.next.plane = b.code(kPlane);
   if (b.has(kDistance)) s.next.incremental = b.code(kDistance) == 910;
-  if (auto f = feed_rate(s)) return f;
+  if (auto f = feed_rate(s); !f) return f;
   if (b.has(kToolLength) && b.code(kToolLength) == 431 &&
       (!s.has('Z') || s.has('X') || s.has('Y'))) {
-    return Failure{37, s.code_col(), "G43.1 takes a Z word only"};
+    return tl::unexpected(Failure{37, s.code_col(), "G43.1 takes a Z word only"});
   }
   if (b.has(kToolLength)) {
     s.next.tool_length_mm =
         b.code(kToolLength) == 431 ? s.get('Z') * (s.next.inch ? 25.4 : 1.0) : 0.0;
   }
   if (b.has(kMotion)) s.next.motion = b.code(kMotion);
-  if (auto f = non_modal(s)) return f;
-  if (auto f = motion(s)) return f;
+  if (auto f = non_modal(s); !f) return f;
+  if (auto f = motion(s); !f) return f;
   for (char l : std::string_view("NFSTXYZ"))
     s.use(l);
   if (s.unused != 0) {
     // The first in the alphabet, as Grbl's check of its value words.
     const Word w = b.value(static_cast<char>('A' + std::countr_zero(s.unused)));
-    return Failure{36, w.col,
-                   fmt::format("{} word is not used by any command of the block", w.letter)};
+    return tl::unexpected(Failure{
+        36, w.col, fmt::format("{} word is not used by any command of the block", w.letter)});
   }
   state = s.next;
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace
 
-CodeIndex::CodeIndex(const Dialect& d) : codes_(&d.codes) {
-  entry_.fill(-1);
-  for (std::size_t i = 0; i < d.codes.size(); ++i) {
-    const CodeEntry& e = d.codes[i];
-    if ((e.letter != 'G' && e.letter != 'M') || e.code < 0 || e.code >= kTenths) continue;
-    const auto slot = static_cast<std::size_t>(at(e.letter, e.code));
-    entry_[slot] = static_cast<std::int16_t>(i);
-    has_integer_[slot / 10] = true;
-  }
-}
-
-bool CodeIndex::has_integer(char letter, int integer) const {
-  if ((letter != 'G' && letter != 'M') || integer < 0 || integer * 10 >= kTenths) return false;
-  return has_integer_[static_cast<std::size_t>(at(letter, integer * 10) / 10)];
-}
-
-const CodeEntry* CodeIndex::find(char letter, int tenths) const {
-  if ((letter != 'G' && letter != 'M') || tenths < 0 || tenths >= kTenths) return nullptr;
-  const std::int16_t i = entry_[static_cast<std::size_t>(at(letter, tenths))];
-  return i < 0 ? nullptr : &(*codes_)[static_cast<std::size_t>(i)];
-}
-
-std::optional<Failure> check_block(const CodeIndex& codes, const OptionValues& options,
-                                   const std::vector<Word>& words, Modal& state, Accepted& out) {
+Checked check_block(const CodeIndex& codes, const OptionValues& options,
+                    const std::vector<Word>& words, Modal& state, Accepted& out) {
   out = {};
   BlockCodes b;
   for (const Word& w : words) {
@@ -337,14 +330,14 @@ std::optional<Failure> check_block(const CodeIndex& codes, const OptionValues& o
   if (b.axis == AxisCommand::None && (b.has_value('X') || b.has_value('Y') || b.has_value('Z')))
     b.axis = AxisCommand::Motion;  // axis words alone move with the modal motion
   const std::uint32_t col0 = words.empty() ? 1 : words.front().col;
-  if (auto f = step3(b, col0, state)) return f;
+  if (auto f = step3(b, col0, state); !f) return f;
   out.sets_motion = b.has(kMotion);
   out.uses_motion = b.axis == AxisCommand::Motion && !out.sets_motion;
   out.sets_distance = b.has(kDistance);
   out.sets_feed_mode = b.has(kFeedMode);
   out.sets_feed = b.has_value('F');
   out.program_end = b.has(kStop) && (b.code(kStop) == 20 || b.code(kStop) == 300);
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace usina::gcode::grbl

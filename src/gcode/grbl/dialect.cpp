@@ -25,11 +25,7 @@ std::unique_ptr<ProgramRunner> make(RunContext context) {
 const Dialect& grbl_dialect() {
   static const Dialect d{
       "grbl",
-      "Grbl 1.1 (hobby mills, routers, lasers): one block a line, ( ) and ; comments, no "
-      "parameters or expressions, no canned cycles, $ system commands; errors numbered as Grbl "
-      "numbers them",
-      LexicalRules{"\n", "( ) and ; to end of line; blanks and '/' ignored", "none", false, false,
-                   false},
+      LexicalRules{"\n", false},
       {
           {'G', 0, kMotion, "motion"},
           {'G', 10, kMotion, "motion"},

@@ -12,8 +12,11 @@
 #include <string_view>
 #include <vector>
 
+#include <tl/expected.hpp>
+
 #include "core/diagnostic.hpp"
 #include "core/vec3.hpp"
+#include "gcode/code_table.hpp"
 #include "gcode/dialect.hpp"
 #include "gcode/interp/evaluated_block.hpp"
 
@@ -37,6 +40,9 @@ struct Failure {
   std::uint32_t col = 0;
   std::string detail;
 };
+
+// A check of Grbl's that passes, or the error:N it gives.
+using Checked = tl::expected<void, Failure>;
 
 // A line as Grbl's line reader leaves it ([proto]): upper case, no blanks or
 // control characters, no comments, no '/', no real-time characters.
@@ -84,8 +90,8 @@ struct Word {
 
 // Grbl's words: a letter and a number (sign, digits, one point). error:1 when
 // a word does not start with a letter, error:2 when the number is bad.
-std::optional<Failure> read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
-                                  std::vector<Word>& out);
+Checked read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
+                   std::vector<Word>& out);
 
 // What the checks need to know between blocks (a subset of Grbl's gc_state).
 struct Modal {
@@ -108,30 +114,18 @@ struct Accepted {
   bool sets_feed = false;
 };
 
-// The dialect's G and M codes by number: the checks look codes up on every
-// line, so a table, not a search of the dialect's list.
-class CodeIndex {
- public:
-  explicit CodeIndex(const Dialect& d);
-  // A code of `letter` (G or M) has the integer part `integer`.
-  bool has_integer(char letter, int integer) const;
-  // The entry of `letter` and `tenths` (G38.2: 382), or nullptr.
-  const CodeEntry* find(char letter, int tenths) const;
+// Grbl reads a code's whole part from 0 to 255 (G255.9 at most).
+inline constexpr int kMaxCodeTenths = 2559;
 
- private:
-  static constexpr int kTenths = 2560;  // integer parts 0-255, as Grbl reads codes
-
-  static int at(char letter, int tenths) { return (letter == 'M' ? kTenths : 0) + tenths; }
-
-  const std::vector<CodeEntry>* codes_;
-  std::array<std::int16_t, 2 * kTenths> entry_;       // index in codes_, -1: none
-  std::array<bool, 2 * kTenths / 10> has_integer_{};  // by at(letter, integer * 10) / 10
-};
+// The grbl table indexed (gcode/code_table.hpp).
+inline CodeIndex code_index(const Dialect& d) {
+  return CodeIndex(d.name, d.codes, kMaxCodeTenths);
+}
 
 // Grbl's checks of one G-code block (gc_execute_line steps 1–3); on success
 // `state` is what it is after the block.
-std::optional<Failure> check_block(const CodeIndex& codes, const OptionValues& options,
-                                   const std::vector<Word>& words, Modal& state, Accepted& out);
+Checked check_block(const CodeIndex& codes, const OptionValues& options,
+                    const std::vector<Word>& words, Modal& state, Accepted& out);
 
 // Grbl's settings ($x=value) that usina reads; the others are recorded only.
 struct Settings {

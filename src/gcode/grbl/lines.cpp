@@ -193,25 +193,26 @@ std::string not_a_letter(char c) {
 
 }  // namespace
 
-std::optional<Failure> read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
-                                  std::vector<Word>& out) {
+Checked read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
+                   std::vector<Word>& out) {
   out.clear();
   std::size_t i = 0;
   while (i < text.size()) {
     const char letter = text[i];
     const std::uint32_t col = cols[i];
     if (letter < 'A' || letter > 'Z') {
-      return Failure{1, col, not_a_letter(letter)};
+      return tl::unexpected(Failure{1, col, not_a_letter(letter)});
     }
     double value = 0.0;
     const std::size_t n = read_number(text.substr(i + 1), value);
     if (n == 0) {
-      return Failure{2, col, std::string(1, letter) + " is not followed by a number"};
+      return tl::unexpected(
+          Failure{2, col, std::string(1, letter) + " is not followed by a number"});
     }
     out.push_back({letter, value, col});
     i += 1 + n;
   }
-  return std::nullopt;
+  return {};
 }
 
 }  // namespace usina::gcode::grbl

@@ -20,7 +20,7 @@ std::size_t line_length(const OptionValues& o) {
 }  // namespace
 
 LineReader::LineReader(const Dialect& d, const OptionValues& options, std::uint32_t file)
-    : codes_(d),
+    : codes_(code_index(d)),
       options_(options),
       file_(file),
       max_length_(line_length(options)),
@@ -89,9 +89,9 @@ void LineReader::warnings_of_the_line() {
 // words for the interpreter, as Grbl read them (N is Grbl's line number,
 // no word of the block).
 LineKind LineReader::block() {
-  if (auto f = read_words(stripped_.text, stripped_.cols, words_)) return fail(*f);
+  if (auto f = read_words(stripped_.text, stripped_.cols, words_); !f) return fail(f.error());
   Accepted acc;
-  if (auto f = check_block(codes_, options_, words_, next_.modal, acc)) return fail(*f);
+  if (auto f = check_block(codes_, options_, words_, next_.modal, acc); !f) return fail(f.error());
   handed_.clear();
   for (const Word& w : words_) {
     if (w.letter != 'N') handed_.words.push_back({w.letter, w.value, w.col});

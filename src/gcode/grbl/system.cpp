@@ -43,30 +43,32 @@ double default_setting(int n) {
 // MAX_STEP_RATE_HZ (config.h; off in the default build): steps/mm × max
 // rate (mm/min) may not pass it × 60. Grbl checks the setting being written
 // against the other one's present value.
-std::optional<Failure> step_rate(int n, double v, std::uint32_t col, const Settings& settings,
-                                 const OptionValues& options) {
+Checked step_rate(int n, double v, std::uint32_t col, const Settings& settings,
+                  const OptionValues& options) {
   const auto it = options.find("max_step_rate");
-  if (it == options.end() || it->second == "off") return std::nullopt;
+  if (it == options.end() || it->second == "off") return {};
   const double limit_hz = std::stod(it->second);
   const bool steps = n >= 100 && n <= 102;
-  if (!steps && !(n >= 110 && n <= 112)) return std::nullopt;
+  if (!steps && !(n >= 110 && n <= 112)) return {};
   const double other = settings.get(steps ? n + 10 : n - 10);
-  if (v * other <= limit_hz * 60.0) return std::nullopt;
+  if (v * other <= limit_hz * 60.0) return {};
   const double spm = steps ? v : other;
   const double rate = steps ? other : v;
-  return Failure{12, col,
-                 fmt::format("{} steps/mm at {} mm/min is {:.0f} steps/s, above the build's "
-                             "MAX_STEP_RATE_HZ {}",
-                             spm, rate, spm * rate / 60.0, limit_hz)};
+  return tl::unexpected(
+      Failure{12, col,
+              fmt::format("{} steps/mm at {} mm/min is {:.0f} steps/s, above the build's "
+                          "MAX_STEP_RATE_HZ {}",
+                          spm, rate, spm * rate / 60.0, limit_hz)});
 }
 
-std::optional<Failure> setting(std::string_view text, std::uint32_t col, Settings& settings,
-                               const OptionValues& options) {
+Checked setting(std::string_view text, std::uint32_t col, Settings& settings,
+                const OptionValues& options) {
   const std::size_t eq = text.find('=');
   int n = -1;
   const auto r = std::from_chars(text.data() + 1, text.data() + eq, n);
   if (r.ec != std::errc{} || r.ptr != text.data() + eq || !known_settings().count(n)) {
-    return Failure{3, col, fmt::format("{} is not a Grbl 1.1 setting", text.substr(0, eq))};
+    return tl::unexpected(
+        Failure{3, col, fmt::format("{} is not a Grbl 1.1 setting", text.substr(0, eq))});
   }
   std::vector<Word> words;
   // The value is read as Grbl's read_float does: an 'X' stands in for a letter.
@@ -74,21 +76,24 @@ std::optional<Failure> setting(std::string_view text, std::uint32_t col, Setting
   std::string as_word = "X";
   as_word += text.substr(eq + 1);
   std::vector<std::uint32_t> cols(as_word.size(), col);
-  if (read_words(as_word, cols, words) || words.size() != 1) {
-    return Failure{2, col, fmt::format("${}= needs a number", n)};
+  if (!read_words(as_word, cols, words) || words.size() != 1) {
+    return tl::unexpected(Failure{2, col, fmt::format("${}= needs a number", n)});
   }
   const double v = words[0].value;
-  if (v < 0) return Failure{4, col, fmt::format("${}={} must not be negative", n, v)};
-  if (n == 0 && v < 3) return Failure{6, col, "$0 (step pulse) must be at least 3 microseconds"};
-  if (auto f = step_rate(n, v, col, settings, options)) return f;
+  if (v < 0)
+    return tl::unexpected(Failure{4, col, fmt::format("${}={} must not be negative", n, v)});
+  if (n == 0 && v < 3)
+    return tl::unexpected(Failure{6, col, "$0 (step pulse) must be at least 3 microseconds"});
+  if (auto f = step_rate(n, v, col, settings, options); !f) return f;
   // Grbl reads the switches as whole numbers: $20=0.5 is off.
   const double whole = std::trunc(v);
   if (n == 20 && whole != 0 && settings.get(22) == 0) {
-    return Failure{10, col, "$20=1 (soft limits) needs homing enabled ($22=1) first"};
+    return tl::unexpected(
+        Failure{10, col, "$20=1 (soft limits) needs homing enabled ($22=1) first"});
   }
   settings.values[n] = (n == 20 || n == 22 || n == 23) ? whole : v;
   if (n == 22 && whole == 0) settings.values[20] = 0;  // Grbl turns soft limits off with homing
-  return std::nullopt;
+  return {};
 }
 
 SystemResult homing(const Modal& state, std::uint32_t col, const Settings& settings) {
@@ -125,8 +130,8 @@ SystemResult jog(std::string_view text, const std::vector<std::uint32_t>& cols,
   std::vector<Word> words;
   const std::string_view body = text.substr(3);
   const std::vector<std::uint32_t> body_cols(cols.begin() + 3, cols.end());
-  if (auto f = read_words(body, body_cols, words)) {
-    r.failure = f;
+  if (auto f = read_words(body, body_cols, words); !f) {
+    r.failure = f.error();
     return r;
   }
   bool inch = state.inch;
@@ -205,18 +210,17 @@ SystemResult restore(std::string_view what, std::uint32_t col, Settings& setting
 // A start-up block ($Nx=): stored, not run. Grbl checks its length against
 // the EEPROM line (80 bytes with the terminator) before the block itself;
 // with the default 80-byte line buffer a line cannot be that long.
-std::optional<Failure> startup_line(const CodeIndex& codes, const OptionValues& options,
-                                    std::string_view text, const std::vector<std::uint32_t>& cols,
-                                    const Modal& state) {
+Checked startup_line(const CodeIndex& codes, const OptionValues& options, std::string_view text,
+                     const std::vector<std::uint32_t>& cols, const Modal& state) {
   constexpr std::size_t kEepromLine = 80;
   if (text.size() + 1 > kEepromLine) {
-    return Failure{14, cols.front(),
-                   fmt::format("a start-up line of {} characters; Grbl stores {}", text.size(),
-                               kEepromLine - 1)};
+    return tl::unexpected(Failure{14, cols.front(),
+                                  fmt::format("a start-up line of {} characters; Grbl stores {}",
+                                              text.size(), kEepromLine - 1)});
   }
   std::vector<Word> words;
   const std::vector<std::uint32_t> body_cols(cols.begin() + 4, cols.end());
-  if (auto f = read_words(text.substr(4), body_cols, words)) return f;
+  if (auto f = read_words(text.substr(4), body_cols, words); !f) return f;
   Modal copy = state;
   Accepted ignored;
   return check_block(codes, options, words, copy, ignored);
@@ -267,12 +271,12 @@ SystemResult system_command(const CodeIndex& codes, const OptionValues& options,
   // $Nx=), nothing to run.
   if (text.substr(0, 3) == "$I=") return r;
   if (text.size() >= 4 && text[1] == 'N' && (text[2] == '0' || text[2] == '1') && text[3] == '=') {
-    r.failure = startup_line(codes, options, text, cols, state);
+    if (auto f = startup_line(codes, options, text, cols, state); !f) r.failure = f.error();
     return r;
   }
   if (text.size() >= 2 && text[1] >= '0' && text[1] <= '9' &&
       text.find('=') != std::string_view::npos) {
-    r.failure = setting(text, col, settings, options);
+    if (auto f = setting(text, col, settings, options); !f) r.failure = f.error();
     return r;
   }
   if (text.substr(0, 2) == "$J") {

@@ -58,7 +58,7 @@ void CanonMachine::refuse(const std::string& why) {
 
 void CanonMachine::emit(canon::OpKind kind) {
   if (faulted_) return;
-  if (auto why = canon::out_of_range(kind)) return refuse(*why);
+  if (auto in_range = canon::check_range(kind); !in_range) return refuse(in_range.error());
   sink_->on(canon::Op{std::move(kind), src_, origin_});
 }
 

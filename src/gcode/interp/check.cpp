@@ -8,15 +8,15 @@
 namespace usina::gcode {
 
 bool Interpreter::place_g(BlockWords& w, GCode g, std::uint32_t col) {
-  const int group = g_group(g);
-  if (g == 700 || g == 710 || g == 711 || g == 720 || g == 721) {
-    return error(core::Code::Unsupported, col,
-                 fmt::format("{} (LinuxCNC's lathe roughing/finishing cycle) is not supported yet",
-                             g_name(g).data()));
-  }
-  if (group < 0) {
+  const InterpCodes::Code* code = codes_.find('G', g);
+  if (code == nullptr) {
     return error(core::Code::UnknownGCode, col, fmt::format("unknown G code {}", g_name(g).data()));
   }
+  if (code->handler == CodeRun::Unsupported) {
+    return error(core::Code::Unsupported, col,
+                 fmt::format("{} ({}) is not supported yet", g_name(g).data(), code->entry->what));
+  }
+  const int group = code->entry->group;
   const auto gi = static_cast<std::size_t>(group);
   // LinuxCNC accepts G80 beside another motion code (CAM headers write
   // "G0 G80"): the cycle is cancelled and the other code is the motion.
@@ -36,10 +36,17 @@ bool Interpreter::place_g(BlockWords& w, GCode g, std::uint32_t col) {
 }
 
 bool Interpreter::place_m(BlockWords& w, int m, std::uint32_t col) {
-  const int group = m_group(m);
-  if (group < 0) return error(core::Code::UnknownMCode, col, fmt::format("unknown M code M{}", m));
+  const InterpCodes::Code* code =
+      m >= 0 && m <= kMaxCodeTenths / 10 ? codes_.find('M', m * 10) : nullptr;
+  if (code == nullptr)
+    return error(core::Code::UnknownMCode, col, fmt::format("unknown M code M{}", m));
+  if (code->handler == CodeRun::Unsupported) {
+    return error(core::Code::Unsupported, col,
+                 fmt::format("M{} ({}) is not supported yet", m, code->entry->what));
+  }
+  const int group = code->entry->group;
   const auto gi = static_cast<std::size_t>(group);
-  if (group == kMGroupUser) {
+  if (code->handler == CodeRun::UserM) {
     if (w.user_m_count == static_cast<int>(w.user_m.size())) {
       return error(core::Code::ModalGroupConflict, col, "too many user M codes in one block");
     }

@@ -29,7 +29,7 @@ void Interpreter::roll_back() {
     params_.set(it->first, it->second);
   c.parameters.clear();
   params_.record_writes(&c.parameters);
-  failed_ = false;
+  run_.clear_failure();
 }
 
 }  // namespace usina::gcode

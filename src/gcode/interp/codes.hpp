@@ -1,9 +1,13 @@
-// The G and M codes of RS274NGC (LinuxCNC) and their modal groups.
+// The interpreter's G/M tables: LinuxCNC's modal groups, how a code of
+// the table is run, and the rs274ngc table (rs274ngc/codes.cpp).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <string_view>
+#include <vector>
 
+#include "gcode/code_table.hpp"
 #include "gcode/interp/state.hpp"
 
 namespace usina::gcode {
@@ -36,10 +40,34 @@ inline constexpr int kMGroupModalState = 11;
 inline constexpr int kMGroupSubprogram = 12;
 inline constexpr int kMGroups = 13;
 
-// The modal group of a G code (in tenths), or -1 when usina does not know it.
-int g_group(GCode g);
-// The modal group of an M code, or -1.
-int m_group(int m);
+// How the interpreter runs a code of its dialect's table (the handler
+// names of the rs274ngc and fanuc tables).
+enum class CodeRun : std::uint8_t {
+  None,         // no such handler: the table is wrong
+  GroupStep,    // "group_step": in its group's step of LinuxCNC's execute_block order
+  UserM,        // "user_m": a user M code (M100-M199), in the block's order
+  Unsupported,  // "unsupported": a code of the control usina cannot run (CodeEntry::what)
+};
+
+CodeRun code_run_named(std::string_view handler);
+
+// The interpreter's tables hold G0 to G999.9 and M0 to M999; a larger
+// number is no code of theirs.
+inline constexpr int kMaxCodeTenths = 9999;
+
+using InterpCodes = CodeTable<CodeRun>;
+
+// A dialect's table resolved for the interpreter (kept by the dialect: the
+// result points into `codes`). A group out of the interpreter's range or an
+// unknown handler is a programming error (std::logic_error).
+InterpCodes interp_code_table(std::string_view dialect, const std::vector<CodeEntry>& codes);
+
+// LinuxCNC's codes (rs274ngc/codes.cpp): the rs274ngc dialect's table and
+// the start of fanuc's.
+std::vector<CodeEntry> linuxcnc_codes();
+// The rs274ngc dialect's table resolved: the interpreter's unless its
+// dialect gives another (DialectRules::codes).
+const InterpCodes& rs274ngc_code_table();
 // "G38.2" for 382.
 std::array<char, 32> g_name(GCode g);
 

@@ -127,12 +127,7 @@ Interpreter::Flow Interpreter::branch(const ProgramIndex& idx, std::uint32_t e, 
 // Every backward jump of the run counts against one budget, so nested loops
 // each under their own limit still end.
 bool Interpreter::count_iteration() {
-  if (++total_iterations_ <= options_.max_total_iterations) return true;
-  error(core::Code::TooManyIterations, 0,
-        fmt::format("the program's loops ran more than {} times in all; raise the limit with "
-                    "--max-total-iterations",
-                    options_.max_total_iterations));
-  return false;
+  return run_.count_jump("loops");
 }
 
 Interpreter::Flow Interpreter::loop_back(std::uint32_t e, const OEntry& target, bool after) {
@@ -296,7 +291,7 @@ std::optional<std::uint32_t> Interpreter::load_sub_file(const std::string& name)
     if (!file) continue;
     const std::uint32_t id = sources_.add(std::move(file));
     sub_files_.emplace(name, id);
-    skip_byte_order_mark(sources_.get(id)->text(), id, diags_);  // warned once a file
+    skip_byte_order_mark(sources_.get(id)->text(), id, run_.diags());  // warned once a file
     return id;
   }
   return std::nullopt;
@@ -404,7 +399,7 @@ bool Interpreter::end_of_file() {
     return true;
   }
   if (!frames_.empty()) {
-    loc_ = {cursor_.file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
+    run_.at({cursor_.file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0});
     error(core::Code::UnclosedBlock, 0,
           fmt::format("end of file inside subroutine o<{}>: endsub or M99 missing",
                       frames_.back().name));

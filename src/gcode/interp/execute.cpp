@@ -28,9 +28,9 @@ bool Interpreter::comments(std::span<const CommentText> notes) {
                      (t[1] == 'S' || t[1] == 's') && (t[2] == 'G' || t[2] == 'g') && t[3] == ',';
     if (msg) {
       t.remove_prefix(4);
-      core::SourceLoc loc = loc_;
+      core::SourceLoc loc = run_.loc();
       loc.col = c.col;
-      diags_.report({core::Code::Message, core::Severity::Note, loc, std::string(t)});
+      run_.diags().report({core::Code::Message, core::Severity::Note, loc, std::string(t)});
     }
     in_order([this, text = std::string(t)] { machine_.emit(canon::Comment{text}); });
   }
@@ -43,7 +43,7 @@ void Interpreter::in_order(std::function<void()> effect) {
     return;
   }
   comp_.defer(
-      loc_, [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
+      run_.loc(), [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
 }
 
 bool Interpreter::execute(std::span<const CommentText> notes, BlockWords& w) {

@@ -16,9 +16,10 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
     : sources_(sources),
       options_(std::move(options)),
       rules_(rules),
+      codes_(rules.codes != nullptr ? *rules.codes : rs274ngc_code_table()),
       cycle_hooks_(cycle_hooks),
       sink_(sink),
-      diags_(diags),
+      run_(diags, options_.max_total_iterations),
       machine_(sink, state_, diags),
       words_(std::make_unique<BlockWords>()) {
   // Programs start in mm whatever the machine's units, as LinuxCNC's
@@ -30,17 +31,6 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
 
 Interpreter::~Interpreter() = default;
 
-bool Interpreter::error(core::Code code, std::uint32_t col, std::string message) {
-  core::SourceLoc loc = loc_;
-  if (col > 0) {
-    loc.col = col;
-    loc.length = 1;
-  }
-  diags_.report({code, core::Severity::Error, loc, std::move(message)});
-  failed_ = true;
-  return false;
-}
-
 std::optional<int> Interpreter::whole(const BlockWords& w, char letter, int lo, int hi) {
   const double v = w.get(letter);
   const double r = std::round(v);
@@ -51,16 +41,6 @@ std::optional<int> Interpreter::whole(const BlockWords& w, char letter, int lo, 
     return std::nullopt;
   }
   return static_cast<int>(r);
-}
-
-bool Interpreter::error(const InterpError& e, std::uint32_t col) {
-  return error(e.code, col, e.message);
-}
-
-void Interpreter::warn(core::Code code, std::uint32_t col, std::string message) {
-  core::SourceLoc loc = loc_;
-  if (col > 0) loc.col = col;
-  diags_.report({code, core::Severity::Warning, loc, std::move(message)});
 }
 
 void Interpreter::start_from_parameters() {
@@ -82,24 +62,24 @@ bool Interpreter::run(std::uint32_t file) {
   start_from_parameters();
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr) return false;
-  cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
-  while (!ended_ && !failed_ && !at_eof_) {
+  cursor_.offset = skip_byte_order_mark(f->text(), file, run_.diags());
+  while (!ended_ && !run_.failed() && !at_eof_) {
     step();
     machine_faulted();
     // The sink's operation budget ran out (it reported why): end here.
-    if (sink_.stopped()) failed_ = true;
+    if (sink_.stopped()) run_.fail();
   }
-  if (!failed_ && !ended_) {
+  if (!run_.failed() && !ended_) {
     if (auto e = comp_.flush(machine_); !e) error(e.error());
   }
   machine_faulted();
-  if (!failed_ && !ended_) {
-    loc_ = {file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0};
+  if (!run_.failed() && !ended_) {
+    run_.at({file, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0});
     warn(core::Code::NoProgramEnd, 0,
          "the program ends without M2, M30 or '%'; taken as its end (LinuxCNC reports an error)");
   }
   sink_.finish();
-  return !failed_;
+  return !run_.failed();
 }
 
 Interpreter::Flow Interpreter::step() {
@@ -111,16 +91,16 @@ Interpreter::Flow Interpreter::step() {
   cursor_.offset = lv.next;
   ++cursor_.line;
   if (auto too_long = block_too_long(lv.text, {where.file, where.line, 1, 0, where.offset})) {
-    diags_.report(std::move(*too_long));
-    failed_ = true;
+    run_.diags().report(std::move(*too_long));
+    run_.fail();
     return Flow::Error;
   }
-  if (!parse_block(lv.text, where, block_, diags_)) {
-    failed_ = true;
+  if (!parse_block(lv.text, where, block_, run_.diags())) {
+    run_.fail();
     return Flow::Error;
   }
-  loc_ = block_.loc;
-  machine_.set_source(loc_);
+  run_.at(block_.loc);
+  machine_.set_source(run_.loc());
   if (block_.percent) return percent_line(where);
   if (block_.deleted && options_.block_delete) return Flow::Next;
   if (block_.o) return control(*block_.o, where.offset);
@@ -130,9 +110,9 @@ Interpreter::Flow Interpreter::step() {
 }
 
 bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
-  if (failed_ || ended_) return !failed_;
-  loc_ = block.loc;
-  machine_.set_source(loc_);
+  if (run_.failed() || ended_) return !run_.failed();
+  run_.at(block.loc);
+  machine_.set_source(run_.loc());
   if (block.empty()) return true;
   BlockWords& w = *words_;
   if (!sort_words(block.words, w) || !assign(block.assigns) || !check(w)) return false;
@@ -146,18 +126,18 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
 }
 
 bool Interpreter::finish() {
-  if (!failed_ && !ended_) {
+  if (!run_.failed() && !ended_) {
     if (auto e = comp_.flush(machine_); !e) error(e.error());
   }
   machine_faulted();
   sink_.finish();
-  return !failed_;
+  return !run_.failed();
 }
 
 // The canonical machine refused an op (and reported why): the run stops
 // there, as at any other error.
 bool Interpreter::machine_faulted() {
-  if (machine_.faulted()) failed_ = true;
+  if (machine_.faulted()) run_.fail();
   return machine_.faulted();
 }
 

@@ -17,6 +17,7 @@
 #include "gcode/expr.hpp"
 #include "gcode/interp/canned_cycles.hpp"
 #include "gcode/interp/canon_machine.hpp"
+#include "gcode/interp/codes.hpp"
 #include "gcode/interp/cutter_comp.hpp"
 #include "gcode/interp/cycle_hooks.hpp"
 #include "gcode/interp/evaluated_block.hpp"
@@ -24,6 +25,7 @@
 #include "gcode/parameters.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/program_index.hpp"
+#include "gcode/run_services.hpp"
 #include "gcode/tool_table.hpp"
 
 namespace usina::gcode {
@@ -57,6 +59,9 @@ struct DialectRules {
   // LinuxCNC's convert_coordinate_system does nothing then: a new value of
   // #5221... waits until the system is selected after another one.
   bool reselect_reloads_work_offsets = true;
+  // The dialect's G/M table resolved (interp/codes.hpp): which codes the
+  // control has and their groups. Null: LinuxCNC's, the rs274ngc dialect's.
+  const InterpCodes* codes = nullptr;
 };
 
 struct BlockWords;
@@ -109,7 +114,7 @@ class Interpreter final : private ParameterSource {
 
   bool ended() const { return ended_; }
 
-  bool failed() const { return failed_; }
+  bool failed() const { return run_.failed(); }
 
   const Parameters& parameters() const { return params_; }
 
@@ -173,7 +178,6 @@ class Interpreter final : private ParameterSource {
   bool loop_is_open(std::uint32_t start) const;
   void forget_loop(std::uint32_t start);
   bool count_iteration();
-  long total_iterations_ = 0;
   std::optional<bool> condition(const OWord& o);
   bool fanuc_call(const BlockWords& w);
   bool fanuc_return();
@@ -238,10 +242,18 @@ class Interpreter final : private ParameterSource {
   // A word's value as a whole number within [lo, hi] (within 1e-4 of one,
   // as LinuxCNC reads integers); reports E_BAD_WORD_VALUE otherwise.
   std::optional<int> whole(const BlockWords& w, char letter, int lo, int hi);
-  bool error(core::Code code, std::uint32_t col, std::string message);
-  bool error(const InterpError& e, std::uint32_t col = 0);
+
+  bool error(core::Code code, std::uint32_t col, std::string message) {
+    return run_.error(code, col, std::move(message));
+  }
+
+  bool error(const InterpError& e, std::uint32_t col = 0) { return run_.error(e, col); }
+
   bool machine_faulted();
-  void warn(core::Code code, std::uint32_t col, std::string message);
+
+  void warn(core::Code code, std::uint32_t col, std::string message) {
+    run_.warn(code, col, std::move(message));
+  }
 
   double mm(double program_value) const { return program_value * core::mm_per(state_.units); }
 
@@ -252,9 +264,10 @@ class Interpreter final : private ParameterSource {
   core::SourceManager& sources_;
   InterpOptions options_;
   DialectRules rules_;
+  const InterpCodes& codes_;  // rules_.codes, or the rs274ngc table
   CycleHooks* cycle_hooks_;
   canon::Sink& sink_;
-  core::DiagnosticSink& diags_;
+  RunServices run_;  // the block diagnostics point at, failure, the budget of jumps
   ModalState state_;
   Parameters params_;
   CanonMachine machine_;
@@ -267,7 +280,6 @@ class Interpreter final : private ParameterSource {
   Block block_;
   std::unique_ptr<BlockWords> words_;
   Cursor cursor_;
-  core::SourceLoc loc_;
   std::vector<Frame> frames_;
   std::vector<LoopCount> loops_;
   std::unordered_map<std::uint64_t, long> iterations_;
@@ -278,7 +290,6 @@ class Interpreter final : private ParameterSource {
   std::unordered_map<std::string, std::uint32_t> sub_files_;
   bool percent_mode_ = false;
   bool ended_ = false;
-  bool failed_ = false;
   double value_ = 0.0;
   bool value_returned_ = false;
   // Sticky spline state: the previous G5's second control point, for a G5 without I J.

@@ -94,7 +94,8 @@ bool Interpreter::straight(BlockWords& w, GCode g, const Axes& end) {
   // G33/G33.1 move with the spindle (K per revolution), not at F.
   if (g == 10 && !require_feed(w)) return false;
   if ((comp_.active() || !comp_.arc_allowed()) && (g == 0 || g == 10)) {
-    if (auto e = comp_.straight(xyz(end), g == 0, loc_, machine_); !e) return error(e.error());
+    if (auto e = comp_.straight(xyz(end), g == 0, run_.loc(), machine_); !e)
+      return error(e.error());
     return true;
   }
   if (g == 0) {
@@ -142,7 +143,7 @@ bool Interpreter::arc(BlockWords& w, GCode g, const Axes& end) {
   if (!center || !arc_in_range(w, start, stop, *center, ax.first, ax.second)) return false;
   Vec3 c3 = core::from_plane(*center, start3[ax.axial], plane);
   if (comp_.active() || !comp_.arc_allowed()) {
-    if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, loc_, machine_); !e)
+    if (auto e = comp_.arc(xyz(end), c3, ccw ? turns : -turns, run_.loc(), machine_); !e)
       return error(e.error());
     return true;
   }
@@ -164,9 +165,9 @@ bool Interpreter::arc_in_range(const BlockWords& w, Vec2 start, Vec2 stop, Vec2 
   const int axes[] = {first_axis, second_axis};
   for (int k = 0; k < 2; ++k) {
     const std::string what = fmt::format("the arc's centre {}", "XYZ"[axes[k]]);
-    if (auto why = canon::length_out_of_range(what.c_str(), coords[k])) {
+    if (auto in_range = canon::check_length(what.c_str(), coords[k]); !in_range) {
       return error(core::Code::ValueOutOfRange, col,
-                   fmt::format("{} (usina's range: docs/rs274ngc.md, Numbers)", *why));
+                   fmt::format("{} (usina's range: docs/rs274ngc.md, Numbers)", in_range.error()));
     }
   }
   const double radius = core::distance(start, center);

@@ -42,9 +42,9 @@ Vec3 in_system(const Parameters& params, double machine_mm, const Vec3& g92, con
 // range, reported at the word it came from: every later move adds it.
 bool Interpreter::offset_in_range(const char* what, char letter, double value, std::uint32_t col) {
   const std::string name = fmt::format("{} {}", what, letter);
-  if (auto why = canon::length_out_of_range(name.c_str(), value)) {
+  if (auto in_range = canon::check_length(name.c_str(), value); !in_range) {
     return error(core::Code::ValueOutOfRange, col,
-                 fmt::format("{} (usina's range: docs/rs274ngc.md, Numbers)", *why));
+                 fmt::format("{} (usina's range: docs/rs274ngc.md, Numbers)", in_range.error()));
   }
   return true;
 }

@@ -52,7 +52,7 @@ std::optional<double> Interpreter::predefined(std::string_view name) const {
                       : s.pos[static_cast<std::size_t>(a.axis)];
   }
   auto flag = [](bool b) { return b ? 1.0 : 0.0; };
-  if (name == "_line") return loc_.line;
+  if (name == "_line") return run_.loc().line;
   if (name == "_motion_mode") return s.motion;
   if (name == "_plane")
     return s.plane == core::Plane::XY ? 170 : (s.plane == core::Plane::ZX ? 180 : 190);

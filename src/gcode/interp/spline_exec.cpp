@@ -32,17 +32,17 @@ bool Interpreter::nurbs_g6(BlockWords& w, const Axes& end) {
   }
   if (w.has_axis()) {
     const double weight = w.has('R') ? w.get('R') : 1.0;
-    if (auto e = core::nurbs_weight_error(weight, g6_.points.size())) {
-      return error(core::Code::SplineBadValue, w.col_of('R'), *e);
+    if (auto valid = core::check_nurbs_weight(weight, g6_.points.size()); !valid) {
+      return error(core::Code::SplineBadValue, w.col_of('R'), valid.error());
     }
     g6_.points.push_back(core::in_plane(xyz(end), state_.plane));
     g6_.weights.push_back(weight);
   }
   if (w.has('K')) g6_.knots.push_back(w.get('K'));
   if (g6_.knots.size() < g6_.points.size() + static_cast<std::size_t>(g6_.order)) return true;
-  if (auto e = core::nurbs_error(g6_.order, g6_.points, g6_.weights)) {
+  if (auto valid = core::check_nurbs(g6_.order, g6_.points, g6_.weights); !valid) {
     g6_ = {};
-    return error(core::Code::SplineBadValue, 0, *e);
+    return error(core::Code::SplineBadValue, 0, valid.error());
   }
   core::Nurbs curve{g6_.order, g6_.points, g6_.weights, g6_.knots};
   for (std::size_t i = 1; i < curve.knots.size(); ++i) {
@@ -109,8 +109,8 @@ bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
       nurbs_order_ = order && *order > 3 ? *order : 3;
     }
     const double weight = w.has('P') ? w.get('P') : 1.0;
-    if (auto e = core::nurbs_weight_error(weight, nurbs_points_.size())) {
-      return error(core::Code::SplineBadValue, w.col_of('P'), *e);
+    if (auto valid = core::check_nurbs_weight(weight, nurbs_points_.size()); !valid) {
+      return error(core::Code::SplineBadValue, w.col_of('P'), valid.error());
     }
     if (w.has('X') || w.has('Y')) {
       nurbs_points_.push_back(stop);
@@ -121,8 +121,8 @@ bool Interpreter::spline(BlockWords& w, GCode g, const Axes& end) {
     return true;
   }
   // G5.3: the NURBS block is complete.
-  if (auto e = core::nurbs_error(nurbs_order_, nurbs_points_, nurbs_weights_)) {
-    return error(core::Code::SplineBadValue, 0, *e);
+  if (auto valid = core::check_nurbs(nurbs_order_, nurbs_points_, nurbs_weights_); !valid) {
+    return error(core::Code::SplineBadValue, 0, valid.error());
   }
   const core::Nurbs curve = core::make_nurbs(nurbs_order_, nurbs_points_, nurbs_weights_);
   nurbs_points_.clear();

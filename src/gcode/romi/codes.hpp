@@ -1,7 +1,7 @@
 // The romi dialect's G/M table (romi/dialect.cpp: code → modal group → handler
-// name), resolved once when the table is made: each code's handler is a
+// name), resolved once (gcode/code_table.hpp): each code's handler is a
 // member function of the executor, its group a rank in the order of
-// execution, and a code is found by index, never by name per block.
+// execution; and the codes of one block by rank.
 #pragma once
 
 #include <array>
@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gcode/code_table.hpp"
 #include "gcode/dialect.hpp"
 
 namespace usina::gcode::romi {
@@ -21,16 +22,13 @@ class Executor;
 using Handler = bool (Executor::*)(int code);
 
 // One code of the table, resolved.
-struct Code {
-  const CodeEntry* entry = nullptr;
-  int rank = 0;  // its group's place in the order of execution
-  Handler handler = nullptr;
-};
+using Code = ResolvedCode<Handler>;
 
+// The romi table resolved (gcode/code_table.hpp), with the rank from which
+// the groups run after the block's move.
 class CodeTable {
  public:
-  // Groups a dialect may have: a block's codes fit one bit each.
-  static constexpr int kMaxGroups = 32;
+  static constexpr int kMaxGroups = CodeIndex::kMaxGroups;
   // Codes are whole tenths from 0 to 9990 (G00 to G999): a larger value
   // is not a code (the front end says so before it looks a code up).
   static constexpr int kMaxTenths = 9990;
@@ -39,37 +37,24 @@ class CodeTable {
   // `after_move` on run after the block's move. A handler name nothing
   // resolves, a code out of range or too many groups is a programming
   // error (std::logic_error): the dialect's table is wrong.
-  CodeTable(const Dialect& dialect, Handler (*resolve)(std::string_view), int after_move);
+  CodeTable(const Dialect& dialect, Handler (*resolve)(std::string_view), int after_move)
+      : table_(dialect.name, dialect.codes, kMaxTenths, resolve),
+        first_after_move_(table_.index().rank(after_move)) {}
 
   // The code, or nullptr when the table has none (letter 'G' or 'M').
-  const Code* find(char letter, int tenths) const {
-    if (tenths < 0 || tenths > kMaxTenths || (letter != 'G' && letter != 'M')) return nullptr;
-    const std::uint8_t i = index_[slot(letter, tenths)];
-    return i == 0 ? nullptr : &codes_[i - 1];
-  }
+  const Code* find(char letter, int tenths) const { return table_.find(letter, tenths); }
 
   // The rank of the first group that runs after the block's move.
   int first_after_move() const { return first_after_move_; }
 
-  int ranks() const { return ranks_; }
+  int ranks() const { return table_.index().ranks(); }
 
-  std::string_view dialect_name() const { return dialect_name_; }
+  std::string_view dialect_name() const { return table_.index().dialect(); }
 
  private:
-  static std::size_t slot(char letter, int tenths) {
-    const std::size_t m_codes = letter == 'M' ? std::size_t{kMaxTenths} + 1 : 0;
-    return m_codes + static_cast<std::size_t>(tenths);
-  }
-
-  std::string_view dialect_name_;
-  std::vector<Code> codes_;
-  std::vector<std::uint8_t> index_;  // by slot(): 0 none, else 1 + position in codes_
-  int ranks_ = 0;
-  int first_after_move_ = 0;
+  gcode::CodeTable<Handler> table_;
+  int first_after_move_;
 };
-
-// "G01", "M06", "G38.2".
-std::string code_name(char letter, int tenths);
 
 // The codes of one block, at most one a group, in the order of execution.
 class BlockCodes {

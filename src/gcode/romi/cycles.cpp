@@ -74,7 +74,7 @@ bool Executor::drill_at(Vec2 p) {
 // A pattern's point: drilled when G81 is on, else only reached. Each
 // counts against the run's iteration budget, so a loop of patterns ends.
 bool Executor::at_pattern_point(Vec2 p) {
-  if (!run_.count_jump()) return false;
+  if (!run_.count_jump(kJumps)) return false;
   if (work_.drill.active) return drill_at(p);
   return emit_line({p.x, p.y, work_.pos.z}, true);
 }

@@ -37,11 +37,7 @@ std::unique_ptr<ProgramRunner> make(RunContext context);
 const Dialect& romi_dialect() {
   static const Dialect kDialect{
       "romi",
-      "ROMI MACH / Interact milling control (seed 000): '#' or newline ends a block, ';' "
-      "comments, lower-case axis words incremental, polar moves and arcs, G24/G25/G26/G81 "
-      "cycles, G31/G72/G73 transformations, Fagor-style P parameters",
-      LexicalRules{"\n#", "; to block end; ( ) holds a parametric statement or a comment",
-                   "P0..P999 in ( ) statements and as a word's value (X P1)", true, true, true},
+      LexicalRules{"\n#", true},
       {
           {'G', 0, Motion, "motion"},
           {'G', 10, Motion, "motion"},

@@ -55,7 +55,7 @@ bool Engine::jump_to_block(double n, std::uint32_t col) {
     return error(core::Code::UnknownBlockNumber, col,
                  fmt::format("no block N{} in the program", key(n)));
   }
-  if (it->second.at.offset <= cursor_.offset && !run_.count_jump()) return false;
+  if (it->second.at.offset <= cursor_.offset && !run_.count_jump(kJumps)) return false;
   cursor_ = it->second.at;
   return true;
 }
@@ -149,7 +149,7 @@ bool Engine::call(const Statement& st) {
   if (frames_.size() >= static_cast<std::size_t>(options_.max_call_depth)) {
     return error(core::Code::RecursionTooDeep, st.col, "RPT and CALL nested too deep");
   }
-  if (!run_.count_jump()) return false;
+  if (!run_.count_jump(kJumps)) return false;
   frames_.push_back({true, cursor_, 0, 0, 0});
   cursor_ = it->second;
   return true;

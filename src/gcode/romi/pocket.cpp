@@ -156,7 +156,7 @@ bool Executor::cut_pocket(const Pocket& p) {
     const double zk = -rough * k / p.steps;
     if (!emit_line({c.x, c.y, zk}, false)) return false;
     for (int m = 1; m <= p.rings; ++m) {
-      if (!run_.count_jump()) return false;
+      if (!run_.count_jump(kJumps)) return false;
       const double s = static_cast<double>(m) / p.rings;
       if (!ring(c, p.rough_x() * s, p.rough_y() * s, corner, zk)) return false;
     }

@@ -1,8 +1,6 @@
-// What the romi front end (romi_engine) and the handlers below it
-// (romi_exec) share for one run: the block being run and its diagnostics,
-// whether the run failed, the run's iteration budget, and the dialect's
-// options read once. Inside the block loop an error is `false` + the
-// diagnostic sink (DESIGN.md, "One road below the text").
+// What the romi front end (romi/engine) and the handlers below it
+// (romi/exec) share for one run: the run services every dialect's runner
+// has (gcode/run_services.hpp) and the dialect's options read once.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +9,7 @@
 #include "core/diagnostic.hpp"
 #include "gcode/dialect.hpp"
 #include "gcode/interp/interp_error.hpp"
+#include "gcode/run_services.hpp"
 
 namespace usina::gcode::romi {
 
@@ -27,38 +26,11 @@ struct Options {
   static Options from(const Dialect& dialect, const OptionValues& values);
 };
 
-class Services {
- public:
-  Services(core::DiagnosticSink& diags, long max_total_iterations)
-      : diags_(diags), max_iterations_(max_total_iterations) {}
+// The run's block, diagnostics and budget: the services every runner
+// shares (gcode/run_services.hpp).
+using Services = RunServices;
 
-  // The block the diagnostics point at.
-  const core::SourceLoc& loc() const { return loc_; }
-
-  void at(const core::SourceLoc& loc) { loc_ = loc; }
-
-  // Reports an error at column `col` of the block (0: the block) and fails
-  // the run; returns false.
-  bool error(core::Code code, std::uint32_t col, std::string message);
-
-  bool error(const InterpError& e) { return error(e.code, 0, e.message); }
-
-  void note(core::Code code, core::Severity sev, std::uint32_t col, std::string message);
-
-  bool failed() const { return failed_; }
-
-  void fail() { failed_ = true; }
-
-  // One more backward jump, call, pattern point or pocket ring: false with
-  // E_TOO_MANY_ITERATIONS beyond --max-total-iterations, so a loop ends.
-  bool count_jump();
-
- private:
-  core::DiagnosticSink& diags_;
-  core::SourceLoc loc_;
-  long max_iterations_;
-  long jumps_ = 0;
-  bool failed_ = false;
-};
+// What romi counts against the run's budget of jumps (RunServices::count_jump).
+inline constexpr std::string_view kJumps = "backward jumps, calls and pattern points";
 
 }  // namespace usina::gcode::romi

@@ -1,5 +1,5 @@
 // The rs274ngc dialect: LinuxCNC's language, run by the interpreter of
-// interp/ whose G/M table is interp/codes.cpp (g_group, m_group).
+// interp/ reading LinuxCNC's G/M table (rs274ngc/codes.cpp).
 #include "gcode/dialect.hpp"
 
 #include <set>
@@ -57,16 +57,13 @@ std::unique_ptr<ProgramRunner> make(RunContext context) {
 }  // namespace
 
 const Dialect& rs274ngc_dialect() {
-  static const Dialect d{
-      "rs274ngc",
-      "LinuxCNC's RS274NGC: newline ends a block, ( ) and ; comments, #1 and #<name> "
-      "parameters, [ ] expressions, O-word control flow",
-      LexicalRules{"\n", "( ) and ; to end of line", "#1..#5602, #<name>", false, false, false},
-      {},
-      {},
-      {},
-      &make};
+  static const Dialect d{"rs274ngc", LexicalRules{"\n", false}, linuxcnc_codes(), {}, {}, &make};
   return d;
+}
+
+const InterpCodes& rs274ngc_code_table() {
+  static const InterpCodes table = interp_code_table("rs274ngc", rs274ngc_dialect().codes);
+  return table;
 }
 
 }  // namespace usina::gcode

@@ -263,15 +263,15 @@ TEST(GrblLines, StripLikeGrblsLineReader) {
 TEST(GrblLines, ReadWordsLikeReadFloat) {
   std::vector<grbl::Word> w;
   const grbl::StrippedLine s = grbl::strip_line("G1X+1.5Y-.25Z3.");
-  ASSERT_FALSE(grbl::read_words(s.text, s.cols, w));
+  ASSERT_TRUE(grbl::read_words(s.text, s.cols, w));
   ASSERT_EQ(w.size(), 4u);
   EXPECT_DOUBLE_EQ(w[1].value, 1.5);
   EXPECT_DOUBLE_EQ(w[2].value, -0.25);
   EXPECT_DOUBLE_EQ(w[3].value, 3.0);
   const grbl::StrippedLine bad = grbl::strip_line("G1 X1.2.3");
   auto f = grbl::read_words(bad.text, bad.cols, w);
-  ASSERT_TRUE(f);
-  EXPECT_EQ(f->number, 1);  // "X1.2" then ".3" where a letter must be
+  ASSERT_FALSE(f);
+  EXPECT_EQ(f.error().number, 1);  // "X1.2" then ".3" where a letter must be
 }
 
 }  // namespace

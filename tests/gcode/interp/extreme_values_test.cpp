@@ -29,8 +29,8 @@ class FiniteSink final : public canon::Sink {
   void on(const canon::Op& op) override {
     ++ops;
     std::visit([this](const auto& k) { check(k); }, op.kind);
-    const auto why = canon::out_of_range(op.kind);
-    EXPECT_FALSE(why.has_value()) << why.value_or("") << "\n" << program;
+    const auto in_range = canon::check_range(op.kind);
+    EXPECT_TRUE(in_range) << (in_range ? "" : in_range.error()) << "\n" << program;
   }
 
  private:
