@@ -1,8 +1,9 @@
-// The fanuc dialect's G/M table: the codes the RS274NGC interpreter runs
-// for it (LinuxCNC's G codes, which the macro front end hands on), the
-// codes of Fanuc's controls usina cannot run (named, never "unknown"), and
-// the M codes the control runs itself; any other M code is the machine's
-// logic (fanuc/words.cpp hands it on).
+// The fanuc dialect's G/M table, the language a Fanuc program is written in:
+// LinuxCNC's G codes the two share, the codes of Fanuc's controls usina
+// cannot run (named, never "unknown"), and the M codes of the control; any
+// other M code is the machine's logic (fanuc/words.cpp hands it on). The
+// macro front end reads it; what it hands the interpreter are LinuxCNC's
+// words, run with LinuxCNC's table.
 #include "gcode/interp/codes.hpp"
 
 #include <algorithm>
@@ -49,16 +50,22 @@ constexpr Unsupported kUnsupportedG[] = {
     {811, "chopping"},
 };
 
-bool lathe_cycle_of_linuxcnc(const CodeEntry& e) {
-  return e.letter == 'G' && e.code >= 700 && e.code <= 721;
+// LinuxCNC's codes a Fanuc has with another meaning (G41.1 dynamic cutter
+// compensation there, normal direction control here) or not at all (its
+// lathe cycles G70–G72.1 on a mill).
+bool not_fanucs(const CodeEntry& e) {
+  if (e.letter != 'G') return false;
+  if (e.code >= 700 && e.code <= 721) return true;
+  for (const Unsupported& u : kUnsupportedG)
+    if (u.code == e.code) return true;
+  return false;
 }
 
 }  // namespace
 
 std::vector<CodeEntry> fanuc_codes() {
   std::vector<CodeEntry> t = linuxcnc_codes();
-  std::erase_if(t,
-                [](const CodeEntry& e) { return e.letter == 'M' || lathe_cycle_of_linuxcnc(e); });
+  std::erase_if(t, [](const CodeEntry& e) { return e.letter == 'M' || not_fanucs(e); });
   for (const Unsupported& u : kUnsupportedG)
     t.push_back({'G', u.code, kGroupNonModal, "unsupported", u.what});
   // The control's own M codes: program stop and end, spindle (M19 its

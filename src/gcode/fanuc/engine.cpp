@@ -69,10 +69,7 @@ Engine::Engine(RunContext& c)
       options_(c.options),
       diags_(c.diags),
       stroke_(c.sink, c.options.start),
-      interp_(
-          c.sources, std::move(c.options), stroke_, c.diags, this,
-          DialectRules{
-              .start_motion = 800, .reselect_reloads_work_offsets = true, .codes = &code_table()}) {
+      interp_(c.sources, std::move(c.options), stroke_, c.diags, this) {
   dpi_fanuc_ = c.dialect_options["decimal_point"] == "fanuc";
   program_digits_ = c.dialect_options["program_digits"] == "8" ? 8 : 4;
   rotation_incremental_ = c.dialect_options["rotation_incremental"] == "1";

@@ -34,7 +34,10 @@ std::vector<CodeEntry> fanuc_codes();
 
 namespace usina::gcode::fanuc {
 
-// The fanuc table resolved for the interpreter.
+// The fanuc table resolved (the interpreter's handler names): the front end
+// reads it for the control's M codes and the codes usina cannot run. The
+// words it hands on are LinuxCNC's (G41 D becomes G41.1 D), so the
+// interpreter below runs LinuxCNC's table.
 const InterpCodes& code_table();
 
 // A value as a message shows it: up to 10 decimals, no trailing zeros

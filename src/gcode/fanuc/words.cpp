@@ -15,10 +15,10 @@ namespace {
 
 constexpr std::uint32_t kAxisLetters = Words::letters_of("XYZABCUVW");
 
-// The M codes the control runs itself are the M codes of the dialect's
-// table (fanuc/codes.cpp); any other is the machine's.
-bool control_m_code(int m) {
-  return m >= 0 && m <= kMaxCodeTenths / 10 && code_table().find('M', m * 10) != nullptr;
+// The M codes of the control are the M codes of the dialect's table
+// (fanuc/codes.cpp); any other is the machine's.
+const InterpCodes::Code* control_m_code(int m) {
+  return m >= 0 && m <= kMaxCodeTenths / 10 ? code_table().find('M', m * 10) : nullptr;
 }
 
 // A code of the control usina cannot run (fanuc/codes.cpp): what it is.
@@ -96,7 +96,12 @@ bool Engine::machine_codes(const TapeBlock& b, Words& w) {
     // Not a whole number, or no code at all: the interpreter says so.
     if (word.value != std::floor(word.value) || word.value < 0 || word.value > 99999999) continue;
     const int m = Words::code(word);
-    if (control_m_code(m)) continue;
+    if (const InterpCodes::Code* c = control_m_code(m)) {
+      if (c->handler != CodeRun::Unsupported) continue;
+      return error(
+          core::Code::Unsupported, b, word.pos,
+          fmt::format("M{} ({}) is not supported by usina's fanuc dialect", m, c->entry->what));
+    }
     const bool listed = machine_m_codes_ && machine_m_codes_->contains(m);
     if (m == 97 && !listed) {
       return error(core::Code::Unsupported, b, word.pos,

@@ -325,7 +325,7 @@ Checked check_block(const CodeIndex& codes, const OptionValues& options,
   for (const Word& w : words) {
     auto f =
         (w.letter == 'G' || w.letter == 'M') ? read_code(codes, options, w, b) : read_value(w, b);
-    if (f) return f;
+    if (!f) return f;
   }
   if (b.axis == AxisCommand::None && (b.has_value('X') || b.has_value('Y') || b.has_value('Z')))
     b.axis = AxisCommand::Motion;  // axis words alone move with the modal motion
