@@ -9,6 +9,8 @@
 #include <optional>
 #include <string_view>
 
+#include <tl/expected.hpp>
+
 #include "core/diagnostic.hpp"
 
 namespace usina::gcode {
@@ -21,11 +23,12 @@ namespace usina::gcode {
 // parsers make at most one value or operator per character.
 inline constexpr std::size_t kMaxBlockLength = 4096;
 
-// E_BLOCK_TOO_LONG when `block` is longer than kMaxBlockLength; `start` is
-// where the block starts (file, line, column of its first character, line
-// offset). The caret goes to the first character beyond the limit.
-std::optional<core::Diagnostic> block_too_long(std::string_view block,
-                                               const core::SourceLoc& start);
+// `block` is at most kMaxBlockLength long; else its error is
+// E_BLOCK_TOO_LONG. `start` is where the block starts (file, line, column of
+// its first character, line offset). The caret goes to the first character
+// beyond the limit.
+tl::expected<void, core::Diagnostic> check_block_length(std::string_view block,
+                                                        const core::SourceLoc& start);
 
 // The UTF-8 byte-order mark some Windows editors write: skipped with
 // W_BYTE_ORDER_MARK in every dialect (the program's meaning is plain; the

@@ -128,9 +128,11 @@ TEST(BlockLength, AFileOfCrAloneLineEndsSaysSo) {
   ASSERT_NE(d, nullptr);
   EXPECT_NE(d->message.find("CR alone"), std::string::npos) << d->message;
   // CR LF line ends are no hint.
-  const auto crlf = block_too_long(std::string(kMaxBlockLength + 1, 'A') + "\r", {1, 1, 1, 0, 0});
-  ASSERT_TRUE(crlf.has_value());
-  EXPECT_EQ(crlf->message.find("CR alone"), std::string::npos);
+  const auto crlf =
+      check_block_length(std::string(kMaxBlockLength + 1, 'A') + "\r", {1, 1, 1, 0, 0});
+  ASSERT_FALSE(crlf.has_value());
+  EXPECT_EQ(crlf.error().message.find("CR alone"), std::string::npos);
+  EXPECT_TRUE(check_block_length(std::string(kMaxBlockLength, 'A'), {1, 1, 1, 0, 0}));
 }
 
 TEST(BlockLength, TooManyValuesInABlockIsABlockTooLongError) {

@@ -239,9 +239,10 @@ bool Engine::step() {
   file->release_before(b.line_offset);
   const std::string_view src = file->text();
   const std::size_t start = b.line_offset + b.col - 1;
-  if (auto too_long =
-          block_too_long(src.substr(start, b.length), {b.file, b.line, b.col, 1, b.line_offset})) {
-    diags_.report(std::move(*too_long));
+  if (auto length = check_block_length(src.substr(start, b.length),
+                                       {b.file, b.line, b.col, 1, b.line_offset});
+      !length) {
+    diags_.report(std::move(length.error()));
     failed_ = true;
     return false;
   }

@@ -32,8 +32,8 @@ LineKind LineReader::read(std::uint32_t n, std::uint64_t offset, std::string_vie
   loc_ = {file_, n, 1, 0, offset};
   line_ = text;
   if (!now_.ended) {
-    if (auto too_long = block_too_long(text, loc_)) {
-      diags.push_back(std::move(*too_long));
+    if (auto length = check_block_length(text, loc_); !length) {
+      diags.push_back(std::move(length.error()));
       return LineKind::Refused;
     }
   }

@@ -90,8 +90,9 @@ Interpreter::Flow Interpreter::step() {
   const LinePos where{cursor_.file, cursor_.line, cursor_.offset};
   cursor_.offset = lv.next;
   ++cursor_.line;
-  if (auto too_long = block_too_long(lv.text, {where.file, where.line, 1, 0, where.offset})) {
-    run_.diags().report(std::move(*too_long));
+  if (auto length = check_block_length(lv.text, {where.file, where.line, 1, 0, where.offset});
+      !length) {
+    run_.diags().report(std::move(length.error()));
     run_.fail();
     return Flow::Error;
   }

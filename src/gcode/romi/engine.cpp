@@ -79,8 +79,9 @@ void Engine::step() {
     ++cursor_.line;
     cursor_.line_start = bt.next;
   }
-  if (auto too_long = block_too_long(bt.text, {file_, where.line, col, 1, where.offset})) {
-    diags_.report(std::move(*too_long));
+  if (auto length = check_block_length(bt.text, {file_, where.line, col, 1, where.offset});
+      !length) {
+    diags_.report(std::move(length.error()));
     run_.fail();
     return;
   }
