@@ -169,6 +169,11 @@ bool Interpreter::check_unused(const BlockWords& w) {
                       mo == 50 || mo == 62 || mio != -1 || w.user_m_count > 0 ||
                       w.m[kMGroupSpindle] == 19 || w.m[kMGroupToolChange] == 61;
   if (w.has('Q') && !q_user) return unused('Q', "G64, G73, G83, G5, G76");
+  if (w.has('L') && mo == 740 && !rules_.g74_takes_l && g0 != 100) {
+    return error(core::Code::UnusedWord, w.col_of('L'),
+                 "L word with G74: LinuxCNC repeats no G74 (L is for G10, the other canned "
+                 "cycles, G5.2, M98); write the holes one by one");
+  }
   if (w.has('L') &&
       !(g0 == 100 || cycle || mo == 52 || w.m[kMGroupSubprogram] != -1 || mio == 66)) {
     return unused('L', "G10, canned cycles, G5.2, M98");

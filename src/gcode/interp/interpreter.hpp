@@ -59,6 +59,10 @@ struct DialectRules {
   // LinuxCNC's convert_coordinate_system does nothing then: a new value of
   // #5221... waits until the system is selected after another one.
   bool reselect_reloads_work_offsets = true;
+  // An L word repeats G74 as any canned cycle (the fanuc front end hands its
+  // K repeats on as L). LinuxCNC's check_other_codes leaves G74 out of the
+  // codes that take L, so it refuses G74 ... L (2.9 and 2.10).
+  bool g74_takes_l = true;
   // The dialect's G/M table resolved (interp/codes.hpp): which codes the
   // control has and their groups. Null: LinuxCNC's, the rs274ngc dialect's.
   const InterpCodes* codes = nullptr;

@@ -8,7 +8,8 @@ namespace usina::gcode {
 namespace {
 
 // What LinuxCNC does where the interpreter serves other controls otherwise.
-constexpr DialectRules kLinuxcnc{.start_motion = 800, .reselect_reloads_work_offsets = false};
+constexpr DialectRules kLinuxcnc{
+    .start_motion = 800, .reselect_reloads_work_offsets = false, .g74_takes_l = false};
 
 class Rs274Runner final : public ProgramRunner {
  public:

@@ -153,7 +153,7 @@ def cycle(b):
     words += cycle_words(b, g, True)
     if g == 87:
         words += g87_words(b, state, True)
-    if b.chance(0.3) and g != 74:  # G74 with L: known_differences.tsv g74-repeats
+    if b.chance(0.3) and g != 74:  # G74 with L: an error in both (G74Repeats tests)
         words.append(f'L{b.rnd.randint(1, 4)}')
     b.need_feed(words)
     b.emit(words)
