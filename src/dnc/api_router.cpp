@@ -114,8 +114,7 @@ HttpResponse Api::handle(const HttpRequest& req, const std::string& origin) {
   return error_response(req, http::status::not_found, "no such route");
 }
 
-std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
-                                         const HttpRequest& req) {
+std::optional<HttpResponse> Api::upgrade(HttpStream& stream, const HttpRequest& req) {
   auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
   if (!target || target->segments != std::vector<std::string>{"api", "events"})
     return error_response(req, http::status::not_found, "no WebSocket here; use /api/events");
@@ -127,7 +126,7 @@ std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
     return error_response(req, http::status::unauthorized, "log in first: no token given");
   auto session = verify_session(ctx_.store, token);
   if (!session) return error_response(req, http::status::unauthorized, session.error().message);
-  auto s = std::make_shared<EventSession>(std::move(socket));
+  auto s = EventSession::over(stream);
   ctx_.events.add(s);
   s->accept(req);
   return std::nullopt;

@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <boost/asio/ip/tcp.hpp>
-
 #include "dnc/api_events.hpp"
 #include "dnc/api_http.hpp"
 #include "dnc/server_machines.hpp"
@@ -61,8 +59,8 @@ class Api {
   explicit Api(ApiContext ctx) : ctx_(ctx) {}
 
   HttpResponse handle(const HttpRequest& req, const std::string& origin);
-  // `GET /api/events`: takes the socket for the event stream, or refuses.
-  std::optional<HttpResponse> upgrade(boost::asio::ip::tcp::socket& socket, const HttpRequest& req);
+  // `GET /api/events`: takes the stream (WS or WSS) for the events, or refuses.
+  std::optional<HttpResponse> upgrade(HttpStream& stream, const HttpRequest& req);
 
  private:
   ApiContext ctx_;
