@@ -41,6 +41,7 @@ Machines::Machines(asio::io_context& io, Store& store, EventHub& events,
   for (ServerMachine& c : config) {
     auto m = std::make_unique<MachineRuntime>();
     m->config = std::move(c);
+    load_reports(*m);
     machines_.push_back(std::move(m));
   }
 }
