@@ -81,6 +81,8 @@ HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);
 HttpResponse api_machine(ApiCall& c);
+HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
+HttpResponse api_tool_life(ApiCall& c);
 HttpResponse api_start_job(ApiCall& c);
 HttpResponse api_job(ApiCall& c);
 HttpResponse api_stop_job(ApiCall& c);

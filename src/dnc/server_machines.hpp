@@ -46,6 +46,8 @@ struct MachineRuntime {
   std::optional<JobRecord> answering;  // the job of a remote request being answered
   std::string link_error;              // why the port did not open, last time
   ControlReports reported;
+  std::string activity;  // the last recorded (store_utilisation.hpp), "" before the first
+  bool alarmed = false;  // the last job ended on an alarm; until the next one starts
 };
 
 struct JobOrder {
@@ -95,6 +97,9 @@ class Machines {
   bool machine_data(MachineRuntime& m, const ReceivedProgram& r);  // server_mdc.cpp
   void load_reports(MachineRuntime& m);  // what the control said before a restart
   void keep(const MachineRuntime& m, StoreResult<void> written);
+  // Records the machine's activity when it changed (server_activity.cpp);
+  // `off` when the server stops.
+  void note_activity(MachineRuntime& m, bool server_stopped = false);
   void on_punch(MachineRuntime& m, const ReceivedProgram& r);
   void on_request(MachineRuntime& m, const RemoteRequest& r, const AnswerFunction& answer);
   void on_request_answered(MachineRuntime& m, const JobReport& r);

@@ -165,10 +165,23 @@ CREATE TABLE control_messages (
 );
 )SQL";
 
+// Version 4: each machine's activity changes (store_utilisation.hpp), the
+// ground of its utilisation per day.
+constexpr std::string_view kV4 = R"SQL(
+CREATE TABLE machine_activity (
+  id @ID@,
+  machine TEXT NOT NULL,
+  activity TEXT NOT NULL,
+  at BIGINT NOT NULL
+);
+CREATE INDEX machine_activity_by_time ON machine_activity (machine, at, id);
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres},
     {2, kV2, "SELECT 1", "SELECT 1"},
     {3, kV3, "SELECT 1", "SELECT 1"},
+    {4, kV4, "SELECT 1", "SELECT 1"},
 };
 
 std::string spelled(std::string_view sql, Backend b) {
