@@ -40,6 +40,9 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/jobs/{}", A::Permission, P::ReadMachines, api_job},
     ApiRoute{V::post, "/api/jobs/{}/stop", A::Permission, P::StartJob, api_stop_job},
     ApiRoute{V::get, "/api/audit", A::Permission, P::ReadAudit, api_audit},
+    // Import and export (docs/dnc.md): the roles table's, as the folder's.
+    ApiRoute{V::post, "/api/import", A::Permission, P::ImportPrograms, api_import},
+    ApiRoute{V::get, "/api/export", A::Permission, P::ExportReleased, api_export},
     // Without a WebSocket upgrade (the upgrade itself is Api::upgrade).
     ApiRoute{V::get, "/api/events", A::AnyUser, P::ReadMachines, api_events_plain},
 };

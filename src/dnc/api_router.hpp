@@ -87,6 +87,8 @@ HttpResponse api_start_job(ApiCall& c);
 HttpResponse api_job(ApiCall& c);
 HttpResponse api_stop_job(ApiCall& c);
 HttpResponse api_audit(ApiCall& c);
+HttpResponse api_import(ApiCall& c);  // api_transfer.cpp
+HttpResponse api_export(ApiCall& c);
 HttpResponse api_events_plain(ApiCall& c);
 
 }  // namespace usina::dnc
