@@ -153,6 +153,12 @@ int run_server(const ServeOptions& o) {
   const auto at = (*server)->endpoint();
   fmt::print(stderr, "usina serve: listening on {}://{}:{} ({} machines)\n", (*server)->scheme(),
              at.address().to_string(), at.port(), (*server)->machines().all().size());
+  if ((*server)->scheme() == "http" && !at.address().is_loopback()) {
+    fmt::print(stderr,
+               "usina serve: warning: plain HTTP on {}: passwords and tokens cross the network in "
+               "the clear; give --tls-cert and --tls-key (docs/dnc-server.md, \"TLS\")\n",
+               at.address().to_string());
+  }
   if (const auto shdr = (*server)->mtconnect_endpoint()) {
     fmt::print(stderr, "usina serve: MTConnect SHDR adapter on {}:{}\n",
                shdr->address().to_string(), shdr->port());

@@ -13,7 +13,10 @@ std::string_view activity_of(const MachineRuntime& m) {
   case StationState::Offline: return "down";
   case StationState::Receiving: return "transfer";
   case StationState::Sending:
-    return m.current && m.current->mode == "drip" ? "feeding" : "transfer";
+    if (m.current) return m.current->mode == "drip" ? "feeding" : "transfer";
+    // A remote request's answer is a transfer; a refusal's few bytes, or
+    // the moments between a job's start or end and the station's state, are not.
+    return m.answering ? "transfer" : "idle";
   case StationState::Idle: return m.alarmed ? "alarm" : "idle";
   }
   return "idle";

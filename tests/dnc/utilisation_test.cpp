@@ -104,6 +104,9 @@ TEST(ApiUtilisation, TwoDripFeedsAreTwoPartsForEachToolOfTheProgram) {
   EXPECT_EQ(today["parts"], 2);
   EXPECT_EQ(j["from"], today["date"]);
   EXPECT_GT(today["idle_seconds"].get<double>(), 0.0);
+  EXPECT_GT(today["feeding_seconds"].get<double>(), 0.0);
+  EXPECT_EQ(today["transfer_seconds"].get<double>(), 0.0);  // drip feeds only
+  EXPECT_EQ(today["alarm_seconds"].get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(today["utilisation"].get<double>(),
                    today["running_seconds"].get<double>() / 86400.0);
   EXPECT_TRUE(today["availability"].is_number());
