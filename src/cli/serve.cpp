@@ -2,6 +2,7 @@
 // are the contract of spec/dnc-api.md).
 //   usina serve --init --data DIR --admin NAME --password-file F
 //   usina serve --data DIR --config usina-serve.toml [--listen HOST:PORT]
+//               [--tls-cert FILE --tls-key FILE]   (HTTPS and WSS)
 //   usina serve --store postgresql://... ...   (PostgreSQL instead of DIR)
 //   usina serve --verify-audit --data DIR       (exit 1 when the chain is broken)
 // SIGTERM or SIGINT stops it: running jobs end interrupted, their ends written.
@@ -36,6 +37,8 @@ struct ServeOptions {
   std::string password_file;
   std::string config;
   std::string listen;
+  std::string tls_cert;  // with tls_key: HTTPS instead of HTTP
+  std::string tls_key;
 };
 
 std::string where(const ServeOptions& o) {
@@ -111,9 +114,13 @@ std::optional<dnc::ServerConfig> configuration(const ServeOptions& o) {
   auto config = dnc::read_server_config(text.str(), 0, diags);
   const std::string base = std::filesystem::path(path).parent_path().string();
   if (config && !dnc::load_profiles(*config, base.empty() ? "." : base, diags)) config.reset();
-  // [web] root is relative to the configuration's folder, as a profile is.
-  if (config && !config->web_root.empty() && !base.empty())
-    config->web_root = (std::filesystem::path(base) / config->web_root).string();
+  // [web] root and the TLS files are relative to the configuration's folder,
+  // as a profile is.
+  if (config && !base.empty()) {
+    for (std::string* file : {&config->web_root, &config->tls_cert, &config->tls_key}) {
+      if (!file->empty()) *file = (std::filesystem::path(base) / *file).string();
+    }
+  }
   for (const core::Diagnostic& d : diags.all()) {
     fmt::print(stderr, "{}:{}:{}: {} {}: {}\n", path, d.loc.line, d.loc.col,
                core::severity_name(d.severity), core::code_name(d.code), d.message);
@@ -122,8 +129,16 @@ std::optional<dnc::ServerConfig> configuration(const ServeOptions& o) {
 }
 
 int run_server(const ServeOptions& o) {
+  if (o.tls_cert.empty() != o.tls_key.empty()) {
+    fmt::print(stderr, "usina: error: --tls-cert and --tls-key go together: give both\n");
+    return kUsage;
+  }
   auto config = configuration(o);
   if (!config) return kUsage;
+  if (!o.tls_cert.empty()) {
+    config->tls_cert = o.tls_cert;
+    config->tls_key = o.tls_key;
+  }
   const std::string listen = o.listen.empty() ? config->listen : o.listen;
   boost::asio::io_context io;
   auto server = dnc::Server::open(io, where(o), std::move(*config));
@@ -136,8 +151,14 @@ int run_server(const ServeOptions& o) {
     return kUsage;
   }
   const auto at = (*server)->endpoint();
-  fmt::print(stderr, "usina serve: listening on http://{}:{} ({} machines)\n",
+  fmt::print(stderr, "usina serve: listening on {}://{}:{} ({} machines)\n", (*server)->scheme(),
              at.address().to_string(), at.port(), (*server)->machines().all().size());
+  if ((*server)->scheme() == "http" && !at.address().is_loopback()) {
+    fmt::print(stderr,
+               "usina serve: warning: plain HTTP on {}: passwords and tokens cross the network in "
+               "the clear; give --tls-cert and --tls-key (docs/dnc-server.md, \"TLS\")\n",
+               at.address().to_string());
+  }
   if (const auto shdr = (*server)->mtconnect_endpoint()) {
     fmt::print(stderr, "usina serve: MTConnect SHDR adapter on {}:{}\n",
                shdr->address().to_string(), shdr->port());
@@ -171,6 +192,9 @@ void add_serve(CLI::App& app) {
   cmd->add_option("--config", o->config,
                   "the machines and [server] settings (default ./usina-serve.toml)");
   cmd->add_option("--listen", o->listen, "HOST:PORT to serve HTTP on (default 127.0.0.1:8080)");
+  cmd->add_option("--tls-cert", o->tls_cert,
+                  "a PEM certificate (chain): serve HTTPS and WSS (with --tls-key)");
+  cmd->add_option("--tls-key", o->tls_key, "the PEM private key of --tls-cert");
   cmd->callback([o] {
     if (!o->store.empty() && !dnc::is_postgres_url(o->store)) {
       fmt::print(stderr, "usina: error: --store takes a postgresql:// URL; a folder is --data\n");

@@ -1,38 +1,76 @@
 #include "dnc/api_events.hpp"
 
 #include <algorithm>
+#include <variant>
+
+#include <boost/beast/websocket.hpp>
+#include <boost/beast/websocket/ssl.hpp>
+
+#include "dnc/http_stream.hpp"
 
 namespace usina::dnc {
 
 namespace beast = boost::beast;
 namespace websocket = beast::websocket;
 
-EventSession::EventSession(boost::asio::ip::tcp::socket socket) : ws_(std::move(socket)) {}
+struct EventSession::Ws {
+  using PlainWs = websocket::stream<PlainStream>;
+  using TlsWs = websocket::stream<TlsStream>;
+
+  explicit Ws(HttpStream&& s)
+      : v(s.tls() ? over<TlsWs>(std::move(s)) : over<PlainWs>(std::move(s))) {}
+
+  template <typename W>
+  static std::variant<PlainWs, TlsWs> over(HttpStream&& s) {
+    using Next = typename W::next_layer_type;
+    return std::variant<PlainWs, TlsWs>(std::in_place_type<W>, std::move(std::get<Next>(s.v)));
+  }
+
+  std::variant<PlainWs, TlsWs> v;
+  beast::flat_buffer in;
+};
+
+EventSession::EventSession(HttpStream&& stream) : ws_(std::make_unique<Ws>(std::move(stream))) {}
+
+EventSession::~EventSession() = default;
+
+std::shared_ptr<EventSession> EventSession::over(HttpStream& upgraded) {
+  return std::make_shared<EventSession>(std::move(upgraded));
+}
 
 void EventSession::accept(HttpRequest upgrade) {
-  ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
-  ws_.set_option(websocket::stream_base::decorator(
-      [](websocket::response_type& res) { res.set(http::field::server, "usina"); }));
-  ws_.read_message_max(64 * 1024);
-  ws_.async_accept(upgrade, [self = shared_from_this()](const beast::error_code& ec) {
-    if (ec) return;
-    self->open_ = true;
-    self->ws_.text(true);
-    self->read_loop();
-    self->write_next();
-  });
+  std::visit(
+      [&](auto& ws) {
+        ws.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+        ws.set_option(websocket::stream_base::decorator(
+            [](websocket::response_type& res) { res.set(http::field::server, "usina"); }));
+        ws.read_message_max(64 * 1024);
+        ws.async_accept(upgrade, [self = shared_from_this(), &ws](const beast::error_code& ec) {
+          if (ec) return;
+          self->open_ = true;
+          ws.text(true);
+          self->read_loop();
+          self->write_next();
+        });
+      },
+      ws_->v);
 }
 
 // The client sends nothing we use; reading notices its close (and answers pings).
 void EventSession::read_loop() {
-  ws_.async_read(in_, [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
-    if (ec) {
-      self->open_ = false;
-      return;
-    }
-    self->in_.consume(self->in_.size());
-    self->read_loop();
-  });
+  std::visit(
+      [this](auto& ws) {
+        ws.async_read(ws_->in,
+                      [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
+                        if (ec) {
+                          self->open_ = false;
+                          return;
+                        }
+                        self->ws_->in.consume(self->ws_->in.size());
+                        self->read_loop();
+                      });
+      },
+      ws_->v);
 }
 
 void EventSession::send(std::shared_ptr<const std::string> text) {
@@ -47,24 +85,32 @@ void EventSession::send(std::shared_ptr<const std::string> text) {
 void EventSession::write_next() {
   if (!open_ || writing_ || queue_.empty()) return;
   writing_ = true;
-  ws_.async_write(boost::asio::buffer(*queue_.front()),
-                  [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
-                    self->writing_ = false;
-                    if (ec) {
-                      self->open_ = false;
-                      return;
-                    }
-                    self->queue_.pop_front();
-                    self->write_next();
-                  });
+  std::visit(
+      [this](auto& ws) {
+        ws.async_write(boost::asio::buffer(*queue_.front()),
+                       [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
+                         self->writing_ = false;
+                         if (ec) {
+                           self->open_ = false;
+                           return;
+                         }
+                         self->queue_.pop_front();
+                         self->write_next();
+                       });
+      },
+      ws_->v);
 }
 
 void EventSession::close() {
   if (!open_) return;
   open_ = false;
   queue_.clear();
-  ws_.async_close(websocket::close_code::going_away,
-                  [self = shared_from_this()](const beast::error_code&) {});
+  std::visit(
+      [this](auto& ws) {
+        ws.async_close(websocket::close_code::going_away,
+                       [self = shared_from_this()](const beast::error_code&) {});
+      },
+      ws_->v);
 }
 
 void EventHub::add(std::shared_ptr<EventSession> s) {

@@ -11,20 +11,25 @@
 #include <string>
 #include <vector>
 
-#include <boost/asio/ip/tcp.hpp>
-#include <boost/beast/core/tcp_stream.hpp>
-#include <boost/beast/websocket.hpp>
 #include <nlohmann/json.hpp>
 
 #include "dnc/api_http.hpp"
 
 namespace usina::dnc {
 
+struct HttpStream;  // http_stream.hpp
+
 class EventSession : public std::enable_shared_from_this<EventSession> {
  public:
   static constexpr std::size_t kMaxQueued = 4096;
 
-  explicit EventSession(boost::asio::ip::tcp::socket socket);
+  // Takes the upgraded connection's stream: WS on plain TCP, WSS on TLS.
+  explicit EventSession(HttpStream&& stream);
+  static std::shared_ptr<EventSession> over(HttpStream& upgraded);
+  ~EventSession();
+
+  EventSession(const EventSession&) = delete;
+  EventSession& operator=(const EventSession&) = delete;
 
   void accept(HttpRequest upgrade);
   void send(std::shared_ptr<const std::string> text);
@@ -36,8 +41,8 @@ class EventSession : public std::enable_shared_from_this<EventSession> {
   void read_loop();
   void write_next();
 
-  boost::beast::websocket::stream<boost::beast::tcp_stream> ws_;
-  boost::beast::flat_buffer in_;
+  struct Ws;  // the WebSocket and its read buffer (api_events.cpp)
+  std::unique_ptr<Ws> ws_;
   std::deque<std::shared_ptr<const std::string>> queue_;
   bool open_ = false;
   bool writing_ = false;

@@ -33,10 +33,16 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/programs/{}/diff", A::Permission, P::ReadPrograms, api_diff},
     ApiRoute{V::get, "/api/machines", A::Permission, P::ReadMachines, api_list_machines},
     ApiRoute{V::get, "/api/machines/{}", A::Permission, P::ReadMachines, api_machine},
+    ApiRoute{V::get, "/api/machines/{}/utilisation", A::Permission, P::ReadMachines,
+             api_utilisation},
+    ApiRoute{V::get, "/api/machines/{}/tools", A::Permission, P::ReadMachines, api_tool_life},
     ApiRoute{V::post, "/api/machines/{}/jobs", A::Permission, P::StartJob, api_start_job},
     ApiRoute{V::get, "/api/jobs/{}", A::Permission, P::ReadMachines, api_job},
     ApiRoute{V::post, "/api/jobs/{}/stop", A::Permission, P::StartJob, api_stop_job},
     ApiRoute{V::get, "/api/audit", A::Permission, P::ReadAudit, api_audit},
+    // Import and export (docs/dnc.md): the roles table's, as the folder's.
+    ApiRoute{V::post, "/api/import", A::Permission, P::ImportPrograms, api_import},
+    ApiRoute{V::get, "/api/export", A::Permission, P::ExportReleased, api_export},
     // Without a WebSocket upgrade (the upgrade itself is Api::upgrade).
     ApiRoute{V::get, "/api/events", A::AnyUser, P::ReadMachines, api_events_plain},
 };
@@ -114,8 +120,7 @@ HttpResponse Api::handle(const HttpRequest& req, const std::string& origin) {
   return error_response(req, http::status::not_found, "no such route");
 }
 
-std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
-                                         const HttpRequest& req) {
+std::optional<HttpResponse> Api::upgrade(HttpStream& stream, const HttpRequest& req) {
   auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
   if (!target || target->segments != std::vector<std::string>{"api", "events"})
     return error_response(req, http::status::not_found, "no WebSocket here; use /api/events");
@@ -127,7 +132,7 @@ std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
     return error_response(req, http::status::unauthorized, "log in first: no token given");
   auto session = verify_session(ctx_.store, token);
   if (!session) return error_response(req, http::status::unauthorized, session.error().message);
-  auto s = std::make_shared<EventSession>(std::move(socket));
+  auto s = EventSession::over(stream);
   ctx_.events.add(s);
   s->accept(req);
   return std::nullopt;

@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <boost/asio/ip/tcp.hpp>
-
 #include "dnc/api_events.hpp"
 #include "dnc/api_http.hpp"
 #include "dnc/server_machines.hpp"
@@ -61,8 +59,8 @@ class Api {
   explicit Api(ApiContext ctx) : ctx_(ctx) {}
 
   HttpResponse handle(const HttpRequest& req, const std::string& origin);
-  // `GET /api/events`: takes the socket for the event stream, or refuses.
-  std::optional<HttpResponse> upgrade(boost::asio::ip::tcp::socket& socket, const HttpRequest& req);
+  // `GET /api/events`: takes the stream (WS or WSS) for the events, or refuses.
+  std::optional<HttpResponse> upgrade(HttpStream& stream, const HttpRequest& req);
 
  private:
   ApiContext ctx_;
@@ -83,10 +81,14 @@ HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);
 HttpResponse api_machine(ApiCall& c);
+HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
+HttpResponse api_tool_life(ApiCall& c);
 HttpResponse api_start_job(ApiCall& c);
 HttpResponse api_job(ApiCall& c);
 HttpResponse api_stop_job(ApiCall& c);
 HttpResponse api_audit(ApiCall& c);
+HttpResponse api_import(ApiCall& c);  // api_transfer.cpp
+HttpResponse api_export(ApiCall& c);
 HttpResponse api_events_plain(ApiCall& c);
 
 }  // namespace usina::dnc

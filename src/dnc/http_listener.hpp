@@ -16,14 +16,19 @@
 
 #include "dnc/api_http.hpp"
 
+namespace boost::asio::ssl {
+class context;
+}
+
 namespace usina::dnc {
+
+struct HttpStream;  // http_stream.hpp
 
 struct HttpHandlers {
   // The answer to a request from `origin` (the client's address, "127.0.0.1").
   std::function<HttpResponse(const HttpRequest&, const std::string& origin)> request;
-  // A WebSocket upgrade: takes the socket, or answers with an error.
-  std::function<std::optional<HttpResponse>(boost::asio::ip::tcp::socket&, const HttpRequest&)>
-      upgrade;
+  // A WebSocket upgrade: takes the stream (plain or TLS), or answers with an error.
+  std::function<std::optional<HttpResponse>(HttpStream&, const HttpRequest&)> upgrade;
 };
 
 struct HttpLimits {
@@ -39,6 +44,12 @@ class HttpListener : public std::enable_shared_from_this<HttpListener> {
 
   // Binds and listens; an error message when it cannot.
   std::string listen(const boost::asio::ip::tcp::endpoint& at);
+
+  // Every connection speaks TLS with `ctx` (http_tls.hpp); before start().
+  void use_tls(std::shared_ptr<boost::asio::ssl::context> ctx) { tls_ = std::move(ctx); }
+
+  boost::asio::ssl::context* tls() const { return tls_.get(); }
+
   void start();
   void stop();
 
@@ -56,6 +67,7 @@ class HttpListener : public std::enable_shared_from_this<HttpListener> {
   boost::asio::ip::tcp::acceptor acceptor_;
   HttpHandlers handlers_;
   HttpLimits limits_;
+  std::shared_ptr<boost::asio::ssl::context> tls_;  // null: plain HTTP
 };
 
 }  // namespace usina::dnc

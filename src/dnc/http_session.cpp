@@ -1,5 +1,6 @@
 #include "dnc/http_session.hpp"
 
+#include <boost/asio/ssl/stream_base.hpp>
 #include <boost/beast/websocket/rfc6455.hpp>
 #include <fmt/format.h>
 
@@ -30,8 +31,10 @@ http::status status_of_read_error(const beast::error_code& ec) {
 }  // namespace
 
 HttpSession::HttpSession(asio::ip::tcp::socket socket, std::shared_ptr<HttpListener> listener)
-    : stream_(std::move(socket)), listener_(std::move(listener)) {
-  origin_ = origin_of(stream_.socket());
+    : stream_(listener->tls() != nullptr ? HttpStream(std::move(socket), *listener->tls())
+                                         : HttpStream(std::move(socket))),
+      listener_(std::move(listener)) {
+  origin_ = origin_of(tcp_of(stream_).socket());
   ++listener_->connections;
 }
 
@@ -40,23 +43,42 @@ HttpSession::~HttpSession() {
 }
 
 void HttpSession::start() {
+  if (stream_.tls()) return handshake();
   read();
+}
+
+// A client that sends no TLS ClientHello (plain HTTP on the HTTPS port) fails
+// here and is closed without an answer: nothing is ever said in the clear.
+void HttpSession::handshake() {
+  tcp_of(stream_).expires_after(listener_->limits().read_timeout);
+  std::get<TlsStream>(stream_.v).async_handshake(
+      asio::ssl::stream_base::server, buffer_.data(),
+      [self = shared_from_this()](const beast::error_code& ec, std::size_t used) {
+        if (ec) return self->close();
+        self->buffer_.consume(used);
+        self->read();
+      });
 }
 
 void HttpSession::read() {
   parser_.emplace();
   parser_->body_limit(listener_->limits().body_bytes);
   parser_->header_limit(listener_->limits().header_bytes);
-  stream_.expires_after(listener_->limits().read_timeout);
-  http::async_read(
-      stream_, buffer_, *parser_,
-      [self = shared_from_this()](const beast::error_code& ec, std::size_t) { self->on_read(ec); });
+  tcp_of(stream_).expires_after(listener_->limits().read_timeout);
+  std::visit(
+      [this](auto& stream) {
+        http::async_read(stream, buffer_, *parser_,
+                         [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
+                           self->on_read(ec);
+                         });
+      },
+      stream_.v);
 }
 
 void HttpSession::on_read(const beast::error_code& ec) {
   if (ec == http::error::end_of_stream || ec == beast::error::timeout ||
       ec == asio::error::operation_aborted || ec == asio::error::connection_reset ||
-      ec == asio::error::eof) {
+      ec == asio::error::eof || ec == asio::ssl::error::stream_truncated) {
     close();
     return;
   }
@@ -74,7 +96,7 @@ void HttpSession::on_read(const beast::error_code& ec) {
   }
   HttpRequest req = parser_->release();
   if (beast::websocket::is_upgrade(req)) {
-    auto refused = listener_->handlers().upgrade(stream_.socket(), req);
+    auto refused = listener_->handlers().upgrade(stream_, req);
     if (refused) answer(std::move(*refused), false);
     return;  // the socket now belongs to the WebSocket (or is answered and closed)
   }
@@ -86,36 +108,46 @@ void HttpSession::on_read(const beast::error_code& ec) {
 void HttpSession::answer(HttpResponse res, bool drain_after) {
   if (drain_after) res.keep_alive(false);
   auto shared = std::make_shared<HttpResponse>(std::move(res));
-  stream_.expires_after(listener_->limits().read_timeout);
-  http::async_write(
-      stream_, *shared,
-      [self = shared_from_this(), shared, drain_after](const beast::error_code& ec, std::size_t) {
-        if (ec) return self->close();
-        if (drain_after) return self->drain();
-        if (!shared->keep_alive()) return self->close();
-        self->read();
-      });
+  tcp_of(stream_).expires_after(listener_->limits().read_timeout);
+  std::visit(
+      [&](auto& stream) {
+        http::async_write(stream, *shared,
+                          [self = shared_from_this(), shared, drain_after](
+                              const beast::error_code& ec, std::size_t) {
+                            if (ec) return self->close();
+                            if (drain_after) return self->drain();
+                            if (!shared->keep_alive()) return self->close();
+                            self->read();
+                          });
+      },
+      stream_.v);
 }
 
 void HttpSession::drain() {
   boost::system::error_code ignored;
-  stream_.socket().shutdown(asio::ip::tcp::socket::shutdown_send, ignored);
-  stream_.expires_after(std::chrono::seconds(5));  // for the whole drain
+  tcp_of(stream_).socket().shutdown(asio::ip::tcp::socket::shutdown_send, ignored);
+  tcp_of(stream_).expires_after(std::chrono::seconds(5));  // for the whole drain
   drain_more();
 }
 
 void HttpSession::drain_more() {
-  stream_.async_read_some(asio::buffer(sink_),
-                          [self = shared_from_this()](const beast::error_code& ec, std::size_t) {
-                            if (ec) return self->close();
-                            self->drain_more();
-                          });
+  std::visit(
+      [this](auto& stream) {
+        stream.async_read_some(asio::buffer(sink_), [self = shared_from_this()](
+                                                        const beast::error_code& ec, std::size_t) {
+          if (ec) return self->close();
+          self->drain_more();
+        });
+      },
+      stream_.v);
 }
 
 void HttpSession::close() {
   boost::system::error_code ignored;
-  stream_.socket().shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
-  stream_.close();
+  // A TLS connection is closed without close_notify: every answer carries
+  // its length, so the client knows it has it all.
+  tcp_of(stream_).socket().shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+  tcp_of(stream_).close();
 }
 
 }  // namespace usina::dnc

@@ -1,5 +1,7 @@
 // One HTTP connection of the listener (http_listener.hpp): requests read one
 // after the other on a keep-alive connection, each answered before the next.
+// On a TLS listener the connection's TLS handshake comes first (within the
+// read timeout); a client that does not speak TLS there is dropped.
 #pragma once
 
 #include <memory>
@@ -10,6 +12,7 @@
 #include <boost/beast/http.hpp>
 
 #include "dnc/http_listener.hpp"
+#include "dnc/http_stream.hpp"
 
 namespace usina::dnc {
 
@@ -24,6 +27,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void start();
 
  private:
+  void handshake();
   void read();
   void on_read(const boost::beast::error_code& ec);
   void answer(HttpResponse res, bool drain);
@@ -31,7 +35,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void drain_more();
   void close();
 
-  boost::beast::tcp_stream stream_;
+  HttpStream stream_;
   boost::beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
   std::shared_ptr<HttpListener> listener_;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "dnc/http_tls.hpp"
 #include "dnc/store_jobs.hpp"
 
 namespace usina::dnc {
@@ -57,8 +58,8 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
     if (req.method() == http::verb::get && is_page_target(target)) return web_->serve(req);
     return api_->handle(req, origin);
   };
-  handlers.upgrade = [this](boost::asio::ip::tcp::socket& socket, const HttpRequest& req) {
-    return api_->upgrade(socket, req);
+  handlers.upgrade = [this](HttpStream& stream, const HttpRequest& req) {
+    return api_->upgrade(stream, req);
   };
   HttpLimits limits;
   limits.body_bytes = config_.max_upload;
@@ -70,6 +71,11 @@ std::string Server::start(const std::string& listen) {
   const auto at = parse_listen(listen);
   if (!at)
     return fmt::format("cannot read the address `{}`; give host:port, as 127.0.0.1:8080", listen);
+  if (!config_.tls_cert.empty() || !config_.tls_key.empty()) {
+    auto tls = make_tls_context(config_.tls_cert, config_.tls_key);
+    if (!tls) return tls.error();
+    listener_->use_tls(std::move(*tls));
+  }
   if (std::string error = listener_->listen(*at); !error.empty())
     return fmt::format("cannot listen on {}: {}", listen, error);
   if (std::string error = start_data_outputs(); !error.empty()) return error;

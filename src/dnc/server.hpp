@@ -33,14 +33,19 @@ class Server {
                                                                  ServerConfig config,
                                                                  StoreOptions options = {});
 
-  // Listens on `listen` ("127.0.0.1:8080", port 0 for any) and opens the
-  // machines' ports; an error message when it cannot listen.
+  // Listens on `listen` ("127.0.0.1:8080", port 0 for any), over TLS when
+  // the configuration names a certificate and key, and opens the machines'
+  // ports; an error message when it cannot listen or the TLS files are bad
+  // (found before listening).
   std::string start(const std::string& listen);
   // Interrupts the running jobs with `reason`; `stopped` runs when their
   // ends are written and the ports and connections are closed.
   void stop(const std::string& reason, std::function<void()> stopped);
 
   boost::asio::ip::tcp::endpoint endpoint() const { return listener_->local_endpoint(); }
+
+  // "https" when the API is served over TLS, else "http".
+  std::string scheme() const { return listener_->tls() != nullptr ? "https" : "http"; }
 
   Store& store() { return *store_; }
 

@@ -47,6 +47,23 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
       ok = false;
     }
   }
+  for (const auto& [key, into] :
+       {std::pair{"tls_cert", &c.tls_cert}, std::pair{"tls_key", &c.tls_key}}) {
+    const toml::node* n = t->get(key);
+    if (n == nullptr) continue;
+    const auto v = n->value<std::string>();
+    if (v && !v->empty()) {
+      *into = *v;
+    } else {
+      fail(diags, file_id, n->source(), fmt::format("server.{} must be a PEM file's path", key));
+      ok = false;
+    }
+  }
+  if (c.tls_cert.empty() != c.tls_key.empty()) {
+    fail(diags, file_id, t->source(),
+         "server.tls_cert and server.tls_key go together: give both, or neither for plain HTTP");
+    ok = false;
+  }
   if (const toml::node* n = t->get("session_hours")) {
     const auto v = n->value<double>();
     if (v && *v > 0.0 && *v <= 24.0 * 30) {

@@ -6,6 +6,8 @@
 //   listen = "127.0.0.1:8080"   # --listen overrides it
 //   max_upload = 67108864       # bytes of a request body; past it: 413
 //   session_hours = 8           # a login's life
+//   tls_cert = "server.crt"     # HTTPS and WSS (both or neither; relative to the configuration's
+//   folder) tls_key = "server.key"
 //
 //   [web]
 //   root = "web"                # the built page's folder (relative to the configuration's)
@@ -41,6 +43,10 @@ struct ServerConfig {
   std::string listen = "127.0.0.1:8080";
   std::uint64_t max_upload = 64ull << 20;
   double session_hours = 8.0;
+  // [server] tls_cert / tls_key (--tls-cert / --tls-key override them): PEM
+  // files; both or neither. Empty: plain HTTP.
+  std::string tls_cert;
+  std::string tls_key;
   MtconnectConfig mtconnect;  // [mtconnect]: the SHDR adapter (data_config.hpp)
   MqttConfig mqtt;            // [mqtt]: events to a broker
   // [web] (docs/web.md): the page's folder, as written (serve.cpp makes it

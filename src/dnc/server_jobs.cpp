@@ -148,6 +148,8 @@ bool Machines::launch(MachineRuntime& m, JobRecord job) {
   job.state = "running";
   job.started_at_us = store_.now_us();
   m.current = job;
+  m.alarmed = false;
+  note_activity(m);
   m.progress_seen = 0;
   m.ticks_since_saved = 0;
   save(job, kServer);
@@ -161,6 +163,8 @@ void Machines::on_job_done(MachineRuntime& m, const JobReport& r) {
   apply_report(job, r);
   job.ended_at_us = store_.now_us();
   m.current.reset();
+  if (job.alarm) m.alarmed = true;
+  note_activity(m);
   save(job, Actor{job.actor, "server"});
   publish_job(job);
   if (job.mode == "drip" && job.state == "done") count_part(m, job);

@@ -41,6 +41,7 @@ Machines::Machines(asio::io_context& io, Store& store, EventHub& events,
   for (ServerMachine& c : config) {
     auto m = std::make_unique<MachineRuntime>();
     m->config = std::move(c);
+    load_reports(*m);
     machines_.push_back(std::move(m));
   }
 }
@@ -49,6 +50,7 @@ void Machines::start() {
   for (auto& m : machines_) {
     m->station = std::make_shared<Station>(io_, m->config.link, station_events(*m));
     m->station->start();
+    note_activity(*m);
   }
   tick();
 }
@@ -58,6 +60,7 @@ StationEvents Machines::station_events(MachineRuntime& m) {
   e.state = [this, &m](StationState s) {
     events_.publish("machine.state",
                     {{"machine", m.config.link.name}, {"state", station_state_name(s)}});
+    note_activity(m);
     if (s == StationState::Idle) start_next(m);
   };
   e.punched = [this, &m](const ReceivedProgram& r) {
@@ -154,6 +157,7 @@ void Machines::finish_stop() {
   }
   for (auto& m : machines_) {
     if (m->station) m->station->shutdown();
+    note_activity(*m, true);
   }
   auto stopped = std::move(stopped_);
   stopped_ = nullptr;

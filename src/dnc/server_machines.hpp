@@ -26,8 +26,8 @@
 
 namespace usina::dnc {
 
-// What the control itself said since the server started (DPRNT lines,
-// `(MSG` comments): server_mdc.cpp.
+// What the control itself said (DPRNT lines, `(MSG` comments): server_mdc.cpp;
+// kept in the store (store_parts.hpp) and read back when the server starts.
 struct ControlReports {
   std::int64_t parts = 0;                     // part lines seen
   std::optional<std::int64_t> control_count;  // the count the control printed last
@@ -46,6 +46,8 @@ struct MachineRuntime {
   std::optional<JobRecord> answering;  // the job of a remote request being answered
   std::string link_error;              // why the port did not open, last time
   ControlReports reported;
+  std::string activity;  // the last recorded (store_utilisation.hpp), "" before the first
+  bool alarmed = false;  // the last job ended on an alarm; until the next one starts
 };
 
 struct JobOrder {
@@ -93,6 +95,11 @@ class Machines {
   void count_part(MachineRuntime& m, const JobRecord& job);  // server_parts.cpp
   // A punch without an O number read as machine data; false when nothing in it was.
   bool machine_data(MachineRuntime& m, const ReceivedProgram& r);  // server_mdc.cpp
+  void load_reports(MachineRuntime& m);  // what the control said before a restart
+  void keep(const MachineRuntime& m, StoreResult<void> written);
+  // Records the machine's activity when it changed (server_activity.cpp);
+  // `off` when the server stops.
+  void note_activity(MachineRuntime& m, bool server_stopped = false);
   void on_punch(MachineRuntime& m, const ReceivedProgram& r);
   void on_request(MachineRuntime& m, const RemoteRequest& r, const AnswerFunction& answer);
   void on_request_answered(MachineRuntime& m, const JobReport& r);

@@ -3,11 +3,13 @@
 // machine's patterns, and `(MSG, ...)` comments. A punch without an O
 // number is read this way; when nothing in it matches, it is refused as a
 // program without a name, as before.
+#include <cmath>
 #include <regex>
 
 #include <fmt/format.h>
 
 #include "dnc/server_machines.hpp"
+#include "dnc/store_parts.hpp"
 
 namespace usina::dnc {
 namespace {
@@ -44,6 +46,13 @@ std::optional<double> number(const std::smatch& m) {
   }
 }
 
+std::optional<std::int64_t> micros(const std::optional<double>& seconds) {
+  // A figure past a year is no cycle time (and would not fit the column).
+  if (!seconds || !std::isfinite(*seconds) || *seconds < 0 || *seconds > 366.0 * 86400)
+    return std::nullopt;
+  return static_cast<std::int64_t>(std::llround(*seconds * 1e6));
+}
+
 }  // namespace
 
 std::string pattern_error(const std::string& pattern) {
@@ -53,6 +62,30 @@ std::string pattern_error(const std::string& pattern) {
     return e.what();
   }
   return {};
+}
+
+void Machines::load_reports(MachineRuntime& m) {
+  auto t = control_totals(store_, m.config.link.name);
+  if (!t) {
+    events_.publish("server.error",
+                    {{"machine", m.config.link.name}, {"error", t.error().message}});
+    return;
+  }
+  ControlReports& c = m.reported;
+  c.parts = t->parts;
+  c.control_count = t->control_count;
+  if (t->last_cycle_us) c.last_cycle_seconds = static_cast<double>(*t->last_cycle_us) / 1e6;
+  c.last_part_at_us = t->last_part_at_us;
+  c.last_message = t->last_message;
+}
+
+// Writes what the control said; a store that fails is a `server.error` event
+// (the count in memory still moves, the next restart will not have it).
+void Machines::keep(const MachineRuntime& m, StoreResult<void> written) {
+  if (!written) {
+    events_.publish("server.error",
+                    {{"machine", m.config.link.name}, {"error", written.error().message}});
+  }
 }
 
 nlohmann::json parts_json(Store& store, const MachineRuntime& m) {
@@ -90,6 +123,7 @@ bool Machines::machine_data(MachineRuntime& m, const ReceivedProgram& r) {
     if (auto text = message_of(line)) {
       any = true;
       c.last_message = *text;
+      keep(m, record_control_message(store_, machine, *text, store_.now_us()));
       events_.publish("machine.message", {{"machine", machine}, {"text", *text}});
     } else if (cycle && std::regex_search(line, got, *cycle)) {
       any = true;
@@ -107,13 +141,19 @@ bool Machines::machine_data(MachineRuntime& m, const ReceivedProgram& r) {
       }
       printed_cycle.reset();
       c.last_part_at_us = now;
+      keep(m, record_control_part(store_, ControlPart{machine, now, micros(c.last_cycle_seconds),
+                                                      c.control_count, "", ""}));
       nlohmann::json e = parts_json(store_, m);
       e["machine"] = machine;
       e["source"] = "control";
       events_.publish("machine.part", std::move(e));
     }
   }
-  if (printed_cycle) c.last_cycle_seconds = printed_cycle;  // a cycle line without a part line
+  if (printed_cycle) {  // a cycle line without a part line: the last part's
+    c.last_cycle_seconds = printed_cycle;
+    if (const auto us = micros(printed_cycle); us && c.parts > 0)
+      keep(m, set_last_control_cycle(store_, machine, *us));
+  }
   return any;
 }
 

@@ -39,6 +39,9 @@ void take_report(const sim::StatsReport& report, CheckResults& r) {
   if (!b.empty()) r.bounds = std::array<double, 6>{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z};
   for (const auto& [code, n] : report.checks)
     r.checks[std::string(core::code_name(code))] = n;
+  r.has_tools = true;
+  for (const sim::ToolStats& t : report.tools)
+    r.tools.push_back({t.tool, t.cutting_s, t.total_s()});
 }
 
 }  // namespace
@@ -82,7 +85,10 @@ std::string CheckResults::to_json() const {
                  {"column", c.column},
                  {"message", c.message}});
   }
-  const json out = {
+  json tool_list = json::array();
+  for (const CheckTool& t : tools)
+    tool_list.push_back({{"tool", t.tool}, {"cutting_s", t.cutting_s}, {"total_s", t.total_s}});
+  json out = {
       {"dialect", dialect},
       {"machine", machine},
       {"complete", complete},
@@ -98,6 +104,7 @@ std::string CheckResults::to_json() const {
                         : json(nullptr)},
       {"checks", checks},
   };
+  if (has_tools) out["tools"] = std::move(tool_list);
   // A message may quote a program's bytes that are not UTF-8.
   return out.dump(-1, ' ', false, json::error_handler_t::replace);
 }
@@ -131,6 +138,11 @@ CheckResults from_object(const json& j) {
   }
   if (const auto it = j.find("checks"); it != j.end() && it->is_object())
     r.checks = it->get<std::map<std::string, std::uint64_t>>();
+  if (const auto it = j.find("tools"); it != j.end() && it->is_array()) {
+    r.has_tools = true;
+    for (const json& t : *it)
+      r.tools.push_back({t.value("tool", 0), t.value("cutting_s", 0.0), t.value("total_s", 0.0)});
+  }
   return r;
 }
 

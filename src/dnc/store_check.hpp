@@ -26,6 +26,14 @@ struct CheckDiagnostic {
   std::string message;
 };
 
+// One tool's share of the program (stats' per-tool figures): the tool-life
+// counts multiply it by the parts made.
+struct CheckTool {
+  int tool = 0;  // 0: the tool in the spindle before the first change
+  double cutting_s = 0.0;
+  double total_s = 0.0;
+};
+
 struct CheckResults {
   std::string dialect;
   std::string machine;    // the profile's name
@@ -39,6 +47,10 @@ struct CheckResults {
   double rapid_s = 0.0;
   std::optional<std::array<double, 6>> bounds;  // x y z min, x y z max, mm
   std::map<std::string, std::uint64_t> checks;  // stats check code → count
+  // The tools, in order of first use; nothing for a check stored before the
+  // tools were kept (has_tools false).
+  std::vector<CheckTool> tools;
+  bool has_tools = false;
 
   static constexpr std::size_t kMaxKeptDiagnostics = 100;
 

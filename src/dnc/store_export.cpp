@@ -11,8 +11,6 @@
 #include "dnc/store_import.hpp"
 
 namespace usina::dnc {
-namespace {
-
 bool valid_extension(std::string_view e) {
   if (e.empty()) return true;
   if (e.size() < 2 || e.size() > 9 || e.front() != '.') return false;
@@ -23,11 +21,15 @@ bool valid_extension(std::string_view e) {
   return true;
 }
 
+namespace {
+
 StoreResult<void> make_folder(const std::string& folder) {
   if (::mkdir(folder.c_str(), 0755) == 0 || errno == EEXIST) return {};
   return store_error(StoreErrorKind::Invalid,
                      fmt::format("cannot create {}: {}", folder, std::strerror(errno)));
 }
+
+}  // namespace
 
 StoreResult<std::vector<ExportedFile>> released_set(Store& store, const std::string& extension) {
   auto programs = list_programs(store);
@@ -40,6 +42,18 @@ StoreResult<std::vector<ExportedFile>> released_set(Store& store, const std::str
   }
   return out;
 }
+
+StoreResult<void> audit_export(Store& store, const Actor& actor, std::size_t programs,
+                               std::string_view to) {
+  Transaction tx(store.db());
+  if (auto b = tx.begin_write(); !b) return b;
+  const nlohmann::json detail = {{"programs", programs}, {"to", to}};
+  if (auto a = append_audit(store, actor, {"export.released", "", "", detail.dump()}); !a)
+    return tl::unexpected(a.error());
+  return tx.commit();
+}
+
+namespace {
 
 StoreResult<void> write_one(Store& store, const std::string& folder, const ExportedFile& f) {
   auto bytes = revision_bytes(store, f.program, f.hash);
@@ -69,12 +83,8 @@ StoreResult<std::vector<ExportedFile>> export_released(Store& store, const std::
   }
   if (auto w = core::write_file(folder + "/released.sha256", manifest); !w)
     return store_error(StoreErrorKind::Backend, w.error());
-  Transaction tx(store.db());
-  if (auto b = tx.begin_write(); !b) return tl::unexpected(b.error());
-  const nlohmann::json detail = {{"programs", set->size()}};
-  if (auto a = append_audit(store, actor, {"export.released", "", "", detail.dump()}); !a)
+  if (auto a = audit_export(store, actor, set->size(), folder); !a)
     return tl::unexpected(a.error());
-  if (auto c = tx.commit(); !c) return tl::unexpected(c.error());
   return set;
 }
 

@@ -75,9 +75,21 @@ void import_one(Store& store, const fs::path& folder, ImportedFile& f, const Imp
     f.error = text.error();
     return;
   }
+  import_text(store, f, std::move(*text), options, actor);
+}
+
+}  // namespace
+
+void import_text(Store& store, ImportedFile& f, std::string text, const ImportOptions& options,
+                 const Actor& actor) {
+  f.program = fs::path(f.file).stem().string();
+  if (auto ok = check_name("program name", f.program); !ok) {
+    f.error = ok.error().message;
+    return;
+  }
   const std::string reason =
       valid_utf8(f.file) ? fmt::format("{}: {}", options.reason, f.file) : options.reason;
-  Upload u{f.program, options.machine_class, options.dialect, std::move(*text),
+  Upload u{f.program, options.machine_class, options.dialect, std::move(text),
            reason,    options.profile};
   auto put = put_revision(store, u, actor);
   if (!put) {
@@ -89,7 +101,16 @@ void import_one(Store& store, const fs::path& folder, ImportedFile& f, const Imp
   f.state = std::string(state_name(put->revision.state));
 }
 
-}  // namespace
+void tally(ImportReport& report, ImportedFile f) {
+  if (!f.error.empty()) {
+    ++report.skipped;
+  } else if (f.created) {
+    ++report.imported;
+  } else {
+    ++report.unchanged;
+  }
+  report.files.push_back(std::move(f));
+}
 
 StoreResult<ImportReport> import_folder(Store& store, const std::string& folder,
                                         const ImportOptions& options, const Actor& actor) {
@@ -111,14 +132,7 @@ StoreResult<ImportReport> import_folder(Store& store, const std::string& folder,
     } else {
       import_one(store, folder, f, options, actor);
     }
-    if (!f.error.empty()) {
-      ++report.skipped;
-    } else if (f.created) {
-      ++report.imported;
-    } else {
-      ++report.unchanged;
-    }
-    report.files.push_back(std::move(f));
+    tally(report, std::move(f));
   }
   return report;
 }

@@ -40,6 +40,15 @@ struct ImportReport {
 StoreResult<ImportReport> import_folder(Store& store, const std::string& folder,
                                         const ImportOptions& options, const Actor& actor);
 
+// One file's text as a revision of the program named after `f.file` without
+// its extension: what import_folder does with each file, and what
+// `POST /api/import` does with each entry. Fills `f` (its error when the
+// name is not a program name or the store refuses the text).
+void import_text(Store& store, ImportedFile& f, std::string text, const ImportOptions& options,
+                 const Actor& actor);
+// Counts `f` into the report (imported, unchanged or skipped) and keeps it.
+void tally(ImportReport& report, ImportedFile f);
+
 struct ExportedFile {
   std::string program;
   std::string hash;
@@ -53,5 +62,15 @@ struct ExportedFile {
 StoreResult<std::vector<ExportedFile>> export_released(Store& store, const std::string& folder,
                                                        const std::string& extension,
                                                        const Actor& actor);
+
+// The released revision of every program, named NAME + extension (not read
+// yet: revision_bytes verifies each when it is); what export_released and
+// `GET /api/export` write.
+StoreResult<std::vector<ExportedFile>> released_set(Store& store, const std::string& extension);
+// The export's audit entry (`export.released`, with the count and where to).
+StoreResult<void> audit_export(Store& store, const Actor& actor, std::size_t programs,
+                               std::string_view to);
+// `extension` is empty or a dot and 1 to 8 letters or digits.
+bool valid_extension(std::string_view extension);
 
 }  // namespace usina::dnc

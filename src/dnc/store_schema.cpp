@@ -143,9 +143,45 @@ CREATE TABLE jobs (
 CREATE INDEX jobs_by_machine ON jobs (machine, id);
 )SQL";
 
+// Version 3: what the controls print (store_parts.hpp): each part line with
+// its cycle's time and the control's count, and each machine's last message,
+// so the counts survive a restart of the server.
+constexpr std::string_view kV3 = R"SQL(
+CREATE TABLE control_parts (
+  id @ID@,
+  machine TEXT NOT NULL,
+  at BIGINT NOT NULL,
+  cycle_us BIGINT,
+  control_count BIGINT,
+  program TEXT NOT NULL,
+  revision TEXT NOT NULL
+);
+CREATE INDEX control_parts_by_machine ON control_parts (machine, id);
+CREATE INDEX control_parts_by_time ON control_parts (machine, at);
+CREATE TABLE control_messages (
+  machine TEXT PRIMARY KEY,
+  text TEXT NOT NULL,
+  at BIGINT NOT NULL
+);
+)SQL";
+
+// Version 4: each machine's activity changes (store_utilisation.hpp), the
+// ground of its utilisation per day.
+constexpr std::string_view kV4 = R"SQL(
+CREATE TABLE machine_activity (
+  id @ID@,
+  machine TEXT NOT NULL,
+  activity TEXT NOT NULL,
+  at BIGINT NOT NULL
+);
+CREATE INDEX machine_activity_by_time ON machine_activity (machine, at, id);
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres},
     {2, kV2, "SELECT 1", "SELECT 1"},
+    {3, kV3, "SELECT 1", "SELECT 1"},
+    {4, kV4, "SELECT 1", "SELECT 1"},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

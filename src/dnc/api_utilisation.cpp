@@ -1,0 +1,169 @@
+// A machine's utilisation per day and its tool-life counts
+// (store_utilisation.hpp), over a range of UTC calendar days given as
+// `?from=YYYY-MM-DD&to=YYYY-MM-DD` (both inclusive).
+#include <charconv>
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "dnc/api_router.hpp"
+#include "dnc/store_utilisation.hpp"
+
+namespace usina::dnc {
+namespace {
+
+namespace chr = std::chrono;
+
+constexpr double kDaySeconds = 86'400.0;
+constexpr std::int64_t kMaxDays = 366;
+
+// Days since 1970-01-01 of "YYYY-MM-DD"; nothing when it is not a date.
+std::optional<std::int64_t> day_number(std::string_view text) {
+  if (text.size() != 10 || text[4] != '-' || text[7] != '-') return std::nullopt;
+  int y = 0;
+  unsigned m = 0, d = 0;
+  const auto read = [](std::string_view s, auto& v) {
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && end == s.data() + s.size();
+  };
+  if (!read(text.substr(0, 4), y) || !read(text.substr(5, 2), m) || !read(text.substr(8, 2), d))
+    return std::nullopt;
+  const chr::year_month_day date{chr::year{y}, chr::month{m}, chr::day{d}};
+  if (!date.ok()) return std::nullopt;
+  return chr::sys_days(date).time_since_epoch().count();
+}
+
+std::string date_text(std::int64_t day) {
+  const chr::year_month_day date{chr::sys_days(chr::days(day))};
+  return fmt::format("{:04}-{:02}-{:02}", static_cast<int>(date.year()),
+                     static_cast<unsigned>(date.month()), static_cast<unsigned>(date.day()));
+}
+
+struct DayRange {
+  std::int64_t first = 0;
+  std::int64_t last = 0;
+};
+
+// `from` and `to` of the query; each defaults to `fallback` (a day number).
+tl::expected<DayRange, std::string> read_range(const ApiCall& c, std::int64_t from_fallback,
+                                               std::int64_t to_fallback) {
+  DayRange r{from_fallback, to_fallback};
+  for (const auto& [key, into] : {std::pair{"from", &r.first}, std::pair{"to", &r.last}}) {
+    const auto it = c.target.query.find(key);
+    if (it == c.target.query.end()) continue;
+    const auto day = day_number(it->second);
+    if (!day)
+      return tl::unexpected(
+          fmt::format("{} must be a date YYYY-MM-DD, not \"{}\"", key, it->second));
+    *into = *day;
+  }
+  if (r.first > r.last) return tl::unexpected(std::string("from is after to"));
+  return r;
+}
+
+HttpResponse bad(const ApiCall& c, const std::string& message) {
+  return error_response(c.req, http::status::bad_request, message);
+}
+
+double seconds(const MachineDay& d, const char* activity) {
+  const auto it = d.seconds.find(activity);
+  return it == d.seconds.end() ? 0.0 : it->second;
+}
+
+nlohmann::json day_json(const MachineDay& d, double elapsed) {
+  const double feeding = seconds(d, "feeding");
+  const double alarm = seconds(d, "alarm");
+  const double down = seconds(d, "down");
+  // The control's own cycles ran from its memory while the link was idle.
+  const double running = std::min(feeding + d.control_cycle_seconds, kDaySeconds);
+  const double idle = std::max(0.0, seconds(d, "idle") - d.control_cycle_seconds);
+  nlohmann::json out = {{"date", date_text(d.day)},
+                        {"running_seconds", running},
+                        {"feeding_seconds", feeding},
+                        {"control_cycle_seconds", d.control_cycle_seconds},
+                        {"transfer_seconds", seconds(d, "transfer")},
+                        {"idle_seconds", idle},
+                        {"alarm_seconds", alarm},
+                        {"link_down_seconds", down},
+                        {"unknown_seconds", std::max(0.0, elapsed - d.known_seconds)},
+                        {"parts", d.parts},
+                        {"utilisation", running / kDaySeconds}};
+  out["availability"] = d.known_seconds > 0
+                            ? nlohmann::json((d.known_seconds - alarm - down) / d.known_seconds)
+                            : nlohmann::json(nullptr);
+  return out;
+}
+
+// The seconds of `day` that have passed at `now_us`.
+double elapsed_of(std::int64_t day, std::int64_t now_us) {
+  const double since = static_cast<double>(now_us) / 1e6 - static_cast<double>(day) * kDaySeconds;
+  return std::clamp(since, 0.0, kDaySeconds);
+}
+
+std::int64_t today(const ApiCall& c) {
+  const std::int64_t now = c.ctx.store.now_us();
+  return chr::floor<chr::days>(chr::sys_time<chr::microseconds>(chr::microseconds(now)))
+      .time_since_epoch()
+      .count();
+}
+
+}  // namespace
+
+HttpResponse api_utilisation(ApiCall& c) {
+  if (c.ctx.machines.find(c.params[0]) == nullptr)
+    return error_response(c.req, http::status::not_found,
+                          fmt::format("no machine {}", c.params[0]));
+  const std::int64_t now_day = today(c);
+  auto range = read_range(c, now_day, now_day);
+  if (!range) return bad(c, range.error());
+  if (range->last - range->first + 1 > kMaxDays)
+    return bad(c, fmt::format("at most {} days at a time", kMaxDays));
+  auto days = machine_days(c.ctx.store, c.params[0], range->first, range->last);
+  if (!days) return error_response(c.req, status_of(days.error()), days.error().message);
+  nlohmann::json list = nlohmann::json::array();
+  double running = 0.0;
+  for (const MachineDay& d : *days) {
+    list.push_back(day_json(d, elapsed_of(d.day, c.ctx.store.now_us())));
+    running += list.back()["running_seconds"].get<double>();
+  }
+  return json_response(
+      c.req, http::status::ok,
+      {{"machine", c.params[0]},
+       {"from", date_text(range->first)},
+       {"to", date_text(range->last)},
+       {"day_seconds", kDaySeconds},
+       {"utilisation_basis", "running_seconds / 86400: a 24 h UTC calendar day, not a shift"},
+       {"utilisation", running / (kDaySeconds * static_cast<double>(days->size()))},
+       {"days", std::move(list)}});
+}
+
+HttpResponse api_tool_life(ApiCall& c) {
+  if (c.ctx.machines.find(c.params[0]) == nullptr)
+    return error_response(c.req, http::status::not_found,
+                          fmt::format("no machine {}", c.params[0]));
+  // Without a range: every part the store knows of, up to today.
+  auto range = read_range(c, 0, today(c));
+  if (!range) return bad(c, range.error());
+  const std::int64_t day_us = 86'400'000'000;
+  auto life =
+      tool_life(c.ctx.store, c.params[0], range->first * day_us, (range->last + 1) * day_us);
+  if (!life) return error_response(c.req, status_of(life.error()), life.error().message);
+  nlohmann::json tools = nlohmann::json::array();
+  for (const ToolUse& t : life->tools) {
+    tools.push_back({{"tool", t.tool},
+                     {"parts", t.parts},
+                     {"cutting_seconds", t.cutting_seconds},
+                     {"cutting_minutes", t.cutting_seconds / 60.0},
+                     {"seconds", t.seconds}});
+  }
+  return json_response(c.req, http::status::ok,
+                       {{"machine", c.params[0]},
+                        {"from", date_text(range->first)},
+                        {"to", date_text(range->last)},
+                        {"parts", life->parts},
+                        {"parts_without_program", life->parts_without_program},
+                        {"parts_without_tool_list", life->parts_without_tools},
+                        {"tools", std::move(tools)}});
+}
+
+}  // namespace usina::dnc

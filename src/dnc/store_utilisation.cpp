@@ -1,0 +1,169 @@
+#include "dnc/store_utilisation.hpp"
+
+#include <algorithm>
+
+#include "dnc/store_check.hpp"
+#include "dnc/store_parts.hpp"
+
+namespace usina::dnc {
+namespace {
+
+constexpr std::int64_t kDayUs = 86'400'000'000;
+
+std::int64_t day_of(std::int64_t us) {
+  return us >= 0 ? us / kDayUs : (us - kDayUs + 1) / kDayUs;
+}
+
+struct Change {
+  std::int64_t at_us;
+  std::string activity;
+};
+
+// The changes in [from, to), with the one in force at `from` first (at `from`).
+StoreResult<std::vector<Change>> changes(Store& store, std::string_view machine,
+                                         std::int64_t from_us, std::int64_t to_us) {
+  std::vector<Change> out;
+  auto before = store.db().query(
+      "SELECT activity FROM machine_activity WHERE machine = $1 AND at < $2 "
+      "ORDER BY at DESC, id DESC LIMIT 1",
+      {machine, from_us});
+  if (!before) return tl::unexpected(before.error());
+  if (!before->empty()) out.push_back({from_us, before->front().text(0)});
+  auto rows = store.db().query(
+      "SELECT at, activity FROM machine_activity WHERE machine = $1 AND at >= $2 AND at < $3 "
+      "ORDER BY at, id",
+      {machine, from_us, to_us});
+  if (!rows) return tl::unexpected(rows.error());
+  for (const SqlRow& r : *rows)
+    out.push_back({r.integer(0), r.text(1)});
+  return out;
+}
+
+// Adds [a, b) spent in `activity` to the days it covers.
+void spread(std::vector<MachineDay>& days, std::int64_t a, std::int64_t b,
+            const std::string& activity) {
+  if (days.empty() || b <= a) return;
+  const std::int64_t first = days.front().day;
+  for (std::int64_t d = day_of(a); d <= day_of(b - 1); ++d) {
+    const auto i = static_cast<std::size_t>(d - first);
+    if (d < first || i >= days.size()) continue;
+    const std::int64_t lo = std::max(a, d * kDayUs);
+    const std::int64_t hi = std::min(b, (d + 1) * kDayUs);
+    const double s = static_cast<double>(hi - lo) / 1e6;
+    if (activity != "off") days[i].known_seconds += s;
+    days[i].seconds[activity] += s;
+  }
+}
+
+// The drip feeds done in [from, to): (ended at, program, revision).
+StoreResult<SqlRows> drip_parts(Store& store, std::string_view machine, std::int64_t from_us,
+                                std::int64_t to_us) {
+  return store.db().query(
+      "SELECT ended_at, program, revision FROM jobs WHERE machine = $1 AND mode = 'drip' AND "
+      "state = 'done' AND ended_at >= $2 AND ended_at < $3 ORDER BY id",
+      {machine, from_us, to_us});
+}
+
+}  // namespace
+
+StoreResult<void> record_activity(Store& store, std::string_view machine, std::string_view activity,
+                                  std::int64_t at_us) {
+  Transaction tx(store.db());
+  if (auto b = tx.begin_write(); !b) return b;
+  auto r =
+      store.db().query("INSERT INTO machine_activity (machine, activity, at) VALUES ($1, $2, $3)",
+                       {machine, activity, at_us});
+  if (!r) return tl::unexpected(r.error());
+  return tx.commit();
+}
+
+StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
+                                                  std::int64_t first_day, std::int64_t last_day) {
+  std::vector<MachineDay> days;
+  for (std::int64_t d = first_day; d <= last_day; ++d)
+    days.push_back(MachineDay{d, {}, 0.0, 0, 0.0});
+  const std::int64_t from = first_day * kDayUs;
+  const std::int64_t to = std::min((last_day + 1) * kDayUs, store.now_us());
+  if (to <= from) return days;
+  auto list = changes(store, machine, from, to);
+  if (!list) return tl::unexpected(list.error());
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::int64_t end = i + 1 < list->size() ? (*list)[i + 1].at_us : to;
+    spread(days, (*list)[i].at_us, end, (*list)[i].activity);
+  }
+  auto drips = drip_parts(store, machine, from, to);
+  if (!drips) return tl::unexpected(drips.error());
+  for (const SqlRow& r : *drips)
+    ++days[static_cast<std::size_t>(day_of(r.integer(0)) - first_day)].parts;
+  auto control = control_parts(store, machine, from, to);
+  if (!control) return tl::unexpected(control.error());
+  for (const ControlPart& p : *control) {
+    MachineDay& day = days[static_cast<std::size_t>(day_of(p.at_us) - first_day)];
+    ++day.parts;
+    if (p.cycle_us) day.control_cycle_seconds += static_cast<double>(*p.cycle_us) / 1e6;
+  }
+  return days;
+}
+
+namespace {
+
+// A revision's tool list from its stored check; nothing when the check
+// kept none (or the revision is gone).
+StoreResult<std::optional<std::vector<CheckTool>>> tools_of(Store& store,
+                                                            const std::string& program,
+                                                            const std::string& revision) {
+  auto rows = store.db().query("SELECT checks FROM revisions WHERE program = $1 AND hash = $2",
+                               {std::string_view(program), std::string_view(revision)});
+  if (!rows) return tl::unexpected(rows.error());
+  if (rows->empty()) return std::optional<std::vector<CheckTool>>{};
+  const auto check = CheckResults::from_json(rows->front().text(0));
+  if (!check || !check->has_tools) return std::optional<std::vector<CheckTool>>{};
+  return std::optional<std::vector<CheckTool>>(check->tools);
+}
+
+}  // namespace
+
+StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
+                                std::int64_t to_us) {
+  std::vector<std::pair<std::string, std::string>> made;  // (program, revision) per part
+  auto drips = drip_parts(store, machine, from_us, to_us);
+  if (!drips) return tl::unexpected(drips.error());
+  for (const SqlRow& r : *drips)
+    made.emplace_back(r.text(1), r.text(2));
+  auto control = control_parts(store, machine, from_us, to_us);
+  if (!control) return tl::unexpected(control.error());
+  for (const ControlPart& p : *control)
+    made.emplace_back(p.program, p.revision);
+  ToolLife life;
+  std::map<std::pair<std::string, std::string>, std::optional<std::vector<CheckTool>>> known;
+  std::map<int, ToolUse> by_tool;
+  for (const auto& part : made) {
+    ++life.parts;
+    if (part.first.empty()) {
+      ++life.parts_without_program;
+      continue;
+    }
+    auto it = known.find(part);
+    if (it == known.end()) {
+      auto tools = tools_of(store, part.first, part.second);
+      if (!tools) return tl::unexpected(tools.error());
+      it = known.emplace(part, std::move(*tools)).first;
+    }
+    if (!it->second) {
+      ++life.parts_without_tools;
+      continue;
+    }
+    for (const CheckTool& t : *it->second) {
+      ToolUse& use = by_tool[t.tool];
+      use.tool = t.tool;
+      ++use.parts;
+      use.cutting_seconds += t.cutting_s;
+      use.seconds += t.total_s;
+    }
+  }
+  for (auto& [tool, use] : by_tool)
+    life.tools.push_back(use);
+  return life;
+}
+
+}  // namespace usina::dnc

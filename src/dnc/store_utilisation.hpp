@@ -1,0 +1,60 @@
+// Utilisation per day and tool-life counts, from what the store keeps: each
+// machine's activity changes (schema version 4: feeding, transfer, idle,
+// alarm, down, off), its jobs, and the parts its control printed
+// (store_parts.hpp). Days are UTC calendar days of 24 h.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dnc/store.hpp"
+
+namespace usina::dnc {
+
+// What a machine is doing, as the server sees it through its link.
+//   feeding   a drip feed is running (the machine cuts as the program arrives)
+//   transfer  a whole program is sent or received
+//   idle      the link is up and nothing moves on it
+//   alarm     a job ended on an alarm (no XON); until the next job starts
+//   down      the link is down (the port did not open, the device server is away)
+//   off       the server was stopped
+constexpr std::string_view kActivities[] = {"feeding", "transfer", "idle", "alarm", "down", "off"};
+
+StoreResult<void> record_activity(Store& store, std::string_view machine, std::string_view activity,
+                                  std::int64_t at_us);
+
+struct MachineDay {
+  std::int64_t day = 0;                   // days since 1970-01-01 (UTC)
+  std::map<std::string, double> seconds;  // activity → seconds of the day
+  double control_cycle_seconds = 0.0;     // cycles the control printed (ran from its memory)
+  std::int64_t parts = 0;                 // drip feeds done + the control's part lines
+  double known_seconds = 0.0;             // the day's seconds with a record, up to now
+};
+
+// Days `first_day` to `last_day` (inclusive) of `machine`.
+StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
+                                                  std::int64_t first_day, std::int64_t last_day);
+
+// A tool's use on a machine: each part made counts once for each tool its
+// program uses, with that tool's cutting time from the revision's check.
+struct ToolUse {
+  int tool = 0;
+  std::int64_t parts = 0;
+  double cutting_seconds = 0.0;
+  double seconds = 0.0;  // cutting, rapid and the rest while the tool is in the spindle
+};
+
+struct ToolLife {
+  std::vector<ToolUse> tools;              // by tool number
+  std::int64_t parts = 0;                  // parts counted in the range
+  std::int64_t parts_without_program = 0;  // control parts before any job was done
+  std::int64_t parts_without_tools = 0;    // revisions checked before tool lists were kept
+};
+
+StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
+                                std::int64_t to_us);
+
+}  // namespace usina::dnc
