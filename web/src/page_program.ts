@@ -3,6 +3,8 @@
 // line's moves can be highlighted).
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
+import { reviewPanel, revisionsPanel } from './program_review';
+import { sessionUser } from './roles';
 import { decodeToolpath, Kind } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
 
@@ -11,7 +13,7 @@ import { toolColour, Viewer, type View } from './viewer';
 const MAX_LINES = 20000;
 
 export async function programPage(main: HTMLElement, name: string, rev?: string): Promise<void> {
-  const program = await getJson<Program>(`/api/programs/${enc(name)}`);
+  const [program, who] = await Promise.all([getJson<Program>(`/api/programs/${enc(name)}`), sessionUser()]);
   const revision = program.revisions.find((r) => r.revision === rev) ?? program.revisions[0];
   if (!revision) throw new Error(`${name} has no revisions`);
   const base = `/api/programs/${enc(name)}/revisions/${revision.revision}`;
@@ -22,11 +24,14 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const picked = status('picked-line');
   const code = codePanel(revision.checks?.diagnostics ?? []);
   const viewerHost = h('div', { class: 'viewer', id: 'viewer' }, h('p', { class: 'status', text: 'Loading the tool path…' }));
+  const again = () => void programPage(main, name, revision.revision).catch((e) => console.error(e));
   show(
     main,
     `Program ${program.name}`,
     summary(program, revision),
+    reviewPanel(program, revision, who, again),
     h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision, (line) => code.onSelect(line)), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
+    revisionsPanel(program, revision),
   );
   const path = decodeToolpath(await stream);
   viewerHost.replaceChildren();
