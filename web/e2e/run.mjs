@@ -7,6 +7,7 @@
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
+import { machineFlow, reviewFlow } from './flows.mjs';
 import { arg, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
 
 skipUnlessReady();
@@ -45,22 +46,25 @@ async function canvasPixels(page) {
   });
 }
 
-async function shot(page, name) {
+async function shot(page, name, top = true) {
   if (!shots) return;
   mkdirSync(shots, { recursive: true });
-  await page.evaluate(() => window.scrollTo(0, 0));
+  if (top) await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: join(shots, name), fullPage: false });
 }
 
 async function run() {
   const base = await harness.start();
-  check(true, 'the page built, usina serve started on a fresh store');
+  await harness.addUser('appr', 'approver');
+  await harness.addUser('oper', 'operator');
+  check(true, 'the page built, usina serve started on a fresh store (users boss, appr, oper)');
   const context = await harness.browser();
   const page = context.pages()[0] ?? (await context.newPage());
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
-  // The one refusal the test asks for (a wrong password) is no error of the page.
-  page.on('console', (m) => m.type() === 'error' && !/status of 401/.test(m.text()) && errors.push(m.text()));
+  // The refusals the test asks for (a wrong password, an operator's
+  // approval) are no errors of the page.
+  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && errors.push(m.text()));
   const elsewhere = [];
   page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
   page.setDefaultTimeout(20000);
@@ -140,7 +144,11 @@ async function run() {
   await page.getByText('Live updates: connected').waitFor();
   const state = await page.locator('#machine-romi-1 .state').innerText();
   check(['idle', 'offline', 'receiving', 'sending'].includes(state), `the machines page shows romi-1 (${state}), live`);
-  await shot(page, 'web-machines.png');
+
+  // Review by role, the diffs, the machine's jobs (flows.mjs).
+  const t = { check, shot };
+  const { second } = await reviewFlow(page, harness, t, seed);
+  await machineFlow(page, harness, t, second);
 
   // No page file is fetched from elsewhere, and the page logged no error.
   check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);
