@@ -100,6 +100,15 @@ async function startJob(page, rev, button, at, where) {
   return dialog;
 }
 
+// The id of the job the page says it queued, once it is a job after `after`.
+async function queuedJob(page, after) {
+  const said = await page.waitForFunction((n) => {
+    const m = /^Job (\d+) queued/.exec(document.getElementById('romi-1-job-status')?.textContent ?? '');
+    return m && Number(m[1]) > n ? Number(m[1]) : 0;
+  }, after);
+  return said.jsonValue();
+}
+
 async function waitForEnd(page, id) {
   try {
     await page.waitForFunction((job) => {
@@ -109,6 +118,33 @@ async function waitForEnd(page, id) {
   } catch (e) {
     throw new Error(`job ${id} did not end: ${await page.locator('#machine-romi-1').innerText()}`);
   }
+}
+
+// A drip feed of 25 kB (half a minute at 9600 baud) stopped from the page
+// once it is under way: the job ends interrupted, the rest never sent.
+async function dripAndStop(page, h, t, control) {
+  let text = '';
+  for (let n = 1; text.length < 25000; n++) text += `N${n} G01 X${n % 400}. Y${n % 300}. F800#\n`;
+  text += 'M02#\n';
+  const rev = (await h.api('boss', 'POST', '/api/programs', { name: 'long-drip', dialect: 'romi', text })).json.revision;
+  for (const state of ['checked', 'approved']) await h.api('boss', 'POST', `/api/programs/long-drip/revisions/${rev}/state`, { state });
+  await page.reload();
+  await page.getByText('Live updates: connected').waitFor();
+  await page.getByLabel('Program', { exact: true }).fill('long-drip');
+  await page.getByLabel('Program', { exact: true }).dispatchEvent('change');
+  await page.locator('#romi-1-revision option', { hasText: rev.slice(0, 12) }).waitFor({ state: 'attached' });
+  await page.getByRole('button', { name: 'Drip feed', exact: true }).click();
+  const dialog = page.getByRole('dialog');
+  t.check(/Drip feed long-drip to romi-1\?/.test(await dialog.innerText()), 'Drip feed asks for confirmation');
+  await dialog.getByRole('button', { name: 'Drip feed' }).click();
+  await page.waitForFunction(() => Number(document.querySelector('#machine-romi-1 .job')?.dataset.bytesSent) > 0);
+  await page.getByRole('button', { name: 'Stop the job' }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Stop the job' }).click();
+  await page.waitForFunction(() => document.querySelector('#machine-romi-1 .job')?.dataset.jobState === 'interrupted', null, { timeout: 60000 });
+  const j = await machineJob(page);
+  t.check(j.sent < j.total, `Stop ends the drip feed: interrupted after ${j.sent} of ${j.total} bytes`);
+  await t.shot(page, 'web-machines-stopped.png');
+  return control;
 }
 
 // A send watched to 100 % (the control counting every byte), a part punched
@@ -133,7 +169,7 @@ export async function machineFlow(page, h, t, first) {
     const dialog = await startJob(page, first, 'Send', 'start');
     t.check(/Send seed-000 to romi-1\?/.test(await dialog.innerText()), 'Send asks for confirmation');
     await dialog.getByRole('button', { name: 'Send' }).click();
-    await page.locator('#romi-1-job-status', { hasText: /^Job \d+ queued/ }).waitFor();
+    const id = await queuedJob(page, 0);
     const seen = new Set();
     const watch = setInterval(async () => {
       try {
@@ -143,7 +179,6 @@ export async function machineFlow(page, h, t, first) {
         /* between renders */
       }
     }, 100);
-    const id = Number((await page.locator('#romi-1-job-status').innerText()).match(/^Job (\d+)/)[1]);
     await waitForEnd(page, id);
     clearInterval(watch);
     const job = await machineJob(page);
@@ -165,16 +200,17 @@ export async function machineFlow(page, h, t, first) {
     const d2 = await startJob(page, first, 'Send', 'block', 'N0150');
     t.check(/from block N0150/.test(await d2.innerText()), 'the confirmation names the block');
     await d2.getByRole('button', { name: 'Send' }).click();
-    await page.locator('#romi-1-job-status', { hasText: /^Job \d+ queued/ }).waitFor();
-    const id2 = Number((await page.locator('#romi-1-job-status').innerText()).match(/^Job (\d+)/)[1]);
+    const id2 = await queuedJob(page, id);
     await waitForEnd(page, id2);
     const restart = await machineJob(page);
     for (let i = 0; i < 100 && control.mark() - mark < restart.total; i++) await page.waitForTimeout(50);
     const sent = text(control.since(mark));
     t.check(id2 > id && restart.total < job.total && sent.includes('N0150') && !sent.includes('N0120 G1'), `a start from block N0150 sends the restart program (${restart.total} bytes)`);
+    await dripAndStop(page, h, t, control);
     const audit = (await h.api('boss', 'GET', '/api/audit')).json;
-    const made = (audit.entries ?? audit.audit ?? []).filter((e) => e.action === 'job.create' && e.actor === 'oper').length;
-    t.check(made === 2, `the audit log holds the operator's two jobs (${made})`);
+    const made = audit.entries.filter((e) => e.action === 'job.create' && e.actor === 'oper').length;
+    const stopped = audit.entries.filter((e) => e.action === 'job.interrupted' && /stopped by oper/.test(e.reason)).length;
+    t.check(made === 3 && stopped === 1, `the audit log holds the operator's three jobs (${made}) and the stop (${stopped})`);
   } finally {
     control.close();
   }
