@@ -215,3 +215,28 @@ export async function machineFlow(page, h, t, first) {
     control.close();
   }
 }
+
+// The library's filters and pages: 60 small rs274ngc programs of the class
+// `lathe` beside the ROMI ones.
+export async function libraryFlow(page, h, t) {
+  for (let i = 0; i < 60; i++) {
+    const name = `L${String(i).padStart(3, '0')}`;
+    const r = await h.api('boss', 'POST', '/api/programs', { name, dialect: 'rs274ngc', machine_class: 'lathe', text: `G0 X${i} Z1\nG1 Z0 F100\nM2\n` });
+    if (r.status !== 201) throw new Error(`upload ${name}: ${r.status}`);
+  }
+  await page.getByRole('link', { name: 'Library' }).click();
+  await page.getByRole('heading', { name: 'Library' }).waitFor();
+  const rows = () => page.locator('table[aria-label="Programs"] tbody tr').count();
+  const total = Number((await page.locator('#library-count').innerText()).match(/of (\d+)/)[1]);
+  t.check((await rows()) === 50 && (await page.locator('#library-page').innerText()) === `Page 1 of ${Math.ceil(total / 50)}`, `the library shows its first 50 of ${total} programs`);
+  await page.getByLabel('Filter by dialect').selectOption('romi');
+  const romi = await page.locator('#library-count').innerText();
+  t.check(new RegExp(`^${total - 60} of ${total} programs$`).test(romi) && (await rows()) === total - 60, `the dialect filter leaves the ROMI programs (${romi})`);
+  await page.getByLabel('Filter by dialect').selectOption('');
+  await page.getByLabel('Filter by machine class').selectOption('lathe');
+  await page.getByRole('button', { name: 'Next page' }).click();
+  t.check((await page.locator('#library-page').innerText()) === 'Page 2 of 2' && (await rows()) === 10 && (await page.getByRole('button', { name: 'Next page' }).isDisabled()), 'the class filter and the next page: the last 10 lathe programs');
+  await page.getByRole('button', { name: 'Previous page' }).click();
+  await page.getByLabel('Filter by machine class').selectOption('');
+  await t.shot(page, 'web-library.png');
+}

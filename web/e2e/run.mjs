@@ -7,7 +7,7 @@
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
-import { machineFlow, reviewFlow } from './flows.mjs';
+import { libraryFlow, machineFlow, reviewFlow } from './flows.mjs';
 import { arg, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
 
 skipUnlessReady();
@@ -87,7 +87,7 @@ async function run() {
   await page.getByLabel('Program file').setInputFiles(seed);
   await page.getByText(/bytes read/).waitFor();
   await page.getByLabel('Name', { exact: true }).fill('seed-000');
-  await page.getByLabel('Dialect').selectOption('romi');
+  await page.getByLabel('Dialect', { exact: true }).selectOption('romi');
   await page.getByRole('button', { name: 'Upload' }).click();
   await page.getByRole('heading', { name: 'Program seed-000' }).waitFor();
   const seedLines = readFileSync(seed, 'utf8').split('\n').filter((l, i, a) => l !== '' || i < a.length - 1).length;
@@ -128,6 +128,10 @@ async function run() {
   await page.getByRole('button', { name: 'Iso view' }).click();
   await page.evaluate(() => window.scrollTo(0, 0));
   await shot(page, 'web-program.png');
+  const figures = await page.locator('#stats').innerText();
+  check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[1-9][\d.]* mm/.test(figures), `the figures: cycle time, bounds, distances of T1 and T2 (${JSON.stringify(figures)})`);
+  await page.locator('#stats').scrollIntoViewIfNeeded();
+  await shot(page, 'web-figures.png', false);
 
   // The library lists and finds it.
   await page.getByRole('link', { name: 'Library' }).click();
@@ -136,7 +140,6 @@ async function run() {
   await page.getByLabel('Search by name').fill('nothing-like-it');
   check(/^0 of 1 programs$/.test(await page.locator('#library-count').innerText()), 'the search leaves out other names');
   await page.getByLabel('Search by name').fill('');
-  await shot(page, 'web-library.png');
 
   // The machines, live.
   await page.getByRole('link', { name: 'Machines' }).click();
@@ -149,6 +152,7 @@ async function run() {
   const t = { check, shot };
   const { second } = await reviewFlow(page, harness, t, seed);
   await machineFlow(page, harness, t, second);
+  await libraryFlow(page, harness, t);
 
   // No page file is fetched from elsewhere, and the page logged no error.
   check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);

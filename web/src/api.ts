@@ -16,7 +16,11 @@ export interface Checks {
   complete: boolean;
   diagnostics: CheckDiagnostic[];
   cycle_time_s: number;
+  cutting_s?: number;
+  rapid_s?: number;
+  overtravel?: number;
   bounds: { min: number[]; max: number[] } | null;
+  checks?: Record<string, number>; // stats check code -> count
 }
 
 export interface Revision {

@@ -4,16 +4,32 @@ import { field, h, show, status } from './dom';
 
 const DIALECTS = ['rs274ngc', 'fanuc', 'grbl', 'romi'];
 
+// Rows a page of the table shows: 10,000 programs arrive in one request
+// (about 0.7 MB of JSON), but only a page of them becomes rows.
+const PAGE = 50;
+
+function choices(label: string, values: string[]): HTMLSelectElement {
+  return h('select', {}, h('option', { value: '', text: label }), ...values.map((v) => h('option', { value: v, text: v || '(none)' })));
+}
+
 export async function libraryPage(main: HTMLElement): Promise<void> {
   const list = await getJson<{ programs: ProgramSummary[] }>('/api/programs');
   const search = h('input', { type: 'search', placeholder: 'O1234', autocomplete: 'off' });
+  const classes = choices('every class', [...new Set(list.programs.map((p) => p.machine_class))].sort());
+  const dialects = choices('every dialect', [...new Set(list.programs.map((p) => p.dialect))].sort());
   const body = h('tbody');
   const count = status('library-count');
+  const prev = h('button', { type: 'button', text: 'Previous page' });
+  const next = h('button', { type: 'button', text: 'Next page' });
+  const where = h('span', { id: 'library-page', 'aria-live': 'polite' });
+  let page = 0;
   const render = () => {
     const q = search.value.trim().toLowerCase();
-    const rows = list.programs.filter((p) => p.name.toLowerCase().includes(q));
+    const rows = list.programs.filter((p) => p.name.toLowerCase().includes(q) && (!classes.value || p.machine_class === classes.value) && (!dialects.value || p.dialect === dialects.value));
+    const pages = Math.max(1, Math.ceil(rows.length / PAGE));
+    page = Math.min(page, pages - 1);
     body.replaceChildren(
-      ...rows.map((p) =>
+      ...rows.slice(page * PAGE, (page + 1) * PAGE).map((p) =>
         h(
           'tr',
           {},
@@ -24,8 +40,25 @@ export async function libraryPage(main: HTMLElement): Promise<void> {
       ),
     );
     count.textContent = `${rows.length} of ${list.programs.length} programs`;
+    where.textContent = `Page ${page + 1} of ${pages}`;
+    prev.disabled = page === 0;
+    next.disabled = page >= pages - 1;
   };
-  search.addEventListener('input', render);
+  const filter = () => {
+    page = 0;
+    render();
+  };
+  search.addEventListener('input', filter);
+  classes.addEventListener('change', filter);
+  dialects.addEventListener('change', filter);
+  prev.addEventListener('click', () => {
+    page--;
+    render();
+  });
+  next.addEventListener('click', () => {
+    page++;
+    render();
+  });
   render();
   const table = h(
     'table',
@@ -36,7 +69,15 @@ export async function libraryPage(main: HTMLElement): Promise<void> {
   show(
     main,
     'Library',
-    h('section', { 'aria-labelledby': 'search-h' }, h('h2', { id: 'search-h', text: 'Programs' }), field('Search by name', search, 'library-search'), count, table),
+    h(
+      'section',
+      { 'aria-labelledby': 'search-h' },
+      h('h2', { id: 'search-h', text: 'Programs' }),
+      h('div', { class: 'filters' }, field('Search by name', search, 'library-search'), field('Filter by machine class', classes, 'library-class'), field('Filter by dialect', dialects, 'library-dialect')),
+      count,
+      table,
+      h('div', { class: 'pager', role: 'group', 'aria-label': 'Pages' }, prev, where, next),
+    ),
     uploadForm(),
   );
 }

@@ -4,6 +4,7 @@
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
 import { reviewPanel, revisionsPanel } from './program_review';
+import { statsPanel } from './program_stats';
 import { sessionUser } from './roles';
 import { decodeToolpath, Kind } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
@@ -24,6 +25,7 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const picked = status('picked-line');
   const code = codePanel(revision.checks?.diagnostics ?? []);
   const viewerHost = h('div', { class: 'viewer', id: 'viewer' }, h('p', { class: 'status', text: 'Loading the tool path…' }));
+  const statsHost = h('p', { class: 'status', text: 'The figures follow the tool path…' });
   const again = () => void programPage(main, name, revision.revision).catch((e) => console.error(e));
   show(
     main,
@@ -31,12 +33,14 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
     summary(program, revision),
     reviewPanel(program, revision, who, again),
     h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision, (line) => code.onSelect(line)), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
+    statsHost,
     revisionsPanel(program, revision),
   );
   const path = decodeToolpath(await stream);
   viewerHost.replaceChildren();
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
+  statsHost.replaceWith(statsPanel(revision.checks, path));
   const select = (line: number) => {
     const moves = viewer.highlightLine(line);
     code.mark(line);
