@@ -114,6 +114,25 @@ HttpResponse Api::handle(const HttpRequest& req, const std::string& origin) {
   return error_response(req, http::status::not_found, "no such route");
 }
 
+bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
+  if (ctx_.toolpaths == nullptr) return false;
+  auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
+  if (!target) return false;
+  for (const ApiRoute& route : kRoutes) {
+    if (route.handler != api_toolpath || route.method != req.method()) continue;
+    auto params = match(route.pattern, target->segments);
+    if (!params) return false;
+    ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_};
+    if (auto refused = authorise(call, route)) {
+      answer(with_www_authenticate(std::move(*refused)));
+      return true;
+    }
+    api_toolpath_later(call, std::move(answer));
+    return true;
+  }
+  return false;
+}
+
 std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
                                          const HttpRequest& req) {
   auto target = parse_target(std::string_view(req.target().data(), req.target().size()));

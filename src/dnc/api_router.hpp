@@ -13,6 +13,7 @@
 
 #include "dnc/api_events.hpp"
 #include "dnc/api_http.hpp"
+#include "dnc/http_listener.hpp"
 #include "dnc/server_machines.hpp"
 #include "dnc/store.hpp"
 #include "dnc/store_roles.hpp"
@@ -20,11 +21,14 @@
 
 namespace usina::dnc {
 
+class ToolpathService;  // web_toolpath_service.hpp
+
 struct ApiContext {
   Store& store;
   Machines& machines;
   EventHub& events;
   const std::map<std::string, sim::MachineProfile>& profiles;  // by machine class
+  ToolpathService* toolpaths = nullptr;  // the tool-path route's pool and cache; none: on the loop
 };
 
 // One request on its way through a handler.
@@ -61,6 +65,9 @@ class Api {
   explicit Api(ApiContext ctx) : ctx_(ctx) {}
 
   HttpResponse handle(const HttpRequest& req, const std::string& origin);
+  // The routes whose work is done off the loop (the tool path): true when
+  // `req` is one, and `answer` is called later (HttpHandlers::later).
+  bool handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer);
   // `GET /api/events`: takes the socket for the event stream, or refuses.
   std::optional<HttpResponse> upgrade(boost::asio::ip::tcp::socket& socket, const HttpRequest& req);
 
@@ -79,6 +86,7 @@ HttpResponse api_program(ApiCall& c);
 HttpResponse api_revision(ApiCall& c);
 HttpResponse api_revision_text(ApiCall& c);
 HttpResponse api_toolpath(ApiCall& c);  // web_toolpath_api.cpp
+void api_toolpath_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);

@@ -45,7 +45,9 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
     : io_(io), store_(std::move(store)), config_(std::move(config)) {
   machines_ = std::make_unique<Machines>(io_, *store_, events_, config_.machines);
   machines_->use_profiles(&config_.profiles);
-  api_ = std::make_unique<Api>(ApiContext{*store_, *machines_, events_, config_.profiles});
+  toolpaths_ = std::make_unique<ToolpathService>(io_);
+  api_ = std::make_unique<Api>(
+      ApiContext{*store_, *machines_, events_, config_.profiles, toolpaths_.get()});
   web_ = std::make_unique<WebFiles>(WebFilesConfig{
       config_.web_root.empty() ? default_web_root() : std::filesystem::path(config_.web_root),
       config_.web_max_file_bytes});
@@ -59,6 +61,9 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
   };
   handlers.upgrade = [this](boost::asio::ip::tcp::socket& socket, const HttpRequest& req) {
     return api_->upgrade(socket, req);
+  };
+  handlers.later = [this](const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
+    return api_->handle_later(req, origin, answer);
   };
   HttpLimits limits;
   limits.body_bytes = config_.max_upload;

@@ -18,8 +18,9 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const revision = program.revisions.find((r) => r.revision === rev) ?? program.revisions[0];
   if (!revision) throw new Error(`${name} has no revisions`);
   const base = `/api/programs/${enc(name)}/revisions/${revision.revision}`;
-  // The stream first: the server answers one request at a time, and the
-  // picture is what the shop looks at first; the text fills in after.
+  // The stream is asked for first: the picture is what the shop looks at
+  // first. The server computes it on its pool (or has it cached), so the
+  // text is read meanwhile and fills in after.
   const stream = getBytes(`${base}/toolpath`);
   const text = getText(`${base}/text`);
   const picked = status('picked-line');
