@@ -71,7 +71,7 @@ export async function reviewFlow(page, h, t, seed) {
   const plain = await page.locator('.diff-panel').nth(1).innerText();
   t.check(/^Normalised: 1 removed, 1 added/.test(norm) && /\+G1 Y-250\./.test(norm) && !/G99/.test(norm), `the normalised diff shows the dash fixed, not the renumbering (${JSON.stringify(norm.slice(0, 300))})`);
   t.check(/^Plain: 2 removed, 2 added/.test(plain) && /\+N0011 G99#/.test(plain) && /\+N0120 G1 Y-250\.#/.test(plain), `the plain diff shows both lines (${JSON.stringify(plain.slice(0, 300))})`);
-  await page.locator('#revisions-h').scrollIntoViewIfNeeded();
+  await page.evaluate(() => document.getElementById('revisions-h').scrollIntoView({ block: 'start' }));
   await t.shot(page, 'web-revisions.png', false);
   return { first, second };
 }

@@ -130,7 +130,7 @@ async function run() {
   await shot(page, 'web-program.png');
   const figures = await page.locator('#stats').innerText();
   check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[1-9][\d.]* mm/.test(figures), `the figures: cycle time, bounds, distances of T1 and T2 (${JSON.stringify(figures)})`);
-  await page.locator('#stats').scrollIntoViewIfNeeded();
+  await page.evaluate(() => document.getElementById('stats').scrollIntoView({ block: 'start' }));
   await shot(page, 'web-figures.png', false);
 
   // The library lists and finds it.

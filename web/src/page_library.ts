@@ -1,6 +1,7 @@
 // The library: every program, a search by name, and the upload of a file.
 import { enc, getJson, postJson, type ProgramSummary } from './api';
 import { field, h, show, status } from './dom';
+import { mayUpload, sessionUser } from './roles';
 
 const DIALECTS = ['rs274ngc', 'fanuc', 'grbl', 'romi'];
 
@@ -13,7 +14,7 @@ function choices(label: string, values: string[]): HTMLSelectElement {
 }
 
 export async function libraryPage(main: HTMLElement): Promise<void> {
-  const list = await getJson<{ programs: ProgramSummary[] }>('/api/programs');
+  const [list, who] = await Promise.all([getJson<{ programs: ProgramSummary[] }>('/api/programs'), sessionUser()]);
   const search = h('input', { type: 'search', placeholder: 'O1234', autocomplete: 'off' });
   const classes = choices('every class', [...new Set(list.programs.map((p) => p.machine_class))].sort());
   const dialects = choices('every dialect', [...new Set(list.programs.map((p) => p.dialect))].sort());
@@ -78,7 +79,7 @@ export async function libraryPage(main: HTMLElement): Promise<void> {
       table,
       h('div', { class: 'pager', role: 'group', 'aria-label': 'Pages' }, prev, where, next),
     ),
-    uploadForm(),
+    mayUpload(who.role) ? uploadForm() : h('p', { class: 'note', text: `You are ${who.role}: uploading programs is for programmers and admins.` }),
   );
 }
 
