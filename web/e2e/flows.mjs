@@ -148,7 +148,8 @@ async function dripAndStop(page, h, t, control) {
 }
 
 // A send watched to 100 % (the control counting every byte), a part punched
-// back, a start from a block, a dialog cancelled from the keyboard.
+// back, a start from a block and from a tool change, a dialog cancelled
+// from the keyboard, a drip feed stopped.
 export async function machineFlow(page, h, t, first) {
   if (!h.controlPath) {
     t.check(true, 'SKIPPED the machine flow: socat is not installed');
@@ -206,11 +207,22 @@ export async function machineFlow(page, h, t, first) {
     for (let i = 0; i < 100 && control.mark() - mark < restart.total; i++) await page.waitForTimeout(50);
     const sent = text(control.since(mark));
     t.check(id2 > id && restart.total < job.total && sent.includes('N0150') && !sent.includes('N0120 G1'), `a start from block N0150 sends the restart program (${restart.total} bytes)`);
+    const mark2 = control.mark();
+    const d3 = await startJob(page, first, 'Send', 'tool', '2');
+    t.check(/from the change to tool 2/.test(await d3.innerText()), 'the confirmation names the tool');
+    await d3.getByRole('button', { name: 'Send' }).click();
+    const id3 = await queuedJob(page, id2);
+    await waitForEnd(page, id3);
+    const fromTool = await machineJob(page);
+    for (let i = 0; i < 100 && control.mark() - mark2 < fromTool.total; i++) await page.waitForTimeout(50);
+    const sentT = text(control.since(mark2));
+    t.check(fromTool.total < restart.total && sentT.includes('T02 M06') && !sentT.includes('N0150'), `a start from the change to tool 2 sends from there on (${fromTool.total} bytes)`);
+
     await dripAndStop(page, h, t, control);
     const audit = (await h.api('boss', 'GET', '/api/audit')).json;
     const made = audit.entries.filter((e) => e.action === 'job.create' && e.actor === 'oper').length;
     const stopped = audit.entries.filter((e) => e.action === 'job.interrupted' && /stopped by oper/.test(e.reason)).length;
-    t.check(made === 3 && stopped === 1, `the audit log holds the operator's three jobs (${made}) and the stop (${stopped})`);
+    t.check(made === 4 && stopped === 1, `the audit log holds the operator's four jobs (${made}) and the stop (${stopped})`);
   } finally {
     control.close();
   }
