@@ -252,3 +252,18 @@ export async function libraryFlow(page, h, t) {
   await page.getByLabel('Filter by machine class').selectOption('');
   await t.shot(page, 'web-library.png');
 }
+
+// At 200 % zoom a 1280 × 860 window is 640 × 430 CSS pixels: every page
+// must fit its width (no sideways scrolling), the layout wrapping instead.
+export async function zoomFlow(page, h, t, rev) {
+  await page.setViewportSize({ width: 640, height: 430 });
+  const pages = [['library', 'Library'], ['machines', 'Machines'], [`program/seed-000/${rev}`, 'Program seed-000']];
+  for (const [hash, heading] of pages) {
+    await page.goto(`${h.base}/#/${hash}`);
+    await page.getByRole('heading', { name: heading, exact: true }).waitFor();
+    if (hash.startsWith('program')) await page.locator('#stats').waitFor();
+    const [scroll, client] = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
+    t.check(scroll <= client, `at 200 % zoom the ${heading} page fits its width (${scroll} of ${client} px)`);
+  }
+  await page.setViewportSize({ width: 1280, height: 860 });
+}

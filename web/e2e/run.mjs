@@ -7,7 +7,7 @@
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
-import { libraryFlow, machineFlow, reviewFlow } from './flows.mjs';
+import { libraryFlow, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
 import { arg, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
 
 skipUnlessReady();
@@ -153,6 +153,7 @@ async function run() {
   const { second } = await reviewFlow(page, harness, t, seed);
   await machineFlow(page, harness, t, second);
   await libraryFlow(page, harness, t);
+  await zoomFlow(page, harness, t, second);
 
   // No page file is fetched from elsewhere, and the page logged no error.
   check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);
