@@ -249,6 +249,7 @@ export async function libraryFlow(page, h, t) {
   await page.getByRole('button', { name: 'Next page' }).click();
   t.check((await page.locator('#library-page').innerText()) === 'Page 2 of 2' && (await rows()) === 10 && (await page.getByRole('button', { name: 'Next page' }).isDisabled()), 'the class filter and the next page: the last 10 lathe programs');
   await page.getByRole('button', { name: 'Previous page' }).click();
+  t.check((await page.locator('#library-page').innerText()) === 'Page 1 of 2' && (await rows()) === 50, 'the previous page: the first 50 lathe programs');
   await page.getByLabel('Filter by machine class').selectOption('');
   await t.shot(page, 'web-library.png');
 }

@@ -1,7 +1,7 @@
 // A machine's job buttons: send or drip feed a revision, from its start, a
 // block (a line number or an N word) or a tool change; stop the running
 // job. Each asks for confirmation first, and each is one call of the API,
-// which writes the audit log (docs/dnc-server.md).
+// which writes the audit log (docs/web.md, "The machines' jobs").
 import { ApiError, enc, getJson, postJson, type Job, type Machine, type Program, type ProgramSummary } from './api';
 import { confirmAction } from './confirm';
 import { field, h, status } from './dom';
@@ -19,97 +19,135 @@ function sendable(state: string, mode: string): boolean {
   return state === 'released' || (mode === 'tryout' && state === 'approved');
 }
 
-function startFields(at: string, value: string): Record<string, string | number> {
-  if (at === 'block') return /^\d+$/.test(value) ? { start_block: Number(value) } : { start_block: value };
-  if (at === 'tool') return { start_tool: Number(value) };
-  return {};
+// The program (typed or picked) and the revisions of it the machine takes.
+class ProgramPicker {
+  readonly list: HTMLDataListElement;
+  readonly program: HTMLInputElement;
+  readonly revision = h('select', { required: true }, h('option', { value: '', text: 'choose a program first' }));
+
+  constructor(
+    id: (x: string) => string,
+    public mode: string,
+  ) {
+    this.list = h('datalist', { id: id('programs') });
+    this.program = h('input', { list: id('programs'), autocomplete: 'off', required: true });
+    this.program.addEventListener('change', () => void this.fill());
+    void getJson<{ programs: ProgramSummary[] }>('/api/programs').then((l) => this.list.replaceChildren(...l.programs.map((p) => h('option', { value: p.name }))));
+  }
+
+  name(): string {
+    return this.program.value.trim();
+  }
+
+  async fill(): Promise<void> {
+    if (!this.name()) return;
+    try {
+      const p = await getJson<Program>(`/api/programs/${enc(this.name())}`);
+      const ok = p.revisions.filter((r) => sendable(r.state, this.mode));
+      this.revision.replaceChildren(...ok.map((r) => h('option', { value: r.revision, text: `${r.revision.slice(0, 12)} — ${r.state}${r.reason ? `: ${r.reason}` : ''}` })));
+      if (!ok.length) this.revision.append(h('option', { value: '', text: `no revision ${this.mode === 'tryout' ? 'approved or released' : 'released'}` }));
+    } catch (e) {
+      this.revision.replaceChildren(h('option', { value: '', text: (e as Error).message }));
+    }
+  }
+}
+
+// Where the job starts: the program's start, a block, or a tool change.
+class StartPicker {
+  readonly at = h('select', {}, h('option', { value: 'start', text: 'the start' }), h('option', { value: 'block', text: 'a block (line or N word)' }), h('option', { value: 'tool', text: 'a tool change' }));
+  readonly where = h('input', { autocomplete: 'off', inputmode: 'numeric', placeholder: '120 or N120', disabled: true });
+
+  constructor() {
+    this.at.addEventListener('change', () => {
+      this.where.disabled = this.at.value === 'start';
+      this.where.required = !this.where.disabled;
+      this.where.placeholder = this.at.value === 'tool' ? '5' : '120 or N120';
+    });
+  }
+
+  // The order's start_block or start_tool.
+  fields(): Record<string, string | number> {
+    const v = this.where.value.trim();
+    if (this.at.value === 'block') return /^\d+$/.test(v) ? { start_block: Number(v) } : { start_block: v };
+    if (this.at.value === 'tool') return { start_tool: Number(v) };
+    return {};
+  }
+
+  describe(): string {
+    const v = this.where.value.trim();
+    if (this.at.value === 'block') return `from block ${v}`;
+    if (this.at.value === 'tool') return `from the change to tool ${v}`;
+    return 'from its start';
+  }
+}
+
+// A status line that turns into an alert for a refusal.
+function reporter(line: HTMLElement) {
+  return {
+    ok(text: string) {
+      line.removeAttribute('role');
+      line.textContent = text;
+    },
+    fail(err: unknown) {
+      line.setAttribute('role', 'alert');
+      line.textContent = err instanceof ApiError ? `${err.status}: ${err.message}` : (err as Error).message ?? String(err);
+    },
+  };
 }
 
 export function jobForm(m: Machine, currentJob: () => Job | null): JobForm {
   const id = (x: string) => `${m.name}-${x}`;
-  const programs = h('datalist', { id: id('programs') });
-  const program = h('input', { list: id('programs'), autocomplete: 'off', required: true });
-  const revision = h('select', { required: true }, h('option', { value: '', text: 'choose a program first' }));
-  const at = h('select', {}, h('option', { value: 'start', text: 'the start' }), h('option', { value: 'block', text: 'a block (line or N word)' }), h('option', { value: 'tool', text: 'a tool change' }));
-  const where = h('input', { autocomplete: 'off', inputmode: 'numeric', placeholder: '120 or N120', disabled: true });
-  const send = h('button', { type: 'submit', value: 'send', text: 'Send' });
-  const drip = h('button', { type: 'submit', value: 'drip', text: 'Drip feed' });
+  const pick = new ProgramPicker(id, m.mode);
+  const from = new StartPicker();
   const stop = h('button', { type: 'button', class: 'stop', text: 'Stop the job', disabled: true });
   const said = status(id('job-status'));
-  let mode = m.mode;
-  at.addEventListener('change', () => {
-    where.disabled = at.value === 'start';
-    where.required = !where.disabled;
-    where.placeholder = at.value === 'tool' ? '5' : '120 or N120';
-  });
-  const fillRevisions = async () => {
-    const name = program.value.trim();
-    if (!name) return;
+  const report = reporter(said);
+  const start = async (how: string) => {
+    if (!pick.revision.value) return report.fail(new Error('Choose a program and a revision the machine may take.'));
+    const verb = how === 'drip' ? 'Drip feed' : 'Send';
+    if (!(await confirmAction(`${verb} ${pick.name()} to ${m.name}?`, `Revision ${pick.revision.value.slice(0, 12)}, ${from.describe()}. The machine's control must be ready to read.`, verb))) return;
     try {
-      const p = await getJson<Program>(`/api/programs/${enc(name)}`);
-      const ok = p.revisions.filter((r) => sendable(r.state, mode));
-      revision.replaceChildren(...ok.map((r) => h('option', { value: r.revision, text: `${r.revision.slice(0, 12)} — ${r.state}${r.reason ? `: ${r.reason}` : ''}` })));
-      if (!ok.length) revision.append(h('option', { value: '', text: `no revision ${mode === 'tryout' ? 'approved or released' : 'released'}` }));
-    } catch (e) {
-      revision.replaceChildren(h('option', { value: '', text: (e as Error).message }));
+      const j = await postJson<Job>(`/api/machines/${enc(m.name)}/jobs`, { program: pick.name(), revision: pick.revision.value, mode: how, ...from.fields() });
+      report.ok(`Job ${j.job} queued: ${j.program} to ${m.name} (${j.bytes_total} bytes).`);
+    } catch (err) {
+      report.fail(err);
     }
   };
-  program.addEventListener('change', () => void fillRevisions());
-  void getJson<{ programs: ProgramSummary[] }>('/api/programs').then((l) => programs.replaceChildren(...l.programs.map((p) => h('option', { value: p.name }))));
+  stop.addEventListener('click', () => void stopJob(m, currentJob(), report));
   const form = h(
     'form',
     { class: 'job-form', 'aria-label': `Jobs for ${m.name}` },
-    programs,
-    field('Program', program, id('program')),
-    field('Revision', revision, id('revision')),
-    field('Start at', at, id('start-at')),
-    field('Block or tool', where, id('start-where')),
-    h('div', { class: 'buttons' }, send, drip, stop),
+    pick.list,
+    field('Program', pick.program, id('program')),
+    field('Revision', pick.revision, id('revision')),
+    field('Start at', from.at, id('start-at')),
+    field('Block or tool', from.where, id('start-where')),
+    h('div', { class: 'buttons' }, h('button', { type: 'submit', value: 'send', text: 'Send' }), h('button', { type: 'submit', value: 'drip', text: 'Drip feed' }), stop),
     said,
   );
   form.addEventListener('submit', (e) => {
     e.preventDefault();
-    const how = ((e as SubmitEvent).submitter as HTMLButtonElement | null)?.value ?? 'send';
-    void start(how);
-  });
-  const fail = (err: unknown) => {
-    said.setAttribute('role', 'alert');
-    said.textContent = err instanceof ApiError ? `${err.status}: ${err.message}` : String(err);
-  };
-  const start = async (how: string) => {
-    if (!revision.value) return fail(new Error('Choose a program and a revision the machine may take.'));
-    const from = at.value === 'start' ? 'from its start' : at.value === 'block' ? `from block ${where.value}` : `from the change to tool ${where.value}`;
-    const verb = how === 'drip' ? 'Drip feed' : 'Send';
-    const ok = await confirmAction(`${verb} ${program.value} to ${m.name}?`, `Revision ${revision.value.slice(0, 12)}, ${from}. The machine's control must be ready to read.`, verb);
-    if (!ok) return;
-    try {
-      const j = await postJson<Job>(`/api/machines/${enc(m.name)}/jobs`, { program: program.value.trim(), revision: revision.value, mode: how, ...startFields(at.value, where.value.trim()) });
-      said.removeAttribute('role');
-      said.textContent = `Job ${j.job} queued: ${j.program} to ${m.name} (${j.bytes_total} bytes).`;
-    } catch (err) {
-      fail(err);
-    }
-  };
-  stop.addEventListener('click', async () => {
-    const j = currentJob();
-    if (!j || !RUNNING.includes(j.state)) return;
-    if (!(await confirmAction(`Stop job ${j.job} on ${m.name}?`, `${j.program}: ${j.bytes_sent} of ${j.bytes_total} bytes sent. The rest is not sent.`, 'Stop the job'))) return;
-    try {
-      await postJson(`/api/jobs/${j.job}/stop`, {});
-      said.removeAttribute('role');
-      said.textContent = `Job ${j.job}: stop asked.`;
-    } catch (err) {
-      fail(err);
-    }
+    void start(((e as SubmitEvent).submitter as HTMLButtonElement | null)?.value ?? 'send');
   });
   return {
     element: form,
     update(machine: Machine, job: Job | null) {
-      if (machine.mode !== mode) {
-        mode = machine.mode;
-        void fillRevisions();
+      if (machine.mode !== pick.mode) {
+        pick.mode = machine.mode;
+        void pick.fill();
       }
       stop.disabled = !job || !RUNNING.includes(job.state);
     },
   };
+}
+
+async function stopJob(m: Machine, j: Job | null, report: ReturnType<typeof reporter>): Promise<void> {
+  if (!j || !RUNNING.includes(j.state)) return;
+  if (!(await confirmAction(`Stop job ${j.job} on ${m.name}?`, `${j.program}: ${j.bytes_sent} of ${j.bytes_total} bytes sent. The rest is not sent.`, 'Stop the job'))) return;
+  try {
+    await postJson(`/api/jobs/${j.job}/stop`, {});
+    report.ok(`Job ${j.job}: stop asked.`);
+  } catch (err) {
+    report.fail(err);
+  }
 }
