@@ -65,7 +65,8 @@ class Api {
   explicit Api(ApiContext ctx) : ctx_(ctx) {}
 
   HttpResponse handle(const HttpRequest& req, const std::string& origin);
-  // The routes whose work is done off the loop (the tool path): true when
+  // The routes whose work is done off the loop (the tool path, the tools'
+  // figures): true when
   // `req` is one, and `answer` is called later (HttpHandlers::later).
   bool handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer);
   // `GET /api/events`: takes the socket for the event stream, or refuses.
@@ -87,6 +88,8 @@ HttpResponse api_revision(ApiCall& c);
 HttpResponse api_revision_text(ApiCall& c);
 HttpResponse api_toolpath(ApiCall& c);  // web_toolpath_api.cpp
 void api_toolpath_later(ApiCall& c, HttpAnswer answer);
+HttpResponse api_tool_figures(ApiCall& c);  // web_toolpath_tools.cpp
+void api_tool_figures_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);

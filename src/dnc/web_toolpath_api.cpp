@@ -2,6 +2,8 @@
 // revision's tool path as the viewer's binary stream (web_toolpath.hpp),
 // computed on the tool-path service's pool and kept in its cache
 // (web_toolpath_service.hpp), so the event loop goes on serving meanwhile.
+#include "dnc/web_toolpath_api.hpp"
+
 #include <charconv>
 
 #include <fmt/format.h>
@@ -17,6 +19,7 @@ namespace {
 
 constexpr std::uint32_t kMinVertices = 2;
 constexpr std::uint32_t kMaxVertices = 2'000'000;
+constexpr std::string_view kStreamType = "application/octet-stream";
 
 // `max_vertices` of the query: the default when absent, nothing when malformed.
 std::optional<std::uint32_t> max_vertices_of(const Target& target) {
@@ -30,25 +33,32 @@ std::optional<std::uint32_t> max_vertices_of(const Target& target) {
   return n;
 }
 
-// What the answer needs of the request once the request itself is gone.
-struct Reply {
-  unsigned version = 11;
-  bool keep_alive = true;
-};
+}  // namespace
 
-HttpResponse stream_response(const Reply& r, const std::string& stream, ToolpathFrom from) {
+HttpResponse computed_response(const ToolpathReply& r, std::string_view content_type,
+                               const std::string& bytes, ToolpathFrom from) {
   HttpResponse res{http::status::ok, r.version};
   res.set(http::field::server, "usina");
-  res.set(http::field::content_type, "application/octet-stream");
+  res.set(http::field::content_type, std::string(content_type));
   res.set("X-Content-Type-Options", "nosniff");
   res.set("X-Toolpath-Cache", toolpath_from_name(from));
   // A revision's bytes never change (its name is their hash).
   res.set(http::field::cache_control, "private, max-age=86400");
   res.keep_alive(r.keep_alive);
-  res.body() = stream;
+  res.body() = bytes;
   res.prepare_payload();
   return res;
 }
+
+HttpResponse run_failed(const ToolpathReply& r, const std::string& why) {
+  HttpRequest req;
+  req.version(r.version);
+  req.keep_alive(r.keep_alive);
+  return error_response(req, http::status::internal_server_error,
+                        "the tool path could not be computed: " + why);
+}
+
+namespace {
 
 // The revision's settings and cache key, or the error answer.
 struct Wanted {
@@ -87,25 +97,28 @@ HttpResponse api_toolpath(ApiCall& c) {
   if (!w) return std::move(w.error());
   auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
   if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
-  const Reply reply{c.req.version(), c.req.keep_alive()};
-  return stream_response(reply, encode_toolpath(program_toolpath(*bytes, w->settings)),
-                         ToolpathFrom::Computed);
+  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
+  return computed_response(reply, kStreamType,
+                           encode_toolpath(program_toolpath(*bytes, w->settings)),
+                           ToolpathFrom::Computed);
 }
 
 void api_toolpath_later(ApiCall& c, HttpAnswer answer) {
   auto w = wanted(c);
   if (!w) return answer(std::move(w.error()));
-  const Reply reply{c.req.version(), c.req.keep_alive()};
+  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
   ToolpathService& service = *c.ctx.toolpaths;
   if (ToolpathStream kept = service.cached(w->key))
-    return answer(stream_response(reply, *kept, ToolpathFrom::Cache));
+    return answer(computed_response(reply, kStreamType, *kept, ToolpathFrom::Cache));
   // Read (and verified against its hash) here: the store is the loop's.
   auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
   if (!bytes) return answer(error_response(c.req, status_of(bytes.error()), bytes.error().message));
-  service.compute(w->key, std::move(*bytes), w->settings,
-                  [reply, answer = std::move(answer)](ToolpathStream s, ToolpathFrom from) {
-                    answer(stream_response(reply, *s, from));
-                  });
+  service.compute(
+      w->key, std::move(*bytes), w->settings,
+      [reply, answer = std::move(answer)](ToolpathStream s, ToolpathFrom from,
+                                          const std::string& error) {
+        answer(s ? computed_response(reply, kStreamType, *s, from) : run_failed(reply, error));
+      });
 }
 
 }  // namespace usina::dnc

@@ -1,5 +1,7 @@
 #include "dnc/web_toolpath_service.hpp"
 
+#include <exception>
+
 #include <boost/asio/post.hpp>
 
 namespace usina::dnc {
@@ -21,15 +23,19 @@ struct ToolpathService::State {
   std::map<std::string, std::vector<Done>> waiting;  // by key: the runs in progress
   ToolpathCounters counters;
 
-  void finish(const std::string& key, ToolpathStream stream) {
-    ++counters.computed;
-    cache.put(key, stream);
+  void finish(const std::string& key, ToolpathStream stream, const std::string& error) {
+    if (stream) {
+      ++counters.computed;
+      cache.put(key, stream);
+    } else {
+      ++counters.failed;
+    }
     auto it = waiting.find(key);
     if (it == waiting.end()) return;
     std::vector<Done> done = std::move(it->second);
     waiting.erase(it);
     for (std::size_t i = 0; i < done.size(); ++i)
-      done[i](stream, i == 0 ? ToolpathFrom::Computed : ToolpathFrom::Joined);
+      done[i](stream, i == 0 ? ToolpathFrom::Computed : ToolpathFrom::Joined, error);
   }
 };
 
@@ -51,6 +57,15 @@ ToolpathStream ToolpathService::cached(const std::string& key) {
 
 void ToolpathService::compute(const std::string& key, std::string text,
                               const ToolpathSettings& settings, Done done) {
+  run(
+      key,
+      [text = std::move(text), settings] {
+        return encode_toolpath(program_toolpath(text, settings));
+      },
+      std::move(done));
+}
+
+void ToolpathService::run(const std::string& key, Work work, Done done) {
   auto& waiting = state_->waiting[key];
   waiting.push_back(std::move(done));
   if (waiting.size() > 1) {
@@ -58,12 +73,17 @@ void ToolpathService::compute(const std::string& key, std::string text,
     return;  // the run in progress answers this one too
   }
   std::weak_ptr<State> back = state_;
-  boost::asio::post(pool_, [this, &loop = loop_, back, key, text = std::move(text), settings] {
-    if (before_run) before_run();
-    auto stream =
-        std::make_shared<const std::string>(encode_toolpath(program_toolpath(text, settings)));
-    boost::asio::post(loop, [back, key, stream] {
-      if (auto state = back.lock()) state->finish(key, stream);
+  boost::asio::post(pool_, [this, &loop = loop_, back, key, work = std::move(work)] {
+    ToolpathStream stream;
+    std::string error;
+    try {
+      if (before_run) before_run();
+      stream = std::make_shared<const std::string>(work());
+    } catch (const std::exception& e) {  // a run past the memory there is: the server goes on
+      error = e.what();
+    }
+    boost::asio::post(loop, [back, key, stream, error] {
+      if (auto state = back.lock()) state->finish(key, stream, error);
     });
   });
 }

@@ -31,6 +31,12 @@ enum class ToolpathFrom { Cache, Computed, Joined };
 
 const char* toolpath_from_name(ToolpathFrom from);
 
+// What an answer computed later needs of its request, which is gone by then.
+struct ToolpathReply {
+  unsigned version = 11;
+  bool keep_alive = true;
+};
+
 struct ToolpathServiceConfig {
   // Two: a small program is not queued behind one big one, and at most two
   // runs hold their vertices at once (a run holds up to 20,000,000).
@@ -42,11 +48,15 @@ struct ToolpathCounters {
   std::uint64_t hits = 0;      // answered from the cache
   std::uint64_t computed = 0;  // runs finished on the pool
   std::uint64_t joined = 0;    // requests that waited for a run another one started
+  std::uint64_t failed = 0;    // runs that threw (out of memory): answered 500, not kept
 };
 
 class ToolpathService {
  public:
-  using Done = std::function<void(ToolpathStream, ToolpathFrom)>;
+  // The answer's bytes, computed on the pool (it may throw: then `error`).
+  using Work = std::function<std::string()>;
+  // On the loop: the bytes, or nullptr and why not.
+  using Done = std::function<void(ToolpathStream, ToolpathFrom, const std::string& error)>;
 
   ToolpathService(boost::asio::io_context& loop, ToolpathServiceConfig config = {});
   // Drops the queued runs and waits for the ones running to end.
@@ -61,13 +71,17 @@ class ToolpathService {
   // progress); `done` runs on the loop with the stream.
   void compute(const std::string& key, std::string text, const ToolpathSettings& settings,
                Done done);
+  // The same for any work whose bytes depend on `key` alone (the tools'
+  // figures, web_toolpath_tools.cpp).
+  void run(const std::string& key, Work work, Done done);
 
   // On the loop.
   ToolpathCounters counters() const;
   std::size_t cached_bytes() const;
 
   // Runs on the pool's thread before each run (the tests hold a run there
-  // to see the loop answer meanwhile). Set it before the first request.
+  // to see the loop answer meanwhile, or throw as a run out of memory
+  // would). Set it before the first request.
   std::function<void()> before_run;
 
  private:

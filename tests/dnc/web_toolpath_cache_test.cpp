@@ -9,6 +9,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include <fmt/format.h>
@@ -223,6 +224,26 @@ TEST(WebToolpathRoute, RequestsForARunInProgressShareIt) {
   EXPECT_EQ(b.from, "joined");
   EXPECT_EQ(a.body, b.body);
   EXPECT_EQ(server.on_loop([&] { return server.server().toolpaths().counters().computed; }), 1u);
+}
+
+TEST(WebToolpathRoute, ARunThatThrowsIsA500AndNotKept) {
+  test::RunningServer server;
+  server.start();
+  std::atomic<bool> fail{true};
+  server.server().toolpaths().before_run = [&fail] {
+    if (fail) throw std::runtime_error("std::bad_alloc");  // as a run past the memory would
+  };
+  const Uploaded u = upload(server, 100);
+  const Got failed = get_toolpath(server.client().port(), u.route, u.oper);
+  EXPECT_EQ(failed.status, 500);
+  EXPECT_NE(failed.body.find("the tool path could not be computed: std::bad_alloc"),
+            std::string::npos)
+      << failed.body;
+  fail = false;
+  const Got next = get_toolpath(server.client().port(), u.route, u.oper);
+  EXPECT_EQ(next.status, 200);
+  EXPECT_EQ(next.from, "computed");  // the failure was not kept
+  EXPECT_EQ(server.on_loop([&] { return server.server().toolpaths().counters().failed; }), 1u);
 }
 
 }  // namespace
