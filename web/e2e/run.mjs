@@ -128,8 +128,9 @@ async function run() {
   await page.getByRole('button', { name: 'Iso view' }).click();
   await page.evaluate(() => window.scrollTo(0, 0));
   await shot(page, 'web-program.png');
+  await page.locator('#stats table[aria-label="Per tool"]').waitFor();
   const figures = await page.locator('#stats').innerText();
-  check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[1-9][\d.]* mm/.test(figures), `the figures: cycle time, bounds, distances of T1 and T2 (${JSON.stringify(figures)})`);
+  check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+\d+ min \d+ s(\s+\S+( min \d+)? s){3}\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[\d.]+( min \d+)? s/.test(figures), `the figures: cycle time, bounds, the time and distances of T1 and T2 (${JSON.stringify(figures)})`);
   await page.evaluate(() => document.getElementById('stats').scrollIntoView({ block: 'start' }));
   await shot(page, 'web-figures.png', false);
 

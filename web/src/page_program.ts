@@ -4,7 +4,7 @@
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
 import { reviewPanel, revisionsPanel } from './program_review';
-import { statsPanel } from './program_stats';
+import { statsPanel, type Figures } from './program_stats';
 import { sessionUser } from './roles';
 import { decodeToolpath, Kind } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
@@ -41,7 +41,10 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   viewerHost.replaceChildren();
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
-  statsHost.replaceWith(statsPanel(revision.checks, path));
+  void getJson<Figures>(`${base}/tools`).then(
+    (f) => statsHost.replaceWith(statsPanel(revision.checks, f)),
+    (e: Error) => statsHost.replaceWith(statsPanel(revision.checks, e.message)),
+  );
   const select = (line: number) => {
     const moves = viewer.highlightLine(line);
     code.mark(line);

@@ -1,29 +1,25 @@
 // The program's figures: the check's times, bounds and stats checks (the
-// revision's check results), and the distance each tool travels, feeding
-// and rapid, summed over the tool path the viewer draws.
+// revision's check results), and each tool's time and distances (usina
+// stats per tool, GET .../tools, computed on the server's pool).
 import { type Checks } from './api';
 import { h } from './dom';
-import { Kind, type Toolpath } from './toolpath';
 
-export interface ToolDistance {
+export interface ToolFigures {
   tool: number;
-  feed: number; // mm: feeds, arcs, splines, probes
-  rapid: number; // mm
+  total_s: number;
+  cutting_s: number;
+  rapid_s: number;
+  other_s: number;
+  cutting_mm: number;
+  rapid_mm: number;
+  moves: number;
 }
 
-// Per tool, in the order of the tools' numbers.
-export function distances(path: Toolpath): ToolDistance[] {
-  const by = new Map<number, ToolDistance>();
-  const p = path.positions;
-  for (let i = 1; i < path.count; i++) {
-    const d = Math.hypot(p[3 * i] - p[3 * i - 3], p[3 * i + 1] - p[3 * i - 2], p[3 * i + 2] - p[3 * i - 1]);
-    const t = path.tools[i];
-    const row = by.get(t) ?? { tool: t, feed: 0, rapid: 0 };
-    if (path.kinds[i] === Kind.Rapid) row.rapid += d;
-    else row.feed += d;
-    by.set(t, row);
-  }
-  return [...by.values()].sort((a, b) => a.tool - b.tool);
+export interface Figures {
+  machine: string;
+  complete: boolean;
+  tools: ToolFigures[];
+  total?: ToolFigures;
 }
 
 function seconds(s: number | undefined): string {
@@ -44,7 +40,14 @@ function table(label: string, head: string[], rows: string[][]): HTMLElement {
   );
 }
 
-export function statsPanel(checks: Checks | null, path: Toolpath): HTMLElement {
+function toolTable(f: Figures): HTMLElement {
+  const row = (name: string, t: ToolFigures) => [name, seconds(t.total_s), seconds(t.cutting_s), seconds(t.rapid_s), seconds(t.other_s), mm(t.cutting_mm), mm(t.rapid_mm)];
+  const rows = f.tools.map((t) => row(t.tool ? `T${t.tool}` : 'no tool', t));
+  if (f.total && f.tools.length > 1) rows.push(row('All', f.total));
+  return table('Per tool', ['Tool', 'Time', 'Cutting', 'Rapid', 'Other', 'Feed distance', 'Rapid distance'], rows);
+}
+
+export function statsPanel(checks: Checks | null, figures: Figures | string): HTMLElement {
   const parts: HTMLElement[] = [h('h2', { id: 'stats-h', text: 'Figures' })];
   if (checks) {
     parts.push(table('Times', ['Time', 'Estimate'], [['Cycle', seconds(checks.cycle_time_s)], ['Cutting', seconds(checks.cutting_s)], ['Rapid', seconds(checks.rapid_s)]]));
@@ -57,8 +60,7 @@ export function statsPanel(checks: Checks | null, path: Toolpath): HTMLElement {
   } else {
     parts.push(h('p', { class: 'note', text: 'This revision has no check results.' }));
   }
-  const rows = distances(path).map((d) => [d.tool ? `T${d.tool}` : 'no tool', mm(d.feed), mm(d.rapid)]);
-  parts.push(table('Distances per tool', ['Tool', 'Feed', 'Rapid'], rows));
-  if (path.decimated) parts.push(h('p', { class: 'note', text: `The distances are summed over the ${path.count} points drawn for ${path.moves} moves (decimated): a little short of the program's.` }));
+  if (typeof figures === 'string') parts.push(h('p', { role: 'alert', text: `The figures per tool: ${figures}` }));
+  else parts.push(toolTable(figures), h('p', { class: 'note', text: `Per tool on the machine profile ${figures.machine}${figures.complete ? '' : ' (the run stopped early: the figures are of what ran)'}.` }));
   return h('section', { 'aria-labelledby': 'stats-h', class: 'stats-panel', id: 'stats' }, ...parts);
 }
