@@ -22,6 +22,7 @@
 namespace usina::dnc {
 
 class ToolpathService;  // web_toolpath_service.hpp
+using HttpAnswer = HttpHandlers::Answer;
 
 struct ApiContext {
   Store& store;

@@ -79,7 +79,7 @@ void HttpSession::on_read(const beast::error_code& ec) {
     return;  // the socket now belongs to the WebSocket (or is answered and closed)
   }
   if (const auto& later = listener_->handlers().later) {
-    HttpAnswer reply = [self = shared_from_this()](HttpResponse res) {
+    HttpHandlers::Answer reply = [self = shared_from_this()](HttpResponse res) {
       self->answer(std::move(res), false);
     };
     if (later(req, origin_, reply)) return;  // the session waits, reading nothing

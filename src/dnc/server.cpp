@@ -52,6 +52,9 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
       config_.web_root.empty() ? default_web_root() : std::filesystem::path(config_.web_root),
       config_.web_max_file_bytes});
   HttpHandlers handlers;
+  handlers.later = [this](const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
+    return api_->handle_later(req, origin, answer);
+  };
   handlers.request = [this](const HttpRequest& req, const std::string& origin) {
     const std::string_view target(req.target().data(), req.target().size());
     // Only GET reads the page; any other method keeps the API's answer
@@ -61,9 +64,6 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
   };
   handlers.upgrade = [this](boost::asio::ip::tcp::socket& socket, const HttpRequest& req) {
     return api_->upgrade(socket, req);
-  };
-  handlers.later = [this](const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
-    return api_->handle_later(req, origin, answer);
   };
   HttpLimits limits;
   limits.body_bytes = config_.max_upload;
