@@ -117,6 +117,25 @@ HttpResponse Api::handle(const HttpRequest& req, const std::string& origin) {
   return error_response(req, http::status::not_found, "no such route");
 }
 
+std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
+                                         const HttpRequest& req) {
+  auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
+  if (!target || target->segments != std::vector<std::string>{"api", "events"})
+    return error_response(req, http::status::not_found, "no WebSocket here; use /api/events");
+  std::string token = bearer_token(req);
+  // Browsers cannot set a header on a WebSocket: the token may come as ?token=.
+  if (const auto it = target->query.find("token"); token.empty() && it != target->query.end())
+    token = it->second;
+  if (token.empty())
+    return error_response(req, http::status::unauthorized, "log in first: no token given");
+  auto session = verify_session(ctx_.store, token);
+  if (!session) return error_response(req, http::status::unauthorized, session.error().message);
+  auto s = std::make_shared<EventSession>(std::move(socket));
+  ctx_.events.add(s);
+  s->accept(req);
+  return std::nullopt;
+}
+
 bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
   if (ctx_.toolpaths == nullptr) return false;
   auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
@@ -139,25 +158,6 @@ bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAn
     return true;
   }
   return false;
-}
-
-std::optional<HttpResponse> Api::upgrade(boost::asio::ip::tcp::socket& socket,
-                                         const HttpRequest& req) {
-  auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
-  if (!target || target->segments != std::vector<std::string>{"api", "events"})
-    return error_response(req, http::status::not_found, "no WebSocket here; use /api/events");
-  std::string token = bearer_token(req);
-  // Browsers cannot set a header on a WebSocket: the token may come as ?token=.
-  if (const auto it = target->query.find("token"); token.empty() && it != target->query.end())
-    token = it->second;
-  if (token.empty())
-    return error_response(req, http::status::unauthorized, "log in first: no token given");
-  auto session = verify_session(ctx_.store, token);
-  if (!session) return error_response(req, http::status::unauthorized, session.error().message);
-  auto s = std::make_shared<EventSession>(std::move(socket));
-  ctx_.events.add(s);
-  s->accept(req);
-  return std::nullopt;
 }
 
 }  // namespace usina::dnc

@@ -65,11 +65,10 @@ class Api {
  public:
   explicit Api(ApiContext ctx) : ctx_(ctx) {}
 
-  HttpResponse handle(const HttpRequest& req, const std::string& origin);
   // The routes whose work is done off the loop (the tool path, the tools'
-  // figures): true when
-  // `req` is one, and `answer` is called later (HttpHandlers::later).
+  // figures): true when `req` is one, and `answer` is called later (HttpHandlers::later).
   bool handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer);
+  HttpResponse handle(const HttpRequest& req, const std::string& origin);
   // `GET /api/events`: takes the socket for the event stream, or refuses.
   std::optional<HttpResponse> upgrade(boost::asio::ip::tcp::socket& socket, const HttpRequest& req);
 
