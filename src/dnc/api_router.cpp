@@ -27,6 +27,9 @@ constexpr std::array kRoutes{
     // The viewer's binary tool path (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/toolpath", A::Permission, P::ReadPrograms,
              api_toolpath},
+    // The figures of each tool, for the page (docs/web.md).
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/tools", A::Permission, P::ReadPrograms,
+             api_tool_figures},
     // Who may make which move is the state table's (may_change_state).
     ApiRoute{V::post, "/api/programs/{}/revisions/{}/state", A::AnyUser, P::ReadPrograms,
              api_change_state},
@@ -136,6 +139,30 @@ std::optional<HttpResponse> Api::upgrade(HttpStream& stream, const HttpRequest& 
   ctx_.events.add(s);
   s->accept(req);
   return std::nullopt;
+}
+
+bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
+  if (ctx_.toolpaths == nullptr) return false;
+  auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
+  if (!target) return false;
+  for (const ApiRoute& route : kRoutes) {
+    const bool figures = route.handler == api_tool_figures;
+    if ((route.handler != api_toolpath && !figures) || route.method != req.method()) continue;
+    auto params = match(route.pattern, target->segments);
+    if (!params) continue;
+    ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_};
+    if (auto refused = authorise(call, route)) {
+      answer(with_www_authenticate(std::move(*refused)));
+      return true;
+    }
+    if (figures) {
+      api_tool_figures_later(call, std::move(answer));
+    } else {
+      api_toolpath_later(call, std::move(answer));
+    }
+    return true;
+  }
+  return false;
 }
 
 }  // namespace usina::dnc

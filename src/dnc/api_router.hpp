@@ -11,6 +11,7 @@
 
 #include "dnc/api_events.hpp"
 #include "dnc/api_http.hpp"
+#include "dnc/http_listener.hpp"
 #include "dnc/server_machines.hpp"
 #include "dnc/store.hpp"
 #include "dnc/store_roles.hpp"
@@ -18,11 +19,15 @@
 
 namespace usina::dnc {
 
+class ToolpathService;  // web_toolpath_service.hpp
+using HttpAnswer = HttpHandlers::Answer;
+
 struct ApiContext {
   Store& store;
   Machines& machines;
   EventHub& events;
   const std::map<std::string, sim::MachineProfile>& profiles;  // by machine class
+  ToolpathService* toolpaths = nullptr;  // the tool-path route's pool and cache; none: on the loop
 };
 
 // One request on its way through a handler.
@@ -58,6 +63,9 @@ class Api {
  public:
   explicit Api(ApiContext ctx) : ctx_(ctx) {}
 
+  // The routes whose work is done off the loop (the tool path, the tools'
+  // figures): true when `req` is one, and `answer` is called later (HttpHandlers::later).
+  bool handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer);
   HttpResponse handle(const HttpRequest& req, const std::string& origin);
   // `GET /api/events`: takes the stream (WS or WSS) for the events, or refuses.
   std::optional<HttpResponse> upgrade(HttpStream& stream, const HttpRequest& req);
@@ -77,6 +85,9 @@ HttpResponse api_program(ApiCall& c);
 HttpResponse api_revision(ApiCall& c);
 HttpResponse api_revision_text(ApiCall& c);
 HttpResponse api_toolpath(ApiCall& c);  // web_toolpath_api.cpp
+void api_toolpath_later(ApiCall& c, HttpAnswer answer);
+HttpResponse api_tool_figures(ApiCall& c);  // web_toolpath_tools.cpp
+void api_tool_figures_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);

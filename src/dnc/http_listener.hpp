@@ -25,6 +25,12 @@ namespace usina::dnc {
 struct HttpStream;  // http_stream.hpp
 
 struct HttpHandlers {
+  // Writes the answer of a request taken by `later` (on the loop, once).
+  using Answer = std::function<void(HttpResponse)>;
+  // A request answered later (its work done off the loop): true when it is
+  // taken, and `answer` is then called once, on the loop. Empty, or false:
+  // `request` answers it at once.
+  std::function<bool(const HttpRequest&, const std::string& origin, Answer& answer)> later;
   // The answer to a request from `origin` (the client's address, "127.0.0.1").
   std::function<HttpResponse(const HttpRequest&, const std::string& origin)> request;
   // A WebSocket upgrade: takes the stream (plain or TLS), or answers with an error.

@@ -100,6 +100,12 @@ void HttpSession::on_read(const beast::error_code& ec) {
     if (refused) answer(std::move(*refused), false);
     return;  // the socket now belongs to the WebSocket (or is answered and closed)
   }
+  if (const auto& later = listener_->handlers().later) {
+    HttpHandlers::Answer reply = [self = shared_from_this()](HttpResponse res) {
+      self->answer(std::move(res), false);
+    };
+    if (later(req, origin_, reply)) return;  // the session waits, reading nothing
+  }
   answer(listener_->handlers().request(req, origin_), false);
 }
 

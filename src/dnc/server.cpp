@@ -46,11 +46,16 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
     : io_(io), store_(std::move(store)), config_(std::move(config)) {
   machines_ = std::make_unique<Machines>(io_, *store_, events_, config_.machines);
   machines_->use_profiles(&config_.profiles);
-  api_ = std::make_unique<Api>(ApiContext{*store_, *machines_, events_, config_.profiles});
+  toolpaths_ = std::make_unique<ToolpathService>(io_);
+  api_ = std::make_unique<Api>(
+      ApiContext{*store_, *machines_, events_, config_.profiles, toolpaths_.get()});
   web_ = std::make_unique<WebFiles>(WebFilesConfig{
       config_.web_root.empty() ? default_web_root() : std::filesystem::path(config_.web_root),
       config_.web_max_file_bytes});
   HttpHandlers handlers;
+  handlers.later = [this](const HttpRequest& req, const std::string& origin, HttpAnswer& answer) {
+    return api_->handle_later(req, origin, answer);
+  };
   handlers.request = [this](const HttpRequest& req, const std::string& origin) {
     const std::string_view target(req.target().data(), req.target().size());
     // Only GET reads the page; any other method keeps the API's answer

@@ -22,6 +22,7 @@
 #include "dnc/server_machines.hpp"
 #include "dnc/store.hpp"
 #include "dnc/web_static.hpp"
+#include "dnc/web_toolpath_service.hpp"
 
 namespace usina::dnc {
 
@@ -53,6 +54,8 @@ class Server {
 
   EventHub& events() { return events_; }
 
+  ToolpathService& toolpaths() { return *toolpaths_; }
+
   // The MTConnect adapter's address ([mtconnect]); nothing when it is off.
   std::optional<boost::asio::ip::tcp::endpoint> mtconnect_endpoint() const;
 
@@ -71,6 +74,8 @@ class Server {
   std::shared_ptr<HttpListener> listener_;
   std::unique_ptr<ShdrAdapter> shdr_;
   std::unique_ptr<MqttPublisher> mqtt_;
+  // Last: gone first, its pool's threads joined while the rest still stands.
+  std::unique_ptr<ToolpathService> toolpaths_;
 };
 
 // "host:port" ("[::1]:8080" for IPv6); nothing when malformed.

@@ -1,18 +1,25 @@
 // GET /api/programs/{name}/revisions/{rev}/toolpath[?max_vertices=N]: the
-// revision's tool path as the viewer's binary stream (web_toolpath.hpp).
+// revision's tool path as the viewer's binary stream (web_toolpath.hpp),
+// computed on the tool-path service's pool and kept in its cache
+// (web_toolpath_service.hpp), so the event loop goes on serving meanwhile.
+#include "dnc/web_toolpath_api.hpp"
+
 #include <charconv>
 
 #include <fmt/format.h>
+#include <tl/expected.hpp>
 
 #include "dnc/api_router.hpp"
 #include "dnc/store_revisions.hpp"
 #include "dnc/web_toolpath.hpp"
+#include "dnc/web_toolpath_service.hpp"
 
 namespace usina::dnc {
 namespace {
 
 constexpr std::uint32_t kMinVertices = 2;
 constexpr std::uint32_t kMaxVertices = 2'000'000;
+constexpr std::string_view kStreamType = "application/octet-stream";
 
 // `max_vertices` of the query: the default when absent, nothing when malformed.
 std::optional<std::uint32_t> max_vertices_of(const Target& target) {
@@ -28,31 +35,90 @@ std::optional<std::uint32_t> max_vertices_of(const Target& target) {
 
 }  // namespace
 
-HttpResponse api_toolpath(ApiCall& c) {
-  const auto max_vertices = max_vertices_of(c.target);
-  if (!max_vertices) {
-    return error_response(c.req, http::status::bad_request,
-                          fmt::format("max_vertices must be a whole number from {} to {}",
-                                      kMinVertices, kMaxVertices));
-  }
-  auto program = find_program(c.ctx.store, c.params[0]);
-  if (!program) return error_response(c.req, status_of(program.error()), program.error().message);
-  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
-  if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
-  ToolpathSettings settings;
-  settings.dialect = program->dialect;
-  settings.max_vertices = *max_vertices;
-  const ToolpathResult path = program_toolpath(*bytes, settings);
-  HttpResponse res{http::status::ok, c.req.version()};
+HttpResponse computed_response(const ToolpathReply& r, std::string_view content_type,
+                               const std::string& bytes, ToolpathFrom from) {
+  HttpResponse res{http::status::ok, r.version};
   res.set(http::field::server, "usina");
-  res.set(http::field::content_type, "application/octet-stream");
+  res.set(http::field::content_type, std::string(content_type));
   res.set("X-Content-Type-Options", "nosniff");
+  res.set("X-Toolpath-Cache", toolpath_from_name(from));
   // A revision's bytes never change (its name is their hash).
   res.set(http::field::cache_control, "private, max-age=86400");
-  res.keep_alive(c.req.keep_alive());
-  res.body() = encode_toolpath(path);
+  res.keep_alive(r.keep_alive);
+  res.body() = bytes;
   res.prepare_payload();
   return res;
+}
+
+HttpResponse run_failed(const ToolpathReply& r, const std::string& why) {
+  HttpRequest req;
+  req.version(r.version);
+  req.keep_alive(r.keep_alive);
+  return error_response(req, http::status::internal_server_error,
+                        "the tool path could not be computed: " + why);
+}
+
+namespace {
+
+// The revision's settings and cache key, or the error answer.
+struct Wanted {
+  ToolpathSettings settings;
+  std::string key;
+};
+
+tl::expected<Wanted, HttpResponse> wanted(ApiCall& c) {
+  const auto max_vertices = max_vertices_of(c.target);
+  if (!max_vertices) {
+    return tl::unexpected(
+        error_response(c.req, http::status::bad_request,
+                       fmt::format("max_vertices must be a whole number from {} to {}",
+                                   kMinVertices, kMaxVertices)));
+  }
+  auto program = find_program(c.ctx.store, c.params[0]);
+  if (!program)
+    return tl::unexpected(
+        error_response(c.req, status_of(program.error()), program.error().message));
+  auto revision = find_revision(c.ctx.store, c.params[0], c.params[1]);
+  if (!revision)
+    return tl::unexpected(
+        error_response(c.req, status_of(revision.error()), revision.error().message));
+  Wanted w;
+  w.settings.dialect = program->dialect;
+  w.settings.max_vertices = *max_vertices;
+  w.key = toolpath_key(revision->hash, w.settings.dialect, w.settings.max_vertices);
+  return w;
+}
+
+}  // namespace
+
+// Without the service (an Api made without one): computed here, on the loop.
+HttpResponse api_toolpath(ApiCall& c) {
+  auto w = wanted(c);
+  if (!w) return std::move(w.error());
+  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
+  if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
+  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
+  return computed_response(reply, kStreamType,
+                           encode_toolpath(program_toolpath(*bytes, w->settings)),
+                           ToolpathFrom::Computed);
+}
+
+void api_toolpath_later(ApiCall& c, HttpAnswer answer) {
+  auto w = wanted(c);
+  if (!w) return answer(std::move(w.error()));
+  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
+  ToolpathService& service = *c.ctx.toolpaths;
+  if (ToolpathStream kept = service.cached(w->key))
+    return answer(computed_response(reply, kStreamType, *kept, ToolpathFrom::Cache));
+  // Read (and verified against its hash) here: the store is the loop's.
+  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
+  if (!bytes) return answer(error_response(c.req, status_of(bytes.error()), bytes.error().message));
+  service.compute(
+      w->key, std::move(*bytes), w->settings,
+      [reply, answer = std::move(answer)](ToolpathStream s, ToolpathFrom from,
+                                          const std::string& error) {
+        answer(s ? computed_response(reply, kStreamType, *s, from) : run_failed(reply, error));
+      });
 }
 
 }  // namespace usina::dnc

@@ -76,6 +76,7 @@ export class Harness {
   machinePort() {
     if (spawnSync('sh', ['-c', 'command -v socat']).status !== 0) return '/nonexistent/usina-e2e-tty';
     const cnc = join(this.scratch, 'cnc');
+    this.controlPath = join(this.scratch, 'ctl'); // the control's end (e2e/control.mjs)
     const p = spawn('socat', [`pty,raw,echo=0,link=${join(this.scratch, 'ctl')}`, `pty,raw,echo=0,link=${cnc}`], { stdio: 'ignore' });
     this.children.push(p);
     for (let i = 0; i < 250 && !existsSync(cnc); i++) spawnSync('sleep', ['0.02']);
@@ -102,6 +103,26 @@ export class Harness {
   async logIn(user = 'boss') {
     const r = await fetch(`${this.base}/api/login`, { method: 'POST', body: JSON.stringify({ user, password: PASSWORD }) });
     return (await r.json()).token;
+  }
+
+  // A user of `role` (as the admin, by the API).
+  async addUser(name, role) {
+    const r = await fetch(`${this.base}/api/users`, {
+      method: 'POST',
+      headers: { Authorization: `Bearer ${await this.logIn()}`, 'Content-Type': 'application/json' },
+      body: JSON.stringify({ name, role, password: PASSWORD }),
+    });
+    if (r.status !== 201 && r.status !== 200) throw new Error(`cannot add ${name}: ${r.status} ${await r.text()}`);
+  }
+
+  // An API call as `user` (what the page would do), its status and JSON.
+  async api(user, method, path, body) {
+    const r = await fetch(`${this.base}${path}`, {
+      method,
+      headers: { Authorization: `Bearer ${await this.logIn(user)}`, 'Content-Type': 'application/json' },
+      body: body === undefined ? undefined : JSON.stringify(body),
+    });
+    return { status: r.status, json: await r.json().catch(() => null) };
   }
 
   stop() {

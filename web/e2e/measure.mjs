@@ -55,6 +55,24 @@ try {
     `toolpath: ${ms(t0)} ms, ${bytes.length} bytes, ${v.getUint32(8, true)} vertices, ` +
       `${v.getBigUint64(16, true)} moves, flags ${v.getUint32(12, true)}`,
   );
+  // The same stream again: from the cache. Then a new run (another budget)
+  // with the library asked for while it runs: the loop answers meanwhile.
+  const route = `${base}/api/programs/BIG/revisions/${rev}/toolpath`;
+  t0 = performance.now();
+  const again = await fetch(route, { headers: auth });
+  await again.arrayBuffer();
+  console.log(`toolpath again: ${ms(t0)} ms (X-Toolpath-Cache: ${again.headers.get('x-toolpath-cache')})`);
+  t0 = performance.now();
+  const run = fetch(`${route}?max_vertices=100000`, { headers: auth }).then(async (r) => {
+    await r.arrayBuffer();
+    return `${ms(t0)} ms (${r.headers.get('x-toolpath-cache')})`;
+  });
+  await new Promise((done) => setTimeout(done, 200)); // the run is under way
+  const t1 = performance.now();
+  const list = await fetch(`${base}/api/programs`, { headers: auth });
+  await list.json();
+  const listed = ms(t1);
+  console.log(`toolpath of another budget: ${await run}; GET /api/programs meanwhile: ${listed} ms (HTTP ${list.status})`);
   const context = await harness.browser();
   const page = context.pages()[0] ?? (await context.newPage());
   page.setDefaultTimeout(120000);

@@ -7,6 +7,7 @@
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
+import { libraryFlow, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
 import { arg, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
 
 skipUnlessReady();
@@ -45,22 +46,25 @@ async function canvasPixels(page) {
   });
 }
 
-async function shot(page, name) {
+async function shot(page, name, top = true) {
   if (!shots) return;
   mkdirSync(shots, { recursive: true });
-  await page.evaluate(() => window.scrollTo(0, 0));
+  if (top) await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: join(shots, name), fullPage: false });
 }
 
 async function run() {
   const base = await harness.start();
-  check(true, 'the page built, usina serve started on a fresh store');
+  await harness.addUser('appr', 'approver');
+  await harness.addUser('oper', 'operator');
+  check(true, 'the page built, usina serve started on a fresh store (users boss, appr, oper)');
   const context = await harness.browser();
   const page = context.pages()[0] ?? (await context.newPage());
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
-  // The one refusal the test asks for (a wrong password) is no error of the page.
-  page.on('console', (m) => m.type() === 'error' && !/status of 401/.test(m.text()) && errors.push(m.text()));
+  // The refusals the test asks for (a wrong password, an operator's
+  // approval) are no errors of the page.
+  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && errors.push(m.text()));
   const elsewhere = [];
   page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
   page.setDefaultTimeout(20000);
@@ -83,7 +87,7 @@ async function run() {
   await page.getByLabel('Program file').setInputFiles(seed);
   await page.getByText(/bytes read/).waitFor();
   await page.getByLabel('Name', { exact: true }).fill('seed-000');
-  await page.getByLabel('Dialect').selectOption('romi');
+  await page.getByLabel('Dialect', { exact: true }).selectOption('romi');
   await page.getByRole('button', { name: 'Upload' }).click();
   await page.getByRole('heading', { name: 'Program seed-000' }).waitFor();
   const seedLines = readFileSync(seed, 'utf8').split('\n').filter((l, i, a) => l !== '' || i < a.length - 1).length;
@@ -124,6 +128,11 @@ async function run() {
   await page.getByRole('button', { name: 'Iso view' }).click();
   await page.evaluate(() => window.scrollTo(0, 0));
   await shot(page, 'web-program.png');
+  await page.locator('#stats table[aria-label="Per tool"]').waitFor();
+  const figures = await page.locator('#stats').innerText();
+  check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+\d+ min \d+ s(\s+\S+( min \d+)? s){3}\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[\d.]+( min \d+)? s/.test(figures), `the figures: cycle time, bounds, the time and distances of T1 and T2 (${JSON.stringify(figures)})`);
+  await page.evaluate(() => document.getElementById('stats').scrollIntoView({ block: 'start' }));
+  await shot(page, 'web-figures.png', false);
 
   // The library lists and finds it.
   await page.getByRole('link', { name: 'Library' }).click();
@@ -132,7 +141,6 @@ async function run() {
   await page.getByLabel('Search by name').fill('nothing-like-it');
   check(/^0 of 1 programs$/.test(await page.locator('#library-count').innerText()), 'the search leaves out other names');
   await page.getByLabel('Search by name').fill('');
-  await shot(page, 'web-library.png');
 
   // The machines, live.
   await page.getByRole('link', { name: 'Machines' }).click();
@@ -140,7 +148,13 @@ async function run() {
   await page.getByText('Live updates: connected').waitFor();
   const state = await page.locator('#machine-romi-1 .state').innerText();
   check(['idle', 'offline', 'receiving', 'sending'].includes(state), `the machines page shows romi-1 (${state}), live`);
-  await shot(page, 'web-machines.png');
+
+  // Review by role, the diffs, the machine's jobs (flows.mjs).
+  const t = { check, shot };
+  const { second } = await reviewFlow(page, harness, t, seed);
+  await machineFlow(page, harness, t, second);
+  await libraryFlow(page, harness, t);
+  await zoomFlow(page, harness, t, second);
 
   // No page file is fetched from elsewhere, and the page logged no error.
   check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);

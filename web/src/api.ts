@@ -16,7 +16,11 @@ export interface Checks {
   complete: boolean;
   diagnostics: CheckDiagnostic[];
   cycle_time_s: number;
+  cutting_s?: number;
+  rapid_s?: number;
+  overtravel?: number;
   bounds: { min: number[]; max: number[] } | null;
+  checks?: Record<string, number>; // stats check code -> count
 }
 
 export interface Revision {
@@ -25,6 +29,8 @@ export interface Revision {
   author: string;
   reason: string;
   size: number;
+  created_at_us: number;
+  state_at_us: number;
   check_ok: boolean;
   checks: Checks | null;
 }
@@ -42,11 +48,18 @@ export interface Program extends ProgramSummary {
 
 export interface Job {
   job: number;
-  state: string;
+  machine: string;
   program: string;
+  revision: string;
+  mode: string; // send | drip
+  state: string; // queued | running | done | interrupted | failed
+  user: string;
   bytes_sent: number;
   bytes_total: number;
-  block: string | null;
+  line: number;
+  block: number | null;
+  reason: string;
+  alarm: boolean;
 }
 
 export interface Machine {
@@ -58,8 +71,20 @@ export interface Machine {
   state: string;
   link_error: string;
   job: Job | null;
+  queue?: number[];
   part_count?: number;
   last_cycle_seconds?: number | null;
+  last_message?: string;
+}
+
+export interface Diff {
+  from: string;
+  to: string;
+  normalised: boolean;
+  identical: boolean;
+  deleted: number;
+  inserted: number;
+  diff: string; // unified
 }
 
 export class ApiError extends Error {

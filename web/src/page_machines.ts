@@ -1,6 +1,11 @@
-// The machines, their state live from the server's event stream.
-import { enc, getJson, token, type Machine } from './api';
+// The machines, live from the server's event stream: each machine's state,
+// its job's progress (bytes sent of the total, the block), its part count
+// and last cycle time; and, for a role that may, the job buttons
+// (machine_jobs.ts).
+import { enc, getJson, token, type Job, type Machine } from './api';
 import { h, show, status } from './dom';
+import { jobForm, type JobForm } from './machine_jobs';
+import { mayRunJobs, sessionUser } from './roles';
 
 let socket: WebSocket | null = null;
 
@@ -9,40 +14,98 @@ export function leaveMachines(): void {
   socket = null;
 }
 
-function row(m: Machine): HTMLElement {
-  const job = m.job;
-  const progress = job
-    ? h('progress', { max: job.bytes_total || 1, value: job.bytes_sent, 'aria-label': `${m.name}: bytes sent` })
-    : null;
+// What the page knows of one machine: the last answer of the server and
+// the last job heard of (kept after it ends, so a finished send still
+// shows its bar at 100 %).
+interface Shown {
+  machine: Machine;
+  job: Job | null;
+  status: HTMLElement;
+  form: JobForm | null;
+}
+
+const ENDED = ['done', 'interrupted', 'failed'];
+
+function percent(j: Job): number {
+  return j.bytes_total > 0 ? Math.floor((100 * j.bytes_sent) / j.bytes_total) : 0;
+}
+
+function jobLine(name: string, j: Job | null): HTMLElement {
+  if (!j) return h('p', { class: 'job', text: 'No job yet.' });
+  const bar = h('progress', { max: j.bytes_total || 1, value: j.bytes_sent, 'aria-label': `${name}: bytes sent of job ${j.job}` });
+  const where = j.block !== null ? `, block ${j.block}` : '';
   return h(
-    'tr',
-    { id: `machine-${m.name}`, 'data-state': m.state },
-    h('th', { scope: 'row', text: m.name }),
-    h('td', { class: `state ${m.state}`, text: m.state }),
-    h('td', {}, job ? `${job.program} (${job.state}) ` : '—', progress, job ? ` ${job.bytes_sent} / ${job.bytes_total} bytes, block ${job.block ?? '—'}` : ''),
-    h('td', { text: String(m.part_count ?? 0) }),
-    h('td', { text: m.last_cycle_seconds ? `${m.last_cycle_seconds.toFixed(1)} s` : '—' }),
-    h('td', { text: `${m.dialect}, ${m.mode}, ${m.port}${m.link_error ? ` — ${m.link_error}` : ''}` }),
+    'p',
+    { class: `job ${j.state}`, 'data-job': j.job, 'data-job-state': j.state, 'data-bytes-sent': j.bytes_sent, 'data-bytes-total': j.bytes_total },
+    `Job ${j.job}: ${j.program} (${j.mode === 'drip' ? 'drip feed' : 'send'}, ${j.state}${j.alarm ? ', alarm' : ''}) `,
+    bar,
+    h('span', { class: 'progress-text', text: ` ${j.bytes_sent} / ${j.bytes_total} bytes (${percent(j)} %)${where}` }),
+    j.reason && ENDED.includes(j.state) && j.state !== 'done' ? h('span', { class: 'reason', text: ` — ${j.reason}` }) : null,
   );
 }
 
+function statusOf(s: Shown): HTMLElement[] {
+  const m = s.machine;
+  const items: [string, string, string][] = [
+    ['State', m.state, `state ${m.state}`],
+    ['Parts', String(m.part_count ?? 0), 'parts'],
+    ['Last cycle', m.last_cycle_seconds ? `${m.last_cycle_seconds.toFixed(1)} s` : '—', 'cycle'],
+    ['Link', `${m.dialect}, ${m.mode}, ${m.port}${m.link_error ? ` — ${m.link_error}` : ''}`, 'link'],
+  ];
+  return [
+    h('dl', { class: 'summary' }, ...items.flatMap(([k, v, cls]) => [h('dt', { text: k }), h('dd', { class: cls, text: v })])),
+    jobLine(m.name, s.job),
+    m.last_message ? h('p', { class: 'message', text: `Message from the control: ${m.last_message}` }) : h('span'),
+  ];
+}
+
+function render(s: Shown): void {
+  s.status.replaceChildren(...statusOf(s));
+  s.form?.update(s.machine, s.job);
+}
+
 export async function machinesPage(main: HTMLElement): Promise<void> {
-  const list = await getJson<{ machines: Machine[] }>('/api/machines');
-  const body = h('tbody', {}, ...list.machines.map(row));
+  const [list, who] = await Promise.all([getJson<{ machines: Machine[] }>('/api/machines'), sessionUser()]);
+  const runs = mayRunJobs(who.role);
+  const shown = new Map<string, Shown>();
+  const sections = list.machines.map((m) => {
+    const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null };
+    if (runs) s.form = jobForm(m, () => shown.get(m.name)?.job ?? null);
+    shown.set(m.name, s);
+    render(s);
+    return h(
+      'section',
+      { class: 'machine', id: `machine-${m.name}`, 'aria-labelledby': `machine-${m.name}-h`, 'data-state': m.state },
+      h('h2', { id: `machine-${m.name}-h`, text: m.name }),
+      s.status,
+      s.form ? s.form.element : null,
+    );
+  });
   const live = status('live-status');
   live.textContent = 'Live updates: connecting…';
-  const table = h(
-    'table',
-    { 'aria-label': 'Machines' },
-    h('thead', {}, h('tr', {}, ...['Machine', 'State', 'Job', 'Parts', 'Last cycle', 'Link'].map((t) => h('th', { scope: 'col', text: t })))),
-    body,
-  );
-  show(main, 'Machines', live, list.machines.length ? table : h('p', { text: 'No machines are configured (usina-serve.toml).' }));
-  const refresh = async (name: string) => {
-    const m = await getJson<Machine>(`/api/machines/${enc(name)}`);
-    const old = document.getElementById(`machine-${m.name}`);
-    if (old) old.replaceWith(row(m));
-  };
+  const note = runs ? null : h('p', { class: 'note', text: `You are ${who.role}: you may watch the machines; sending, drip feeding and stopping are for operators, programmers and admins.` });
+  show(main, 'Machines', live, ...(note ? [note] : []), ...(sections.length ? sections : [h('p', { text: 'No machines are configured (usina-serve.toml).' })]));
+  listen(shown, live);
+}
+
+async function refresh(shown: Map<string, Shown>, name: string): Promise<void> {
+  const s = shown.get(name);
+  if (!s) return;
+  s.machine = await getJson<Machine>(`/api/machines/${enc(name)}`);
+  if (s.machine.job) s.job = s.machine.job;
+  document.getElementById(`machine-${name}`)?.setAttribute('data-state', s.machine.state);
+  render(s);
+}
+
+interface ServerEvent {
+  type: string;
+  machine?: string;
+  name?: string;
+  part_count?: number;
+  last_cycle_seconds?: number | null;
+}
+
+function listen(shown: Map<string, Shown>, live: HTMLElement): void {
   leaveMachines();
   const proto = location.protocol === 'https:' ? 'wss' : 'ws';
   const ws = new WebSocket(`${proto}://${location.host}/api/events?token=${enc(token())}`);
@@ -50,8 +113,24 @@ export async function machinesPage(main: HTMLElement): Promise<void> {
   ws.addEventListener('open', () => (live.textContent = 'Live updates: connected'));
   ws.addEventListener('close', () => socket === ws && (live.textContent = 'Live updates: disconnected (reload the page)'));
   ws.addEventListener('message', (e) => {
-    const ev = JSON.parse(String(e.data)) as { type: string; machine?: string; name?: string };
+    const ev = JSON.parse(String(e.data)) as ServerEvent;
     const name = ev.machine ?? (ev.type.startsWith('machine.') ? ev.name : undefined);
-    if (name) void refresh(name);
+    const s = name ? shown.get(name) : undefined;
+    if (!s || !name) return;
+    if (ev.type.startsWith('job.')) {
+      // The job's progress is in the event itself: no request per tick.
+      const j = ev as unknown as Job;
+      // The newest job, unless an older one is still running.
+      if (!s.job || j.job >= s.job.job || s.job.state !== 'running') s.job = j;
+      render(s);
+      if (ev.type !== 'job.progress') void refresh(shown, name);
+    } else if (ev.type === 'machine.part') {
+      if (ev.part_count !== undefined) s.machine.part_count = ev.part_count;
+      if (ev.last_cycle_seconds !== undefined) s.machine.last_cycle_seconds = ev.last_cycle_seconds;
+      render(s);
+      void refresh(shown, name); // the control's count and message, too
+    } else {
+      void refresh(shown, name);
+    }
   });
 }

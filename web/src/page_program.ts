@@ -3,6 +3,9 @@
 // line's moves can be highlighted).
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
+import { reviewPanel, revisionsPanel } from './program_review';
+import { statsPanel, type Figures } from './program_stats';
+import { sessionUser } from './roles';
 import { decodeToolpath, Kind } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
 
@@ -11,27 +14,37 @@ import { toolColour, Viewer, type View } from './viewer';
 const MAX_LINES = 20000;
 
 export async function programPage(main: HTMLElement, name: string, rev?: string): Promise<void> {
-  const program = await getJson<Program>(`/api/programs/${enc(name)}`);
+  const [program, who] = await Promise.all([getJson<Program>(`/api/programs/${enc(name)}`), sessionUser()]);
   const revision = program.revisions.find((r) => r.revision === rev) ?? program.revisions[0];
   if (!revision) throw new Error(`${name} has no revisions`);
   const base = `/api/programs/${enc(name)}/revisions/${revision.revision}`;
-  // The stream first: the server answers one request at a time, and the
-  // picture is what the shop looks at first; the text fills in after.
+  // The stream is asked for first: the picture is what the shop looks at
+  // first. The server computes it on its pool (or has it cached), so the
+  // text is read meanwhile and fills in after.
   const stream = getBytes(`${base}/toolpath`);
   const text = getText(`${base}/text`);
   const picked = status('picked-line');
   const code = codePanel(revision.checks?.diagnostics ?? []);
   const viewerHost = h('div', { class: 'viewer', id: 'viewer' }, h('p', { class: 'status', text: 'Loading the tool path…' }));
+  const statsHost = h('p', { class: 'status', text: 'The figures follow the tool path…' });
+  const again = () => void programPage(main, name, revision.revision).catch((e) => console.error(e));
   show(
     main,
     `Program ${program.name}`,
     summary(program, revision),
+    reviewPanel(program, revision, who, again),
     h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision, (line) => code.onSelect(line)), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
+    statsHost,
+    revisionsPanel(program, revision),
   );
   const path = decodeToolpath(await stream);
   viewerHost.replaceChildren();
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
+  void getJson<Figures>(`${base}/tools`).then(
+    (f) => statsHost.replaceWith(statsPanel(revision.checks, f)),
+    (e: Error) => statsHost.replaceWith(statsPanel(revision.checks, e.message)),
+  );
   const select = (line: number) => {
     const moves = viewer.highlightLine(line);
     code.mark(line);
