@@ -48,6 +48,8 @@ struct PlannedMove {
   // the move (their rapid rates), and whether the move is a rapid.
   double radius = 0.0;
   double sweep = 0.0;
+  core::Vec3 normal;   // an arc's axis (unit)
+  bool helix = false;  // an arc that also moves along its axis
   double uncapped = 0.0;
   double max_speed = 0.0;
   bool rapid = false;

@@ -180,6 +180,10 @@ double LinuxcncPlanner::corner(Segment& next) {
   const Vec3 u1 = prev.move.end_dir;
   const Vec3 u2 = next.move.start_dir;
   if (norm(u1) < 0.5 || norm(u2) < 0.5) return 0.0;  // rotary axes only: no tangency test
+  // tp.c handleModeChange: no blend between a rapid and a feed move. Between
+  // two rapids LinuxCNC 2.9 stops as well (measured: tests/programs/timing/
+  // rapids_g64 takes the time of four exact stops, the last one parabolic).
+  if (prev.move.rapid || next.move.rapid) return 0.0;
   if (dot(u1, u2) < std::cos(core::kPi * (1.0 - kSharpCornerDeg / 180.0))) return 0.0;
   // The acceleration the change of direction needs if taken within one
   // servo cycle at full speed, as a share of each axis's.
@@ -199,15 +203,56 @@ double LinuxcncPlanner::corner(Segment& next) {
   }
   const double kink_vel = v_max * settings_.kink_ratio / share;
   prev.kink_next = next.kink_prev = settings_.kink_ratio;
-  if (prev.mode.mode == Mode::Blend && settings_.arc_blend && blend(next)) return kInf;
   if (prev.mode.mode == Mode::ExactPath) {
     update_last();  // G61: the stop keeps the kink's lower acceleration
     return 0.0;
   }
-  // No blend arc: the moves overlap in a parabolic blend at half acceleration.
+  // tp.c tpChooseBestBlend: the fastest of a parabolic blend (its speed
+  // halved: both moves lose half their acceleration), the kink taken as
+  // tangent, and a blend arc; on a tie the first of these.
+  const double parabolic = parabolic_speed(next) / 2.0;
+  const Arc arc = settings_.arc_blend ? blend_arc(next) : Arc{};
+  if (arc.ok && arc.move.cruise > std::max(parabolic, kink_vel)) {
+    join_by_arc(next, arc);
+    return kInf;
+  }
+  if (kink_vel > parabolic) {
+    update_last();  // tangent: through the corner at the kink speed, 10 % less acceleration
+    return kink_vel;
+  }
+  // Parabolic: the moves overlap at half their acceleration and no kink;
+  // LinuxCNC 2.9 takes about as long as with a stop there (measured:
+  // tests/programs/timing/helix_2turns), so it is one.
+  prev.kink_next = next.kink_prev = 0.0;
   prev.parabolic = next.parabolic = true;
   update_last();
-  return kink_vel;
+  return 0.0;
+}
+
+// tp.c tpComputeBlendVelocity: the speed of a parabolic blend, both moves
+// changing speed at once within half of the shorter's length.
+double LinuxcncPlanner::parabolic_speed(const Segment& next) const {
+  const Segment& prev = last_;
+  const auto reach = [](const Segment& s, double a) {
+    return std::min(std::sqrt(a * s.move.length), s.move.cruise);
+  };
+  const double a1 = accel_of(prev);
+  const double a2 = accel_of(next);
+  const double v1 = reach(prev, a1);
+  const double v2 = reach(next, a2);
+  if (!(v1 > 0.0 && v2 > 0.0)) return 0.0;
+  const double t_blend =
+      std::min(std::min(prev.move.length / v1, next.move.length / v2), std::max(v1 / a1, v2 / a2));
+  double b1 = std::min(v1, t_blend * a1);
+  double b2 = std::min(v2, t_blend * a2);
+  const double theta =
+      std::acos(std::clamp(-dot(prev.move.end_dir, next.move.start_dir), -1.0, 1.0)) / 2.0;
+  if (prev.mode.tolerance > 0.0 && std::cos(theta) > 1e-9) {
+    const double v_tol = 2.0 * std::sqrt(a1 * prev.mode.tolerance / std::cos(theta));
+    b1 = std::min(b1, v_tol);
+    b2 = std::min(b2, v_tol);
+  }
+  return std::sin(theta) * (b1 + b2) / 2.0;
 }
 
 // blendmath.c (blendInit3From*, blendParamKinematics, blendComputeParameters,
@@ -216,12 +261,13 @@ double LinuxcncPlanner::corner(Segment& next) {
 // most half a line (a third of an arc's sweep at its start, two thirds at
 // its end); its radius is what the speed needs, or what a parabolic blend
 // at half acceleration would take, whichever is larger.
-bool LinuxcncPlanner::blend(Segment& next) {
-  Segment& prev = last_;
+LinuxcncPlanner::Arc LinuxcncPlanner::blend_arc(const Segment& next) const {
+  const Segment& prev = last_;
+  Arc out;
   const Vec3 u1 = prev.move.end_dir;
   const Vec3 u2 = next.move.start_dir;
   const double theta = std::acos(std::clamp(-dot(u1, u2), -1.0, 1.0)) / 2.0;
-  if (theta < 1e-6 || core::kPi / 2.0 - theta < 1e-6) return false;
+  if (theta < 1e-6 || core::kPi / 2.0 - theta < 1e-6 || !coplanar(prev, next)) return out;
   const double phi = core::kPi - 2.0 * theta;
   const auto tol_of = [](const Segment& s) {
     return s.mode.tolerance > 0.0 ? s.mode.tolerance : s.nominal * kToleranceRatio;
@@ -238,9 +284,8 @@ bool LinuxcncPlanner::blend(Segment& next) {
           : next.move.length * kBlendDistFraction;
   const double a_max = plane_limit(u1, u2, false);
   const double a_n = a_max * kNormalRatio;
-  const double v_goal =
-      std::min(std::max(prev.requested, next.requested) * settings_.max_feed_scale,
-               plane_limit(u1, u2, true));
+  const double v_req = std::max(prev.requested, next.requested);
+  const double v_goal = std::min(v_req * settings_.max_feed_scale, plane_limit(u1, u2, true));
   const double d_tol = std::cos(theta) * tol / (1.0 - std::sin(theta));
   const double d_geom = std::min({std::min(l1, prev.move.length), l2, d_tol});
   const double r_geom = std::tan(theta) * d_geom;
@@ -249,35 +294,56 @@ bool LinuxcncPlanner::blend(Segment& next) {
   const double v_triangle = std::sqrt(2.0 * a_parabolic * d_geom);
   const double s_blend = std::min(v_triangle, v_plan) / a_parabolic * v_plan;
   const double r_plan = std::max(v_plan * v_plan / a_n, std::min(s_blend / phi, r_geom));
-  const double d_plan = r_plan / std::tan(theta);
-  if (!(r_plan > 1e-12) || r_plan * phi < kMinArcLength || !(v_plan > 0.0)) return false;
+  if (!(r_plan > 1e-12) || r_plan * phi < kMinArcLength || !(v_plan > 0.0)) return out;
+  out.ok = true;
+  out.trim = r_plan / std::tan(theta);
+  out.move.length = r_plan * phi;
+  out.move.start_dir = u1;
+  out.move.end_dir = u2;
+  out.move.cruise = std::min(v_plan, v_req);
+  out.move.radius = r_plan;
+  // tpInitBlendArcFromPrev: a blend arc keeps half the acceleration along
+  // its path (BLEND_ACC_RATIO_TANGENTIAL), however slow it is.
+  out.move.kin.accel = a_max * kTangentialRatio;
+  out.move.account = prev.move.account;
+  out.v_plan = v_plan;
+  return out;
+}
 
-  PlannedMove arc;
-  arc.length = r_plan * phi;
-  arc.start_dir = u1;
-  arc.end_dir = u2;
-  arc.cruise = std::min(v_plan, std::max(prev.requested, next.requested));
-  arc.radius = r_plan;
-  const double a_nv = v_plan * v_plan / r_plan;
-  arc.kin.accel = a_nv > a_n ? a_max * kTangentialRatio
-                             : a_max * std::sqrt(1.0 - (a_nv / a_max) * (a_nv / a_max));
-  arc.account = prev.move.account;
-  prev.move.length = std::max(0.0, prev.move.length - d_plan);
-  next.move.length = std::max(0.0, next.move.length - d_plan);
+// tp.c tpCreate*Blend: the moves are trimmed where the arc meets them.
+void LinuxcncPlanner::join_by_arc(Segment& next, Arc arc) {
+  Segment& prev = last_;
+  prev.move.length = std::max(0.0, prev.move.length - arc.trim);
+  next.move.length = std::max(0.0, next.move.length - arc.trim);
   prev.kink_next = next.kink_prev = 0.0;  // a blend arc leaves no kink
   double entry = kInf;
   if (prev.move.radius == 0.0 &&
-      prev.move.length < v_plan * settings_.gap_cycles * settings_.servo_period) {
+      prev.move.length < arc.v_plan * settings_.gap_cycles * settings_.servo_period) {
     // A line left shorter than the gap cycles take is taken into the arc
     // (blendCheckConsume): one queue entry less.
-    arc.length += prev.move.length;
+    arc.move.length += prev.move.length;
     entry = std::min(look_.drop_last(), prev.move.cruise);
   } else {
     update_last();
     entry = look_.last_move().cruise;
   }
-  arc.cruise = std::min(arc.cruise, arc.length / settings_.servo_period);
-  look_.add_joined(arc, std::min(entry, arc.cruise));
+  arc.move.cruise = std::min(arc.move.cruise, arc.move.length / settings_.servo_period);
+  look_.add_joined(arc.move, std::min(entry, arc.move.cruise));
+}
+
+// tp.c tpCreate*Blend: a blend arc lies in one plane with both moves (a
+// helix has none).
+bool LinuxcncPlanner::coplanar(const Segment& prev, const Segment& next) const {
+  if (prev.move.helix || next.move.helix) return false;
+  Vec3 binormal = cross(prev.move.end_dir, next.move.start_dir);
+  const double len = norm(binormal);
+  if (len < 1e-12) return false;
+  binormal = binormal / len;
+  for (const Segment* s : {&prev, &next}) {
+    if (s->move.radius > 0.0 && std::abs(std::abs(dot(binormal, s->move.normal)) - 1.0) > 1e-6) {
+      return false;
+    }
+  }
   return true;
 }
 

@@ -66,8 +66,20 @@ class LinuxcncPlanner final : public MotionPlanner {
   bool links(const Segment& s, const Vec3& end) const;
   void flush_chain();
   void queue(Segment s);
+
+  // A blend arc for the corner between the newest move and `next`.
+  struct Arc {
+    bool ok = false;
+    PlannedMove move;
+    double trim = 0.0;  // mm taken off each move
+    double v_plan = 0.0;
+  };
+
   double corner(Segment& next);
-  bool blend(Segment& next);
+  double parabolic_speed(const Segment& next) const;
+  Arc blend_arc(const Segment& next) const;
+  void join_by_arc(Segment& next, Arc arc);
+  bool coplanar(const Segment& prev, const Segment& next) const;
   void update_last();
   void finish_last();
   double plane_limit(const Vec3& u1, const Vec3& u2, bool speed) const;

@@ -285,6 +285,8 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   m.account = account(Cutting);
   m.radius = path->radius;
   m.sweep = path->sweep;
+  m.normal = path->normal;
+  m.helix = std::abs(path->axial) > 1e-9;
   m.uncapped = block_limit(path->length, uncapped);
   m.max_speed = along_path(machine_, share, AxisRate::Rapid);
   planner_->add(m);
