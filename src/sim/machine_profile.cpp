@@ -42,6 +42,7 @@ constexpr KeyRange kKinkRatio{0.0, 0.9, ""};
 constexpr KeyRange kGapCycles{0.0, 1000.0, "cycles"};
 constexpr KeyRange kFeedScale{0.1, 10.0, ""};
 constexpr KeyRange kDepth{2.0, 10000.0, "segments"};
+constexpr KeyRange kArcTolerance{0.0001, 1.0, "{L}"};
 
 std::string unit_text(const char* unit, std::string_view length) {
   std::string u = unit;
@@ -211,6 +212,7 @@ void read_planner(Reader& r, const toml::table& pl, MachineProfile& p) {
   p.junction_deviation =
       r.number(pl, "planner", "junction_deviation", 0.01 / scale, kDeviation) * scale;
   read_model(r, pl, p);
+  p.arc_tolerance = r.number(pl, "planner", "arc_tolerance", 0.002 / scale, kArcTolerance) * scale;
   LinuxcncPlannerSettings& lc = p.linuxcnc;
   lc.servo_period = r.number(pl, "planner", "servo_period", lc.servo_period, kServoPeriod);
   lc.max_velocity = r.number(pl, "planner", "max_velocity", 0.0, kPathRate) * scale / 60.0;
@@ -220,8 +222,8 @@ void read_planner(Reader& r, const toml::table& pl, MachineProfile& p) {
   lc.optimization_depth = static_cast<std::size_t>(r.number(
       pl, "planner", "optimization_depth", static_cast<double>(lc.optimization_depth), kDepth));
   if (const toml::node* b = pl.get("arc_blend")) {
-    if (const auto v = b->value<bool>()) {
-      lc.arc_blend = *v;
+    if (b->is_boolean()) {
+      lc.arc_blend = b->value_or(true);
     } else {
       r.fail(b->source(), "[planner] arc_blend must be true or false");
     }

@@ -55,6 +55,9 @@ struct MachineProfile {
   // [planner] model: whose rules plan the motion (docs/stats.md, "Planner
   // models"); the textbook's by default.
   PlannerModel model = PlannerModel::Textbook;
+  // [planner] arc_tolerance (grbl's $12): an arc runs as chords that leave
+  // it by at most this.
+  double arc_tolerance = 0.002;  // mm
   LinuxcncPlannerSettings linuxcnc;
 };
 

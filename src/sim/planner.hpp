@@ -49,6 +49,7 @@ struct PlannedMove {
   double radius = 0.0;
   double sweep = 0.0;
   core::Vec3 normal;   // an arc's axis (unit)
+  double axial = 0.0;  // mm an arc moves along its axis (a helix)
   bool helix = false;  // an arc that also moves along its axis
   double uncapped = 0.0;
   double max_speed = 0.0;

@@ -286,6 +286,7 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   m.radius = path->radius;
   m.sweep = path->sweep;
   m.normal = path->normal;
+  m.axial = path->axial;
   m.helix = std::abs(path->axial) > 1e-9;
   m.uncapped = block_limit(path->length, uncapped);
   m.max_speed = along_path(machine_, share, AxisRate::Rapid);
