@@ -188,7 +188,8 @@ double LinuxcncPlanner::corner(Segment& next) {
   // The acceleration the change of direction needs if taken within one
   // servo cycle at full speed, as a share of each axis's.
   const double v_max = std::min(prev.move.cruise, next.move.cruise);
-  const Vec3 jump = (u2 - u1) * (v_max / settings_.servo_period);
+  // (plus the next move's acceleration: it speeds up within that cycle)
+  const Vec3 jump = (u2 - u1) * (v_max / settings_.servo_period + next.move.kin.accel);
   double share = 0.0;
   for (int i = 0; i < 3; ++i) {
     const AxisLimits& a = machine_.axes[static_cast<std::size_t>(i)];
