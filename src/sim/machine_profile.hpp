@@ -38,6 +38,9 @@ struct LinuxcncPlannerSettings {
   // [TRAJ] ARC_BLEND_OPTIMIZATION_DEPTH: queue entries planned back from the
   // newest; a run of tiny moves goes no faster than it can stop within them.
   std::size_t optimization_depth = 50;
+  // The blend tolerance LinuxCNC 2.9 behaves as if it had before a program's
+  // first G61/G61.1/G64 (fitted to measurements, not an INI setting).
+  double startup_tolerance = 0.0044;  // mm
 };
 
 struct MachineProfile {

@@ -47,7 +47,14 @@ LinuxcncPlanner::LinuxcncPlanner(const MachineProfile& machine, std::size_t look
       settings_(machine.linuxcnc),
       look_(PlannerSettings{machine.junction_deviation,
                             std::min(lookahead, machine.linuxcnc.optimization_depth),
-                            machine.linuxcnc.servo_period}) {}
+                            machine.linuxcnc.servo_period}) {
+  // Before the program's first G61, G61.1 or G64 LinuxCNC 2.9 is not in the
+  // G64 that word gives: its corners nearly stop (measured: two lines with a
+  // right angle take the time of a stop less 0.03 s, the same with G64 the
+  // time of a blend arc; tests/programs/timing/README.md). It behaves like
+  // G64 with a tolerance of a few µm, which is how it is modelled.
+  mode_.tolerance = settings_.startup_tolerance;
+}
 
 // The limits a move gets when task queues it (emccanon.cc, tc.c
 // tcUpdateArcLimits): the machine's speed along the move capped by [TRAJ]
@@ -180,10 +187,8 @@ double LinuxcncPlanner::corner(Segment& next) {
   const Vec3 u1 = prev.move.end_dir;
   const Vec3 u2 = next.move.start_dir;
   if (norm(u1) < 0.5 || norm(u2) < 0.5) return 0.0;  // rotary axes only: no tangency test
-  // tp.c handleModeChange: no blend between a rapid and a feed move. Between
-  // two rapids LinuxCNC 2.9 stops as well (measured: tests/programs/timing/
-  // rapids_g64 takes the time of four exact stops, the last one parabolic).
-  if (prev.move.rapid || next.move.rapid) return 0.0;
+  // tp.c handleModeChange: no blend between a rapid and a feed move.
+  if (prev.move.rapid != next.move.rapid) return 0.0;
   if (dot(u1, u2) < std::cos(core::kPi * (1.0 - kSharpCornerDeg / 180.0))) return 0.0;
   // The acceleration the change of direction needs if taken within one
   // servo cycle at full speed, as a share of each axis's.

@@ -8,7 +8,10 @@
 // The moves go through the same look-ahead buffer as the textbook model
 // (sim/planner.hpp), but this model decides every corner itself, as
 // LinuxCNC does when a move is queued:
+// - before the program's first G61/G61.1/G64: G64 with a tolerance of a few
+//   µm (measured: LinuxCNC's start mode nearly stops at corners);
 // - G61.1 (exact stop): the move before ends at rest, full acceleration.
+// - a rapid next to a feed move: an exact stop.
 // - a reversal (more than 178°): an exact stop too.
 // - a corner the planner can take as a "kink" (the change of direction
 //   needs less than ARC_BLEND_KINK_RATIO of the axes' acceleration in one

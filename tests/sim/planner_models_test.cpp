@@ -134,6 +134,26 @@ TEST(LinuxcncModel, TheLastMoveOfARunHasHalfTheAcceleration) {
   EXPECT_NEAR(exact.motion(), 10.1, 1e-3);
 }
 
+// Before any G61/G64 LinuxCNC's corners nearly stop (measured); after G64
+// the 90° corner between 40 mm lines at 20 mm/s is a blend arc: the lines
+// keep a = 100, tolerance 10 mm, R = 5.09 mm at 20 mm/s (blendmath.c).
+TEST(LinuxcncModel, TheStartModeNearlyStopsWhereG64Blends) {
+  const MachineProfile m = profile("[planner]\nmodel = \"linuxcnc\"\n");
+  const auto corner = [&](bool g64) {
+    Machine run(m);
+    if (g64) run(mode(canon::PathMode::Mode::Blend));
+    run(feed_to({40, 0, 0}, 1200));
+    run(feed_to({40, 40, 0}, 1200));
+    return run.motion();
+  };
+  // A stop: 40/20 + 20/100, then the last line at a/2 = 50: 40/20 + 20/50.
+  const double stop = 2.0 + 0.2 + 2.0 + 0.4;
+  EXPECT_LT(corner(false), stop);
+  EXPECT_GT(corner(false), stop - 0.05);
+  EXPECT_LT(corner(true), stop - 0.3);  // LinuxCNC: 4.192 s
+  EXPECT_NEAR(corner(true), 4.192, 0.02);
+}
+
 // G61: both sides of the corner lose ARC_BLEND_KINK_RATIO (10 %): X side at
 // 90 mm/s², Y side at 360: 100/50 + 50/90 and 100/50 + 50/360.
 TEST(LinuxcncModel, ExactPathCornersCostTheKinkRatio) {

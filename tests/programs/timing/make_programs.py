@@ -85,6 +85,14 @@ put("spiral_square_g64_p0_01", "G64 P0.01\n" + "".join(
 put("profile_ramp_g64", "G64\nG1 Z-2 F600\nG1 X40 Z-3 F1800\nG1 Y20\nG1 X0\nG1 Y0\nG0 Z5\n")
 put("slot_arcs_g64_p0_02", "G64 P0.02\nG1 X40 F2000\nG3 X40 Y10 I0 J5\nG1 X0\nG3 X0 Y0 I0 J-5\n")
 
+# Corners in the mode LinuxCNC starts in (no G61/G64 word) and in G64.
+put("corner_10mm_f1200_startup", "G1 X10 F1200\nG1 X10 Y10\n")
+put("corner_10mm_f300_startup", "G1 X10 F300\nG1 X10 Y10\n")
+put("corner_40mm_f1200_startup", "G1 X40 F1200\nG1 X40 Y40\n")
+put("corner_40mm_f1200_g64", "G64\nG1 X40 F1200\nG1 X40 Y40\n")
+put("three_lines_f1200_startup", "G1 X10 F1200\nG1 X10 Y10\nG1 X0 Y10\n")
+put("rapids_explicit_g64", "G64\nG0 X50\nG0 Y30 Z-10\nG0 X-20 Y-40\nG0 X0 Y0 Z0\n")
+
 here = os.path.dirname(os.path.abspath(__file__))
 for name, text in progs.items():
     with open(os.path.join(here, name + ".ngc"), "w") as f:
