@@ -56,6 +56,22 @@ nlohmann::json stats(const std::string& program) {
   return nlohmann::json::parse(r.out, nullptr, false);
 }
 
+// stats --format json: time.motion_s (cutting and rapid), time.total_s
+// (with dwells), and the model, textbook without a profile.
+TEST(LinuxcncTiming, TheJsonGivesMotionAndTotalTimeAndTheModel) {
+  const TempDir dir;
+  const std::string program = dir.write("p.ngc", "G1 X10 F600\nG4 P2\nG0 X0\nM2\n");
+  const usina::test::Run r = usina(fmt::format("stats {} --format json", quote(program)));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["planner"]["model"], "textbook");
+  const nlohmann::json& t = j["time"];
+  EXPECT_DOUBLE_EQ(t["motion_s"].get<double>(),
+                   t["cutting_s"].get<double>() + t["rapid_s"].get<double>());
+  EXPECT_NEAR(t["total_s"].get<double>() - t["motion_s"].get<double>(), 2.0, 1e-9);  // the dwell
+  EXPECT_EQ(stats("a_line_rapid_g64")["planner"]["model"], "linuxcnc");
+}
+
 TEST(LinuxcncTiming, TheReferenceSetHasThirtyProgramsOrMore) {
   EXPECT_GE(references().size(), 30u);
 }

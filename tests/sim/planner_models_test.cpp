@@ -135,7 +135,8 @@ TEST(LinuxcncModel, TheLastMoveOfARunHasHalfTheAcceleration) {
 }
 
 // Before any G61/G64 LinuxCNC's corners nearly stop (measured); after G64
-// the 90° corner between 40 mm lines at 20 mm/s is a blend arc: the lines
+// the 90° corner between 40 mm lines at 20 mm/s is a blend arc (measured
+// in XY on the same limits, tests/programs/timing/corner_40mm_*): the lines
 // keep a = 100, tolerance 10 mm, R = 5.09 mm at 20 mm/s (blendmath.c).
 TEST(LinuxcncModel, TheStartModeNearlyStopsWhereG64Blends) {
   const MachineProfile m = profile("[planner]\nmodel = \"linuxcnc\"\n");
@@ -143,7 +144,7 @@ TEST(LinuxcncModel, TheStartModeNearlyStopsWhereG64Blends) {
     Machine run(m);
     if (g64) run(mode(canon::PathMode::Mode::Blend));
     run(feed_to({40, 0, 0}, 1200));
-    run(feed_to({40, 40, 0}, 1200));
+    run(feed_to({40, 0, 40}, 1200));  // X then Z: 100 mm/s² both
     return run.motion();
   };
   // A stop: 40/20 + 20/100, then the last line at a/2 = 50: 40/20 + 20/50.
