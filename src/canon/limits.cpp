@@ -139,6 +139,11 @@ struct Check {
   void operator()(const ProgramEnd&) const {}
 
   void operator()(const MachineCode&) const {}
+
+  void operator()(const PathMode& m) const {
+    c.not_negative("tolerance", m.tolerance, kMaxLength, "mm");
+    c.not_negative("naive CAM tolerance", m.naive_cam, kMaxLength, "mm");
+  }
 };
 
 }  // namespace

@@ -31,6 +31,8 @@ struct NameOf {
   const char* operator()(const ProgramEnd&) const { return "end"; }
 
   const char* operator()(const MachineCode&) const { return "machine_code"; }
+
+  const char* operator()(const PathMode&) const { return "path_mode"; }
 };
 
 }  // namespace

@@ -119,6 +119,16 @@ struct Comment {
 
 struct ProgramEnd {};
 
+// Path control (G61, G61.1, G64 P Q): how the control joins one move to the
+// next, LinuxCNC's canon SET_MOTION_CONTROL_MODE and SET_NAIVECAM_TOLERANCE.
+// Emitted where a block sets it; the interpreter starts in G64 without P.
+struct PathMode {
+  enum class Mode : unsigned char { ExactPath, ExactStop, Blend };  // G61, G61.1, G64
+  Mode mode = Mode::Blend;
+  double tolerance = 0.0;  // mm, G64 P; 0: none (as fast as the corners allow)
+  double naive_cam = 0.0;  // mm, G64 Q (P when Q is absent): collinear lines merge within it
+};
+
 // A code the control hands to the machine's logic as it came (a Fanuc M
 // code that is not the control's own: clamps, doors, pallets, probes):
 // traced, drawn nowhere, written back by a post.
@@ -129,7 +139,7 @@ struct MachineCode {
 };
 
 using OpKind = std::variant<Traverse, Feed, Arc, Spline, Probe, Dwell, ToolChange, Spindle, Coolant,
-                            Hole, Pocket, Comment, ProgramEnd, MachineCode>;
+                            Hole, Pocket, Comment, ProgramEnd, MachineCode, PathMode>;
 
 // Why a move was made: the program's own contour, or the expansion of a
 // canned cycle, pattern or pocket (a part drawing leaves those out and draws

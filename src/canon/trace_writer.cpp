@@ -48,6 +48,15 @@ void num(Out out, double v) {
   fmt::format_to(out, FMT_COMPILE("{}"), v);
 }
 
+const char* path_mode_name(PathMode::Mode m) {
+  switch (m) {
+  case PathMode::Mode::ExactPath: return "G61";
+  case PathMode::Mode::ExactStop: return "G61.1";
+  case PathMode::Mode::Blend: return "G64";
+  }
+  return "G64";
+}
+
 void vec(Out out, const Vec3& v) {
   fmt::format_to(out, FMT_COMPILE("["));
   num(out, v.x);
@@ -221,6 +230,15 @@ struct JsonFields {
 
   void operator()(const ProgramEnd&) const {}
 
+  void operator()(const PathMode& m) const {
+    fmt::format_to(out, FMT_COMPILE(",\"mode\":\"{}\""), path_mode_name(m.mode));
+    if (m.mode != PathMode::Mode::Blend) return;
+    fmt::format_to(out, FMT_COMPILE(",\"p\":"));
+    num(out, m.tolerance);
+    fmt::format_to(out, FMT_COMPILE(",\"q\":"));
+    num(out, m.naive_cam);
+  }
+
   void operator()(const MachineCode& m) const {
     fmt::format_to(out, FMT_COMPILE(",\"code\":\"{}{}\""), m.letter, m.code);
     if (m.p) {
@@ -304,6 +322,13 @@ struct TextFields {
   }
 
   void operator()(const ProgramEnd&) const {}
+
+  void operator()(const PathMode& m) const {
+    fmt::format_to(out, FMT_COMPILE(" {}"), path_mode_name(m.mode));
+    if (m.mode == PathMode::Mode::Blend) {
+      fmt::format_to(out, FMT_COMPILE(" P{:g} Q{:g}"), m.tolerance, m.naive_cam);
+    }
+  }
 
   void operator()(const MachineCode& m) const {
     fmt::format_to(out, FMT_COMPILE(" {}{}"), m.letter, m.code);

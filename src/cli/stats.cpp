@@ -139,12 +139,13 @@ json counts_json(const sim::Counts& c) {
           {"dwells", c.dwells}};
 }
 
+// motion_s: the time the axes move (cutting and rapid; probing is "other"),
+// LinuxCNC's own "motion" figure; total_s adds dwells, tool changes and
+// spindle waits.
 json time_json(const sim::ToolStats& t) {
-  return {{"total_s", t.total_s()},
-          {"cutting_s", t.cutting_s},
-          {"rapid_s", t.rapid_s},
-          {"other_s", t.other_s},
-          {"exact_stop_s", t.exact_stop_s}};
+  return {{"total_s", t.total_s()},   {"motion_s", t.cutting_s + t.rapid_s},
+          {"cutting_s", t.cutting_s}, {"rapid_s", t.rapid_s},
+          {"other_s", t.other_s},     {"exact_stop_s", t.exact_stop_s}};
 }
 
 json distance_json(const sim::ToolStats& t) {
@@ -186,6 +187,7 @@ void print_json(const StatsOptions& o, const sim::MachineProfile& m, const sim::
         {"profile", o.machine.empty() ? json(nullptr) : json(o.machine)},
         {"junction_deviation_mm", m.junction_deviation}}},
       {"complete", complete},
+      {"planner", {{"model", sim::planner_model_name(m.model)}}},
       {"time", time_json(r.total)},
       {"distance", distance_json(r.total)},
       {"counts", counts_json(r.total.counts)},
@@ -229,6 +231,9 @@ void print_text(const StatsOptions& o, const sim::MachineProfile& m, const sim::
              complete ? "" : "  (stopped at an error: figures up to it)");
   fmt::print("machine          {}{}\n", m.name,
              o.machine.empty() ? " (no --machine given)" : fmt::format(" ({})", o.machine));
+  if (m.model != sim::PlannerModel::Textbook) {
+    fmt::print("planner          {} model\n", sim::planner_model_name(m.model));
+  }
   print_times(t, r.cost, m.cost_per_hour);
   fmt::print("distance         cutting {:.3f} mm, rapid {:.3f} mm\n", t.cutting_mm, t.rapid_mm);
   const sim::Counts& c = t.counts;

@@ -36,6 +36,13 @@ constexpr KeyRange kToolChange{0.0, 86400.0, "s"};
 constexpr KeyRange kBlockTime{0.0, 60.0, "s"};
 constexpr KeyRange kCost{0.0, 1e9, "an hour"};
 constexpr KeyRange kDeviation{0.0, 10.0, "{L}"};
+constexpr KeyRange kServoPeriod{1e-5, 0.1, "s"};
+constexpr KeyRange kPathRate{1.0, 1e6, "{L}/min", true};
+constexpr KeyRange kKinkRatio{0.0, 0.9, ""};
+constexpr KeyRange kGapCycles{0.0, 1000.0, "cycles"};
+constexpr KeyRange kFeedScale{0.1, 10.0, ""};
+constexpr KeyRange kDepth{2.0, 10000.0, "segments"};
+constexpr KeyRange kArcTolerance{0.0001, 1.0, "{L}"};
 
 std::string unit_text(const char* unit, std::string_view length) {
   std::string u = unit;
@@ -182,6 +189,47 @@ void read_axis(Reader& r, const toml::table& axes, int i, MachineProfile& p) {
   r.set_length_unit(p.file_in_inch ? "inch" : "mm");
 }
 
+// [planner] model = "textbook" | "linuxcnc" | "grbl", and the models' settings.
+void read_model(Reader& r, const toml::table& pl, MachineProfile& p) {
+  const toml::node* n = pl.get("model");
+  if (n == nullptr) return;
+  const std::optional<std::string> name = n->value<std::string>();
+  for (const PlannerModel m :
+       {PlannerModel::Textbook, PlannerModel::Linuxcnc, PlannerModel::Grbl}) {
+    if (name && *name == planner_model_name(m)) {
+      p.model = m;
+      return;
+    }
+  }
+  r.fail(n->source(),
+         fmt::format("[planner] model = {}: give \"textbook\" (the default), \"linuxcnc\" "
+                     "(LinuxCNC 2.9's planner) or \"grbl\"",
+                     name ? fmt::format("\"{}\"", *name) : std::string("a value that is no text")));
+}
+
+void read_planner(Reader& r, const toml::table& pl, MachineProfile& p) {
+  const double scale = p.file_in_inch ? core::kMmPerInch : 1.0;
+  p.junction_deviation =
+      r.number(pl, "planner", "junction_deviation", 0.01 / scale, kDeviation) * scale;
+  read_model(r, pl, p);
+  p.arc_tolerance = r.number(pl, "planner", "arc_tolerance", 0.002 / scale, kArcTolerance) * scale;
+  LinuxcncPlannerSettings& lc = p.linuxcnc;
+  lc.servo_period = r.number(pl, "planner", "servo_period", lc.servo_period, kServoPeriod);
+  lc.max_velocity = r.number(pl, "planner", "max_velocity", 0.0, kPathRate) * scale / 60.0;
+  lc.kink_ratio = r.number(pl, "planner", "kink_ratio", lc.kink_ratio, kKinkRatio);
+  lc.gap_cycles = r.number(pl, "planner", "gap_cycles", lc.gap_cycles, kGapCycles);
+  lc.max_feed_scale = r.number(pl, "planner", "max_feed_scale", lc.max_feed_scale, kFeedScale);
+  lc.optimization_depth = static_cast<std::size_t>(r.number(
+      pl, "planner", "optimization_depth", static_cast<double>(lc.optimization_depth), kDepth));
+  if (const toml::node* b = pl.get("arc_blend")) {
+    if (b->is_boolean()) {
+      lc.arc_blend = b->value_or(true);
+    } else {
+      r.fail(b->source(), "[planner] arc_blend must be true or false");
+    }
+  }
+}
+
 // [spindle], [times], [cost], [planner]: optional, their keys too.
 void read_optional(Reader& r, const toml::table& root, MachineProfile& p) {
   if (const toml::table* s = r.section(root, "spindle", false)) {
@@ -197,14 +245,19 @@ void read_optional(Reader& r, const toml::table& root, MachineProfile& p) {
   if (const toml::table* c = r.section(root, "cost", false)) {
     p.cost_per_hour = r.number(*c, "cost", "per_hour", 0.0, kCost);
   }
-  if (const toml::table* pl = r.section(root, "planner", false)) {
-    const double scale = p.file_in_inch ? core::kMmPerInch : 1.0;
-    p.junction_deviation =
-        r.number(*pl, "planner", "junction_deviation", 0.01 / scale, kDeviation) * scale;
-  }
+  if (const toml::table* pl = r.section(root, "planner", false)) read_planner(r, *pl, p);
 }
 
 }  // namespace
+
+const char* planner_model_name(PlannerModel m) {
+  switch (m) {
+  case PlannerModel::Textbook: return "textbook";
+  case PlannerModel::Linuxcnc: return "linuxcnc";
+  case PlannerModel::Grbl: return "grbl";
+  }
+  return "textbook";
+}
 
 std::optional<MachineProfile> read_machine_profile(std::string_view toml_text,
                                                    std::uint32_t file_id,

@@ -29,7 +29,6 @@ void Planner::add(const PlannedMove& move) {
   if (!(move.length > 0.0 && move.cruise > 0.0 && std::isfinite(move.length))) return;
   add_time(account(move.account).exact_stop_s,
            move_time(move.length, 0.0, 0.0, move.cruise, move.kin));
-  if (count_ == ring_.size()) run_oldest();
   double max_entry = 0.0;
   if (moving_) {
     const double corner =
@@ -37,6 +36,13 @@ void Planner::add(const PlannedMove& move) {
                        std::min(last_.kin.accel, move.kin.accel));
     max_entry = std::min({corner, last_.cruise, move.cruise});
   }
+  add_joined(move, max_entry);
+}
+
+void Planner::add_joined(const PlannedMove& move, double max_entry) {
+  if (!(move.length >= 0.0 && move.cruise > 0.0 && std::isfinite(move.length))) return;
+  if (!moving_) max_entry = 0.0;
+  if (count_ == ring_.size()) run_oldest();
   Block& b = at(count_++);
   b.move = move;
   b.max_entry = max_entry;
@@ -47,6 +53,33 @@ void Planner::add(const PlannedMove& move) {
   last_ = move;
   moving_ = true;
   plan_backward_forward();
+}
+
+double Planner::drop_last() {
+  const double entry = at(count_ - 1).max_entry;
+  --count_;
+  if (count_ > 0) {
+    last_ = at(count_ - 1).move;
+    replan_last();
+  }
+  return entry;
+}
+
+void Planner::replan_last() {
+  Block& b = at(count_ - 1);
+  last_ = b.move;
+  b.max_entry = std::min(b.max_entry, b.move.cruise);
+  b.backward = reachable_speed(0.0, b.move.length, b.move.kin, b.max_entry);
+  if (count_ == 1) return;
+  // The blocks before may have to slow down for it, or may now go faster.
+  for (std::size_t k = count_ - 1; k-- > 1;) {
+    Block& p = at(k);
+    p.backward = reachable_speed(at(k + 1).backward, p.move.length, p.move.kin, p.max_entry);
+  }
+  for (std::size_t k = 1; k < count_; ++k) {
+    const Block& prev = at(k - 1);
+    at(k).entry = reachable_speed(prev.entry, prev.move.length, prev.move.kin, at(k).backward);
+  }
 }
 
 void Planner::plan_backward_forward() {
@@ -71,8 +104,18 @@ void Planner::plan_backward_forward() {
 void Planner::run_oldest() {
   const Block& b = at(0);
   const double exit = count_ > 1 ? at(1).entry : 0.0;
-  add_time(account(b.move.account).lookahead_s,
-           move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin));
+  const double t = move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin);
+  add_time(account(b.move.account).lookahead_s, t);
+  if (settings_.quantum > 0.0 && std::isfinite(t)) {
+    stretch_s_ += t;
+    if (exit == 0.0) {
+      // At rest: the stretch ends on a whole tick.
+      const double ticks = std::ceil(stretch_s_ / settings_.quantum - 1e-6);
+      add_time(account(b.move.account).lookahead_s,
+               std::max(0.0, ticks * settings_.quantum - stretch_s_));
+      stretch_s_ = 0.0;
+    }
+  }
   head_ = (head_ + 1) % ring_.size();
   --count_;
 }

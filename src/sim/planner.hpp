@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "canon/op.hpp"
 #include "core/vec3.hpp"
 #include "sim/planner_profile.hpp"
 
@@ -28,6 +29,9 @@ namespace usina::sim {
 struct PlannerSettings {
   double junction_deviation = 0.01;  // mm
   std::size_t lookahead = 200;       // blocks in the buffer
+  // A control whose planner ticks every `quantum` s ends each stretch between
+  // two rests on a whole tick (LinuxCNC's servo period); 0: no ticks (textbook).
+  double quantum = 0.0;
 };
 
 // One move as the planner sees it.
@@ -38,6 +42,18 @@ struct PlannedMove {
   double cruise = 0.0;   // mm/s, the nominal speed after every limit
   Kinematics kin;        // along the path
   std::uint32_t account = 0;
+  // What a control's own planner model needs besides (the textbook one
+  // ignores them): an arc's radius (0: a straight move) and sweep (rad),
+  // its cruise before the centripetal limit, the speed the axes allow along
+  // the move (their rapid rates), and whether the move is a rapid.
+  double radius = 0.0;
+  double sweep = 0.0;
+  core::Vec3 normal;   // an arc's axis (unit)
+  double axial = 0.0;  // mm an arc moves along its axis (a helix)
+  bool helix = false;  // an arc that also moves along its axis
+  double uncapped = 0.0;
+  double max_speed = 0.0;
+  bool rapid = false;
 };
 
 struct AccountTime {
@@ -45,24 +61,58 @@ struct AccountTime {
   double exact_stop_s = 0.0;  // with exact stop (G61)
 };
 
-class Planner {
+// What stats asks of a planner model ([planner] model in the profile).
+class MotionPlanner {
  public:
-  explicit Planner(PlannerSettings settings);
+  virtual ~MotionPlanner() = default;
 
-  void add(const PlannedMove& move);
+  virtual void add(const PlannedMove& move) = 0;
+
+  // G61, G61.1, G64 P Q from here on; the textbook model plans every
+  // program with its own look-ahead and ignores it.
+  virtual void path_mode(const canon::PathMode& mode) { (void)mode; }
 
   // Comes to rest: runs every block in the buffer out.
-  void stop();
+  virtual void stop() = 0;
 
   // Comes to rest, then waits `seconds` (dwell, tool change, spindle start).
-  void wait(double seconds, std::uint32_t account);
+  virtual void wait(double seconds, std::uint32_t account) = 0;
 
   // Time per account; call stop() first to include the buffered blocks.
-  const std::vector<AccountTime>& accounts() const { return accounts_; }
+  virtual const std::vector<AccountTime>& accounts() const = 0;
 
   // Moves whose time came out negative, infinite or NaN (a machine profile
   // out of range): left out of every account, so a total is never one.
-  std::uint64_t untimed() const { return untimed_; }
+  virtual std::uint64_t untimed() const = 0;
+};
+
+class Planner final : public MotionPlanner {
+ public:
+  explicit Planner(PlannerSettings settings);
+
+  void add(const PlannedMove& move) override;
+  void stop() override;
+  void wait(double seconds, std::uint32_t account) override;
+
+  const std::vector<AccountTime>& accounts() const override { return accounts_; }
+
+  std::uint64_t untimed() const override { return untimed_; }
+
+  // For a model that decides its corners itself: the move enters at most at
+  // `max_entry` (0: from rest); no exact-stop time is counted for it.
+  void add_joined(const PlannedMove& move, double max_entry);
+
+  // The newest block (while moving), to change before the next one comes
+  // (trimmed by a blend, its acceleration lowered); replan_last() after.
+  bool has_last() const { return count_ > 0; }
+
+  PlannedMove& last_move() { return at(count_ - 1).move; }
+
+  void replan_last();
+
+  // Takes the newest block out (a blend arc swallowed it); returns the most
+  // it could be entered at, for the block that replaces it.
+  double drop_last();
 
  private:
   struct Block {
@@ -88,6 +138,7 @@ class Planner {
   PlannedMove last_;
   std::vector<AccountTime> accounts_;
   std::uint64_t untimed_ = 0;
+  double stretch_s_ = 0.0;  // since the last rest, for the quantum
 };
 
 }  // namespace usina::sim

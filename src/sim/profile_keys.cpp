@@ -16,7 +16,9 @@ constexpr std::array<std::string_view, 2> kMachine = {"name", "units"};
 constexpr std::array<std::string_view, 2> kSpindle = {"max_rpm", "accel_time"};
 constexpr std::array<std::string_view, 2> kTimes = {"tool_change", "block"};
 constexpr std::array<std::string_view, 1> kCost = {"per_hour"};
-constexpr std::array<std::string_view, 1> kPlanner = {"junction_deviation"};
+constexpr std::array<std::string_view, 10> kPlanner = {
+    "junction_deviation", "model",      "servo_period",   "max_velocity",       "kink_ratio",
+    "arc_blend",          "gap_cycles", "max_feed_scale", "optimization_depth", "arc_tolerance"};
 
 }  // namespace
 

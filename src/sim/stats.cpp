@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "canon/limits.hpp"
+#include "sim/planner_models.hpp"
 
 namespace usina::sim {
 
@@ -86,7 +87,7 @@ StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
       options_(options),
       diags_(diags),
       checks_(machine_, options.stock_top, options.work_zero, options.max_reports_per_check, diags),
-      planner_(PlannerSettings{machine.junction_deviation, options.lookahead}) {
+      planner_(make_planner(machine, options.lookahead)) {
   tools_.emplace_back();
   slot_of_tool_[0] = 0;
 }
@@ -117,7 +118,7 @@ void StatsSink::on(const canon::Op& op) {
           probe(op, k);
         } else if constexpr (std::is_same_v<T, canon::Dwell>) {
           ++tool().counts.dwells;
-          planner_.wait(k.s, account(Other));
+          planner_->wait(k.s, account(Other));
         } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
           tool_change(k);
         } else if constexpr (std::is_same_v<T, canon::Spindle>) {
@@ -125,15 +126,17 @@ void StatsSink::on(const canon::Op& op) {
         } else if constexpr (std::is_same_v<T, canon::Hole>) {
           ++tool().counts.holes;
         } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
-          planner_.stop();
+          planner_->stop();
+        } else if constexpr (std::is_same_v<T, canon::PathMode>) {
+          planner_->path_mode(k);
         }
       },
       op.kind);
 }
 
 void StatsSink::finish() {
-  planner_.stop();
-  if (planner_.untimed() > 0 && !reported_untimed_) {
+  planner_->stop();
+  if (planner_->untimed() > 0 && !reported_untimed_) {
     reported_untimed_ = true;
     diags_.report({core::Code::ValueOutOfRange,
                    core::Severity::Error,
@@ -141,7 +144,7 @@ void StatsSink::finish() {
                    fmt::format("{} moves could not be timed (their time came out infinite or "
                                "undefined): check the machine profile's accelerations, jerks "
                                "and rates; the times shown leave them out",
-                               planner_.untimed())});
+                               planner_->untimed())});
   }
 }
 
@@ -156,7 +159,7 @@ void StatsSink::moved_to(const Axes6& to) {
   pos_ = to;
 }
 
-double StatsSink::straight(const Axes6& to, double cruise, Kind kind) {
+PlannedMove StatsSink::straight_move(const Axes6& to, double cruise, Kind kind) const {
   const double length = path_length(pos_, to);
   const AxisShare share = straight_share(pos_, to, length);
   PlannedMove m;
@@ -166,8 +169,15 @@ double StatsSink::straight(const Axes6& to, double cruise, Kind kind) {
   m.kin = {along_path(machine_, share, AxisRate::Accel),
            along_path(machine_, share, AxisRate::Jerk)};
   m.account = account(kind);
-  planner_.add(m);
-  return length;
+  m.max_speed = along_path(machine_, share, AxisRate::Rapid);
+  m.rapid = kind == Rapid;
+  return m;
+}
+
+double StatsSink::straight(const Axes6& to, double cruise, Kind kind) {
+  const PlannedMove m = straight_move(to, cruise, kind);
+  planner_->add(m);
+  return m.length;
 }
 
 void StatsSink::traverse(const canon::Op& op, const canon::Traverse& t) {
@@ -263,6 +273,7 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   if (rate && *rate > 0.0) {
     checks_.arc_feed(op, path->radius, cruise * 60.0, arc_limit * 60.0, centripetal);
   }
+  const double uncapped = cruise;
   cruise = std::min(cruise, arc_limit);
   PlannedMove m;
   m.length = path->length;
@@ -272,7 +283,14 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   m.kin = {along_path(machine_, share, AxisRate::Accel),
            along_path(machine_, share, AxisRate::Jerk)};
   m.account = account(Cutting);
-  planner_.add(m);
+  m.radius = path->radius;
+  m.sweep = path->sweep;
+  m.normal = path->normal;
+  m.axial = path->axial;
+  m.helix = std::abs(path->axial) > 1e-9;
+  m.uncapped = block_limit(path->length, uncapped);
+  m.max_speed = along_path(machine_, share, AxisRate::Rapid);
+  planner_->add(m);
   ToolStats& ts = tool();
   ts.cutting_mm += path->length;
   ++ts.counts.arcs;
@@ -310,7 +328,8 @@ void StatsSink::spline(const canon::Op& op, const canon::Spline& s) {
     m.kin = {along_path(machine_, share, AxisRate::Accel),
              along_path(machine_, share, AxisRate::Jerk)};
     m.account = account(Cutting);
-    planner_.add(m);
+    m.max_speed = along_path(machine_, share, AxisRate::Rapid);
+    planner_->add(m);
     pos_ = next;
   }
   ToolStats& ts = tool();
@@ -332,7 +351,7 @@ void StatsSink::probe(const canon::Op& op, const canon::Probe& p) {
   const double limit = along_path(machine_, straight_share(pos_, to, length), AxisRate::MaxFeed);
   const double cruise = last_feed_ ? std::min(*last_feed_ / 60.0, limit) : limit;
   straight(to, cruise, Other);
-  planner_.stop();
+  planner_->stop();
   ToolStats& ts = tool();
   ++ts.counts.probes;
   ts.bounds.add(box);
@@ -355,7 +374,7 @@ void StatsSink::spindle(const canon::Spindle& s) {
   const double full = machine_.spindle_max_rpm > 0.0 ? machine_.spindle_max_rpm : s.rpm;
   const double seconds =
       full > 0.0 ? machine_.spindle_accel_time * std::min(change / full, 2.0) : 0.0;
-  planner_.wait(seconds, account(Other));
+  planner_->wait(seconds, account(Other));
   spindle_dir_ = s.dir;
   spindle_rpm_ = starts ? s.rpm : 0.0;
 }
@@ -366,15 +385,15 @@ void StatsSink::tool_change(const canon::ToolChange& t) {
     tools_.emplace_back();
     tools_.back().tool = t.tool;
   }
-  planner_.stop();  // the times so far belong to the tool before
+  planner_->stop();  // the times so far belong to the tool before
   tool_slot_ = it->second;
   ++tool().counts.tool_changes;
-  planner_.wait(machine_.tool_change_time, account(Other));
+  planner_->wait(machine_.tool_change_time, account(Other));
 }
 
 StatsReport StatsSink::report() const {
   StatsReport r;
-  const auto& times = planner_.accounts();
+  const auto& times = planner_->accounts();
   for (std::size_t slot = 0; slot < tools_.size(); ++slot) {
     ToolStats t = tools_[slot];
     const auto take = [&](Kind k, double& into) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -134,6 +135,7 @@ class StatsSink final : public canon::Sink {
 
   // Plans a straight move from the current position; returns its length.
   double straight(const Axes6& to, double cruise, Kind kind);
+  PlannedMove straight_move(const Axes6& to, double cruise, Kind kind) const;
   // The cruise speed (mm/s) of a feed at `f` mm/min along `share`, reporting a clamp.
   double feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f);
   std::optional<double> rate_of(std::optional<double> f, const canon::ProgrammedFeed& programmed,
@@ -147,7 +149,7 @@ class StatsSink final : public canon::Sink {
   bool refused_ = false;  // an op out of canon's range was reported
   bool reported_untimed_ = false;
   StatsChecks checks_;
-  Planner planner_;
+  std::unique_ptr<MotionPlanner> planner_;
   Axes6 pos_{};
   std::vector<ToolStats> tools_;
   std::map<int, std::size_t> slot_of_tool_;

@@ -163,11 +163,37 @@ bool Interpreter::modal_settings(BlockWords& w) {
     const bool again = n == s.coord_system && !rules_.reselect_reloads_work_offsets;
     if (!again && !select_coord_system(n)) return false;
   }
-  if (w.g[kGroupPathControl] != -1) s.path_mode = w.g[kGroupPathControl];
+  if (w.g[kGroupPathControl] != -1 && !path_control(w)) return false;
   if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;
   if (w.g[kGroupArcDistance] != -1) s.arc_absolute = w.g[kGroupArcDistance] == 901;
   if (w.g[kGroupRetract] != -1)
     s.retract = w.g[kGroupRetract] == 990 ? RetractMode::RPlane : RetractMode::OldZ;
+  return true;
+}
+
+// G61, G61.1, G64 P Q: the mode goes to the back ends as LinuxCNC's
+// SET_MOTION_CONTROL_MODE does (stats times the corners by it); Q, the naive
+// CAM tolerance, is P when the block has none.
+bool Interpreter::path_control(const BlockWords& w) {
+  const GCode g = w.g[kGroupPathControl];
+  state_.path_mode = g;
+  canon::PathMode m;
+  m.mode = g == 610   ? canon::PathMode::Mode::ExactPath
+           : g == 611 ? canon::PathMode::Mode::ExactStop
+                      : canon::PathMode::Mode::Blend;
+  if (g == 640) {
+    const double p = w.has('P') ? w.get('P') : 0.0;
+    const double q = w.has('Q') ? w.get('Q') : p;
+    for (const char c : {'P', 'Q'}) {
+      if (w.has(c) && w.get(c) < 0.0) {
+        return error(core::Code::NumberOutOfRange, w.col_of(c),
+                     fmt::format("G64 {}{:g}: the tolerance must be 0 or more", c, w.get(c)));
+      }
+    }
+    m.tolerance = mm(p);
+    m.naive_cam = mm(q);
+  }
+  machine_.emit(m);
   return true;
 }
 

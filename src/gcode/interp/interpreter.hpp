@@ -211,6 +211,7 @@ class Interpreter final : private ParameterSource {
   bool comments(std::span<const CommentText> notes);
   bool tool_and_spindle(BlockWords& w);
   bool modal_settings(BlockWords& w);
+  bool path_control(const BlockWords& w);
   bool modal_zero(BlockWords& w);
   bool stop(const BlockWords& w);
   bool modal_save_restore(const BlockWords& w);

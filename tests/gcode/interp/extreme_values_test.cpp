@@ -87,6 +87,11 @@ class FiniteSink final : public canon::Sink {
 
   void check(const canon::Dwell& d) { num(d.s, "dwell"); }
 
+  void check(const canon::PathMode& m) {
+    num(m.tolerance, "G64 P");
+    num(m.naive_cam, "G64 Q");
+  }
+
   void check(const canon::ToolChange& t) {
     if (t.diameter) num(*t.diameter, "tool diameter");
   }
