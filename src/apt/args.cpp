@@ -1,6 +1,7 @@
 #include "apt/args.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "apt/vocabulary.hpp"
 
@@ -84,6 +85,14 @@ std::optional<Arg> ArgReader::argument() {
 }
 
 std::optional<Arg> ArgReader::nested() {
+  if (!deeper(at())) return std::nullopt;
+  ++depth_;
+  auto a = nested_definition();
+  --depth_;
+  return a;
+}
+
+std::optional<Arg> ArgReader::nested_definition() {
   Arg a;
   a.loc = at().loc;
   ++pos_;  // (
@@ -141,7 +150,25 @@ std::optional<double> ArgReader::whole_expression() {
   return v;
 }
 
+// A bound on nesting, so that hostile input cannot exhaust the stack.
+constexpr int kMaxDepth = 256;
+
+bool ArgReader::deeper(const Token& t) {
+  if (depth_ < kMaxDepth) return true;
+  return fail(t, core::Code::AptSyntax,
+              "expressions or definitions nested deeper than " + std::to_string(kMaxDepth) +
+                  " levels; simplify the statement");
+}
+
 std::optional<double> ArgReader::expression() {
+  if (!deeper(at())) return std::nullopt;
+  ++depth_;
+  auto v = sum();
+  --depth_;
+  return v;
+}
+
+std::optional<double> ArgReader::sum() {
   auto v = term();
   while (v && (is("+") || is("-"))) {
     const bool plus = is("+");
@@ -181,7 +208,10 @@ std::optional<double> ArgReader::factor() {
   if (is("**")) {
     const Token& op = at();
     ++pos_;
+    if (!deeper(op)) return std::nullopt;
+    ++depth_;
     auto e = factor();
+    --depth_;
     if (!e) return std::nullopt;
     v = std::pow(*v, *e);
     if (!finite(op, *v, "the power")) return std::nullopt;
@@ -199,6 +229,7 @@ std::optional<double> ArgReader::primary() {
   const Token& t = at();
   if (t.kind == TokKind::Number) {
     ++pos_;
+    if (!finite(t, t.value, ("the number " + t.text).c_str())) return std::nullopt;
     return t.value;
   }
   if (is("(")) {

@@ -38,7 +38,10 @@ class ArgReader {
   bool fail(const Token& t, core::Code code, std::string message);
   std::optional<Arg> argument();
   std::optional<Arg> nested();
+  std::optional<Arg> nested_definition();
   std::optional<double> expression();
+  std::optional<double> sum();
+  bool deeper(const Token& t);
   std::optional<double> term();
   std::optional<double> factor();
   std::optional<double> primary();
@@ -51,6 +54,7 @@ class ArgReader {
   std::vector<Definition>& defs_;
   double zsurf_;
   bool any_word_ = false;
+  int depth_ = 0;  // nesting of parentheses, powers and definitions
   core::DiagnosticSink& diags_;
 };
 

@@ -40,8 +40,8 @@ bool only_blanks(const std::string& s) {
 
 }  // namespace
 
-std::vector<Statement> split_statements(std::string_view text, std::uint32_t file) {
-  std::vector<Statement> out;
+void for_each_statement(std::string_view text, std::uint32_t file,
+                        const std::function<void(const Statement&)>& take) {
   Statement cur;
   bool open = false;
   std::uint32_t line_no = 0;
@@ -62,10 +62,15 @@ std::vector<Statement> split_statements(std::string_view text, std::uint32_t fil
     }
     append(cur, body, at);
     open = continues;
-    if (!open && !only_blanks(cur.text)) out.push_back(std::move(cur));
+    if (!open && !only_blanks(cur.text)) take(cur);
     pos = eol + 1;
   }
-  if (open && !only_blanks(cur.text)) out.push_back(std::move(cur));
+  if (open && !only_blanks(cur.text)) take(cur);
+}
+
+std::vector<Statement> split_statements(std::string_view text, std::uint32_t file) {
+  std::vector<Statement> out;
+  for_each_statement(text, file, [&out](const Statement& st) { out.push_back(st); });
   return out;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +33,12 @@ struct Statement {
   // the line as written, filled by the processor.
 };
 
-// Splits `text` into statements; `file` is the SourceManager index.
+// Hands each statement of `text` to `take` in turn (one statement in
+// memory at a time); `file` is the SourceManager index.
+void for_each_statement(std::string_view text, std::uint32_t file,
+                        const std::function<void(const Statement&)>& take);
+
+// Every statement of `text` (tests).
 std::vector<Statement> split_statements(std::string_view text, std::uint32_t file);
 
 // The tokens of one statement; a character that starts no token is reported

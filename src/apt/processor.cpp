@@ -22,7 +22,7 @@ class Processor {
   Processor(core::DiagnosticSink& diags) : diags_(diags), run_(diags, out_) {}
 
   void statement(const Statement& st, int isn);
-  void finish(const std::vector<Statement>& sts);
+  void finish(const core::SourceLoc& last);
 
   AptResult take() { return std::move(out_); }
 
@@ -123,22 +123,23 @@ void Processor::assignment(const std::vector<Token>& t, std::size_t i) {
   if (v) run_.symbols()[name.text] = Symbol{true, *v, {}};
 }
 
-void Processor::finish(const std::vector<Statement>& sts) {
+void Processor::finish(const core::SourceLoc& last) {
   if (ended_) return;
-  core::SourceLoc at = sts.empty() ? core::SourceLoc{} : sts.back().loc;
-  diags_.report({core::Code::AptNoFini, core::Severity::Warning, at,
+  diags_.report({core::Code::AptNoFini, core::Severity::Warning, last,
                  "the program has no FINI; its end is taken as FINI"});
 }
 
 }  // namespace
 
 AptResult process(std::string_view text, std::uint32_t file, core::DiagnosticSink& diags) {
-  const std::vector<Statement> sts = split_statements(text, file);
   Processor p(diags);
   int isn = 0;
-  for (const Statement& st : sts)
+  core::SourceLoc last{file, 0, 0, 0, 0};
+  for_each_statement(text, file, [&](const Statement& st) {
+    last = st.loc;
     p.statement(st, ++isn);
-  p.finish(sts);
+  });
+  p.finish(last);
   return p.take();
 }
 

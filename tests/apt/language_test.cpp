@@ -104,3 +104,34 @@ TEST(AptLanguage, NothingAfterFiniIsRead) {
 
 }  // namespace
 }  // namespace usina::apt::test
+
+namespace usina::apt::test {
+namespace {
+
+TEST(AptLanguage, DeepNestingIsAnErrorNotACrash) {
+  const std::string deep = "A=" + std::string(100000, '(') + "1" + std::string(100000, ')');
+  EXPECT_TRUE(run(deep + "\nFINI\n").has(core::Code::AptSyntax));
+  std::string power = "A=2";
+  for (int i = 0; i < 100000; ++i)
+    power += "**1";
+  EXPECT_TRUE(run(power + "\nFINI\n").has(core::Code::AptSyntax));
+  std::string nest = "P=POINT/INTOF,";
+  for (int i = 0; i < 50000; ++i)
+    nest += "(LINE/INTOF,";
+  EXPECT_TRUE(run(nest + "\nFINI\n").has(core::Code::AptSyntax));
+}
+
+}  // namespace
+}  // namespace usina::apt::test
+
+namespace usina::apt::test {
+namespace {
+
+TEST(AptLanguage, NumberBeyondDoubleIsAnError) {
+  const AptRun r = run("CUTTER/1E400\nFINI\n");
+  EXPECT_TRUE(r.has(core::Code::AptArithmetic));
+  EXPECT_EQ(r.result.records.size(), 2u);  // FINI's records only: no infinite cutter
+}
+
+}  // namespace
+}  // namespace usina::apt::test
