@@ -282,6 +282,52 @@ EXPLAIN = {
         "runs the program, then reports an error (\"Bad character '%' used\").",
         "Add a `%` as the first line, or remove the last one, if the program is to run on "
         "LinuxCNC."),
+    # apt (issue 15): APT part programs (docs/apt.md)
+    "E_APT_SYNTAX": (
+        "An APT statement is not written the way APT writes statements: a character APT does "
+        "not have, a missing `,` or `)`, a statement that does not begin with a word, a "
+        "vocabulary word used as a name, or a malformed `SYN`. The statement is left out and "
+        "the processor goes on with the next one, so one run reports every error.",
+        "Correct the statement at the caret; docs/apt.md shows the statement forms."),
+    "E_APT_UNDEFINED_SYMBOL": (
+        "A name that nothing defined before this statement, or a function APT does not have "
+        "(IBM APT's error 101, undefined symbol).",
+        "Define the name (a scalar `A=3` or a geometry `P1=POINT/1,2`) before the statement "
+        "that uses it, or correct its spelling; the message lists the functions."),
+    "E_APT_UNKNOWN_FORM": (
+        "A POINT, LINE, CIRCLE, PLANE or VECTOR definition whose arguments match none of the "
+        "forms of that word (IBM APT's error 1000, method of definition unknown): a LINE from "
+        "a point and a circle without LEFT/RIGHT and TANTO, a CIRCLE with two numbers, ... The "
+        "message lists the kinds of the arguments given.",
+        "Write the definition in one of the forms of docs/apt.md (the IBM manual's forms)."),
+    "E_APT_NO_SOLUTION": (
+        "A definition has the right form but no solution (IBM APT's error 1005, calculation "
+        "failed): lines that do not meet, a line that misses the circle it should cut, a "
+        "circle through three points on one line, a tangent from a point inside the circle, "
+        "a radius of 0 or less, a selector (XLARGE, YSMALL...) along which the line has no "
+        "side.",
+        "Check the geometry the definition refers to; the message says which condition fails."),
+    "E_APT_ARITHMETIC": (
+        "An expression has no finite value: a division by zero, SQRTF of a negative number, "
+        "LOGF of 0, ASINF of a number beyond 1, a power that overflows.",
+        "Correct the expression or the scalars in it."),
+    "E_APT_BAD_ARGUMENT": (
+        "A statement has the wrong kind or number of arguments: GOTO without a point, "
+        "CUTTER with a word, a geometry name in an expression or a post-processor word, a "
+        "function given too many values, a modal word (TLLFT, NOPS) with arguments.",
+        "Give the statement the arguments the message names."),
+    "E_APT_NOT_SUPPORTED": (
+        "The statement is APT, but usina's APT does not run it yet: the contouring statements "
+        "(GO, GOLFT, GORGT, GOFWD, GOBACK, GOUP, GODOWN with the cutter offset), a few "
+        "definition forms, the geometry functions (DISTF...), a feed rate after a GOTO's point, "
+        "and statements of the language usina does not know (MACRO, LOOPST, ...). The "
+        "statement is left out, never skipped in silence.",
+        "See docs/apt.md for what this version runs; write the motion with GOTO points until "
+        "contouring is built."),
+    "W_APT_NO_FINI": (
+        "The APT program has no FINI statement; the processor takes its end as FINI and "
+        "writes no FINI record.",
+        "End the program with FINI."),
     "E_DXF_MALFORMED": (
         "The drawing's lines are not a DXF file's groups: a group code that is not a whole "
         "number, a value line missing at the end, a line longer than 1,023 characters, no "

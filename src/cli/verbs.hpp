@@ -14,6 +14,7 @@ void add_convert(CLI::App& app);
 void add_gen(CLI::App& app);
 void add_serve(CLI::App& app);
 void add_resume(CLI::App& app);
+void add_apt(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();

@@ -135,4 +135,13 @@
   X(RemoteRequest, E_REMOTE_REQUEST)                             \
   /* rs274ngc: '%' lines (issue 12, real programs) */            \
   X(MisplacedPercent, E_MISPLACED_PERCENT)                       \
-  X(UnopenedPercent, W_UNOPENED_PERCENT)
+  X(UnopenedPercent, W_UNOPENED_PERCENT)                         \
+  /* apt */                                                      \
+  X(AptSyntax, E_APT_SYNTAX)                                     \
+  X(AptUndefinedSymbol, E_APT_UNDEFINED_SYMBOL)                  \
+  X(AptUnknownForm, E_APT_UNKNOWN_FORM)                          \
+  X(AptNoSolution, E_APT_NO_SOLUTION)                            \
+  X(AptArithmetic, E_APT_ARITHMETIC)                             \
+  X(AptBadArgument, E_APT_BAD_ARGUMENT)                          \
+  X(AptNotSupported, E_APT_NOT_SUPPORTED)                        \
+  X(AptNoFini, W_APT_NO_FINI)

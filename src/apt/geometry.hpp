@@ -1,0 +1,57 @@
+// APT geometry in IBM's canonical forms (research/apt.md §4): a point
+// (x,y,z), a line (a,b,0,d) with a·x+b·y = d and (a,b) a unit normal (a
+// vertical plane), a plane (a,b,c,d), a circle (xc,yc,zc,0,0,1,r) (a
+// vertical cylinder), a vector (i,j,k).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tl/expected.hpp>
+
+#include "core/diagnostic.hpp"
+
+namespace usina::apt {
+
+enum class GeomType : unsigned char { Point, Line, Circle, Plane, Vector };
+
+std::string_view type_name(GeomType t);  // "POINT", ...
+std::size_t canon_size(GeomType t);      // 3, 4, 7, 4, 3
+
+struct Geom {
+  GeomType type = GeomType::Point;
+  std::array<double, 7> c{};
+};
+
+// An argument of a statement after the slash, evaluated.
+struct Arg {
+  enum class Kind : unsigned char { Number, Word, Geom };
+  Kind kind = Kind::Number;
+  double num = 0.0;
+  std::string word;  // a minor word, upper case
+  Geom geom;
+  std::string name;  // the symbol a geometry argument was named by, if any
+  core::SourceLoc loc;
+};
+
+// Why a definition failed: E_APT_UNKNOWN_FORM (no form matches, IBM error
+// 1000) or E_APT_NO_SOLUTION (the form has no solution, IBM error 1005).
+struct GeomError {
+  core::Code code = core::Code::AptUnknownForm;
+  std::string message;
+};
+
+using GeomResult = tl::expected<Geom, GeomError>;
+
+// The definition `major/args` (POINT, LINE, CIRCLE, PLANE, VECTOR); `zsurf`
+// is the z of points given by two coordinates.
+GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf);
+
+Geom make_point(double x, double y, double z);
+Geom make_line(double a, double b, double d);  // normalises (a,b)
+Geom make_circle(double xc, double yc, double zc, double r);
+
+}  // namespace usina::apt
