@@ -4,17 +4,24 @@
 // line's rate. Prints the bytes delivered, overflows, hash mismatches, the
 // CPU used (user + system, as a share of one core over the wall time) and
 // the peak memory. No assertion on times: the figures are for the report.
+// With pty links the simulated controls run on a second thread and event
+// loop, as a second program would, so the server's own share (the thread of
+// the senders) is measured apart from the controls'.
 //
 //   dnc_feed_bench [--machines 256] [--baud 115200] [--seconds 10] [--skid 32]
 //                  [--link memory|pty] [--buffer 4096]
+#include <time.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <boost/asio/executor_work_guard.hpp>
 #include <fmt/format.h>
 #include <sys/resource.h>
 
@@ -86,6 +93,13 @@ double cpu_seconds() {
          static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
 }
 
+// The CPU time of the calling thread.
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) / 1e9;
+}
+
 long max_rss_kb() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
@@ -113,9 +127,12 @@ LinkConfig machine_config(const Options& o, int i) {
   return c;
 }
 
-bool open_links(asio::io_context& io, const Options& o, const LinkConfig& c, Machine& m) {
+// The server's end on `io`, the control's on `controls` (pty links; a
+// memory pair lives on `io` alone).
+bool open_links(asio::io_context& io, asio::io_context& controls, const Options& o,
+                const LinkConfig& c, Machine& m) {
   if (o.link == "pty") {
-    auto pair = open_pty_pair(io);
+    auto pair = open_pty_pair(controls);
     if (!pair) return false;
     auto ours = open_serial_link(io, pair->slave_path, c);
     if (!ours) return false;
@@ -134,6 +151,8 @@ bool open_links(asio::io_context& io, const Options& o, const LinkConfig& c, Mac
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   asio::io_context io;
+  asio::io_context controls;  // the simulated controls' loop (pty links)
+  asio::io_context& control_io = o.link == "pty" ? controls : io;
   std::vector<Machine> machines(static_cast<std::size_t>(o.machines));
   const double rate = bytes_per_second(machine_config(o, 0));
   const auto program_bytes = static_cast<std::uint64_t>(rate * o.seconds);
@@ -145,18 +164,27 @@ int main(int argc, char** argv) {
   for (int i = 0; i < o.machines; ++i) {
     Machine& m = machines[static_cast<std::size_t>(i)];
     const LinkConfig c = machine_config(o, i);
-    if (!open_links(io, o, c, m)) {
+    if (!open_links(io, controls, o, c, m)) {
       std::fprintf(stderr, "cannot open the links of machine %d\n", i);
       return 2;
     }
-    m.sim = std::make_shared<SimCnc>(io, *m.theirs, sc);
+    m.sim = std::make_shared<SimCnc>(control_io, *m.theirs, sc);
     m.sender = std::make_shared<Sender>(io, *m.ours, send_options(c),
                                         std::make_unique<Generated>(program_bytes), JobMode::Drip);
   }
+  for (Machine& m : machines)
+    m.sim->start();
+  auto keep = asio::make_work_guard(controls);
+  double controls_cpu = 0.0;
+  std::thread control_thread([&controls, &controls_cpu] {
+    const double c0 = thread_cpu_seconds();
+    controls.run();
+    controls_cpu = thread_cpu_seconds() - c0;
+  });
   const double cpu0 = cpu_seconds();
+  const double server0 = thread_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   for (Machine& m : machines) {
-    m.sim->start();
     m.sender->start([&m](const JobReport& r) {
       m.report = r;
       m.done = true;
@@ -171,8 +199,13 @@ int main(int argc, char** argv) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double cpu = cpu_seconds() - cpu0;
+  const double server_cpu = thread_cpu_seconds() - server0;
   // The last bytes reach the controls.
   io.run_for(std::chrono::milliseconds(200));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  keep.reset();
+  controls.stop();
+  control_thread.join();
   std::uint64_t sent = 0, received = 0, overflow = 0, xoffs = 0;
   int not_done = 0, mismatched = 0;
   for (Machine& m : machines) {
@@ -187,10 +220,12 @@ int main(int argc, char** argv) {
       "machines {} link {} baud {} skid {} buffer {}\n"
       "program {} bytes each, line rate {:.0f} bytes/s\n"
       "wall {:.2f} s, cpu {:.2f} s = {:.1f} % of one core\n"
+      "server thread{} {:.2f} s = {:.1f} % of one core; controls thread {:.2f} s\n"
       "bytes sent {} received {} overflow {} xoff {} not done {} hash mismatches {}\n"
       "max rss {:.1f} MB\n",
       o.machines, o.link, o.baud, o.skid, o.buffer, program_bytes, rate, wall, cpu,
-      100.0 * cpu / wall, sent, received, overflow, xoffs, not_done, mismatched,
-      static_cast<double>(max_rss_kb()) / 1024.0);
+      100.0 * cpu / wall, o.link == "pty" ? "" : " (with the controls: memory links)", server_cpu,
+      100.0 * server_cpu / wall, controls_cpu, sent, received, overflow, xoffs, not_done,
+      mismatched, static_cast<double>(max_rss_kb()) / 1024.0);
   return (not_done == 0 && mismatched == 0 && overflow == 0 && sent == received) ? 0 : 1;
 }

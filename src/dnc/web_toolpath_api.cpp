@@ -58,6 +58,41 @@ HttpResponse run_failed(const ToolpathReply& r, const std::string& why) {
                         "the tool path could not be computed: " + why);
 }
 
+tl::expected<NamedRevision, HttpResponse> named_revision(ApiCall& c) {
+  auto program = find_program(c.ctx.store, c.params[0]);
+  if (!program)
+    return tl::unexpected(
+        error_response(c.req, status_of(program.error()), program.error().message));
+  auto revision = find_revision(c.ctx.store, c.params[0], c.params[1]);
+  if (!revision)
+    return tl::unexpected(
+        error_response(c.req, status_of(revision.error()), revision.error().message));
+  return NamedRevision{std::move(*program), std::move(*revision)};
+}
+
+HttpResponse answer_now(ApiCall& c, std::string_view content_type, const RevisionWork& work) {
+  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
+  if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
+  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
+  return computed_response(reply, content_type, work(*bytes), ToolpathFrom::Computed);
+}
+
+void answer_later(ApiCall& c, HttpAnswer answer, const std::string& key,
+                  std::string_view content_type, RevisionWork work) {
+  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
+  ToolpathService& service = *c.ctx.toolpaths;
+  if (ToolpathStream kept = service.cached(key))
+    return answer(computed_response(reply, content_type, *kept, ToolpathFrom::Cache));
+  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
+  if (!bytes) return answer(error_response(c.req, status_of(bytes.error()), bytes.error().message));
+  service.run(
+      key, [text = std::move(*bytes), work = std::move(work)] { return work(text); },
+      [reply, type = std::string(content_type), answer = std::move(answer)](
+          ToolpathStream s, ToolpathFrom from, const std::string& error) {
+        answer(s ? computed_response(reply, type, *s, from) : run_failed(reply, error));
+      });
+}
+
 namespace {
 
 // The revision's settings and cache key, or the error answer.
@@ -74,19 +109,19 @@ tl::expected<Wanted, HttpResponse> wanted(ApiCall& c) {
                        fmt::format("max_vertices must be a whole number from {} to {}",
                                    kMinVertices, kMaxVertices)));
   }
-  auto program = find_program(c.ctx.store, c.params[0]);
-  if (!program)
-    return tl::unexpected(
-        error_response(c.req, status_of(program.error()), program.error().message));
-  auto revision = find_revision(c.ctx.store, c.params[0], c.params[1]);
-  if (!revision)
-    return tl::unexpected(
-        error_response(c.req, status_of(revision.error()), revision.error().message));
+  auto named = named_revision(c);
+  if (!named) return tl::unexpected(std::move(named.error()));
   Wanted w;
-  w.settings.dialect = program->dialect;
+  w.settings.dialect = named->program.dialect;
   w.settings.max_vertices = *max_vertices;
-  w.key = toolpath_key(revision->hash, w.settings.dialect, w.settings.max_vertices);
+  w.key = toolpath_key(named->revision.hash, w.settings.dialect, w.settings.max_vertices);
   return w;
+}
+
+RevisionWork toolpath_work(ToolpathSettings settings) {
+  return [settings = std::move(settings)](const std::string& text) {
+    return encode_toolpath(program_toolpath(text, settings));
+  };
 }
 
 }  // namespace
@@ -95,30 +130,13 @@ tl::expected<Wanted, HttpResponse> wanted(ApiCall& c) {
 HttpResponse api_toolpath(ApiCall& c) {
   auto w = wanted(c);
   if (!w) return std::move(w.error());
-  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
-  if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
-  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
-  return computed_response(reply, kStreamType,
-                           encode_toolpath(program_toolpath(*bytes, w->settings)),
-                           ToolpathFrom::Computed);
+  return answer_now(c, kStreamType, toolpath_work(w->settings));
 }
 
 void api_toolpath_later(ApiCall& c, HttpAnswer answer) {
   auto w = wanted(c);
   if (!w) return answer(std::move(w.error()));
-  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
-  ToolpathService& service = *c.ctx.toolpaths;
-  if (ToolpathStream kept = service.cached(w->key))
-    return answer(computed_response(reply, kStreamType, *kept, ToolpathFrom::Cache));
-  // Read (and verified against its hash) here: the store is the loop's.
-  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
-  if (!bytes) return answer(error_response(c.req, status_of(bytes.error()), bytes.error().message));
-  service.compute(
-      w->key, std::move(*bytes), w->settings,
-      [reply, answer = std::move(answer)](ToolpathStream s, ToolpathFrom from,
-                                          const std::string& error) {
-        answer(s ? computed_response(reply, kStreamType, *s, from) : run_failed(reply, error));
-      });
+  answer_later(c, std::move(answer), w->key, kStreamType, toolpath_work(std::move(w->settings)));
 }
 
 }  // namespace usina::dnc

@@ -55,16 +55,6 @@ ToolpathStream ToolpathService::cached(const std::string& key) {
   return s;
 }
 
-void ToolpathService::compute(const std::string& key, std::string text,
-                              const ToolpathSettings& settings, Done done) {
-  run(
-      key,
-      [text = std::move(text), settings] {
-        return encode_toolpath(program_toolpath(text, settings));
-      },
-      std::move(done));
-}
-
 void ToolpathService::run(const std::string& key, Work work, Done done) {
   auto& waiting = state_->waiting[key];
   waiting.push_back(std::move(done));

@@ -67,12 +67,9 @@ class ToolpathService {
 
   // On the loop: the kept stream of `key`, nullptr when there is none.
   ToolpathStream cached(const std::string& key);
-  // On the loop: runs `text` on the pool (or joins the run of `key` in
-  // progress); `done` runs on the loop with the stream.
-  void compute(const std::string& key, std::string text, const ToolpathSettings& settings,
-               Done done);
-  // The same for any work whose bytes depend on `key` alone (the tools'
-  // figures, web_toolpath_tools.cpp).
+  // On the loop: runs `work` on the pool (or joins the run of `key` in
+  // progress: its bytes depend on `key` alone); `done` runs on the loop
+  // with the bytes.
   void run(const std::string& key, Work work, Done done);
 
   // On the loop.

@@ -69,22 +69,23 @@ struct Wanted {
 };
 
 tl::expected<Wanted, HttpResponse> wanted(ApiCall& c) {
-  auto program = find_program(c.ctx.store, c.params[0]);
-  if (!program)
-    return tl::unexpected(
-        error_response(c.req, status_of(program.error()), program.error().message));
-  auto revision = find_revision(c.ctx.store, c.params[0], c.params[1]);
-  if (!revision)
-    return tl::unexpected(
-        error_response(c.req, status_of(revision.error()), revision.error().message));
+  auto named = named_revision(c);
+  if (!named) return tl::unexpected(std::move(named.error()));
+  const Program& program = named->program;
   Wanted w;
-  w.settings.dialect = program->dialect;
-  const auto it = c.ctx.profiles.find(program->machine_class);
+  w.settings.dialect = program.dialect;
+  const auto it = c.ctx.profiles.find(program.machine_class);
   w.settings.profile = it == c.ctx.profiles.end() ? sim::default_machine_profile() : it->second;
   // The class names the profile: the same bytes of two classes time differently.
-  w.key =
-      "tools " + toolpath_key(revision->hash, program->dialect + "@" + program->machine_class, 0);
+  w.key = "tools " +
+          toolpath_key(named->revision.hash, program.dialect + "@" + program.machine_class, 0);
   return w;
+}
+
+RevisionWork figures_work(ToolFiguresSettings settings) {
+  return [settings = std::move(settings)](const std::string& text) {
+    return tool_figures_json(text, settings);
+  };
 }
 
 }  // namespace
@@ -93,31 +94,13 @@ tl::expected<Wanted, HttpResponse> wanted(ApiCall& c) {
 HttpResponse api_tool_figures(ApiCall& c) {
   auto w = wanted(c);
   if (!w) return std::move(w.error());
-  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
-  if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
-  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
-  return computed_response(reply, kJsonType, tool_figures_json(*bytes, w->settings),
-                           ToolpathFrom::Computed);
+  return answer_now(c, kJsonType, figures_work(w->settings));
 }
 
 void api_tool_figures_later(ApiCall& c, HttpAnswer answer) {
   auto w = wanted(c);
   if (!w) return answer(std::move(w.error()));
-  const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
-  ToolpathService& service = *c.ctx.toolpaths;
-  if (ToolpathStream kept = service.cached(w->key))
-    return answer(computed_response(reply, kJsonType, *kept, ToolpathFrom::Cache));
-  auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
-  if (!bytes) return answer(error_response(c.req, status_of(bytes.error()), bytes.error().message));
-  service.run(
-      w->key,
-      [text = std::move(*bytes), settings = std::move(w->settings)] {
-        return tool_figures_json(text, settings);
-      },
-      [reply, answer = std::move(answer)](ToolpathStream s, ToolpathFrom from,
-                                          const std::string& error) {
-        answer(s ? computed_response(reply, kJsonType, *s, from) : run_failed(reply, error));
-      });
+  answer_later(c, std::move(answer), w->key, kJsonType, figures_work(std::move(w->settings)));
 }
 
 }  // namespace usina::dnc

@@ -7,6 +7,16 @@
 
 namespace usina::sim {
 
+void merge_exact_stop(const std::vector<AccountTime>& look,
+                      const std::vector<AccountTime>& exact_stop,
+                      std::vector<AccountTime>& merged) {
+  merged.assign(std::max(look.size(), exact_stop.size()), AccountTime{});
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    if (i < look.size()) merged[i] = look[i];
+    if (i < exact_stop.size()) merged[i].exact_stop_s += exact_stop[i].exact_stop_s;
+  }
+}
+
 Planner::Planner(PlannerSettings settings) : settings_(settings) {
   ring_.resize(std::max<std::size_t>(settings_.lookahead, 2));
 }

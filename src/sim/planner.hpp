@@ -61,6 +61,12 @@ struct AccountTime {
   double exact_stop_s = 0.0;  // with exact stop (G61)
 };
 
+// `look`'s accounts with the exact-stop time of `exact_stop` added, into
+// `merged` (the models that run the textbook look-ahead and time exact stop
+// on their own: planner_linuxcnc, planner_grbl).
+void merge_exact_stop(const std::vector<AccountTime>& look,
+                      const std::vector<AccountTime>& exact_stop, std::vector<AccountTime>& merged);
+
 // What stats asks of a planner model ([planner] model in the profile).
 class MotionPlanner {
  public:

@@ -117,12 +117,7 @@ void GrblPlanner::wait(double seconds, std::uint32_t account) {
 }
 
 const std::vector<AccountTime>& GrblPlanner::accounts() const {
-  const auto& look = look_.accounts();
-  merged_.assign(std::max(look.size(), exact_stop_.size()), AccountTime{});
-  for (std::size_t i = 0; i < merged_.size(); ++i) {
-    if (i < look.size()) merged_[i] = look[i];
-    if (i < exact_stop_.size()) merged_[i].exact_stop_s += exact_stop_[i].exact_stop_s;
-  }
+  merge_exact_stop(look_.accounts(), exact_stop_, merged_);
   return merged_;
 }
 

@@ -25,7 +25,60 @@ struct Reply {
   nlohmann::json json() const { return nlohmann::json::parse(body, nullptr, false); }
 };
 
-class ApiClient {
+// The request of a call: a JSON body, a bearer token when given.
+inline bhttp::request<bhttp::string_body> api_request(bhttp::verb method, const std::string& target,
+                                                      const std::string& body,
+                                                      const std::string& token) {
+  bhttp::request<bhttp::string_body> req{method, target, 11};
+  req.set(bhttp::field::host, "127.0.0.1");
+  if (!token.empty()) req.set(bhttp::field::authorization, "Bearer " + token);
+  if (!body.empty()) req.set(bhttp::field::content_type, "application/json");
+  req.body() = body;
+  req.prepare_payload();
+  return req;
+}
+
+// Writes `req` on `stream` (plain or TLS) and reads the reply.
+template <typename Stream>
+Reply round_trip(Stream& stream, const bhttp::request<bhttp::string_body>& req) {
+  bhttp::write(stream, req);
+  beast::flat_buffer buffer;
+  bhttp::response_parser<bhttp::string_body> parser;
+  parser.body_limit(1ull << 30);
+  bhttp::read(stream, buffer, parser);
+  Reply r;
+  r.status = static_cast<int>(parser.get().result_int());
+  r.body = parser.get().body();
+  if (auto it = parser.get().find(bhttp::field::retry_after); it != parser.get().end())
+    r.retry_after = std::string(it->value());
+  return r;
+}
+
+// get, post and log_in of a client whose `call` makes one request.
+template <typename Client>
+class ApiVerbs {
+ public:
+  Reply get(const std::string& target, const std::string& token = "") const {
+    return client().call(bhttp::verb::get, target, "", token);
+  }
+
+  Reply post(const std::string& target, const nlohmann::json& body,
+             const std::string& token = "") const {
+    return client().call(bhttp::verb::post, target, body.dump(), token);
+  }
+
+  // The token of a login, empty when it failed.
+  std::string log_in(const std::string& user, const std::string& password) const {
+    const Reply r = post("/api/login", {{"user", user}, {"password", password}});
+    const auto j = r.json();
+    return r.status == 200 && j.contains("token") ? j["token"].get<std::string>() : "";
+  }
+
+ private:
+  const Client& client() const { return static_cast<const Client&>(*this); }
+};
+
+class ApiClient : public ApiVerbs<ApiClient> {
  public:
   explicit ApiClient(unsigned short port) : port_(port) {}
 
@@ -35,41 +88,10 @@ class ApiClient {
     beast::tcp_stream stream(io);
     stream.connect(
         boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), port_));
-    bhttp::request<bhttp::string_body> req{method, target, 11};
-    req.set(bhttp::field::host, "127.0.0.1");
-    if (!token.empty()) req.set(bhttp::field::authorization, "Bearer " + token);
-    if (!body.empty()) req.set(bhttp::field::content_type, "application/json");
-    req.body() = body;
-    req.prepare_payload();
-    bhttp::write(stream, req);
-    beast::flat_buffer buffer;
-    bhttp::response_parser<bhttp::string_body> parser;
-    parser.body_limit(1ull << 30);
-    bhttp::read(stream, buffer, parser);
-    Reply r;
-    r.status = static_cast<int>(parser.get().result_int());
-    r.body = parser.get().body();
-    if (auto it = parser.get().find(bhttp::field::retry_after); it != parser.get().end())
-      r.retry_after = std::string(it->value());
+    const Reply r = round_trip(stream, api_request(method, target, body, token));
     beast::error_code ignored;
     stream.socket().shutdown(boost::asio::ip::tcp::socket::shutdown_both, ignored);
     return r;
-  }
-
-  Reply get(const std::string& target, const std::string& token = "") const {
-    return call(bhttp::verb::get, target, "", token);
-  }
-
-  Reply post(const std::string& target, const nlohmann::json& body,
-             const std::string& token = "") const {
-    return call(bhttp::verb::post, target, body.dump(), token);
-  }
-
-  // The token of a login, empty when it failed.
-  std::string log_in(const std::string& user, const std::string& password) const {
-    const Reply r = post("/api/login", {{"user", user}, {"password", password}});
-    const auto j = r.json();
-    return r.status == 200 && j.contains("token") ? j["token"].get<std::string>() : "";
   }
 
   unsigned short port() const { return port_; }

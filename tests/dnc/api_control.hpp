@@ -57,6 +57,35 @@ inline Control start_with_control(RunningServer& s, std::uint32_t baud = 115200)
   return c;
 }
 
+// A server with `mill-1` on a pty whose punches end after 0.2 s of silence
+// (the machine data tests): `with`'s settings on the pty's link.
+inline Control start_punching_mill(RunningServer& s, ServerMachine with = {},
+                                   ServerConfig config = {}) {
+  auto pair = open_pty_pair(s.io());
+  EXPECT_TRUE(pair) << pair.error();
+  Control c;
+  c.link = std::move(pair->master);
+  c.sim = std::make_shared<SimCnc>(s.io(), *c.link, SimCncConfig{});
+  c.sim->start();
+  with.link = pty_machine("mill-1", pair->slave_path, 115200).link;
+  with.link.receive_idle = 0.2;
+  config.machines.push_back(with);
+  s.start(config);
+  return c;
+}
+
+// `mill-1` once `ready` holds (polled as a client would), or after 30 s.
+template <typename F>
+nlohmann::json machine_when(const ApiClient& c, const std::string& token, F ready) {
+  nlohmann::json m;
+  for (int i = 0; i < 600; ++i) {
+    m = c.get("/api/machines/mill-1", token).json();
+    if (ready(m)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return m;
+}
+
 // The control punches `rows` (on the server's loop, which owns the link).
 inline void punch(RunningServer& s, Control& control, const std::string& rows) {
   s.on_loop([&] {

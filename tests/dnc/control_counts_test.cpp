@@ -12,36 +12,16 @@ namespace {
 
 class ControlCountsOnBothStores : public test::StoreTest {};
 
-// `mill-1` on a pty whose punches end after 0.2 s of silence.
-Control start_mill(RunningServer& s) {
-  auto pair = open_pty_pair(s.io());
-  EXPECT_TRUE(pair) << pair.error();
-  Control c;
-  c.link = std::move(pair->master);
-  c.sim = std::make_shared<SimCnc>(s.io(), *c.link, SimCncConfig{});
-  c.sim->start();
-  ServerMachine m = pty_machine("mill-1", pair->slave_path, 115200);
-  m.link.receive_idle = 0.2;
-  ServerConfig config;
-  config.machines.push_back(m);
-  s.start(config);
-  return c;
-}
-
 nlohmann::json mill_when_parts(const ApiClient& c, const std::string& token, int parts) {
-  nlohmann::json m;
-  for (int i = 0; i < 600; ++i) {
-    m = c.get("/api/machines/mill-1", token).json();
-    if (m.value("part_count", -1) == parts && m.value("state", "") == "idle") break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  return m;
+  return machine_when(c, token, [parts](const nlohmann::json& m) {
+    return m.value("part_count", -1) == parts && m.value("state", "") == "idle";
+  });
 }
 
 TEST_P(ControlCountsOnBothStores, PartCountAndCycleTimeSurviveARestart) {
   RunningServer first;
   first.use_store(where());
-  Control control = start_mill(first);
+  Control control = start_punching_mill(first);
   {
     const ApiClient c = first.client();
     const std::string oper = c.log_in("oper", usina::test::kPassword);
@@ -55,7 +35,7 @@ TEST_P(ControlCountsOnBothStores, PartCountAndCycleTimeSurviveARestart) {
 
   RunningServer second;
   second.use_store(where());
-  Control again = start_mill(second);
+  Control again = start_punching_mill(second);
   const ApiClient c = second.client();
   const std::string oper = c.log_in("oper", usina::test::kPassword);
   auto m = mill_when_parts(c, oper, 1);

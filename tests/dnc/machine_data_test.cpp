@@ -10,36 +10,13 @@
 namespace usina::dnc {
 namespace {
 
-// A server with `mill-1` on a pty whose punches end after 0.2 s of silence.
-Control start_mill(RunningServer& s, ServerMachine* with = nullptr) {
-  auto pair = open_pty_pair(s.io());
-  EXPECT_TRUE(pair) << pair.error();
-  Control c;
-  c.link = std::move(pair->master);
-  c.sim = std::make_shared<SimCnc>(s.io(), *c.link, SimCncConfig{});
-  c.sim->start();
-  ServerMachine m = with != nullptr ? *with : ServerMachine{};
-  const ServerMachine pty = pty_machine("mill-1", pair->slave_path, 115200);
-  m.link = pty.link;
-  m.link.receive_idle = 0.2;
+// A server with `mill-1` on a pty (its punches end after 0.2 s of silence)
+// and the MTConnect adapter.
+Control start_mill(RunningServer& s, const ServerMachine* with = nullptr) {
   ServerConfig config;
-  config.machines.push_back(m);
   config.mtconnect.enabled = true;
   config.mtconnect.listen = "127.0.0.1:0";
-  s.start(config);
-  return c;
-}
-
-// The machine once `ready` holds (polled as a client would), or after 30 s.
-template <typename F>
-nlohmann::json machine_when(const ApiClient& c, const std::string& token, F ready) {
-  nlohmann::json m;
-  for (int i = 0; i < 600; ++i) {
-    m = c.get("/api/machines/mill-1", token).json();
-    if (ready(m)) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  return m;
+  return start_punching_mill(s, with != nullptr ? *with : ServerMachine{}, config);
 }
 
 bool idle(const nlohmann::json& m) {

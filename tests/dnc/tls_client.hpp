@@ -41,12 +41,12 @@ inline ssl::context client_context(const std::string& ca_file) {
   return ctx;
 }
 
-class TlsClient {
+class TlsClient : public ApiVerbs<TlsClient> {
  public:
   TlsClient(unsigned short port, std::string ca_file) : port_(port), ca_(std::move(ca_file)) {}
 
   Reply call(bhttp::verb method, const std::string& target, const std::string& body = "",
-             const std::string& token = "") {
+             const std::string& token = "") const {
     boost::asio::io_context io;
     ssl::context ctx = client_context(ca_);
     beast::ssl_stream<beast::tcp_stream> stream(io, ctx);
@@ -54,34 +54,10 @@ class TlsClient {
         boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), port_));
     stream.handshake(ssl::stream_base::client);
     version = SSL_version(stream.native_handle());
-    bhttp::request<bhttp::string_body> req{method, target, 11};
-    req.set(bhttp::field::host, "127.0.0.1");
-    if (!token.empty()) req.set(bhttp::field::authorization, "Bearer " + token);
-    if (!body.empty()) req.set(bhttp::field::content_type, "application/json");
-    req.body() = body;
-    req.prepare_payload();
-    bhttp::write(stream, req);
-    beast::flat_buffer buffer;
-    bhttp::response<bhttp::string_body> res;
-    bhttp::read(stream, buffer, res);
-    return Reply{static_cast<int>(res.result_int()), res.body(), ""};
+    return round_trip(stream, api_request(method, target, body, token));
   }
 
-  Reply get(const std::string& target, const std::string& token = "") {
-    return call(bhttp::verb::get, target, "", token);
-  }
-
-  Reply post(const std::string& target, const nlohmann::json& body, const std::string& token = "") {
-    return call(bhttp::verb::post, target, body.dump(), token);
-  }
-
-  std::string log_in(const std::string& user, const std::string& password) {
-    const Reply r = post("/api/login", {{"user", user}, {"password", password}});
-    const auto j = r.json();
-    return r.status == 200 && j.contains("token") ? j["token"].get<std::string>() : "";
-  }
-
-  int version = 0;  // the last connection's TLS version (SSL_version)
+  mutable int version = 0;  // the last connection's TLS version (SSL_version)
 
  private:
   unsigned short port_;
