@@ -178,9 +178,15 @@ void Sender::pump() {
     wait_until(now + kDsrPoll);
     return;
   }
-  const std::optional<std::size_t> queued = link_.output_queue();
   const std::size_t rest = staged_.size() - staged_at_;
   const std::size_t want = std::min<std::size_t>(rest, std::max<std::size_t>(1, options_.skid / 2));
+  // The wire model first: while it has no room the link's own count (a
+  // system call each time, 256 machines × 720 a second) cannot give more.
+  if (pacer_.room(now, std::nullopt) < want) {
+    wait_until(pacer_.ready_at(want, now, std::nullopt));
+    return;
+  }
+  const std::optional<std::size_t> queued = link_.output_queue();
   const std::size_t room = pacer_.room(now, queued);
   if (room < want) {
     wait_until(pacer_.ready_at(want, now, queued));
