@@ -47,16 +47,6 @@ const sim::MachineProfile* profile_for(const ApiCall& c, const Upload& up) {
 
 }  // namespace
 
-HttpResponse api_list_programs(ApiCall& c) {
-  auto programs = list_programs(c.ctx.store);
-  if (!programs) return store_failure(c, programs.error());
-  nlohmann::json out = nlohmann::json::array();
-  for (const Program& p : *programs) {
-    out.push_back({{"name", p.name}, {"machine_class", p.machine_class}, {"dialect", p.dialect}});
-  }
-  return json_response(c.req, http::status::ok, {{"programs", std::move(out)}});
-}
-
 HttpResponse api_upload(ApiCall& c) {
   auto up = read_upload(c.req);
   if (!up) return bad(c, up.error());

@@ -251,6 +251,25 @@ export async function libraryFlow(page, h, t) {
   await page.getByRole('button', { name: 'Previous page' }).click();
   t.check((await page.locator('#library-page').innerText()) === 'Page 1 of 2' && (await rows()) === 50, 'the previous page: the first 50 lathe programs');
   await page.getByLabel('Filter by machine class').selectOption('');
+  // Every lathe program is a draft; the ROMI ones went on along the states.
+  await page.getByLabel('Filter by state').selectOption('draft');
+  const drafts = await page.locator('#library-count').innerText();
+  const draftRows = Number(drafts.match(/^(\d+) of/)[1]);
+  const listed = await h.api('boss', 'GET', '/api/programs?state=draft');
+  t.check(draftRows >= 60 && draftRows === listed.json.total, `the state filter leaves the programs whose newest revision is a draft (${drafts}; the server counts ${listed.json.total})`);
+  // L000 released through the API: the list is read when the page opens.
+  const l000 = (await h.api('boss', 'GET', '/api/programs/L000')).json.revisions[0].revision;
+  for (const state of ['checked', 'approved', 'released']) {
+    const moved = await h.api('boss', 'POST', `/api/programs/L000/revisions/${l000}/state`, { state, reason: 'e2e' });
+    if (moved.status !== 200) throw new Error(`L000 to ${state}: ${moved.status}`);
+  }
+  await page.getByRole('link', { name: 'Machines' }).click();
+  await page.getByRole('link', { name: 'Library' }).click();
+  await page.getByLabel('Filter by state').selectOption('has a released revision');
+  const released = await h.api('boss', 'GET', '/api/programs?released=1');
+  const shown = await page.locator('#library-count').innerText();
+  t.check(released.json.total >= 1 && (await page.getByRole('link', { name: 'L000' }).count()) === 1 && new RegExp(`^${released.json.total} of ${total} programs$`).test(shown), `the released filter (${shown}; the server counts ${released.json.total})`);
+  await page.getByLabel('Filter by state').selectOption('');
   await t.shot(page, 'web-library.png');
 }
 

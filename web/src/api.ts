@@ -39,6 +39,9 @@ export interface ProgramSummary {
   name: string;
   machine_class: string;
   dialect: string;
+  // In the library's list (GET /api/programs), not in a program's own page.
+  newest_state?: string;
+  released_revision?: string | null;
 }
 
 export interface Program extends ProgramSummary {

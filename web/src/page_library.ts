@@ -4,6 +4,8 @@ import { field, h, show, status } from './dom';
 import { mayUpload, sessionUser } from './roles';
 
 const DIALECTS = ['rs274ngc', 'fanuc', 'grbl', 'romi'];
+const STATES = ['draft', 'checked', 'approved', 'released', 'rejected', 'check-failed'];
+const HAS_RELEASED = 'has a released revision';
 
 // Rows a page of the table shows: 10,000 programs arrive in one request
 // (about 0.7 MB of JSON), but only a page of them becomes rows.
@@ -24,7 +26,23 @@ export async function libraryPage(main: HTMLElement): Promise<void> {
 }
 
 function programRow(p: ProgramSummary): HTMLElement {
-  return h('tr', {}, h('td', {}, h('a', { href: `#/program/${enc(p.name)}`, text: p.name })), h('td', { text: p.machine_class || '—' }), h('td', { text: p.dialect }));
+  const state = p.newest_state ?? '';
+  const released = p.released_revision && state !== 'released' ? ' (one released)' : '';
+  return h(
+    'tr',
+    {},
+    h('td', {}, h('a', { href: `#/program/${enc(p.name)}`, text: p.name })),
+    h('td', { text: p.machine_class || '—' }),
+    h('td', { text: p.dialect }),
+    h('td', { text: state + released }),
+  );
+}
+
+// The state filter: the newest revision's state, or a released revision anywhere.
+function stateMatches(p: ProgramSummary, wanted: string): boolean {
+  if (!wanted) return true;
+  if (wanted === HAS_RELEASED) return !!p.released_revision;
+  return p.newest_state === wanted;
 }
 
 // The search, the filters, a page of the table and the pager.
@@ -32,6 +50,7 @@ function programsSection(all: ProgramSummary[]): HTMLElement {
   const search = h('input', { type: 'search', placeholder: 'O1234', autocomplete: 'off' });
   const classes = choices('every class', [...new Set(all.map((p) => p.machine_class))].sort());
   const dialects = choices('every dialect', [...new Set(all.map((p) => p.dialect))].sort());
+  const states = choices('every state', [...STATES, HAS_RELEASED]);
   const body = h('tbody');
   const count = status('library-count');
   const prev = h('button', { type: 'button', text: 'Previous page' });
@@ -40,7 +59,7 @@ function programsSection(all: ProgramSummary[]): HTMLElement {
   let page = 0;
   const render = () => {
     const q = search.value.trim().toLowerCase();
-    const rows = all.filter((p) => p.name.toLowerCase().includes(q) && (!classes.value || p.machine_class === classes.value) && (!dialects.value || p.dialect === dialects.value));
+    const rows = all.filter((p) => p.name.toLowerCase().includes(q) && (!classes.value || p.machine_class === classes.value) && (!dialects.value || p.dialect === dialects.value) && stateMatches(p, states.value));
     const pages = Math.max(1, Math.ceil(rows.length / PAGE));
     page = Math.min(page, pages - 1);
     body.replaceChildren(...rows.slice(page * PAGE, (page + 1) * PAGE).map(programRow));
@@ -56,15 +75,16 @@ function programsSection(all: ProgramSummary[]): HTMLElement {
   search.addEventListener('input', go(() => 0)); // a new filter starts at its first page
   classes.addEventListener('change', go(() => 0));
   dialects.addEventListener('change', go(() => 0));
+  states.addEventListener('change', go(() => 0));
   prev.addEventListener('click', go((at) => at - 1));
   next.addEventListener('click', go((at) => at + 1));
   render();
-  const table = h('table', { 'aria-label': 'Programs' }, h('thead', {}, h('tr', {}, ...['Name', 'Machine class', 'Dialect'].map((t) => h('th', { scope: 'col', text: t })))), body);
+  const table = h('table', { 'aria-label': 'Programs' }, h('thead', {}, h('tr', {}, ...['Name', 'Machine class', 'Dialect', 'State'].map((t) => h('th', { scope: 'col', text: t })))), body);
   return h(
     'section',
     { 'aria-labelledby': 'search-h' },
     h('h2', { id: 'search-h', text: 'Programs' }),
-    h('div', { class: 'filters' }, field('Search by name', search, 'library-search'), field('Filter by machine class', classes, 'library-class'), field('Filter by dialect', dialects, 'library-dialect')),
+    h('div', { class: 'filters' }, field('Search by name', search, 'library-search'), field('Filter by machine class', classes, 'library-class'), field('Filter by dialect', dialects, 'library-dialect'), field('Filter by state', states, 'library-state')),
     count,
     table,
     h('div', { class: 'pager', role: 'group', 'aria-label': 'Pages' }, prev, where, next),
