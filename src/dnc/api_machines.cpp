@@ -165,9 +165,16 @@ HttpResponse api_stop_job(ApiCall& c) {
   auto job = c.ctx.machines.job(*id);
   if (!job) return store_failure(c, job.error());
   MachineRuntime* m = c.ctx.machines.find(job->machine);
+  if (m != nullptr && job->state == "queued") {
+    // Not started: it leaves the queue now, with nothing sent.
+    auto cancelled = c.ctx.machines.cancel_queued(
+        *m, *id, fmt::format("stopped by {} before it started", c.actor().user), c.actor());
+    if (!cancelled) return store_failure(c, cancelled.error());
+    return json_response(c.req, http::status::ok, job_json(*cancelled));
+  }
   if (m == nullptr || !m->current || m->current->id != *id) {
     return error_response(c.req, http::status::conflict,
-                          fmt::format("job {} is {}, not running", *id, job->state));
+                          fmt::format("job {} is {}, not running or queued", *id, job->state));
   }
   m->station->stop_job(fmt::format("stopped by {}", c.actor().user));
   return json_response(c.req, http::status::accepted, job_json(*job));

@@ -1,4 +1,6 @@
 // Machines' jobs: what a machine may take, the queue, a job's start and end.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "dnc/program_source.hpp"
@@ -103,6 +105,24 @@ void Machines::start_next(MachineRuntime& m) {
     m.queue.pop_front();
     if (job) launch(m, *job);
   }
+}
+
+StoreResult<JobRecord> Machines::cancel_queued(MachineRuntime& m, std::int64_t id,
+                                               const std::string& reason, const Actor& actor) {
+  const auto at = std::find(m.queue.begin(), m.queue.end(), id);
+  if (at == m.queue.end())
+    return store_error(StoreErrorKind::Conflict,
+                       fmt::format("job {} is not queued on {}", id, m.config.link.name));
+  auto job = find_job(store_, id);
+  if (!job) return job;
+  m.queue.erase(at);
+  restarts_.erase(id);
+  job->state = "interrupted";
+  job->reason = reason;
+  job->ended_at_us = store_.now_us();
+  save(*job, actor);
+  publish_job(*job);
+  return job;
 }
 
 void Machines::fail_job(JobRecord job, const std::string& reason) {

@@ -85,6 +85,10 @@ class Machines {
   StoreResult<void> may_take(const MachineRuntime& m, const JobOrder& order);
   // The job as stored, with the running job's live progress.
   StoreResult<JobRecord> job(std::int64_t id);
+  // Takes a queued job off its machine's queue: it ends interrupted with
+  // `reason`, nothing of it sent. Refused when the job is not queued there.
+  StoreResult<JobRecord> cancel_queued(MachineRuntime& m, std::int64_t id,
+                                       const std::string& reason, const Actor& actor);
 
  private:
   StationEvents station_events(MachineRuntime& m);
