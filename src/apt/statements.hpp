@@ -84,9 +84,10 @@ class StatementRunner {
   double cutter_radius_ = 0.0;
   double intol_ = 0.0;  // IBM's defaults: INTOL 0, OUTTOL .0005
   double outtol_ = 0.0005;
-  double ps_z_ = 0.0;        // the part surface, a horizontal plane (the XY plane at first)
-  bool nops_ = false;        // NOPS: the next GO/ keeps the tool's z
-  std::optional<Vec2> fwd_;  // the sense of direction: the last motion's, unit
+  double ps_z_ = 0.0;           // the part surface, a horizontal plane (the XY plane at first)
+  bool nops_ = false;           // NOPS: the next GO/ keeps the tool's z
+  std::optional<Vec2> fwd_;     // the sense of direction: the last motion's, unit
+  std::size_t arc_points_ = 0;  // the points written on circles so far
 
   core::DiagnosticSink& diags_;
   AptResult& out_;

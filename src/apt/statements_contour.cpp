@@ -2,6 +2,7 @@
 // check surface (GOLFT, GORGT, GOFWD, GOBACK), the modal words that steer
 // them (TLLFT, TLRGT, TLON, PSIS, NOPS, AUTOPS, INDIRV, INDIRP) and the
 // implicit check surface, taken from the next motion's drive surface.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,6 +14,9 @@ namespace {
 // At most this many points in one circular motion (a tolerance of 1e-9 on
 // a large circle would otherwise write millions).
 constexpr std::size_t kMostArcPoints = 100'000;
+// ... and this many in a whole program (the CL model holds them all: a
+// million points is about 150 MB).
+constexpr std::size_t kMostProgramArcPoints = 1'000'000;
 // IBM's processor widens the drive surface's tolerance band by 0.00005
 // when the tool's place in the band computes outside 0-100 % (its ARLM2),
 // and narrows it back for TANTO (its ASEGMT). On a concave circle with
@@ -237,8 +241,18 @@ bool StatementRunner::run_drive(const Drive& d) {
   if (path->circle) {
     const bool convex = path->rho > ds->round.r;
     const double widen = !convex && intol_ == 0.0 && d.stop != Stop::Tanto ? kIbmWiden : 0.0;
-    auto seg = segment_arc(*path, te, *end, intol_, outtol_, convex, widen, kMostArcPoints, why);
-    if (!seg) return fail(word.loc, core::Code::AptNoSolution, word.text + ": " + why);
+    const std::size_t left = kMostProgramArcPoints - arc_points_;
+    auto seg = segment_arc(*path, te, *end, intol_, outtol_, convex, widen,
+                           std::min(kMostArcPoints, left), why);
+    if (!seg)
+      return fail(word.loc, core::Code::AptNoSolution,
+                  word.text + ": " + why +
+                      (left < kMostArcPoints
+                           ? " (the program's circles have used " + std::to_string(arc_points_) +
+                                 " of the " + std::to_string(kMostProgramArcPoints) +
+                                 " points a program may write)"
+                           : std::string()));
+    arc_points_ += seg->size();
     points = std::move(*seg);
   }
   points.push_back(*end);

@@ -137,15 +137,20 @@ TEST(AptContour, CircleMotionWritesTheCircleThenItsPoints) {
   }
 }
 
+Path ccw_circle(core::Vec2 c, double rho) {
+  Path p;
+  p.circle = true;
+  p.c = c;
+  p.rho = rho;
+  p.sense = 1;
+  return p;
+}
+
 TEST(AptSegments, HalfStepsRoundedUpToEvenOnTheBandsOuterRadius) {
   // ρ = 2 counter-clockwise a quarter turn, OUTTOL .01: half step
   // acos(2/2.01) = 5.7154°, 90/5.7154 = 15.7 → 16 half steps, 8 points on
   // r = 2.01 at 5.625°, 16.875°, ...
-  Path p;
-  p.circle = true;
-  p.c = {0, 0};
-  p.rho = 2;
-  p.sense = 1;
+  const Path p = ccw_circle({0, 0}, 2);
   std::string why;
   const auto pts = segment_arc(p, {2, 0}, {0, 2}, 0.0, 0.01, true, 0.0, 1000, why);
   ASSERT_TRUE(pts) << why;
@@ -159,11 +164,7 @@ TEST(AptSegments, HalfStepsRoundedUpToEvenOnTheBandsOuterRadius) {
 TEST(AptSegments, ConcaveBandWidenedAsIbmDoes) {
   // Ex 10.1's C2: ρ 2.875 inside the circle, OUTTOL .005: IBM writes 14
   // points on ρ (the band 0.00505), not 15.
-  Path p;
-  p.circle = true;
-  p.c = {14, 2};
-  p.rho = 2.875;
-  p.sense = 1;
+  const Path p = ccw_circle({14, 2}, 2.875);
   std::string why;
   const core::Vec2 te{14.125, 2 + std::sqrt(2.875 * 2.875 - 0.125 * 0.125)};
   const core::Vec2 end{14 - std::sqrt(2.875 * 2.875 - 0.125 * 0.125), 1.875};
@@ -223,6 +224,26 @@ TEST(AptContourErrors, AfterAFailedMotionTheStartIsUnknownUntilAGoto) {
   ASSERT_EQ(r.diags.error_count(), 2);
   EXPECT_NE(r.diags.all()[1].message.find("start is unknown"), std::string::npos);
   expect_at(end_of(r, 9), -1, 4, 0);
+}
+
+}  // namespace
+}  // namespace usina::apt::test
+
+namespace usina::apt::test {
+namespace {
+
+TEST(AptContourErrors, AProgramsCirclesWriteAtMostAMillionPoints) {
+  // Each quarter turn about a circle of radius 1000 within OUTTOL 4e-8
+  // writes about 88,000 points: the twelfth passes the program's million.
+  std::string text =
+      "C=CIRCLE/0,0,1000\nLX=LINE/0,0,10,0\nLY=LINE/0,0,0,10\nCUTTER/2\nOUTTOL/4E-8\n";
+  for (int i = 0; i < 12; ++i)
+    text += "FROM/0,-2000,0\nGO/TO,C\nTLLFT,GOLFT/C,TO,LX\n";
+  const AptRun r = run(text + "FINI\n");
+  ASSERT_EQ(r.diags.error_count(), 1);
+  EXPECT_EQ(r.diags.all()[0].loc.line, 6u + 3 * 11 + 2);
+  EXPECT_NE(r.diags.all()[0].message.find("points a program may write"), std::string::npos)
+      << r.diags.all()[0].message;
 }
 
 }  // namespace

@@ -163,9 +163,13 @@ APT = {
     "continuation": lambda n: "GOTO/1" + repeat_to(",$\n1", n) + "\nFINI\n",
     # A program of 1 MB.
     "program": apt_program,
+    # 1 MB of contouring: a startup, a line to a circle, the circle to a line.
+    "contour": lambda n: "L1=LINE/0,0,0,10\nL2=LINE/0,5,10,5\nC=CIRCLE/-3,5,3\nCUTTER/2\n"
+    + repeat_to("GOTO/-5,-5,0\nGO/TO,L1\nTLLFT,GOLFT/L1,TANTO,C\nGOFWD/C,PAST,L2\n", n) + "FINI\n",
 }
 APT_SIZES = {"statement": 200_000, "comment": 100_000, "nesting": 20_000,
-             "continuation": 200_000, "program": 1_000_000}
+             "continuation": 200_000, "program": 1_000_000,
+             "contour": 1_000_000}
 
 TARGETS = {
     "parser": (ngc_families(), SIZES, "ngc"),
