@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 namespace usina::apt {
 namespace {
 
@@ -184,8 +186,8 @@ std::optional<Path> drive_path(const Curve& ds, Vec2 te, Vec2 fwd, Turn turn, in
     const Vec2 left{-p.t.y, p.t.x};
     const double off = signed_distance(ds, te) * dot(ds.line.n, left);
     if (std::fabs(off - side * r) > tol) {
-      why = "the tool is " + std::to_string(off) + " to the left of the drive line, not " +
-            std::to_string(side * r) + " (the cutter's side and radius): position it first";
+      why = "the tool is " + fmt::format("{:g}", off) + " to the left of the drive line, not " +
+            fmt::format("{:g}", side * r) + " (the cutter's side and radius): position it first";
       return std::nullopt;
     }
     return p;
@@ -196,8 +198,9 @@ std::optional<Path> drive_path(const Curve& ds, Vec2 te, Vec2 fwd, Turn turn, in
   p.rho = norm(te - p.c);
   const double want = ds.round.r - side * r * k;
   if (want <= 0.0 || std::fabs(p.rho - want) > tol) {
-    why = "the tool is " + std::to_string(p.rho) + " from the drive circle's centre, not " +
-          std::to_string(want) + " (the circle's radius and the cutter's side): position it first";
+    why = "the tool is " + fmt::format("{:g}", p.rho) + " from the drive circle's centre, not " +
+          fmt::format("{:g}", want) +
+          " (the circle's radius and the cutter's side): position it first";
     return std::nullopt;
   }
   return p;
@@ -315,9 +318,15 @@ std::optional<std::vector<Vec2>> segment_arc(const Path& path, Vec2 te, Vec2 end
   // Half steps, rounded up, then up to even: the first and last steps are
   // half steps, the ends lying on the path and not on the band's edge.
   const double steps = std::floor(sweep / half) + 1.0;
+  if (!std::isfinite(steps)) {
+    why = "the circle's numbers are out of range";
+    return std::nullopt;
+  }
   if (steps / 2.0 > static_cast<double>(most)) {
-    why = "the tolerance would take " + std::to_string(static_cast<long long>(steps / 2.0)) +
-          " points on the circle (at most " + std::to_string(most) + "): raise OUTTOL";
+    why = fmt::format(
+        "the tolerance would take {:.0f} points on the circle (at most {}): raise "
+        "OUTTOL",
+        steps / 2.0, most);
     return std::nullopt;
   }
   auto n = static_cast<long long>(steps);

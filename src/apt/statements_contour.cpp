@@ -59,6 +59,14 @@ std::optional<double> horizontal_z(const Geom& g) {
   return c[3] / c[2];
 }
 
+// Whether every point is a finite number (huge coordinates, radii or
+// cutters overflow in the offsets).
+bool all_finite(const std::vector<Vec2>& points, double z) {
+  for (const Vec2& p : points)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
+  return std::isfinite(z);
+}
+
 ClWord name_word(const Arg& a) {
   return a.name.empty() ? ClWord::number(0.0) : symbol_word(a.name);
 }
@@ -168,8 +176,11 @@ bool StatementRunner::startup(const Token& word, const std::vector<Arg>& args) {
       cs ? startup_two(*ds, surfaces[0].first, *cs, surfaces[2].first, te, cutter_radius_, why)
          : startup_one(*ds, te, surfaces[0].first, cutter_radius_, why);
   if (!xy) return fail(word.loc, core::Code::AptNoSolution, "GO: " + why);
-  if (ps) ps_z_ = *ps;
-  const double z = nops_ ? at_.z : ps_z_;
+  const double part_z = ps.value_or(ps_z_);
+  const double z = nops_ ? at_.z : part_z;
+  if (!all_finite({*xy}, z))
+    return fail(word.loc, core::Code::AptNoSolution, "GO: the numbers overflow (out of range)");
+  ps_z_ = part_z;
   nops_ = false;
   if (feed) add(cls::kPost, 1009, {ClWord::number(*feed)});
   write_points(surfaces[0].second, {*xy}, z);
@@ -256,6 +267,9 @@ bool StatementRunner::run_drive(const Drive& d) {
     points = std::move(*seg);
   }
   points.push_back(*end);
+  if (!all_finite(points, ps_z_))
+    return fail(word.loc, core::Code::AptNoSolution,
+                word.text + ": the numbers overflow (out of range)");
   if (d.feed) add(cls::kPost, 1009, {ClWord::number(*d.feed)});
   if (path->circle) {
     std::vector<ClWord> w{ClWord::number(0.0), ClWord::vocabulary(4), ClWord::vocabulary(9),

@@ -217,6 +217,16 @@ TEST(AptContourErrors, WhatCannotRunSaysWhy) {
   EXPECT_TRUE(said);
 }
 
+TEST(AptContourErrors, OverflowIsAnErrorNotAnInfinitePoint) {
+  // PAST a circle of radius 1.5e308 from inside with a cutter of radius
+  // 5e307: the offset radius overflows.
+  const AptRun r = run("C=CIRCLE/0,0,1.5E308\nCUTTER/1E308\nFROM/1,0,0\nGO/PAST,C\nFINI\n");
+  ASSERT_EQ(r.diags.error_count(), 1);
+  EXPECT_EQ(r.diags.all()[0].code, core::Code::AptNoSolution);
+  EXPECT_NE(r.diags.all()[0].message.find("overflow"), std::string::npos);
+  EXPECT_TRUE(points_of(r, 4).empty());
+}
+
 TEST(AptContourErrors, AfterAFailedMotionTheStartIsUnknownUntilAGoto) {
   const AptRun r = run(std::string(kLines) +
                        "GO/TO,L1\nTLLFT,GOLFT/L1,TO,(LINE/5,0,5,10)\nGOLFT/L2,TO,L1\n"
