@@ -30,6 +30,7 @@ jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
 targets=(parser interpreter romi fanuc grbl dxf remote_request)
+targets+=(apt)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
@@ -39,6 +40,8 @@ cam_targets=" dxf "
 # The targets of what a control punches link the dnc module's tape and
 # request files (no event loop, no Boost).
 dnc_targets=" remote_request "
+# The targets of APT part programs link the apt module (core and canon under it).
+apt_targets=" apt "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -53,6 +56,7 @@ mapfile -t gcode_sources < <(cd "$root" &&
   find src/gcode -name '*.cpp' | { if [[ -n "$exclude" ]]; then grep -Ev "$exclude"; else cat; fi; } | sort)
 mapfile -t cam_sources < <(cd "$root" && ls src/cam/*.cpp | sort)
 dnc_sources=(src/dnc/tape_code.cpp src/dnc/tape_reader.cpp src/dnc/remote_request.cpp)
+mapfile -t apt_sources < <(cd "$root" && ls src/apt/*.cpp | sort)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
@@ -72,6 +76,9 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
   for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}" "${dnc_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
+  for s in "${apt_sources[@]}"; do
+    echo "build obj/${s%.cpp}.o: cxx $root/$s"
+  done
   for t in "${targets[@]}"; do
     if [[ "$dialects" == *" $t "* ]]; then
       echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_dialect.cpp"
@@ -84,6 +91,8 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
     elif [[ "$cam_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}")"
       echo "  libs = $cam_libs"
+    elif [[ "$apt_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${apt_sources[@]}")"
     else
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${gcode_sources[@]}")"
     fi

@@ -124,6 +124,7 @@ void Processor::assignment(const std::vector<Token>& t, std::size_t i) {
 }
 
 void Processor::finish(const core::SourceLoc& last) {
+  run_.end_of_program();
   if (ended_) return;
   diags_.report({core::Code::AptNoFini, core::Severity::Warning, last,
                  "the program has no FINI; its end is taken as FINI"});

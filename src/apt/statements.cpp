@@ -6,7 +6,8 @@
 namespace usina::apt {
 namespace {
 
-// Motion words of the contouring part of the arithmetic (not in this slice).
+// Motion words of the contouring part of the arithmetic, and the words that
+// set its part surface and direction (statements_contour.cpp).
 bool is_contour_word(std::string_view w) {
   return w == "GO" || w == "GOLFT" || w == "GORGT" || w == "GOFWD" || w == "GOBACK" ||
          w == "GOUP" || w == "GODOWN" || w == "PSIS" || w == "INDIRV" || w == "INDIRP";
@@ -49,6 +50,7 @@ void StatementRunner::commit(int isn, const core::SourceLoc& loc) {
 void StatementRunner::text(const std::string& word, const std::string& text, int isn,
                            const core::SourceLoc& loc) {
   if (word == "REMARK") return;
+  if (deferred_) resolve_deferred(Token{TokKind::Word, word, 0.0, 0, loc}, {});
   add(cls::kPost, *post_word_code(word), text_words(text, 11));
   writes_ = true;
   commit(isn, loc);
@@ -88,9 +90,20 @@ void StatementRunner::words(const std::vector<Token>& t, std::size_t i, int isn,
   }
   pending_.clear();
   writes_ = false;
+  if (deferred_) resolve_deferred(major_word, args);
+  defer_now_ = false;
   if (!modifiers(ws, major_word) || !major(major_word, args)) {
-    if (is_contour_word(major_word.text)) lost_at_ = static_cast<int>(loc.line);
+    if (major_word.text.rfind("GO", 0) == 0 && is_contour_word(major_word.text))
+      lost_at_ = static_cast<int>(loc.line);
     pending_.clear();
+    return;
+  }
+  if (defer_now_) {  // waits for the next statement's drive surface
+    deferred_->records = std::move(pending_);
+    deferred_->isn = isn;
+    deferred_->loc = loc;
+    pending_.clear();
+    writes_ = false;
     return;
   }
   commit(isn, loc);
@@ -102,11 +115,11 @@ bool StatementRunner::modifiers(const std::vector<Token>& mods, const Token& maj
       add(cls::kPost, 5, {});
       continue;
     }
-    const bool contour = is_modal_word(m.text) || is_contour_word(major_word.text);
-    return fail(m.loc, contour ? core::Code::AptNotSupported : core::Code::AptSyntax,
-                contour ? "usina's APT does not run " + m.text + ", " + major_word.text +
-                              " yet (contouring is not built)"
-                        : m.text + " cannot stand before " + major_word.text);
+    if (is_modal_word(m.text) && is_contour_word(major_word.text)) {
+      if (!modal(m.text, {}, m.loc)) return false;
+      continue;
+    }
+    return fail(m.loc, core::Code::AptSyntax, m.text + " cannot stand before " + major_word.text);
   }
   return true;
 }
@@ -121,17 +134,14 @@ bool StatementRunner::major(const Token& word, const std::vector<Arg>& args) {
     writes_ = false;
     return true;
   }
-  if (is_modal_word(w))
-    return args.empty() || fail(word.loc, core::Code::AptBadArgument, w + " takes no arguments");
+  if (is_modal_word(w)) return modal(w, args, word.loc);
   if (w == "FINI") {
     add(cls::kFini, 0, {});
     finished_ = true;
     return true;
   }
   if (const auto code = post_word_code(w)) return post(word, *code, args);
-  if (is_contour_word(w))
-    return fail(word.loc, core::Code::AptNotSupported,
-                "usina's APT does not run " + w + " yet (contouring is not built)");
+  if (is_contour_word(w)) return contour(word, args);
   return fail(word.loc, core::Code::AptNotSupported,
               "usina's APT does not run " + w + " (not a statement it knows)");
 }

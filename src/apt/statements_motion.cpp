@@ -1,6 +1,7 @@
 // FROM, GOTO, GODLTA, CUTTER, INTOL/OUTTOL, ZSURF and the post-processor
 // words: their CL records.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "apt/statements.hpp"
@@ -37,8 +38,12 @@ bool StatementRunner::motion(const Token& word, const std::vector<Arg>& args) {
     p = {args[0].num, args[1].num, args.size() == 3 ? args[2].num : zsurf_};
   }
   const bool named = point && !args[0].name.empty();
-  at_ = p;
-  lost_at_ = 0;
+  if (word.text == "FROM") {
+    at_ = p;
+    lost_at_ = 0;
+  } else {
+    turned(p);
+  }
   add(cls::kMotion, word.text == "FROM" ? 3 : 5,
       {named ? symbol_word(args[0].name) : ClWord::number(0.0), ClWord::number(0.0),
        ClWord::number(p.x), ClWord::number(p.y), ClWord::number(p.z)});
@@ -55,8 +60,8 @@ bool StatementRunner::godlta(const Token& word, const std::vector<Arg>& args) {
                     ", which usina's APT did not run; the start is unknown");
   // One number moves along the tool axis; IBM names the record TLAXIS.
   const bool axial = args.size() == 1;
-  at_ = axial ? at_ + core::Vec3{0.0, 0.0, args[0].num}
-              : at_ + core::Vec3{args[0].num, args[1].num, args[2].num};
+  turned(axial ? at_ + core::Vec3{0.0, 0.0, args[0].num}
+               : at_ + core::Vec3{args[0].num, args[1].num, args[2].num});
   add(cls::kMotion, 5,
       {axial ? symbol_word("TLAXIS") : ClWord::number(0.0), ClWord::number(0.0),
        ClWord::number(at_.x), ClWord::number(at_.y), ClWord::number(at_.z)});
@@ -90,6 +95,11 @@ bool StatementRunner::control(const Token& word, const std::vector<Arg>& args) {
   // A tolerance is given for PS, DS, CS1, CS2: the last one given stands for the rest.
   while (w != "CUTTER" && out.size() < 4)
     out.push_back(out.back());
+  // The drive surface's values steer contouring: the radius of the
+  // cutter, the tolerances' second value (PS, DS, CS1, CS2).
+  if (w == "CUTTER") cutter_radius_ = std::fabs(args[0].num) / 2.0;
+  if (w == "INTOL") intol_ = std::fabs(out[1].real);
+  if (w == "OUTTOL") outtol_ = std::fabs(out[1].real);
   add(cls::kControl, w == "CUTTER" ? 6 : (w == "INTOL" ? 4 : 5), std::move(out));
   return true;
 }

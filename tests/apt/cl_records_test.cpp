@@ -58,11 +58,14 @@ TEST(AptCl, FromGotoGodlta) {
             "10 1000 6 2 0 ''\n11 14000 0 0 \n");
 }
 
-TEST(AptCl, ContouringSaysItIsNotBuilt) {
+TEST(AptCl, MotionWithoutCheckSurfaceAtTheEndIsAnError) {
+  // GOLFT/L1 takes its check surface from the next motion; there is none.
   const AptRun r = run("L1=LINE/0,0,1,0\nFROM/0,0,0\nTLLFT,GOLFT/L1\nGODLTA/1\nFINI\n");
   ASSERT_EQ(r.diags.error_count(), 2);
-  EXPECT_EQ(r.diags.all()[0].code, core::Code::AptNotSupported);
-  EXPECT_NE(r.diags.all()[0].message.find("does not run TLLFT, GOLFT yet"), std::string::npos);
+  EXPECT_EQ(r.diags.all()[0].code, core::Code::AptBadArgument);
+  EXPECT_EQ(r.diags.all()[0].loc.line, 3u);
+  EXPECT_NE(r.diags.all()[0].message.find("has no check surface"), std::string::npos);
+  // GODLTA then moves from an unknown place.
   EXPECT_NE(r.diags.all()[1].message.find("start is unknown"), std::string::npos);
 }
 

@@ -1,5 +1,6 @@
 // The programs of tests/programs/apt and their tool paths, checked by hand
 // in that folder's README.
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -51,6 +52,35 @@ TEST(AptPrograms, GrooverDrillingPath) {
     EXPECT_EQ(m.points[i].first, want[i].first) << "move " << i;
     EXPECT_EQ(m.points[i].second, want[i].second) << "move " << i;
   }
+}
+
+TEST(AptPrograms, GrooverContourPath) {
+  const AptRun r = run(program("groover_contour.apt"));
+  EXPECT_EQ(r.diags.all().size(), 0u);
+  Moves m;
+  to_canon(r.result.records, 1.0, m);
+  // The corners worked by hand in the README (the arc's points between
+  // (170,60) and (130,100) are checked by their distance to (130,60)).
+  const std::vector<core::Vec3> corners = {
+      {-50, -50, 0}, {-3.8888889, -10, 0}, {170, -10, 0},         {170, 60, 0},
+      {130, 100, 0}, {28.1593289, 100, 0}, {-14.6184488, -10, 0}, {-50, -50, 0}};
+  ASSERT_GT(m.points.size(), corners.size());
+  std::size_t k = 0;
+  for (const auto& [p, rapid] : m.points) {
+    const bool corner = k < corners.size() && std::fabs(p.x - corners[k].x) < 1e-6 &&
+                        std::fabs(p.y - corners[k].y) < 1e-6;
+    if (corner) {
+      ++k;
+      continue;
+    }
+    // Between (170,60) and (130,100): on the arc about C1's centre, 40
+    // from it within OUTTOL (.05), never nearer.
+    EXPECT_EQ(k, 4u) << "a point off the contour: " << p.x << "," << p.y;
+    const double d = std::hypot(p.x - 130, p.y - 60);
+    EXPECT_GE(d, 40 - 1e-9);
+    EXPECT_LE(d, 40.05 + 1e-9);
+  }
+  EXPECT_EQ(k, corners.size());
 }
 
 }  // namespace

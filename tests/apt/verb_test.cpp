@@ -26,7 +26,7 @@ TEST(AptVerb, ErrorsGiveStatus1WithEveryErrorAtItsLine) {
   EXPECT_NE(r.err.find("p.apt:1:4: error: division by zero [E_APT_ARITHMETIC]"), std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("p.apt:2:6: error"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("does not run GOFWD yet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("p.apt:4:1: error: GOFWD has no check surface"), std::string::npos) << r.err;
 }
 
 TEST(AptVerb, JsonlIsTheCanonTrace) {

@@ -135,6 +135,42 @@ REQUEST = {
 }
 REQUEST_SIZES = {"comment": 200_000, "program": 1_000_000, "label": 100_000}
 
+
+# --- APT part programs ----------------------------------------------------------
+
+
+def apt_program(n):
+    """Geometry, scalars and motion, one statement a line, to about n bytes."""
+    out = ["PARTNO LONG\nCUTTER/0.5\nFROM/0,0,0\n"]
+    size = len(out[0])
+    i = 0
+    while size < n:
+        out.append("P%d=POINT/%d,%d,0\nL%d=LINE/P%d,ATANGL,%d\nA%d=SQRTF(%d)+%d*2\nGOTO/P%d\n"
+                   % (i, i % 97, i % 89, i, i, i % 360, i, i, i % 7, i))
+        size += len(out[-1])
+        i += 1
+    return "".join(out) + "FINI\n"
+
+
+APT = {
+    # One statement of 200 KB: an expression of many terms.
+    "statement": lambda n: "A=" + repeat_to("1+2*3-", n) + "1\nFINI\n",
+    # A comment of 100 KB after $$.
+    "comment": lambda n: "$$" + "c" * n + "\nFROM/0,0,0\nFINI\n",
+    # Parentheses nested 10,000 deep.
+    "nesting": lambda n: "A=" + "(" * (n // 2) + "1" + ")" * (n // 2) + "\nFINI\n",
+    # One statement continued over many lines with $.
+    "continuation": lambda n: "GOTO/1" + repeat_to(",$\n1", n) + "\nFINI\n",
+    # A program of 1 MB.
+    "program": apt_program,
+    # 1 MB of contouring: a startup, a line to a circle, the circle to a line.
+    "contour": lambda n: "L1=LINE/0,0,0,10\nL2=LINE/0,5,10,5\nC=CIRCLE/-3,5,3\nCUTTER/2\n"
+    + repeat_to("GOTO/-5,-5,0\nGO/TO,L1\nTLLFT,GOLFT/L1,TANTO,C\nGOFWD/C,PAST,L2\n", n) + "FINI\n",
+}
+APT_SIZES = {"statement": 200_000, "comment": 100_000, "nesting": 20_000,
+             "continuation": 200_000, "program": 1_000_000,
+             "contour": 1_000_000}
+
 TARGETS = {
     "parser": (ngc_families(), SIZES, "ngc"),
     "interpreter": (ngc_families(), SIZES, "ngc"),
@@ -143,6 +179,7 @@ TARGETS = {
     "grbl": (ngc_families(), SIZES, "gcode"),
     "dxf": (DXF, DXF_SIZES, "dxf"),
     "remote_request": (REQUEST, REQUEST_SIZES, "tape"),
+    "apt": (APT, APT_SIZES, "apt"),
 }
 
 

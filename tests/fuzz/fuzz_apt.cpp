@@ -1,0 +1,69 @@
+// libFuzzer target for the APT reader (issue 15): the input is a part
+// program read by apt::process as `usina apt` reads it (statements, symbols,
+// geometry, motion into CL records), then every writer of its result: the
+// record print (--format cldump), the canon stream (--format jsonl, into a
+// NullSink) and the canonical forms (--canonical). The first byte picks the
+// unit of the canon stream (bit 0: inches). Every diagnostic is rendered and
+// discarded. Any input must give records or diagnostics, never a crash, a
+// hang or a number that is not finite in the canon stream.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "apt/canon_out.hpp"
+#include "apt/geometry.hpp"
+#include "apt/processor.hpp"
+#include "canon/sink.hpp"
+#include "core/source.hpp"
+#include "render_and_discard.hpp"
+
+namespace {
+
+// Discards the canon stream after checking that each op's fields are finite:
+// a NaN reaching a post would be written to a part program.
+class FiniteSink final : public usina::canon::Sink {
+ public:
+  void on(const usina::canon::Op& op) override {
+    using namespace usina::canon;
+    if (const auto* t = std::get_if<Traverse>(&op.kind)) check(t->to);
+    if (const auto* f = std::get_if<Feed>(&op.kind)) {
+      check(f->to);
+      if (f->f && !std::isfinite(*f->f)) __builtin_trap();
+    }
+    if (const auto* a = std::get_if<Arc>(&op.kind)) {
+      check(a->to);
+      check(a->center);
+    }
+  }
+
+ private:
+  static void check(const usina::core::Vec3& v) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) __builtin_trap();
+  }
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace usina;
+  const std::uint8_t bits = size > 0 ? data[0] : 0;
+  core::SourceManager sources;
+  fuzz::RenderAndDiscard diags(sources);
+  std::string text(reinterpret_cast<const char*>(data), size);
+  const std::uint32_t id = sources.add(core::SourceFile::from_string("<fuzz>", std::move(text)));
+  const apt::AptResult result = apt::process(sources.get(id)->text(), id, diags);
+  const std::string print = apt::record_print(result.records);
+  (void)print;
+  for (const apt::Definition& d : result.definitions) {
+    for (std::size_t i = 0; i < apt::canon_size(d.geom.type); ++i) {
+      if (!std::isfinite(d.geom.c[i])) __builtin_trap();  // a canonical form not finite
+    }
+  }
+  FiniteSink sink;
+  apt::to_canon(result.records, (bits & 1u) != 0 ? 25.4 : 1.0, sink);
+  sink.finish();
+  return 0;
+}
