@@ -701,7 +701,7 @@ EXPLAIN = {
     # simulate: the stock model, its tools, its checks
     "E_STOCK_GRID_TOO_LARGE": (
         "`usina simulate`: the stock's height map would have more cells than usina allows "
-        "(2^28, about 268 million cells, 1 GiB of heights): the stock's width over the "
+        "(2^27, 134,217,728 cells, 640 MiB with their marks): the stock's width over the "
         "resolution times its length over the resolution is too large. The message gives "
         "both numbers.",
         "Give a coarser `--resolution` (cells are resolution x resolution mm) or a smaller "
