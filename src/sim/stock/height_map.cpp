@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -99,7 +100,27 @@ tl::expected<HeightMap, std::string> HeightMap::make(const StockBox& box, double
   m.bottom_ = box.origin.z - box.height;
   m.h_.assign(m.nx_ * m.ny_, 0.0f);
   m.mark_.assign(m.nx_ * m.ny_, kUncut);
+  m.tx_ = (m.nx_ + kTile - 1) / kTile;
+  m.ty_ = (m.ny_ + kTile - 1) / kTile;
+  m.tile_max_.assign(m.tx_ * m.ty_, 0.0f);
+  m.tile_dirty_.assign(m.tx_ * m.ty_, 0);
   return m;
+}
+
+float HeightMap::tile_max(std::size_t ti, std::size_t tj) {
+  const std::size_t k = tj * tx_ + ti;
+  if (tile_dirty_[k] != 0) {
+    float high = -std::numeric_limits<float>::infinity();
+    for (std::size_t j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j) {
+      const float* r = h_.data() + j * nx_;
+      for (std::size_t i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i) {
+        high = std::max(high, r[i]);
+      }
+    }
+    tile_max_[k] = high;
+    tile_dirty_[k] = 0;
+  }
+  return tile_max_[k];
 }
 
 void HeightMap::columns(double lo, double hi, std::size_t& first, std::size_t& last) const {

@@ -82,7 +82,23 @@ class HeightMap {
   // A cell's Z, mm.
   double z(std::size_t i, std::size_t j) const { return top_ + static_cast<double>(at(i, j)); }
 
+  // For the sweep, the one writer of heights: it calls touch() on the
+  // tiles whose cells it lowered.
   float* row(std::size_t j) { return h_.data() + j * nx_; }
+
+  // Tiles of kTile x kTile cells and the highest cell of each: a move whose
+  // lowest point over a tile is at or above it cannot cut there, and the
+  // sweep passes the whole tile over. Kept lazily: a tile touched is
+  // measured again when next asked.
+  static constexpr std::size_t kTile = 8;
+
+  std::size_t tiles_x() const { return tx_; }
+
+  std::size_t tiles_y() const { return ty_; }
+
+  float tile_max(std::size_t ti, std::size_t tj);
+
+  void touch(std::size_t ti, std::size_t tj) { tile_dirty_[tj * tx_ + ti] = 1; }
 
   std::uint8_t* mark_row(std::size_t j) { return mark_.data() + j * nx_; }
 
@@ -107,6 +123,9 @@ class HeightMap {
   double dx_ = 0.0, dy_ = 0.0, x0_ = 0.0, y0_ = 0.0, top_ = 0.0, bottom_ = 0.0;
   std::vector<float> h_;
   std::vector<std::uint8_t> mark_;
+  std::size_t tx_ = 0, ty_ = 0;
+  std::vector<float> tile_max_;
+  std::vector<std::uint8_t> tile_dirty_;
 };
 
 }  // namespace usina::sim::stock
