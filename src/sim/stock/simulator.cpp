@@ -79,24 +79,24 @@ void StockSimulator::tool_change(const canon::Op& op, const canon::ToolChange& t
       return;
     }
   }
-  ToolShape shape = options_.default_tool;
   const bool stream_has_diameter =
       t.diameter && *t.diameter > 0.0 && *t.diameter <= kMaxToolDiameter;
+  std::optional<ToolShape> shape;
   if (auto it = options_.tools.find(t.tool); it != options_.tools.end()) {
     shape = it->second;
-    if (shape.diameter <= 0.0 && stream_has_diameter) shape.diameter = *t.diameter;
+    if (shape->diameter <= 0.0 && stream_has_diameter) shape->diameter = *t.diameter;
   } else if (stream_has_diameter) {
-    shape.kind = ToolKind::Flat;
-    shape.diameter = *t.diameter;
+    shape = ToolShape{ToolKind::Flat, *t.diameter, 0.0, 118.0};
   }
-  if (!check_shape(shape)) {
+  if (!shape || !check_shape(*shape)) {
     shape = options_.default_tool;
     report(op, core::Code::SimToolDefaulted, core::Severity::Warning,
            fmt::format("tool {} has no diameter (no --tool-table, or not in it): it is "
-                       "simulated as the default tool, {}; give its diameter in the tool table",
-                       t.tool, shape_name(shape)));
+                       "simulated as the default tool, {}; give its diameter in the tool table "
+                       "or with --tool-shape {}=SHAPE/D",
+                       t.tool, shape_name(*shape), t.tool));
   }
-  tools_.push_back({t.tool, shape, 0.0});
+  tools_.push_back({t.tool, *shape, 0.0});
   slot_ = tools_.size() - 1;
 }
 

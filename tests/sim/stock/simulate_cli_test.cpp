@@ -15,9 +15,10 @@ namespace {
 
 nlohmann::json simulated(const TempDir& dir, const std::string& program, const std::string& extra) {
   const std::string report = dir.path("report.json");
-  const usina::test::Run r = usina("simulate " + quote(program) +
-                      " --stock box:40x30x10 --resolution 0.1 --tool-shape 1=flat/6 -o " +
-                      quote(report) + " " + extra);
+  const usina::test::Run r =
+      usina("simulate " + quote(program) +
+            " --stock box:40x30x10 --resolution 0.1 --tool-shape 1=flat/6 -o " + quote(report) +
+            " " + extra);
   EXPECT_EQ(r.status, 0) << r.err;
   return nlohmann::json::parse(dir.read("report.json"));
 }
@@ -46,10 +47,11 @@ TEST(SimulateCli, TheReportHasTheIssuesFields) {
   TempDir dir;
   const std::string program =
       dir.write("p.ngc", "T1 M6\nG0 X5 Y5 Z1\nG1 Z-1 F100\nG1 X35\nG0 X5 Y20 Z-0.5\nG0 Z5\nM30\n");
-  const usina::test::Run r = usina("simulate " + quote(program) +
-                      " --stock box:40x30x10 --resolution 0.1 --tool-shape 1=flat/6 -o " +
-                      quote(dir.path("r.json")) + " -o " + quote(dir.path("s.stl")) + " -o " +
-                      quote(dir.path("s.png")) + " --height-map " + quote(dir.path("h.png")));
+  const usina::test::Run r =
+      usina("simulate " + quote(program) +
+            " --stock box:40x30x10 --resolution 0.1 --tool-shape 1=flat/6 -o " +
+            quote(dir.path("r.json")) + " -o " + quote(dir.path("s.stl")) + " -o " +
+            quote(dir.path("s.png")) + " --height-map " + quote(dir.path("h.png")));
   EXPECT_EQ(r.status, 1) << r.err;  // the rapid on line 5 cuts
   EXPECT_NE(r.err.find("E_RAPID_CUTS_STOCK"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(dir.read("r.json"));

@@ -45,6 +45,7 @@ SimulateOptions with_tool(int n, const char* shape, double diameter) {
 }
 
 void expect_within(double got, double want, double fraction) {
+  testing::Test::RecordProperty("relative_error", std::to_string((got - want) / want));
   EXPECT_NEAR(got, want, std::abs(want) * fraction) << "relative error " << (got - want) / want;
 }
 
@@ -100,7 +101,7 @@ TEST(StockProof, ArcChordsMissAtMostTheirBoundedVolume) {
   const double tol = s->sim->chord_tolerance();
   EXPECT_DOUBLE_EQ(tol, 0.05 / 1000.0);
   const double chord_bound = 2.0 * tol * 2.0 * kPi * 23.0 * 2.0;  // outer wall, the worst
-  EXPECT_LT(chord_bound / want, 1e-5);
+  EXPECT_LT(chord_bound / want, 1e-4);  // a tenth of the 0.1 % the grid is held to
   expect_within(s->sim->removed_mm3(), want, 0.001);
 }
 
