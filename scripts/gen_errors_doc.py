@@ -714,8 +714,9 @@ EXPLAIN = {
         "Feed (`G1`) into the material, or rapid to a clearance height first; check the "
         "stock's `--origin` and the work offset."),
     "E_CUT_BELOW_FLOOR": (
-        "`usina simulate --floor Z`: a move takes the tool's tip below the floor (the "
-        "fixture, the table, the part's finished bottom) where it passes over the stock. "
+        "`usina simulate --floor Z`: a move takes the tool below the floor (the fixture, the "
+        "table, the part's finished bottom) where it cuts the stock or passes through its "
+        "bottom. "
         "The message gives the lowest Z reached.",
         "Check the move's Z, the tool length offset and the work offset; give the right "
         "`--floor`."),

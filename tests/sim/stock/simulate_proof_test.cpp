@@ -157,5 +157,23 @@ TEST(StockProof, AToolWithoutADiameterIsTheDefaultAndSaysSo) {
   EXPECT_DOUBLE_EQ(s->sim->tools()[0].shape.diameter, 6.0);
 }
 
+TEST(StockProof, ARotaryMoveCutsNothingAndSaysSoOnce) {
+  auto map = HeightMap::make({60, 40, 10, {}}, 0.5);
+  ASSERT_TRUE(map);
+  core::DiagnosticList diags;
+  StockSimulator sim(*map, with_tool(1, "flat", 6.0), diags);
+  const auto at = [](canon::OpKind k, std::uint32_t line) {
+    return canon::Op{std::move(k), core::SourceLoc{0, line, 1, 1, 0}};
+  };
+  sim.on(at(canon::ToolChange{1, 6.0}, 1));
+  sim.on(at(canon::Traverse{{10, 10, 5}, {}}, 2));
+  sim.on(at(canon::Feed{{10, 10, -2}, 100.0, {90, 0, 0}, {}}, 3));
+  sim.on(at(canon::Feed{{30, 10, -2}, 100.0, {180, 0, 0}, {}}, 4));
+  EXPECT_DOUBLE_EQ(sim.removed_mm3(), 0.0);
+  ASSERT_EQ(sim.checks().size(), 1u);
+  EXPECT_EQ(sim.checks()[0].code, core::Code::SimMotionNotModeled);
+  EXPECT_EQ(sim.checks()[0].loc.line, 3u);
+}
+
 }  // namespace
 }  // namespace usina::sim::stock
