@@ -49,6 +49,7 @@ void StockSimulator::on(const canon::Op& op) {
           spline(op, k);
         } else if constexpr (std::is_same_v<T, canon::Probe>) {
           pos_ = k.to;  // a probe's stylus cuts nothing
+          started_ = true;
           abc_ = k.abc;
         } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
           tool_change(op, k);
@@ -116,7 +117,11 @@ Cut StockSimulator::cut_to(const core::Vec3& to, bool rapid) {
   const std::size_t slot = slot_.value_or(0);
   const auto mark =
       rapid ? kRapidMark : static_cast<std::uint8_t>(std::min(slot + 1, kLastToolMark));
-  const Cut cut = sweep(map_, tools_[slot].shape, pos_, to, mark);
+  // Where the tool was before the program's first move is unknown (the
+  // stream starts at 0,0,0 by convention): that move cuts only where it ends.
+  const core::Vec3 from = started_ ? pos_ : to;
+  started_ = true;
+  const Cut cut = sweep(map_, tools_[slot].shape, from, to, mark);
   pos_ = to;
   return cut;
 }
@@ -142,6 +147,7 @@ void StockSimulator::move(const canon::Op& op, const core::Vec3& to, const canon
                           bool rapid) {
   if (abc_moves(op, abc)) {
     pos_ = to;
+    started_ = true;
     return;
   }
   ensure_tool(op);
@@ -151,6 +157,7 @@ void StockSimulator::move(const canon::Op& op, const core::Vec3& to, const canon
 void StockSimulator::arc(const canon::Op& op, const canon::Arc& a) {
   if (abc_moves(op, a.abc)) {
     pos_ = a.to;
+    started_ = true;
     return;
   }
   ensure_tool(op);

@@ -88,6 +88,7 @@ class StockSimulator final : public canon::Sink {
   std::vector<Check> checks_;
   std::map<core::Code, std::size_t> reported_;
   bool warned_abc_ = false;
+  bool started_ = false;  // a move has placed the tool
 };
 
 }  // namespace usina::sim::stock

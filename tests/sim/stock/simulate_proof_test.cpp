@@ -157,6 +157,20 @@ TEST(StockProof, AToolWithoutADiameterIsTheDefaultAndSaysSo) {
   EXPECT_DOUBLE_EQ(s->sim->tools()[0].shape.diameter, 6.0);
 }
 
+TEST(StockProof, TheFirstMoveCutsOnlyWhereItEnds) {
+  // 5 mm of stock above Z0: the stream's conventional start 0,0,0 is inside
+  // it, but the machine was elsewhere; the first rapid is not a cut.
+  const auto s = simulate("T1 M6\nG0 X20 Y20 Z10\nG1 Z2 F100\nG0 Z10\nM30\n",
+                          {60, 40, 10, {0, 0, 5}}, 0.1, with_tool(1, "flat", 6.0));
+  EXPECT_TRUE(s->sim->checks().empty());
+  expect_within(s->sim->removed_mm3(), M_PI * 9.0 * 3.0, 0.002);
+  // A first move that ends in the stock is a rapid into it.
+  const auto in = simulate("T1 M6\nG0 X20 Y20 Z2\nG0 Z10\nM30\n", {60, 40, 10, {0, 0, 5}}, 0.1,
+                           with_tool(1, "flat", 6.0));
+  ASSERT_EQ(in->sim->checks().size(), 1u);
+  EXPECT_EQ(in->sim->checks()[0].loc.line, 2u);
+}
+
 TEST(StockProof, ARotaryMoveCutsNothingAndSaysSoOnce) {
   auto map = HeightMap::make({60, 40, 10, {}}, 0.5);
   ASSERT_TRUE(map);
