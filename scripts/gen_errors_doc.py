@@ -698,6 +698,39 @@ EXPLAIN = {
         "gets a response program whose comment says why.",
         "Punch the request again as `O9999 (PRG=NAME)`, with the program's name as the store "
         "knows it."),
+    # simulate: the stock model, its tools, its checks
+    "E_STOCK_GRID_TOO_LARGE": (
+        "`usina simulate`: the stock's height map would have more cells than usina allows "
+        "(2^27, 134,217,728 cells, 640 MiB with their marks): the stock's width over the "
+        "resolution times its length over the resolution is too large. The message gives "
+        "both numbers.",
+        "Give a coarser `--resolution` (cells are resolution x resolution mm) or a smaller "
+        "`--stock` box."),
+    "E_RAPID_CUTS_STOCK": (
+        "`usina simulate`: a rapid move (`G0`, or a canned cycle's rapid) removes material "
+        "from the simulated stock, more than the tolerance (0.01 mm deep under one cell); "
+        "the tool would enter the stock at rapid speed. The message gives the volume "
+        "removed and the deepest cut.",
+        "Feed (`G1`) into the material, or rapid to a clearance height first; check the "
+        "stock's `--origin` and the work offset."),
+    "E_CUT_BELOW_FLOOR": (
+        "`usina simulate --floor Z`: a move takes the tool below the floor (the fixture, the "
+        "table, the part's finished bottom) where it cuts the stock or passes through its "
+        "bottom. "
+        "The message gives the lowest Z reached.",
+        "Check the move's Z, the tool length offset and the work offset; give the right "
+        "`--floor`."),
+    "W_SIM_TOOL_DEFAULTED": (
+        "`usina simulate`: the program cuts with a tool whose diameter usina cannot find "
+        "(no `--tool-table`, or the tool is not in it, or its diameter is 0); the "
+        "simulation uses the default tool (a 6 mm flat end mill) and says so once per tool.",
+        "Give a tool table with `--tool-table` holding the tool's diameter, and its shape "
+        "with `--tool-shape T=ball` or a word in the table's comment (docs/simulate.md)."),
+    "W_SIM_MOTION_NOT_MODELED": (
+        "`usina simulate`: a move the height map cannot model (it moves a rotary axis A, B "
+        "or C); the stock is not cut by it, so the result may show material the machine "
+        "removes.",
+        "Simulate 3-axis programs only (a vertical tool along Z); see docs/simulate.md."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -144,4 +144,10 @@
   X(AptArithmetic, E_APT_ARITHMETIC)                             \
   X(AptBadArgument, E_APT_BAD_ARGUMENT)                          \
   X(AptNotSupported, E_APT_NOT_SUPPORTED)                        \
-  X(AptNoFini, W_APT_NO_FINI)
+  X(AptNoFini, W_APT_NO_FINI)                                    \
+  /* simulate: the stock model, its tools, its checks */         \
+  X(StockGridTooLarge, E_STOCK_GRID_TOO_LARGE)                   \
+  X(RapidCutsStock, E_RAPID_CUTS_STOCK)                          \
+  X(CutBelowFloor, E_CUT_BELOW_FLOOR)                            \
+  X(SimToolDefaulted, W_SIM_TOOL_DEFAULTED)                      \
+  X(SimMotionNotModeled, W_SIM_MOTION_NOT_MODELED)

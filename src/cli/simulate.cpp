@@ -1,0 +1,281 @@
+// usina simulate FILE --stock box:WxLxH: cuts a stock with the program's
+// tools (a z-map, exact sweeps) and reports the volume removed per tool,
+// the rapids that cut and the cuts below a floor; writes the stock as STL,
+// pictures (PNG), the height map (16-bit PNG) and a JSON report
+// (docs/simulate.md).
+//
+// Exit status: 0; 1 when the program has an error or a check failed (a
+// rapid cutting stock, a cut below the floor); 2 for bad input (an
+// unreadable program, a bad option, a grid too large, an unwritable output).
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/run.hpp"
+#include "cli/simulate_images.hpp"
+#include "cli/verbs.hpp"
+#include "core/file_ostream.hpp"
+#include "core/output_file.hpp"
+#include "core/units.hpp"
+#include "gcode/tool_table.hpp"
+#include "sim/stock/simulator.hpp"
+#include "sim/stock/stock_files.hpp"
+#include "sim/stock/words.hpp"
+
+namespace usina::cli {
+namespace {
+
+using nlohmann::json;
+namespace stock = sim::stock;
+
+struct SimulateOptions {
+  RunOptions run;
+  std::string stock;
+  std::vector<double> origin;
+  double resolution = 0.1;
+  std::vector<std::string> tool_shapes;  // T=SHAPE[/D]
+  std::optional<double> floor;
+  std::vector<std::string> outputs;
+  std::string height_map;
+  std::string view = "iso";
+};
+
+constexpr int kBadInput = 2;
+
+int fail(const std::string& message) {
+  fmt::print(stderr, "usina: error: {}\n", message);
+  return kBadInput;
+}
+
+// Counts the errors of the run and of the checks, and keeps the checks' locations
+// printable: every diagnostic is rendered on stderr by the run's printer.
+class Errors final : public core::DiagnosticSink {
+ public:
+  void set_sources(const core::SourceManager* s) { sources_ = s; }
+
+  void report(core::Diagnostic d) override {
+    if (d.severity == core::Severity::Error) ++errors_;
+    if (sources_ != nullptr) {
+      const std::string text = core::render(d, *sources_);
+      std::fwrite(text.data(), 1, text.size(), stderr);
+    }
+  }
+
+  int errors() const { return errors_; }
+
+ private:
+  const core::SourceManager* sources_ = nullptr;
+  int errors_ = 0;
+};
+
+// The tool table's tools with their shapes (a word of the comment), then
+// --tool-shape T=SHAPE[/D] over them.
+tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(const SimulateOptions& o) {
+  std::map<int, stock::ToolShape> tools;
+  if (!o.run.tool_table.empty()) {
+    std::string err;
+    auto file = core::SourceFile::open(o.run.tool_table, err);
+    if (!file) return tl::unexpected(fmt::format("cannot read {}: {}", o.run.tool_table, err));
+    core::DiagnosticList ignored;  // the run reads the table too and reports its lines
+    const double per = o.run.machine_units == "inch" ? 25.4 : 1.0;
+    if (auto table = gcode::read_tool_table(*file, 0, per, ignored)) {
+      for (const gcode::ToolEntry& t : table->entries()) {
+        if (t.diameter > 0.0) tools[t.number] = stock::shape_from_comment(t.comment, t.diameter);
+      }
+    }
+  }
+  for (const std::string& spec : o.tool_shapes) {
+    const std::size_t eq = spec.find('=');
+    const std::size_t slash = spec.find('/');
+    const auto number = stock::finite_number(std::string_view(spec).substr(0, eq));
+    if (eq == std::string::npos || !number || *number < 0 || *number > 99999 ||
+        *number != static_cast<int>(*number)) {
+      return tl::unexpected(fmt::format(
+          "--tool-shape '{}' is not T=SHAPE or T=SHAPE/D (e.g. 3=ball/6, 4=bull:1/10)", spec));
+    }
+    const int n = static_cast<int>(*number);
+    double diameter = tools.count(n) != 0 ? tools[n].diameter : 0.0;
+    if (slash != std::string::npos) {
+      const auto d = stock::finite_number(std::string_view(spec).substr(slash + 1));
+      if (!d)
+        return tl::unexpected(fmt::format("--tool-shape '{}': the diameter is not a number", spec));
+      diameter = *d;
+    }
+    if (diameter <= 0.0) {
+      return tl::unexpected(fmt::format(
+          "--tool-shape '{}': tool {} has no diameter in the tool table; write it: {}/D", spec, n,
+          spec));
+    }
+    auto shape = stock::parse_shape(
+        std::string_view(spec).substr(
+            eq + 1, slash == std::string::npos ? std::string::npos : slash - eq - 1),
+        diameter);
+    if (!shape) return tl::unexpected(fmt::format("--tool-shape '{}': {}", spec, shape.error()));
+    tools[n] = *shape;
+  }
+  return tools;
+}
+
+json report_json(const SimulateOptions& o, const stock::HeightMap& map,
+                 const stock::StockSimulator& sim, bool complete) {
+  json per_tool = json::object();
+  json tools = json::array();
+  for (const stock::ToolVolume& t : sim.tools()) {
+    per_tool[std::to_string(t.tool)] = {{"removed_mm3", t.removed_mm3}};
+    tools.push_back({{"tool", t.tool}, {"shape", stock::shape_name(t.shape)}});
+  }
+  json checks = json::array();
+  for (const stock::Check& c : sim.checks()) {
+    checks.push_back(
+        {{"code", core::code_name(c.code)}, {"line", c.loc.line}, {"message", c.message}});
+  }
+  const stock::StockBox& b = map.box();
+  return {{"program", o.run.file},
+          {"complete", complete},
+          {"stock",
+           {{"box", {b.width, b.length, b.height}},
+            {"origin", {b.origin.x, b.origin.y, b.origin.z}},
+            {"cells", {map.nx(), map.ny()}},
+            {"cell_mm", {map.dx(), map.dy()}},
+            {"volume_mm3", b.width * b.length * b.height}}},
+          {"removed_mm3", sim.removed_mm3()},
+          {"rapid_removed_mm3", sim.rapid_removed_mm3()},
+          {"per_tool", std::move(per_tool)},
+          {"tools", std::move(tools)},
+          {"checks", std::move(checks)}};
+}
+
+bool ends_with(const std::string& s, std::string_view tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// Writes one output through OutputFile: a failed write leaves the old file.
+int write_output(const std::string& path, const std::vector<std::string>& inputs,
+                 const std::function<tl::expected<void, std::string>(std::FILE*)>& write) {
+  auto out = core::OutputFile::open(path, inputs);
+  if (!out) return fail(out.error());
+  if (auto ok = write(out->stream()); !ok) return fail(fmt::format("{}: {}", path, ok.error()));
+  if (auto ok = out->commit(); !ok) return fail(ok.error());
+  return 0;
+}
+
+int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
+                  const stock::StockSimulator& sim, bool complete) {
+  const std::vector<std::string> inputs = input_paths(o.run);
+  const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
+  for (const std::string& path : o.outputs) {
+    int status = 0;
+    if (ends_with(path, ".json")) {
+      status = write_output(path, inputs, [&](std::FILE* f) -> tl::expected<void, std::string> {
+        const std::string text = report_json(o, map, sim, complete).dump(2) + "\n";
+        std::fwrite(text.data(), 1, text.size(), f);
+        return {};
+      });
+    } else if (ends_with(path, ".stl")) {
+      status = write_output(path, inputs, [&](std::FILE* f) -> tl::expected<void, std::string> {
+        core::FileOstream out(f);
+        stock::write_stl(map, out);
+        out.flush();
+        return {};
+      });
+    } else {
+      status =
+          write_output(path, inputs, [&](std::FILE* f) { return write_stock_png(map, view, f); });
+    }
+    if (status != 0) return status;
+  }
+  if (!o.height_map.empty()) {
+    return write_output(o.height_map, inputs, [&](std::FILE* f) -> tl::expected<void, std::string> {
+      core::FileOstream out(f);
+      stock::write_height_png(map, out);
+      out.flush();
+      return {};
+    });
+  }
+  return 0;
+}
+
+void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim) {
+  const stock::StockBox& b = map.box();
+  fmt::print("stock            {:g} x {:g} x {:g} mm, {} x {} cells of {:g} x {:g} mm\n", b.width,
+             b.length, b.height, map.nx(), map.ny(), map.dx(), map.dy());
+  fmt::print("removed          {:.3f} mm³ ({:.2f} % of the stock)\n", sim.removed_mm3(),
+             100.0 * sim.removed_mm3() / (b.width * b.length * b.height));
+  for (const stock::ToolVolume& t : sim.tools()) {
+    fmt::print("  T{:<5} {:>14.3f} mm³  {}\n", t.tool, t.removed_mm3, stock::shape_name(t.shape));
+  }
+  if (sim.rapid_removed_mm3() > 0.0) {
+    fmt::print("  by rapids {:>11.3f} mm³\n", sim.rapid_removed_mm3());
+  }
+  if (!sim.checks().empty())
+    fmt::print("checks           {} (on standard error)\n", sim.checks().size());
+}
+
+int simulate(const SimulateOptions& o) {
+  auto box = stock::parse_stock(o.stock);
+  if (!box) return fail(box.error());
+  if (!o.origin.empty()) box->origin = {o.origin[0], o.origin[1], o.origin[2]};
+  auto map = stock::HeightMap::make(*box, o.resolution);
+  if (!map) {
+    fmt::print(stderr, "usina: error[{}]: {}\n", core::code_name(core::Code::StockGridTooLarge),
+               map.error());
+    return kBadInput;
+  }
+  if (o.floor && !std::isfinite(*o.floor)) return fail("--floor must be a finite Z in mm");
+  auto tools = tool_shapes(o);
+  if (!tools) return fail(tools.error());
+  for (const std::string& path : o.outputs) {
+    if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
+      return fail(fmt::format(
+          "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
+    }
+  }
+  stock::SimulateOptions so;
+  so.tools = std::move(*tools);
+  so.floor = o.floor;
+  Errors errors;
+  stock::StockSimulator sim(*map, so, errors);
+  const int status =
+      run_program(o.run, sim, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
+  if (status == kBadInput) return status;
+  print_summary(*map, sim);
+  if (const int written = write_outputs(o, *map, sim, status == 0); written != 0) return written;
+  return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
+}
+
+}  // namespace
+
+void add_simulate(CLI::App& app) {
+  auto opts = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "cut a stock with the program: volumes, checks, STL and pictures");
+  add_run_options(*cmd, opts->run);
+  cmd->add_option("--stock", opts->stock, "the stock: box:WxLxH in mm, e.g. box:200x150x30")
+      ->required();
+  cmd->add_option("--origin", opts->origin,
+                  "X,Y,Z of the stock's corner at least X and Y on its top face (default 0,0,0)")
+      ->delimiter(',')
+      ->expected(3);
+  cmd->add_option("--resolution", opts->resolution, "cell size of the height map, mm")
+      ->capture_default_str();
+  cmd->add_option("--tool-shape", opts->tool_shapes,
+                  "T=SHAPE[/D]: flat, ball, bull:R, drill[:A], vee[:A] (docs/simulate.md)");
+  cmd->add_option("--floor", opts->floor, "Z mm the tool may not cut below");
+  cmd->add_option("-o,--output", opts->outputs,
+                  "OUT.png (picture), OUT.stl (the stock), OUT.json (the report); repeatable");
+  cmd->add_option("--height-map", opts->height_map, "the heights as a 16-bit greyscale PNG");
+  cmd->add_option("--view", opts->view, "the picture: iso or top")
+      ->check(CLI::IsMember({"iso", "top"}))
+      ->capture_default_str();
+  cmd->callback([opts] { set_exit_status(simulate(*opts)); });
+}
+
+}  // namespace usina::cli

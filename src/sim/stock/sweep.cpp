@@ -1,0 +1,302 @@
+#include "sim/stock/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace usina::sim::stock {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The move in the frame of its XY projection: a cell at `along` mm from the
+// start along the path and `e` mm beside it is under the tool's axis at
+// s = along + u when u² + e² <= R²; the tip is then at z0 + k s.
+struct Path {
+  double ax = 0.0, ay = 0.0, z0 = 0.0;
+  double ux = 1.0, uy = 0.0;  // unit XY direction (any, for a plunge)
+  double length = 0.0;        // mm of XY
+  double k = 0.0;             // dz per mm of XY (0 for a plunge, z0 the lower end)
+};
+
+Path path_of(const core::Vec3& a, const core::Vec3& b, double top) {
+  Path p;
+  p.ax = a.x;
+  p.ay = a.y;
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  p.length = std::hypot(dx, dy);
+  // Below a nanometre of XY a move is a plunge: its tool stands at one place.
+  if (p.length < 1e-9) {
+    p.length = 0.0;
+    p.z0 = std::min(a.z, b.z) - top;
+    return p;
+  }
+  p.ux = dx / p.length;
+  p.uy = dy / p.length;
+  p.z0 = a.z - top;
+  p.k = (b.z - a.z) / p.length;
+  return p;
+}
+
+// Each shape: the lowest of g(u) = k u + lift(√(e² + u²)) over u in
+// [ul, uh]; g is convex (a convex tool's lower surface along a line), so its
+// minimum is the stationary point clamped into the interval. And a test
+// without square roots that the move cannot lower a cell at height h, d² mm²
+// from the path: h is at or below the tool's lowest point over the path's
+// XY, min(z) + lift(d). Most cells under a tool were cut by the moves just
+// before (a raster, a ring): the test passes them over cheaply.
+struct FlatLowest {
+  const Path* p;
+  double radius;
+
+  double operator()(double k, double /*e2*/, double /*w*/, double ul, double uh) const {
+    return k > 0.0 ? k * ul : k * uh;
+  }
+
+  // The tip's lowest over the stretch within `reach` of `along` on the path.
+  double floor_near(double along, double reach) const {
+    const double s = p->k > 0.0 ? std::max(0.0, along - reach) : std::min(p->length, along + reach);
+    return p->z0 + p->k * s;
+  }
+
+  bool cannot_cut(double /*d2*/, double along, double h) const {
+    return h <= floor_near(along, radius);
+  }
+
+  // The lowest the move comes over a tile centred `along` on the path, `d` mm
+  // from it at its nearest, `half` mm its half diagonal.
+  double tile_floor(double /*d*/, double along, double half) const {
+    return floor_near(along, radius + half);
+  }
+};
+
+struct BallLowest {
+  const Path* p;
+  double radius;
+  double zmin;
+  double flatten;  // 1 / √(1 + k²)
+
+  double operator()(double k, double /*e2*/, double w, double ul, double uh) const {
+    const double u = std::clamp(-k * w * flatten, ul, uh);
+    return k * u + radius - std::sqrt(std::max(0.0, w * w - u * u));
+  }
+
+  // h <= zmin + R − √(R² − d²)  ⇔  t = zmin + R − h >= 0 and R² − d² <= t².
+  bool cannot_cut(double d2, double /*along*/, double h) const {
+    const double t = zmin + radius - h;
+    return t >= 0.0 && radius * radius - d2 <= t * t;
+  }
+
+  double tile_floor(double d, double /*along*/, double /*half*/) const {
+    return zmin + radius - std::sqrt(std::max(0.0, radius * radius - d * d));
+  }
+};
+
+struct ConeLowest {
+  double slope;  // c: rise per mm of radius
+  double zmin;
+
+  double operator()(double k, double e2, double /*w*/, double ul, double uh) const {
+    double u = 0.0;
+    if (std::abs(k) < slope) {
+      u = -k * std::sqrt(e2) / std::sqrt(slope * slope - k * k);
+    } else {
+      u = k > 0.0 ? -kInf : kInf;
+    }
+    u = std::clamp(u, ul, uh);
+    return k * u + slope * std::sqrt(e2 + u * u);
+  }
+
+  // h <= zmin + c d  ⇔  h − zmin <= 0 or (h − zmin)² <= c² d².
+  bool cannot_cut(double d2, double /*along*/, double h) const {
+    const double t = h - zmin;
+    return t <= 0.0 || t * t <= slope * slope * d2;
+  }
+
+  double tile_floor(double d, double /*along*/, double /*half*/) const { return zmin + slope * d; }
+};
+
+// No closed form for a torus along a slope: bisection of g' (monotone, as g
+// is convex) to well under a nanometre.
+struct BullLowest {
+  const ToolShape* tool;
+  double zmin;
+
+  double slope_at(double k, double e2, double u) const {
+    const double r = std::sqrt(e2 + u * u);
+    const double flat = tool->radius() - tool->corner_radius;
+    if (r <= flat || r == 0.0) return k;
+    const double d = r - flat;
+    const double rc = tool->corner_radius;
+    const double rise = d / std::sqrt(std::max(1e-300, rc * rc - d * d));
+    return k + rise * u / r;
+  }
+
+  double operator()(double k, double e2, double /*w*/, double ul, double uh) const {
+    double u = ul;
+    if (slope_at(k, e2, ul) < 0.0) {
+      if (slope_at(k, e2, uh) <= 0.0) {
+        u = uh;
+      } else {
+        double lo = ul, hi = uh;
+        for (int i = 0; i < 64 && hi - lo > 1e-10; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          (slope_at(k, e2, mid) < 0.0 ? lo : hi) = mid;
+        }
+        u = 0.5 * (lo + hi);
+      }
+    }
+    return k * u + tool->lift(std::sqrt(e2 + u * u));
+  }
+
+  bool cannot_cut(double d2, double /*along*/, double h) const {
+    return h <= zmin + tool->lift(std::sqrt(d2));
+  }
+
+  double tile_floor(double d, double /*along*/, double /*half*/) const {
+    return zmin + tool->lift(std::min(d, tool->radius()));
+  }
+};
+
+// The tool's lowest over the cell centre at (qx, qy) from the path's start,
+// relative to the top; +inf when the tool does not pass over it.
+template <class Lowest>
+inline double lowest_at(const Path& p, double r2, double along, double e, const Lowest& lowest) {
+  const double e2 = e * e;
+  if (e2 > r2) return kInf;
+  const double w = std::sqrt(r2 - e2);
+  const double lo = std::max(0.0, along - w);
+  const double hi = std::min(p.length, along + w);
+  if (lo > hi) return kInf;
+  return p.z0 + p.k * along + lowest(p.k, e2, w, lo - along, hi - along);
+}
+
+// The square of the cell's distance from the path's XY projection.
+inline double distance2(const Path& p, double along, double e) {
+  const double past = along < 0.0 ? along : (along > p.length ? along - p.length : 0.0);
+  return e * e + past * past;
+}
+
+// What one sweep adds up.
+struct Tally {
+  double removed = 0.0;
+  double lowest = kInf;
+  float deepest = 0.0f;
+};
+
+// The cells [i0, i1) x [j0, j1) of one tile; true when one was lowered.
+template <class Lowest>
+bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::size_t i1,
+                 std::size_t j0, std::size_t j1, std::uint8_t mark, const Lowest& lowest,
+                 Tally& t) {
+  const float floor = static_cast<float>(-map.box().height);
+  const double dalong = map.dx() * p.ux, de = map.dx() * p.uy;
+  bool lowered = false;
+  for (std::size_t j = j0; j < j1; ++j) {
+    float* h = map.row(j);
+    std::uint8_t* m = map.mark_row(j);
+    const double qx = map.x(i0) - p.ax, qy = map.y(j) - p.ay;
+    double along = qx * p.ux + qy * p.uy;
+    double e = qx * p.uy - qy * p.ux;
+    for (std::size_t i = i0; i < i1; ++i, along += dalong, e += de) {
+      const double d2 = distance2(p, along, e);
+      if (d2 > r2) continue;
+      const auto hi = static_cast<double>(h[i]);
+      if (lowest.cannot_cut(d2, along, hi)) continue;
+      const double z = lowest_at(p, r2, along, e, lowest);
+      if (!(z < hi)) continue;
+      t.lowest = std::min(t.lowest, z);
+      const float now = std::max(static_cast<float>(z), floor);
+      if (now >= h[i]) continue;
+      const float lost = h[i] - now;
+      t.removed += static_cast<double>(lost);
+      t.deepest = std::max(t.deepest, lost);
+      h[i] = now;
+      m[i] = mark;
+      lowered = true;
+    }
+  }
+  return lowered;
+}
+
+// Tile by tile over the path's bounding box grown by the radius: a tile the
+// tool cannot reach, or whose highest cell is at or below the move's lowest
+// point over it, is passed over whole.
+template <class Lowest>
+Cut sweep_with(HeightMap& map, double radius, const Path& p, std::uint8_t mark,
+               const Lowest& lowest) {
+  const double bx = p.ax + p.ux * p.length, by = p.ay + p.uy * p.length;
+  std::size_t i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+  map.columns(std::min(p.ax, bx) - radius, std::max(p.ax, bx) + radius, i0, i1);
+  map.rows(std::min(p.ay, by) - radius, std::max(p.ay, by) + radius, j0, j1);
+  const std::size_t T = HeightMap::kTile;
+  const double half = 0.5 * std::hypot(map.dx(), map.dy()) * static_cast<double>(T);
+  const double r2 = radius * radius;
+  Tally t;
+  for (std::size_t tj = j0 / T; tj * T < j1; ++tj) {
+    const std::size_t cj0 = std::max(j0, tj * T), cj1 = std::min(j1, (tj + 1) * T);
+    for (std::size_t ti = i0 / T; ti * T < i1; ++ti) {
+      const std::size_t ci0 = std::max(i0, ti * T), ci1 = std::min(i1, (ti + 1) * T);
+      const double qx = map.x(ti * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dx() - p.ax;
+      const double qy = map.y(tj * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dy() - p.ay;
+      const double along = qx * p.ux + qy * p.uy;
+      const double d = std::sqrt(distance2(p, along, qx * p.uy - qy * p.ux)) - half;
+      if (d > radius) continue;
+      if (static_cast<double>(map.tile_max(ti, tj)) <=
+          lowest.tile_floor(std::max(0.0, d), along, half)) {
+        continue;
+      }
+      if (sweep_cells(map, p, r2, ci0, ci1, cj0, cj1, mark, lowest, t)) map.touch(ti, tj);
+    }
+  }
+  Cut cut;
+  cut.removed_mm3 = t.removed * map.cell_area();
+  cut.deepest = static_cast<double>(t.deepest);
+  cut.lowest = t.lowest + map.top();
+  return cut;
+}
+
+// Calls f with the shape's Lowest for the path.
+template <class F>
+auto with_lowest(const ToolShape& tool, const Path& p, F&& f) {
+  const double zmin = p.z0 + std::min(0.0, p.k * p.length);
+  const double r = tool.radius();
+  switch (tool.kind) {
+  case ToolKind::Flat: return f(FlatLowest{&p, r});
+  case ToolKind::Ball: return f(BallLowest{&p, r, zmin, 1.0 / std::sqrt(1.0 + p.k * p.k)});
+  case ToolKind::BullNose: return f(BullLowest{&tool, zmin});
+  case ToolKind::Drill:
+  case ToolKind::Vee: break;
+  }
+  return f(ConeLowest{tool.cone_slope(), zmin});
+}
+
+}  // namespace
+
+void Cut::add(const Cut& c) {
+  removed_mm3 += c.removed_mm3;
+  deepest = std::max(deepest, c.deepest);
+  lowest = std::min(lowest, c.lowest);
+}
+
+Cut sweep(HeightMap& map, const ToolShape& tool, const core::Vec3& a, const core::Vec3& b,
+          std::uint8_t mark) {
+  // Nothing below the top: no cell can be reached (every cell is at or below it).
+  if (std::min(a.z, b.z) >= map.top()) return {};
+  const Path p = path_of(a, b, map.top());
+  return with_lowest(
+      tool, p, [&](const auto& lowest) { return sweep_with(map, tool.radius(), p, mark, lowest); });
+}
+
+double envelope(const ToolShape& tool, const core::Vec3& a, const core::Vec3& b, double cx,
+                double cy) {
+  const Path p = path_of(a, b, 0.0);
+  const double r2 = tool.radius() * tool.radius();
+  const double qx = cx - p.ax, qy = cy - p.ay;
+  const double along = qx * p.ux + qy * p.uy;
+  const double e = qx * p.uy - qy * p.ux;
+  return with_lowest(tool, p,
+                     [&](const auto& lowest) { return lowest_at(p, r2, along, e, lowest); });
+}
+
+}  // namespace usina::sim::stock

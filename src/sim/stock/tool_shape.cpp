@@ -1,0 +1,149 @@
+#include "sim/stock/tool_shape.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "sim/stock/words.hpp"
+
+namespace usina::sim::stock {
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+// "ball" -> (ball, ""), "bull:1.5" -> (bull, "1.5").
+std::pair<std::string, std::string> split_word(std::string_view words) {
+  const std::string w = lower(words);
+  const std::size_t colon = w.find(':');
+  if (colon == std::string::npos) return {w, ""};
+  return {w.substr(0, colon), w.substr(colon + 1)};
+}
+
+}  // namespace
+
+double ToolShape::cone_slope() const {
+  return 1.0 / std::tan(angle * std::numbers::pi / 360.0);
+}
+
+double ToolShape::lift(double r) const {
+  switch (kind) {
+  case ToolKind::Flat: return 0.0;
+  case ToolKind::Ball: {
+    const double R = radius();
+    return R - std::sqrt(std::max(0.0, R * R - r * r));
+  }
+  case ToolKind::BullNose: {
+    const double flat = radius() - corner_radius;
+    if (r <= flat) return 0.0;
+    const double d = r - flat;
+    return corner_radius - std::sqrt(std::max(0.0, corner_radius * corner_radius - d * d));
+  }
+  case ToolKind::Drill:
+  case ToolKind::Vee: return r * cone_slope();
+  }
+  return 0.0;
+}
+
+tl::expected<void, std::string> check_shape(const ToolShape& t) {
+  if (!std::isfinite(t.diameter) || t.diameter <= 0.0 || t.diameter > kMaxToolDiameter) {
+    return tl::unexpected(
+        fmt::format("a tool's diameter must be more than 0 and at most {:g} mm, not {:g}",
+                    kMaxToolDiameter, t.diameter));
+  }
+  if (t.kind == ToolKind::BullNose && (!std::isfinite(t.corner_radius) || t.corner_radius <= 0.0 ||
+                                       t.corner_radius >= t.radius())) {
+    return tl::unexpected(fmt::format(
+        "a bull nose's corner radius must be more than 0 and less than the tool's radius "
+        "({:g} mm), not {:g}",
+        t.radius(), t.corner_radius));
+  }
+  if ((t.kind == ToolKind::Drill || t.kind == ToolKind::Vee) &&
+      (!std::isfinite(t.angle) || t.angle < kMinToolAngle || t.angle > kMaxToolAngle)) {
+    return tl::unexpected(
+        fmt::format("a point's included angle must be {:g} to {:g} degrees, "
+                    "not {:g}",
+                    kMinToolAngle, kMaxToolAngle, t.angle));
+  }
+  return {};
+}
+
+tl::expected<ToolShape, std::string> parse_shape(std::string_view words, double diameter) {
+  const auto [name, arg] = split_word(words);
+  ToolShape t;
+  t.diameter = diameter;
+  // A plain double and a flag, not an optional: GCC 12 at -O3 warns of a
+  // false uninitialised read of an optional<double> here (-Wmaybe-uninitialized).
+  const bool given = !arg.empty();
+  double value = 0.0;
+  if (given) {
+    if (auto v = finite_number(arg)) value = *v;
+  }
+  if (given && !finite_number(arg)) {
+    return tl::unexpected(fmt::format("'{}' after '{}:' is not a number", arg, name));
+  }
+  if (name == "flat" || name == "endmill") {
+    t.kind = ToolKind::Flat;
+  } else if (name == "ball") {
+    t.kind = ToolKind::Ball;
+  } else if (name == "bull") {
+    t.kind = ToolKind::BullNose;
+    if (!given) return tl::unexpected(std::string("a bull nose needs its corner radius: bull:R"));
+    t.corner_radius = value;
+  } else if (name == "drill") {
+    t.kind = ToolKind::Drill;
+    t.angle = given ? value : 118.0;
+  } else if (name == "vee" || name == "chamfer" || name == "v") {
+    t.kind = ToolKind::Vee;
+    t.angle = given ? value : 90.0;
+  } else {
+    return tl::unexpected(fmt::format(
+        "'{}' is not a tool shape: flat, ball, bull:R, drill[:A], vee[:A] or chamfer[:A]", name));
+  }
+  if (!arg.empty() && (t.kind == ToolKind::Flat || t.kind == ToolKind::Ball)) {
+    return tl::unexpected(fmt::format("'{}' takes no number", name));
+  }
+  if (auto ok = check_shape(t); !ok) return tl::unexpected(ok.error());
+  return t;
+}
+
+ToolShape shape_from_comment(std::string_view comment, double diameter) {
+  std::size_t i = 0;
+  while (i < comment.size()) {
+    while (i < comment.size() && std::isspace(static_cast<unsigned char>(comment[i])) != 0)
+      ++i;
+    std::size_t j = i;
+    while (j < comment.size() && std::isspace(static_cast<unsigned char>(comment[j])) == 0)
+      ++j;
+    if (j > i) {
+      if (auto t = parse_shape(comment.substr(i, j - i), diameter)) return *t;
+    }
+    i = j;
+  }
+  ToolShape flat;
+  flat.diameter = diameter;
+  return flat;
+}
+
+std::string shape_name(const ToolShape& t) {
+  switch (t.kind) {
+  case ToolKind::Flat: return fmt::format("flat {:g} mm", t.diameter);
+  case ToolKind::Ball: return fmt::format("ball {:g} mm", t.diameter);
+  case ToolKind::BullNose:
+    return fmt::format("bull nose {:g} mm, corner {:g} mm", t.diameter, t.corner_radius);
+  case ToolKind::Drill: return fmt::format("drill {:g} mm, {:g}°", t.diameter, t.angle);
+  case ToolKind::Vee: return fmt::format("V {:g} mm, {:g}°", t.diameter, t.angle);
+  }
+  return "tool";
+}
+
+}  // namespace usina::sim::stock
