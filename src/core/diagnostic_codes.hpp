@@ -144,4 +144,16 @@
   X(AptArithmetic, E_APT_ARITHMETIC)                             \
   X(AptBadArgument, E_APT_BAD_ARGUMENT)                          \
   X(AptNotSupported, E_APT_NOT_SUPPORTED)                        \
-  X(AptNoFini, W_APT_NO_FINI)
+  X(AptNoFini, W_APT_NO_FINI)                                    \
+  /* job: job files, tool libraries, materials, cutting data */  \
+  X(BadJob, E_BAD_JOB)                                           \
+  X(UnknownJobKey, E_UNKNOWN_JOB_KEY)                            \
+  X(JobUnknownTool, E_JOB_UNKNOWN_TOOL)                          \
+  X(JobUnknownMaterial, E_JOB_UNKNOWN_MATERIAL)                  \
+  X(JobUnknownOperation, E_JOB_UNKNOWN_OPERATION)                \
+  X(JobMissingLayer, E_JOB_MISSING_LAYER)                        \
+  X(JobNoToolFits, E_JOB_NO_TOOL_FITS)                           \
+  X(JobNoCuttingData, E_JOB_NO_CUTTING_DATA)                     \
+  X(BadToolLibrary, E_BAD_TOOL_LIBRARY)                          \
+  X(BadMaterials, E_BAD_MATERIALS)                               \
+  X(JobCuttingLimited, N_JOB_CUTTING_LIMITED)
