@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cam/profile.hpp"
 #include "job/toml_reader.hpp"
 
 namespace usina::job {
@@ -57,12 +58,9 @@ std::string relative_to(const std::string& folder, const std::string& path) {
 }
 
 void read_header(TomlReader& r, const toml::table& root, const std::string& folder, Job& job) {
-  const toml::node* n = root.get("job");
-  if (n == nullptr || !n->is_table()) {
-    r.fail(n != nullptr ? n->source() : root.source(), "the job needs a [job] section");
-    return;
-  }
-  const toml::table& t = *n->as_table();
+  const toml::table* section = r.section(root, "job", "the job");
+  if (section == nullptr) return;
+  const toml::table& t = *section;
   r.known_keys(t, "[job]", kJobKeys);
   job.name = r.text(t, "[job]", "name", false).value_or("");
   const auto path = [&](const char* key, bool required, core::SourceLoc& loc) {
@@ -77,12 +75,9 @@ void read_header(TomlReader& r, const toml::table& root, const std::string& fold
 }
 
 void read_stock(TomlReader& r, const toml::table& root, Stock& s) {
-  const toml::node* n = root.get("stock");
-  if (n == nullptr || !n->is_table()) {
-    r.fail(n != nullptr ? n->source() : root.source(), "the job needs a [stock] section");
-    return;
-  }
-  const toml::table& t = *n->as_table();
+  const toml::table* section = r.section(root, "stock", "the job");
+  if (section == nullptr) return;
+  const toml::table& t = *section;
   r.known_keys(t, "[stock]", kStockKeys);
   s.shape = r.text(t, "[stock]", "shape", true).value_or("box");
   if (s.shape == "box") {
@@ -140,8 +135,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
     op.rx = r.number(t, w, "rx", kSize, true).value_or(0);
     op.ry = r.number(t, w, "ry", kSize, true).value_or(0);
   }
-  constexpr std::string_view kSides[] = {"outside", "inside", "left", "right", "on", "auto"};
-  if (std::find(std::begin(kSides), std::end(kSides), op.side) == std::end(kSides)) {
+  if (!cam::profile_side(op.side)) {
     r.fail(
         t.get("side")->source(),
         fmt::format("{} side = \"{}\": give outside, inside, left, right, on or auto", w, op.side));

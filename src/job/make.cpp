@@ -90,15 +90,6 @@ bool run_pocket(Context& cx, const Operation& op, const std::string& title) {
          cam::generate_pocket(*shape, o, cx.sink, at);
 }
 
-cam::ProfileSide side_of(const std::string& s) {
-  if (s == "inside") return cam::ProfileSide::Inside;
-  if (s == "left") return cam::ProfileSide::Left;
-  if (s == "right") return cam::ProfileSide::Right;
-  if (s == "on") return cam::ProfileSide::On;
-  if (s == "auto") return cam::ProfileSide::Auto;
-  return cam::ProfileSide::Outside;
-}
-
 // The smallest corner the tool meets on the contours' sides (auto: inside
 // the holes of the part, outside its outline).
 double profile_corner(const std::vector<cam::Path>& contours, const Operation& op) {
@@ -124,7 +115,7 @@ bool run_profile(Context& cx, const Operation& op, const std::string& title) {
   cam::ProfileOptions o;
   o.depth = op.depth;
   o.step_down = op.step_down.value_or(tool->diameter / 2);
-  o.side = side_of(op.side);
+  o.side = cam::profile_side(op.side).value_or(cam::ProfileSide::Outside);
   o.lead_radius = op.lead_radius;
   o.tabs = {op.tabs, op.tab_width, op.tab_height};
   AtOperation at(cx.diags, op.loc, title);

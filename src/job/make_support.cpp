@@ -63,6 +63,18 @@ const Tool* named_tool(const LoadedJob& j, const Operation& op, core::Diagnostic
                   fmt::format("tool {} is not in the library {}", *op.tool, j.job.tools)});
     return nullptr;
   }
+  // A drill drills and an end mill mills: the cutting data and the moves
+  // are each kind's own.
+  const bool drill_op = op.type == OpType::Drill;
+  const bool mill =
+      t->type == ToolType::Flat || t->type == ToolType::Ball || t->type == ToolType::Bull;
+  if (drill_op ? t->type != ToolType::Drill : !mill) {
+    diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
+                  fmt::format("T{} is a {} tool; a {} operation takes {}", t->number,
+                              tool_type_name(t->type), op_type_name(op.type),
+                              drill_op ? "a drill" : "a flat, ball or bull end mill")});
+    return nullptr;
+  }
   if (t->cutting_length < op.depth) {
     diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
                   fmt::format("T{} cuts {:g} mm deep at most (its cutting length); the "

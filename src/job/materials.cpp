@@ -99,15 +99,10 @@ std::optional<std::vector<Material>> read_materials(std::string_view toml_text, 
   TomlReader r(toml_text, file, core::Code::BadMaterials, diags);
   const auto root = r.parse();
   if (!root) return std::nullopt;
-  constexpr std::string_view kTop[] = {"material"};
-  r.known_keys(*root, "the materials file", kTop);
-  const toml::node* list = root->get("material");
-  if (list == nullptr || !list->is_array_of_tables()) {
-    r.fail(root->source(), "the materials file needs [[material]] entries");
-    return std::nullopt;
-  }
+  const toml::array* list = r.entries(*root, "material", "the materials file");
+  if (list == nullptr) return std::nullopt;
   std::vector<Material> ms;
-  for (const toml::node& e : *list->as_array()) {
+  for (const toml::node& e : *list) {
     if (auto m = read_material(r, *e.as_table())) ms.push_back(std::move(*m));
   }
   if (!r.ok()) return std::nullopt;
@@ -141,8 +136,8 @@ std::optional<CuttingConditions> cutting_conditions(const CuttingRow& row, const
   const double vc = slotting ? row.vc * 0.8 : row.vc;
   c.rpm = vc * 1000.0 / (std::numbers::pi * tool.diameter);
   c.why.push_back(fmt::format(
-      "n = vc*1000/(pi*D) = {:g}*1000/(pi*{:g}) = {:.0f} rev/min{}", vc, tool.diameter, c.rpm,
-      slotting ? fmt::format(" (vc {:g} less 20 % for slotting)", row.vc) : std::string()));
+      "n = vc*1000/[pi*D] = {:g}*1000/[pi*{:g}] = {:.0f} rev/min{}", vc, tool.diameter, c.rpm,
+      slotting ? fmt::format(", vc {:g} less 20 % for slotting", row.vc) : std::string()));
   if (limits.max_rpm > 0 && c.rpm > limits.max_rpm) {
     c.why.push_back(fmt::format("the spindle's max_rpm {:g} caps n", limits.max_rpm));
     c.rpm = limits.max_rpm;

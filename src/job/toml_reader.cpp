@@ -107,6 +107,30 @@ std::optional<std::vector<double>> TomlReader::numbers(const toml::table& t, std
   return out;
 }
 
+const toml::table* TomlReader::section(const toml::table& root, const char* name,
+                                       std::string_view file) {
+  const toml::node* n = root.get(name);
+  if (n == nullptr || !n->is_table()) {
+    fail(n != nullptr ? n->source() : root.source(),
+         fmt::format("{} needs a [{}] section", file, name));
+    return nullptr;
+  }
+  return n->as_table();
+}
+
+const toml::array* TomlReader::entries(const toml::table& root, const char* name,
+                                       std::string_view file) {
+  const std::string_view keys[] = {name};
+  known_keys(root, file, keys);
+  const toml::node* n = root.get(name);
+  if (n == nullptr || !n->is_array_of_tables() || n->as_array()->empty()) {
+    fail(n != nullptr ? n->source() : root.source(),
+         fmt::format("{} needs its [[{}]] entries", file, name));
+    return nullptr;
+  }
+  return n->as_array();
+}
+
 void TomlReader::known_keys(const toml::table& t, std::string_view what,
                             std::span<const std::string_view> keys) {
   for (auto&& [key, node] : t) {

@@ -56,6 +56,12 @@ class TomlReader {
                                              const char* key, std::size_t n, const Range& range,
                                              bool required);
 
+  // The section [name] of `root`; null (an error) when absent or not a table.
+  const toml::table* section(const toml::table& root, const char* name, std::string_view file);
+  // The file's [[name]] entries, after checking `root` has no other key;
+  // null (an error) when there are none.
+  const toml::array* entries(const toml::table& root, const char* name, std::string_view file);
+
   // E_UNKNOWN_JOB_KEY for each key of `t` not in `keys`.
   void known_keys(const toml::table& t, std::string_view what,
                   std::span<const std::string_view> keys);

@@ -111,13 +111,8 @@ std::optional<std::vector<Tool>> read_tool_library(std::string_view toml_text, s
   TomlReader r(toml_text, file, core::Code::BadToolLibrary, diags);
   const auto root = r.parse();
   if (!root) return std::nullopt;
-  constexpr std::string_view kTop[] = {"tool"};
-  r.known_keys(*root, "the tool library", kTop);
-  const toml::array* entries = root->get("tool") ? root->get("tool")->as_array() : nullptr;
-  if (entries == nullptr || !entries->is_array_of_tables()) {
-    r.fail(root->source(), "the tool library needs [[tool]] entries");
-    return std::nullopt;
-  }
+  const toml::array* entries = r.entries(*root, "tool", "the tool library");
+  if (entries == nullptr) return std::nullopt;
   std::vector<Tool> tools;
   for (const toml::node& e : *entries) {
     const auto tool = read_tool(r, *e.as_table());
@@ -148,20 +143,21 @@ ToolChoice largest_end_mill(const std::vector<Tool>& tools, double max_radius, d
     if (fits && (c.tool == nullptr || t.diameter > c.tool->diameter)) c.tool = &t;
     if (!fits && (refused == nullptr || t.diameter > refused->diameter)) refused = &t;
   }
+  const std::string corner = std::isinf(max_radius)
+                                 ? std::string("no inside corner to fit")
+                                 : fmt::format("a smallest inside corner of R{:g}", max_radius);
   if (c.tool != nullptr) {
     c.why = fmt::format(
-        "T{}: the largest flat end mill with a radius within {:g} mm (the "
-        "smallest inside corner) and a cutting length of {:g} mm or more",
-        c.tool->number, max_radius, depth);
+        "T{}: the largest flat end mill for {} with a cutting length of {:g} mm "
+        "or more",
+        c.tool->number, corner, depth);
   } else if (refused == nullptr) {
     c.why = "the library has no flat end mill";
   } else {
     c.why = fmt::format(
-        "no flat end mill fits: the largest, T{} (D{:g}, cutting length {:g} "
-        "mm), needs a corner radius of {:g} mm (the smallest is {:g}) and a "
-        "depth of at most its cutting length (the depth is {:g} mm)",
-        refused->number, refused->diameter, refused->cutting_length, refused->diameter / 2,
-        max_radius, depth);
+        "no flat end mill fits {} at a depth of {:g} mm: the largest, T{}, is "
+        "R{:g} with a cutting length of {:g} mm",
+        corner, depth, refused->number, refused->diameter / 2, refused->cutting_length);
   }
   return c;
 }

@@ -30,7 +30,10 @@ void posted_checked_timed(const std::string& example, int tool_changes) {
     const test::Run timed = test::usina(std::string("stats --dialect ") + post + " --machine " +
                                         quote(machine) + " " + quote(out));
     EXPECT_EQ(timed.status, 0) << timed.err;
-    EXPECT_NE(timed.out.find("tool changes " + std::to_string(tool_changes)), std::string::npos)
+    // grbl has no tool changer: the post writes each change as a comment
+    // and an M0 pause, which stats does not count as a change.
+    const int changes = std::string(post) == "grbl" ? 0 : tool_changes;
+    EXPECT_NE(timed.out.find("tool changes " + std::to_string(changes)), std::string::npos)
         << timed.out;
   }
 }
@@ -47,7 +50,7 @@ TEST(JobCli, TheProgramSaysWhyEachNumber) {
   const test::Run r =
       test::usina("job " + quote(testing::repo("examples/jobs/plate.toml")) + " --post rs274ngc");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("n = vc*1000"), std::string::npos);
+  EXPECT_NE(r.out.find("n = vc*1000/[pi*D] = 243.84*1000/[pi*6] = 12936"), std::string::npos);
   EXPECT_NE(r.out.find("max_rpm 10000 caps n"), std::string::npos);
   EXPECT_NE(r.out.find("Torbide"), std::string::npos);
   EXPECT_NE(r.out.find("chosen: T2"), std::string::npos);

@@ -146,6 +146,18 @@ TEST(JobFile, AToolTooShortForTheDepthIsAnError) {
   EXPECT_EQ(d->loc.line, kFirstOpLine + 4);
 }
 
+TEST(JobFile, ADrillDoesNotMillAPocket) {
+  std::string text = job_text(kPocket);
+  text.replace(text.find("tool = 2"), 8, "tool = 5");
+  const auto l = load_text(text);
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  EXPECT_FALSE(make(*l, diags));
+  const core::Diagnostic* d = find(diags, core::Code::JobNoToolFits);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("T5 is a drill tool"), std::string::npos) << d->message;
+}
+
 TEST(JobFile, NoCuttingDataIsAnErrorThatSaysWhatToGive) {
   // The materials file has no drilling row for polycarbonate.
   const auto l = load_text(
