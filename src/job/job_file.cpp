@@ -80,6 +80,16 @@ void read_stock(TomlReader& r, const toml::table& root, Stock& s) {
   const toml::table& t = *section;
   r.known_keys(t, "[stock]", kStockKeys);
   s.shape = r.text(t, "[stock]", "shape", true).value_or("box");
+  // The other shape's keys would be silently unread.
+  for (const char* key : {"size", "diameter", "height"}) {
+    const bool box_key = std::string_view(key) == "size";
+    if (t.get(key) != nullptr && (s.shape == "box") != box_key) {
+      r.fail(t.get(key)->source(),
+             fmt::format("[stock] {} is not a {}'s: a box has size = [x, y, z], a cylinder "
+                         "diameter and height",
+                         key, s.shape));
+    }
+  }
   if (s.shape == "box") {
     const auto size = r.numbers(t, "[stock]", "size", 3, kSize, true);
     if (size) s.size = {(*size)[0], (*size)[1], (*size)[2]};

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "job/toml_reader.hpp"
+
 namespace usina::job {
 namespace {
 
@@ -20,6 +22,22 @@ std::optional<std::pair<std::string_view, std::uint32_t>> open(const std::string
   const std::string_view text = file->text();
   return std::pair{text, sources.add(std::move(file))};
 }
+
+// The machine profile's reader gives lines without their offsets: they are
+// found here, so its diagnostics show their line too.
+class LocatedLines final : public core::DiagnosticSink {
+ public:
+  LocatedLines(core::DiagnosticSink& next, std::string_view text) : next_(next), text_(text) {}
+
+  void report(core::Diagnostic d) override {
+    if (d.loc.line > 0) d.loc.line_offset = line_offset(text_, d.loc.line);
+    next_.report(std::move(d));
+  }
+
+ private:
+  core::DiagnosticSink& next_;
+  std::string_view text_;
+};
 
 bool find_stock_material(LoadedJob& l, core::DiagnosticSink& diags) {
   for (std::size_t i = 0; i < l.materials.size(); ++i) {
@@ -55,7 +73,8 @@ std::optional<LoadedJob> load_job(const std::string& path, core::SourceManager& 
   if (!l.job.machine.empty()) {
     const auto machine_text = open(l.job.machine, sources, io_error);
     if (!machine_text) return std::nullopt;
-    l.machine = sim::read_machine_profile(machine_text->first, machine_text->second, diags);
+    LocatedLines located(diags, machine_text->first);
+    l.machine = sim::read_machine_profile(machine_text->first, machine_text->second, located);
     if (!l.machine) return std::nullopt;
   }
   if (!tools || !materials) return std::nullopt;

@@ -9,6 +9,16 @@
 
 namespace usina::job {
 
+std::uint64_t line_offset(std::string_view text, std::uint32_t line) {
+  std::uint64_t offset = 0;
+  for (std::uint32_t l = 1; l < line; ++l) {
+    const std::size_t nl = text.find('\n', offset);
+    if (nl == std::string_view::npos) break;
+    offset = nl + 1;
+  }
+  return offset;
+}
+
 std::optional<toml::table> TomlReader::parse() {
   try {
     return toml::parse(text_);
@@ -20,14 +30,7 @@ std::optional<toml::table> TomlReader::parse() {
 
 core::SourceLoc TomlReader::loc(const toml::source_region& where) const {
   const auto line = static_cast<std::uint32_t>(where.begin.line);
-  // The byte offset of the line's start, so the diagnostic shows the line.
-  std::uint64_t offset = 0;
-  for (std::uint32_t l = 1; l < line; ++l) {
-    const std::size_t nl = text_.find('\n', offset);
-    if (nl == std::string_view::npos) break;
-    offset = nl + 1;
-  }
-  return {file_, line, static_cast<std::uint32_t>(where.begin.column), 1, offset};
+  return {file_, line, static_cast<std::uint32_t>(where.begin.column), 1, line_offset(text_, line)};
 }
 
 void TomlReader::report(core::Code code, const toml::source_region& where, std::string message,

@@ -19,6 +19,10 @@
 
 namespace usina::job {
 
+// The byte offset of the start of 1-based `line` in `text` (for a
+// SourceLoc's line_offset, so a diagnostic shows its line).
+std::uint64_t line_offset(std::string_view text, std::uint32_t line);
+
 // A closed range a number must be in; `what` names its unit in messages.
 struct Range {
   double min;

@@ -70,6 +70,16 @@ TEST(JobFile, ANumberOutOfRangeSaysTheRange) {
   EXPECT_NE(d->message.find("out of range"), std::string::npos) << d->message;
 }
 
+TEST(JobFile, AKeyOfTheOtherStockShapeIsAnError) {
+  std::string text = job_text(kPocket);
+  text.replace(text.find("size = "), 0, "diameter = 40.0\n");  // line 8 of a box
+  const auto l = load_text(text);
+  EXPECT_FALSE(l->job);
+  const core::Diagnostic* d = find(l->diags, core::Code::BadJob);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->loc.line, 8u);
+}
+
 TEST(JobFile, NotTomlIsAnErrorAtTheFault) {
   const auto l = load_text(job_text("[[operation]\n"));
   EXPECT_FALSE(l->job);
