@@ -731,6 +731,64 @@ EXPLAIN = {
         "or C); the stock is not cut by it, so the result may show material the machine "
         "removes.",
         "Simulate 3-axis programs only (a vertical tool along Z); see docs/simulate.md."),
+    # job: job files, tool libraries, materials, cutting data
+    "E_BAD_JOB": (
+        "The job file given to `usina job` cannot be used: it is not valid TOML, a required "
+        "key is missing, a value has the wrong type or is out of range, or the drawing it "
+        "names cannot be read. The message gives the key's line and column.",
+        "Correct the key named in the message; docs/job.md gives the schema and "
+        "`examples/jobs/` complete jobs to start from."),
+    "E_UNKNOWN_JOB_KEY": (
+        "A job file, tool library or materials file has a key usina does not read, e.g. "
+        "`dept` for `depth`. A job's keys set what is cut, so a key that is not read is an "
+        "error, not a warning: its value would otherwise be silently left at the default.",
+        "Correct the key's spelling (the message suggests the nearest valid one) or remove "
+        "it; docs/job.md lists the keys."),
+    "E_JOB_UNKNOWN_TOOL": (
+        "An operation names a tool number that the tool library does not have.",
+        "Give the number of a tool in the library (the `[[tool]]` entries of the file named "
+        "by `tools`), or add the tool to the library."),
+    "E_JOB_UNKNOWN_MATERIAL": (
+        "The stock's `material` is not one of the materials file's groups.",
+        "Use one of the names the message lists (data/materials.toml), or add the material "
+        "with its cutting data and their source."),
+    "E_JOB_UNKNOWN_OPERATION": (
+        "An operation's `type` is not one `usina job` makes in this version.",
+        "Use one of the types the message lists (docs/job.md, \"Operations\")."),
+    "E_JOB_MISSING_LAYER": (
+        "An operation names a layer of the drawing that has no entity usina can machine (the "
+        "layer is absent, empty, or holds only text, hatches or blocks).",
+        "Correct the layer's name (DXF layer names are case-insensitive) or draw the "
+        "contours on it."),
+    "E_JOB_NO_TOOL_FITS": (
+        "An operation asks the job to choose its tool (`tool = \"auto\"`) and no tool of the "
+        "library fits: a pocket's end mill must be no larger than twice the smallest inside "
+        "corner radius and must fit the pocket, a drill must have the hole's diameter, and "
+        "the cutting length must reach the depth. The message says why the nearest candidate "
+        "was refused.",
+        "Add a suitable tool to the library, name a tool explicitly, or change the drawing "
+        "(a larger corner radius)."),
+    "E_JOB_NO_CUTTING_DATA": (
+        "The materials file has no cutting speed or feed per tooth for the stock's material "
+        "with the tool's material and the operation, so the job cannot compute the spindle "
+        "speed and feed.",
+        "Give `rpm` and `feed` in the operation, or add the row (with its source) to the "
+        "materials file."),
+    "E_BAD_TOOL_LIBRARY": (
+        "The tool library (`tools` in the job) cannot be used: not valid TOML, a tool without "
+        "a number, type or diameter, a type or tool material usina does not know, a number "
+        "given twice, or a value out of range.",
+        "Correct the entry named in the message; examples/tools/shop.toml is a complete "
+        "library."),
+    "E_BAD_MATERIALS": (
+        "The materials file cannot be used: not valid TOML, a row without its cutting speed, "
+        "feed per tooth or source, or a value out of range.",
+        "Correct the row named in the message; data/materials.toml is the reference."),
+    "N_JOB_CUTTING_LIMITED": (
+        "The spindle speed or feed the cutting data gives is above what the machine profile "
+        "allows (`[spindle] max_rpm`, the axes' `max_feed`), so the job uses the machine's "
+        "limit; the feed per tooth is kept, so the feed drops with the speed.",
+        "Nothing to do; a machine with a faster spindle would cut sooner."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -339,4 +339,15 @@ bool generate_profile(const std::vector<Path>& contours, const ProfileOptions& o
   return true;
 }
 
+std::optional<ProfileSide> profile_side(std::string_view name) {
+  constexpr std::pair<std::string_view, ProfileSide> kNames[] = {
+      {"outside", ProfileSide::Outside}, {"inside", ProfileSide::Inside},
+      {"left", ProfileSide::Left},       {"right", ProfileSide::Right},
+      {"on", ProfileSide::On},           {"auto", ProfileSide::Auto}};
+  for (const auto& [n, side] : kNames) {
+    if (n == name) return side;
+  }
+  return std::nullopt;
+}
+
 }  // namespace usina::cam

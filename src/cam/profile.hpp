@@ -4,6 +4,9 @@
 // that hold the part to the stock on the last passes.
 #pragma once
 
+#include <optional>
+#include <string_view>
+
 #include "cam/path.hpp"
 #include "cam/program.hpp"
 
@@ -15,6 +18,10 @@ namespace usina::cam {
 // number of contours (0: the part's outline) is cut outside, one inside an odd
 // number (a hole in the part) inside.
 enum class ProfileSide { Outside, Inside, Left, Right, On, Auto };
+
+// The side as usina gen profile's --side and a job's `side` name it
+// ("outside", "inside", "left", "right", "on", "auto"); nullopt for another.
+std::optional<ProfileSide> profile_side(std::string_view name);
 
 struct Tabs {
   int count = 0;        // 0: no tabs

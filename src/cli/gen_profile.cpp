@@ -16,15 +16,6 @@ struct ProfileCli {
   PostOutput output;
 };
 
-cam::ProfileSide side_of(const std::string& s) {
-  if (s == "inside") return cam::ProfileSide::Inside;
-  if (s == "left") return cam::ProfileSide::Left;
-  if (s == "right") return cam::ProfileSide::Right;
-  if (s == "on") return cam::ProfileSide::On;
-  if (s == "auto") return cam::ProfileSide::Auto;
-  return cam::ProfileSide::Outside;
-}
-
 }  // namespace
 
 void add_gen_profile(CLI::App& gen) {
@@ -51,7 +42,7 @@ void add_gen_profile(CLI::App& gen) {
   add_cutting_options(*cmd, o->gen.cut);
   add_post_options(*cmd, o->output);
   cmd->callback([o, cmd] {
-    o->gen.side = side_of(o->side);
+    o->gen.side = cam::profile_side(o->side).value_or(cam::ProfileSide::Outside);
     run_generator(
         "profile", o->output,
         [&](canon::Sink& sink, core::DiagnosticSink& diags) {

@@ -90,6 +90,7 @@ int run(int argc, char** argv) {
   usina::cli::add_resume(app);
   usina::cli::add_apt(app);
   usina::cli::add_simulate(app);
+  usina::cli::add_job(app);
   if (argc > 1 && std::string_view(argv[1]) == "help") return help(app, argc, argv);
   try {
     app.parse(argc, argv);

@@ -16,6 +16,7 @@ void add_serve(CLI::App& app);
 void add_resume(CLI::App& app);
 void add_apt(CLI::App& app);
 void add_simulate(CLI::App& app);
+void add_job(CLI::App& app);
 
 // The status the chosen verb left.
 int exit_status();

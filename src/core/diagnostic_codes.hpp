@@ -150,4 +150,16 @@
   X(RapidCutsStock, E_RAPID_CUTS_STOCK)                          \
   X(CutBelowFloor, E_CUT_BELOW_FLOOR)                            \
   X(SimToolDefaulted, W_SIM_TOOL_DEFAULTED)                      \
-  X(SimMotionNotModeled, W_SIM_MOTION_NOT_MODELED)
+  X(SimMotionNotModeled, W_SIM_MOTION_NOT_MODELED)                \
+  /* job: job files, tool libraries, materials, cutting data */  \
+  X(BadJob, E_BAD_JOB)                                           \
+  X(UnknownJobKey, E_UNKNOWN_JOB_KEY)                            \
+  X(JobUnknownTool, E_JOB_UNKNOWN_TOOL)                          \
+  X(JobUnknownMaterial, E_JOB_UNKNOWN_MATERIAL)                  \
+  X(JobUnknownOperation, E_JOB_UNKNOWN_OPERATION)                \
+  X(JobMissingLayer, E_JOB_MISSING_LAYER)                        \
+  X(JobNoToolFits, E_JOB_NO_TOOL_FITS)                           \
+  X(JobNoCuttingData, E_JOB_NO_CUTTING_DATA)                     \
+  X(BadToolLibrary, E_BAD_TOOL_LIBRARY)                          \
+  X(BadMaterials, E_BAD_MATERIALS)                               \
+  X(JobCuttingLimited, N_JOB_CUTTING_LIMITED)

@@ -1,0 +1,73 @@
+// A job file (docs/job.md): the machine, the stock and its material, the
+// drawing, the tool library, and the operations in the order they are cut
+// (seed 004, table 7.6: the CAM steps from the model to the program). Read
+// here and checked for shape (keys, types, ranges); what the names refer to
+// (tools, material, layers) is checked when the job is made (job/make.hpp).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/diagnostic.hpp"
+
+namespace usina::job {
+
+enum class OpType { Drill, Pocket, Profile, EllipsePocket };
+
+std::string_view op_type_name(OpType t);
+
+struct Operation {
+  OpType type = OpType::Pocket;
+  core::SourceLoc loc;  // its [[operation]] header
+  std::string layer;    // of the drawing; empty for an ellipse pocket
+  core::SourceLoc layer_loc;
+  std::optional<int> tool;  // nullopt: "auto", the job chooses
+  core::SourceLoc tool_loc;
+  double depth = 0;                 // mm below the stock's top (Z0)
+  std::optional<double> step_down;  // default: half the tool's diameter
+  std::optional<double> stepover;   // pocket, ellipse; default: half the tool's diameter
+  std::optional<double> diameter;   // drill: only the holes of this diameter
+  double peck = 0;                  // drill: G83 pecks, 0 for G81
+  double retract = 1.0;             // drill: the R plane above Z0
+  std::string side = "outside";     // profile
+  double lead_radius = 0;           // profile
+  int tabs = 0;                     // profile
+  double tab_width = 3.0;
+  double tab_height = 1.0;
+  std::array<double, 2> center{0, 0};  // ellipse
+  double rx = 0;
+  double ry = 0;
+  std::optional<double> rpm;  // given: the cutting data are not used
+  std::optional<double> feed;
+  std::optional<double> plunge_feed;
+};
+
+struct Stock {
+  std::string shape = "box";            // or "cylinder"
+  std::array<double, 3> size{0, 0, 0};  // box: x y z; cylinder: diameter, height, 0
+  std::array<double, 2> origin{0, 0};   // the stock's corner (box) or centre (cylinder)
+  std::string material;
+  core::SourceLoc material_loc;
+};
+
+struct Job {
+  std::string name;
+  std::string machine;  // paths, already relative to the job file's folder
+  std::string tools;
+  std::string materials;
+  std::string drawing;  // empty: no drawing (an ellipse pocket needs none)
+  core::SourceLoc tools_loc, materials_loc, drawing_loc, machine_loc;
+  double safe_z = 5.0;
+  Stock stock;
+  std::vector<Operation> operations;
+};
+
+// Reads a job; `folder` is the job file's folder, which its paths are
+// relative to. Every problem a diagnostic at its line; nullopt when unusable.
+std::optional<Job> read_job(std::string_view toml_text, std::uint32_t file,
+                            const std::string& folder, core::DiagnosticSink& diags);
+
+}  // namespace usina::job

@@ -1,0 +1,165 @@
+#include "job/make.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "cam/chain.hpp"
+#include "cam/drill.hpp"
+#include "cam/pocket.hpp"
+#include "cam/profile.hpp"
+#include "job/geometry.hpp"
+#include "job/make_support.hpp"
+
+namespace usina::job {
+namespace {
+
+constexpr double kNoCorner = std::numeric_limits<double>::infinity();
+
+bool run_drill(Context& cx, const Operation& op, const std::string& title) {
+  const auto paths = layer_paths(cx.j, op, cx.diags);
+  if (!paths) return false;
+  std::size_t others = 0;
+  std::vector<HoleGroup> groups = holes_of(*paths, others);
+  if (op.diameter) {
+    std::erase_if(groups,
+                  [&](const HoleGroup& g) { return std::abs(g.diameter - *op.diameter) > 1e-3; });
+  }
+  if (groups.empty() || others > 0) {
+    cx.diags.report(
+        {core::Code::BadJob, core::Severity::Error, op.layer_loc,
+         fmt::format("layer \"{}\" has {} circles{} and {} other entities: a drill "
+                     "layer holds the holes' circles only",
+                     op.layer, groups.size(), op.diameter ? " of that diameter" : "", others)});
+    return false;
+  }
+  for (const HoleGroup& g : groups) {
+    const Tool* tool = nullptr;
+    std::string chosen;
+    if (op.tool) {
+      tool = named_tool(cx.j, op, cx.diags);
+      if (tool && std::abs(tool->diameter - g.diameter) > 0.005) {
+        cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
+                         fmt::format("T{} is D{:g}; the holes of layer \"{}\" are D{:g}",
+                                     tool->number, tool->diameter, op.layer, g.diameter)});
+        return false;
+      }
+    } else {
+      const ToolChoice c = drill_of(cx.j.tools, g.diameter, op.depth + op.retract);
+      if (c.tool == nullptr) {
+        cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc, c.why});
+      }
+      tool = c.tool;
+      chosen = c.why;
+    }
+    cam::DrillOptions o;
+    if (tool == nullptr ||
+        !prepare(cx, op, *tool, false, chosen, o.cut,
+                 fmt::format("{}: {} holes D{:g}", title, g.centers.size(), g.diameter))) {
+      return false;
+    }
+    // Each hole's moves, as G81/G83 make them: the generator's canned-cycle
+    // form first feeds down to the R plane where its writer thinks the tool
+    // is (X0 Y0), and after another operation the tool is elsewhere.
+    o.form = cam::HoleForm::Moves;
+    o.depth = op.depth;
+    o.retract = op.retract;
+    o.peck = op.peck;
+    AtOperation at(cx.diags, op.loc, title);
+    if (!cam::generate_drill(g.centers, o, cx.sink, at)) return false;
+  }
+  return true;
+}
+
+bool run_pocket(Context& cx, const Operation& op, const std::string& title) {
+  const auto paths = layer_paths(cx.j, op, cx.diags);
+  if (!paths) return false;
+  AtOperation at(cx.diags, op.loc, title);
+  const auto shape = cam::pocket_shape(cam::chain(*paths), at);
+  if (!shape) return false;
+  std::string chosen;
+  const Tool* tool = mill_for(cx, op, smallest_inside_radius(shape->outline, true), chosen);
+  if (tool == nullptr) return false;
+  cam::PocketOptions o;
+  o.depth = op.depth;
+  o.step_down = op.step_down.value_or(tool->diameter / 2);
+  o.stepover = op.stepover.value_or(tool->diameter / 2);
+  const bool slotting = o.stepover >= tool->diameter;
+  return prepare(cx, op, *tool, slotting, chosen, o.cut, title) &&
+         cam::generate_pocket(*shape, o, cx.sink, at);
+}
+
+// The smallest corner the tool meets on the contours' sides (auto: inside
+// the holes of the part, outside its outline).
+double profile_corner(const std::vector<cam::Path>& contours, const Operation& op) {
+  double corner = kNoCorner;
+  const std::vector<int> depth = cam::nesting_depths(contours, 0.001);
+  for (std::size_t i = 0; i < contours.size(); ++i) {
+    if (!contours[i].closed) continue;
+    const bool inside = op.side == "inside" || (op.side == "auto" && depth[i] % 2 == 1);
+    if (op.side == "inside" || op.side == "outside" || op.side == "auto") {
+      corner = std::min(corner, smallest_inside_radius(contours[i], inside));
+    }
+  }
+  return corner;
+}
+
+bool run_profile(Context& cx, const Operation& op, const std::string& title) {
+  const auto paths = layer_paths(cx.j, op, cx.diags);
+  if (!paths) return false;
+  const std::vector<cam::Path> contours = cam::chain(*paths);
+  std::string chosen;
+  const Tool* tool = mill_for(cx, op, profile_corner(contours, op), chosen);
+  if (tool == nullptr) return false;
+  cam::ProfileOptions o;
+  o.depth = op.depth;
+  o.step_down = op.step_down.value_or(tool->diameter / 2);
+  o.side = cam::profile_side(op.side).value_or(cam::ProfileSide::Outside);
+  o.lead_radius = op.lead_radius;
+  o.tabs = {op.tabs, op.tab_width, op.tab_height};
+  AtOperation at(cx.diags, op.loc, title);
+  // A profile cuts its full width into the stock: a slot.
+  return prepare(cx, op, *tool, true, chosen, o.cut, title) &&
+         cam::generate_profile(contours, o, cx.sink, at);
+}
+
+void job_header(Context& cx) {
+  const Job& job = cx.j.job;
+  const Stock& s = job.stock;
+  cx.sink.comment(fmt::format("job {}", job.name.empty() ? "(unnamed)" : job.name));
+  cx.sink.comment(
+      s.shape == "box"
+          ? fmt::format("stock box {:g} x {:g} x {:g} mm, corner at X{:g} Y{:g}, top Z0", s.size[0],
+                        s.size[1], s.size[2], s.origin[0], s.origin[1])
+          : fmt::format("stock cylinder D{:g} x {:g} mm, centre at X{:g} Y{:g}, top Z0", s.size[0],
+                        s.size[1], s.origin[0], s.origin[1]));
+  const Material& m = cx.j.materials[cx.j.material];
+  cx.sink.comment(
+      fmt::format("material {}{}", m.name, m.description.empty() ? "" : ": " + m.description));
+}
+
+}  // namespace
+
+bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags) {
+  ProgramSink program(sink);
+  Context cx{j, program, diags};
+  job_header(cx);
+  for (std::size_t i = 0; i < j.job.operations.size(); ++i) {
+    const Operation& op = j.job.operations[i];
+    const std::string title = fmt::format("operation {} {}{}", i + 1, op_type_name(op.type),
+                                          op.layer.empty() ? "" : " layer " + op.layer);
+    bool ok = false;
+    switch (op.type) {
+    case OpType::Drill: ok = run_drill(cx, op, title); break;
+    case OpType::Pocket: ok = run_pocket(cx, op, title); break;
+    case OpType::Profile: ok = run_profile(cx, op, title); break;
+    case OpType::EllipsePocket: ok = run_ellipse(cx, op, title); break;
+    }
+    if (!ok) return false;
+  }
+  sink.on(canon::Op{canon::ProgramEnd{}, {}, canon::Origin::Program});
+  return true;
+}
+
+}  // namespace usina::job

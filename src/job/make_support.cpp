@@ -1,0 +1,177 @@
+#include "job/make_support.hpp"
+
+#include <algorithm>
+#include <variant>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "cam/dxf_import.hpp"
+
+namespace usina::job {
+
+void ProgramSink::on(const canon::Op& op) {
+  if (std::holds_alternative<canon::ProgramEnd>(op.kind)) return;
+  if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) {
+    if (tool_ == t->tool) return;
+    tool_ = t->tool;
+  }
+  next_.on(op);
+}
+
+void ProgramSink::comment(std::string text) {
+  next_.on(canon::Op{canon::Comment{std::move(text)}, {}, canon::Origin::Program});
+}
+
+void AtOperation::report(core::Diagnostic d) {
+  if (d.loc.line == 0) {
+    d.loc = loc_;
+    d.message = fmt::format("{}: {}", what_, d.message);
+  }
+  next_.report(std::move(d));
+}
+
+std::optional<std::vector<cam::Path>> layer_paths(const LoadedJob& j, const Operation& op,
+                                                  core::DiagnosticSink& diags) {
+  if (j.job.drawing.empty()) {
+    diags.report({core::Code::BadJob, core::Severity::Error, op.layer_loc,
+                  "the layer is of a drawing: give [job] drawing = \"FILE.dxf\""});
+    return std::nullopt;
+  }
+  cam::DxfOptions o;
+  o.layer = op.layer;
+  core::DiagnosticList local;
+  auto paths = cam::read_dxf(j.job.drawing, o, local);
+  for (core::Diagnostic d : local.all()) {
+    if (d.code == core::Code::DxfNoEntities) {
+      d = {core::Code::JobMissingLayer, core::Severity::Error, op.layer_loc,
+           fmt::format("the drawing {} has nothing to cut on layer \"{}\" (absent, empty, or "
+                       "only text and blocks): check the layer's name",
+                       j.job.drawing, op.layer)};
+    } else if (d.loc.line == 0) {
+      d.loc = op.layer_loc;
+    }
+    diags.report(std::move(d));
+  }
+  return paths;
+}
+
+const Tool* named_tool(const LoadedJob& j, const Operation& op, core::DiagnosticSink& diags) {
+  const Tool* t = find_tool(j.tools, *op.tool);
+  if (t == nullptr) {
+    diags.report({core::Code::JobUnknownTool, core::Severity::Error, op.tool_loc,
+                  fmt::format("tool {} is not in the library {}", *op.tool, j.job.tools)});
+    return nullptr;
+  }
+  // A drill drills and an end mill mills: the cutting data and the moves
+  // are each kind's own.
+  const bool drill_op = op.type == OpType::Drill;
+  const bool mill =
+      t->type == ToolType::Flat || t->type == ToolType::Ball || t->type == ToolType::Bull;
+  if (drill_op ? t->type != ToolType::Drill : !mill) {
+    diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
+                  fmt::format("T{} is a {} tool; a {} operation takes {}", t->number,
+                              tool_type_name(t->type), op_type_name(op.type),
+                              drill_op ? "a drill" : "a flat, ball or bull end mill")});
+    return nullptr;
+  }
+  if (t->cutting_length < op.depth) {
+    diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
+                  fmt::format("T{} cuts {:g} mm deep at most (its cutting length); the "
+                              "operation goes {:g} mm deep",
+                              t->number, t->cutting_length, op.depth)});
+    return nullptr;
+  }
+  return t;
+}
+
+namespace {
+
+// The machine's limits: its spindle's top speed, the slower of X and Y.
+MachineLimits limits_of(const LoadedJob& j) {
+  MachineLimits m;
+  if (!j.machine) return m;
+  m.max_rpm = j.machine->spindle_max_rpm;
+  m.max_feed = std::min(j.machine->axes[0].max_feed, j.machine->axes[1].max_feed);
+  return m;
+}
+
+bool from_cutting_data(const LoadedJob& j, const Operation& op, const Tool& tool, bool slotting,
+                       CuttingConditions& c, core::DiagnosticSink& diags) {
+  const Material& m = j.materials[j.material];
+  const CutKind kind = tool.type == ToolType::Drill ? CutKind::Drill : CutKind::Mill;
+  const CuttingRow* row = cutting_row(m, tool, kind);
+  const auto conditions =
+      row ? cutting_conditions(*row, tool, slotting, limits_of(j)) : std::nullopt;
+  if (!conditions) {
+    diags.report({core::Code::JobNoCuttingData, core::Severity::Error, op.loc,
+                  fmt::format("{} has no {} data for a {} tool of D{:g} (T{}): give rpm and "
+                              "feed in the operation, or add the row to {}",
+                              m.name, kind == CutKind::Drill ? "drilling" : "milling",
+                              tool_material_name(tool.material), tool.diameter, tool.number,
+                              j.job.materials)});
+    return false;
+  }
+  c = *conditions;
+  if (c.limited) {
+    diags.report({core::Code::JobCuttingLimited, core::Severity::Note, op.loc,
+                  fmt::format("T{}: the machine's limits lower the speed or feed: {}", tool.number,
+                              fmt::join(c.why, "; "))});
+  }
+  return true;
+}
+
+}  // namespace
+
+bool cutting_values(const LoadedJob& j, const Operation& op, const Tool& tool, bool slotting,
+                    cam::Cutting& cut, std::vector<std::string>& why, core::DiagnosticSink& diags) {
+  cut.tool = tool.number;
+  cut.tool_diameter = tool.diameter;
+  cut.safe_z = j.job.safe_z;
+  CuttingConditions c;
+  if (op.rpm && op.feed) {
+    c.rpm = *op.rpm;
+    c.feed = *op.feed;
+    c.plunge_feed = tool.type == ToolType::Drill ? c.feed : c.feed / 2;
+    c.why.push_back(fmt::format("n {:g} and vf {:g} as the job gives them", c.rpm, c.feed));
+  } else if (!from_cutting_data(j, op, tool, slotting, c, diags)) {
+    return false;
+  }
+  if (op.plunge_feed) {
+    c.plunge_feed = *op.plunge_feed;
+    c.why.push_back(fmt::format("plunge feed {:g} as the job gives it", c.plunge_feed));
+  }
+  cut.rpm = c.rpm;
+  cut.feed = c.feed;
+  cut.plunge_feed = c.plunge_feed;
+  why = std::move(c.why);
+  return true;
+}
+
+// The tool of `op`: named, or the largest end mill the corners allow.
+const Tool* mill_for(Context& cx, const Operation& op, double corner, std::string& chosen) {
+  if (op.tool) return named_tool(cx.j, op, cx.diags);
+  const ToolChoice c = largest_end_mill(cx.j.tools, corner, op.depth);
+  if (c.tool == nullptr) {
+    cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc, c.why});
+  }
+  chosen = c.why;
+  return c.tool;
+}
+
+// The operation's comments, its tool and cutting values; false after an error.
+bool prepare(Context& cx, const Operation& op, const Tool& tool, bool slotting,
+             const std::string& chosen, cam::Cutting& cut, const std::string& title) {
+  std::vector<std::string> why;
+  if (!cutting_values(cx.j, op, tool, slotting, cut, why, cx.diags)) return false;
+  cx.sink.comment(title);
+  cx.sink.comment(fmt::format("T{} {} D{:g} {} z{}, cutting length {:g}", tool.number,
+                              tool_type_name(tool.type), tool.diameter,
+                              tool_material_name(tool.material), tool.flutes, tool.cutting_length));
+  if (!chosen.empty()) cx.sink.comment("chosen: " + chosen);
+  for (const std::string& w : why)
+    cx.sink.comment(w);
+  return true;
+}
+
+}  // namespace usina::job

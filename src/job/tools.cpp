@@ -1,0 +1,187 @@
+#include "job/tools.hpp"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "job/toml_reader.hpp"
+
+namespace usina::job {
+namespace {
+
+constexpr std::array kTypes = {
+    std::pair{ToolType::Flat, "flat"}, std::pair{ToolType::Ball, "ball"},
+    std::pair{ToolType::Bull, "bull"}, std::pair{ToolType::Drill, "drill"},
+    std::pair{ToolType::Spot, "spot"}, std::pair{ToolType::Chamfer, "chamfer"},
+    std::pair{ToolType::Tap, "tap"},   std::pair{ToolType::Engraver, "engraver"},
+    std::pair{ToolType::Face, "face"},
+};
+constexpr std::array kMaterials = {
+    std::pair{ToolMaterial::Hss, "hss"},
+    std::pair{ToolMaterial::Carbide, "carbide"},
+    std::pair{ToolMaterial::Coated, "coated"},
+};
+constexpr std::string_view kToolKeys[] = {
+    "number",        "type",           "name",           "diameter",
+    "flutes",        "cutting_length", "overall_length", "holder_diameter",
+    "holder_length", "material"};
+
+constexpr Range kNumber{1, 9999, ""};
+constexpr Range kDiameter{0.01, 500, "mm"};
+constexpr Range kFlutes{1, 50, "flutes"};
+constexpr Range kLength{0.01, 1000, "mm"};
+
+template <typename E, std::size_t N>
+std::optional<E> by_name(const std::array<std::pair<E, const char*>, N>& names,
+                         std::string_view s) {
+  for (const auto& [e, n] : names) {
+    if (s == n) return e;
+  }
+  return std::nullopt;
+}
+
+template <typename E, std::size_t N>
+std::string list(const std::array<std::pair<E, const char*>, N>& names) {
+  std::string out;
+  for (const auto& [e, n] : names)
+    out += fmt::format("{}\"{}\"", out.empty() ? "" : ", ", n);
+  return out;
+}
+
+// One [[tool]] entry; nullopt after an error.
+std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
+  r.known_keys(t, "[[tool]]", kToolKeys);
+  Tool tool;
+  const auto number = r.number(t, "[[tool]]", "number", kNumber, true);
+  const std::string what = number ? fmt::format("tool {:g}", *number) : "[[tool]]";
+  const auto type = r.text(t, what, "type", true);
+  const auto diameter = r.number(t, what, "diameter", kDiameter, true);
+  const auto flutes = r.number(t, what, "flutes", kFlutes, false);
+  const auto cutting = r.number(t, what, "cutting_length", kLength, true);
+  const auto material = r.text(t, what, "material", true);
+  tool.overall_length = r.number(t, what, "overall_length", kLength, false).value_or(0.0);
+  tool.holder_diameter = r.number(t, what, "holder_diameter", kLength, false).value_or(0.0);
+  tool.holder_length = r.number(t, what, "holder_length", kLength, false).value_or(0.0);
+  tool.name = r.text(t, what, "name", false).value_or("");
+  if (number && *number != std::floor(*number)) {
+    r.fail(t.get("number")->source(), fmt::format("{}: the number must be whole", what));
+    return std::nullopt;
+  }
+  const auto ty = type ? by_name(kTypes, *type) : std::nullopt;
+  if (type && !ty) {
+    r.fail(t.get("type")->source(), fmt::format("{}: type \"{}\" is not one usina knows: give {}",
+                                                what, *type, list(kTypes)));
+  }
+  const auto ma = material ? by_name(kMaterials, *material) : std::nullopt;
+  if (material && !ma) {
+    r.fail(t.get("material")->source(),
+           fmt::format("{}: material \"{}\" is not one usina knows: give {}", what, *material,
+                       list(kMaterials)));
+  }
+  if (!number || !ty || !diameter || !cutting || !ma) return std::nullopt;
+  tool.number = static_cast<int>(*number);
+  tool.type = *ty;
+  tool.diameter = *diameter;
+  tool.flutes = static_cast<int>(flutes.value_or(2.0));
+  tool.cutting_length = *cutting;
+  tool.material = *ma;
+  return tool;
+}
+
+}  // namespace
+
+std::string_view tool_type_name(ToolType t) {
+  for (const auto& [e, n] : kTypes) {
+    if (e == t) return n;
+  }
+  return "?";
+}
+
+std::string_view tool_material_name(ToolMaterial m) {
+  for (const auto& [e, n] : kMaterials) {
+    if (e == m) return n;
+  }
+  return "?";
+}
+
+std::optional<std::vector<Tool>> read_tool_library(std::string_view toml_text, std::uint32_t file,
+                                                   core::DiagnosticSink& diags) {
+  TomlReader r(toml_text, file, core::Code::BadToolLibrary, diags);
+  const auto root = r.parse();
+  if (!root) return std::nullopt;
+  const toml::array* entries = r.entries(*root, "tool", "the tool library");
+  if (entries == nullptr) return std::nullopt;
+  std::vector<Tool> tools;
+  for (const toml::node& e : *entries) {
+    const auto tool = read_tool(r, *e.as_table());
+    if (!tool) continue;
+    if (find_tool(tools, tool->number) != nullptr) {
+      r.fail(e.source(), fmt::format("tool {} is in the library twice", tool->number));
+      continue;
+    }
+    tools.push_back(*tool);
+  }
+  if (!r.ok()) return std::nullopt;
+  return tools;
+}
+
+const Tool* find_tool(const std::vector<Tool>& tools, int number) {
+  for (const Tool& t : tools) {
+    if (t.number == number) return &t;
+  }
+  return nullptr;
+}
+
+ToolChoice largest_end_mill(const std::vector<Tool>& tools, double max_radius, double depth) {
+  ToolChoice c;
+  const Tool* refused = nullptr;  // the largest flat end mill refused, to say why
+  for (const Tool& t : tools) {
+    if (t.type != ToolType::Flat) continue;
+    const bool fits = t.diameter / 2 <= max_radius + 1e-9 && t.cutting_length >= depth;
+    if (fits && (c.tool == nullptr || t.diameter > c.tool->diameter)) c.tool = &t;
+    if (!fits && (refused == nullptr || t.diameter > refused->diameter)) refused = &t;
+  }
+  const std::string corner = std::isinf(max_radius)
+                                 ? std::string("no inside corner to fit")
+                                 : fmt::format("a smallest inside corner of R{:g}", max_radius);
+  if (c.tool != nullptr) {
+    c.why = fmt::format(
+        "T{}: the largest flat end mill for {} with a cutting length of {:g} mm "
+        "or more",
+        c.tool->number, corner, depth);
+  } else if (refused == nullptr) {
+    c.why = "the library has no flat end mill";
+  } else {
+    c.why = fmt::format(
+        "no flat end mill fits {} at a depth of {:g} mm: the largest, T{}, is "
+        "R{:g} with a cutting length of {:g} mm",
+        corner, depth, refused->number, refused->diameter / 2, refused->cutting_length);
+  }
+  return c;
+}
+
+ToolChoice drill_of(const std::vector<Tool>& tools, double diameter, double depth) {
+  ToolChoice c;
+  const Tool* too_short = nullptr;
+  for (const Tool& t : tools) {
+    if (t.type != ToolType::Drill || std::abs(t.diameter - diameter) > 0.005) continue;
+    if (t.cutting_length >= depth) {
+      c.tool = &t;
+      c.why =
+          fmt::format("T{}: a {:g} mm drill whose flutes reach {:g} mm", t.number, diameter, depth);
+      return c;
+    }
+    too_short = &t;
+  }
+  c.why = too_short != nullptr
+              ? fmt::format(
+                    "the {:g} mm drill T{} cuts {:g} mm deep at most; the holes are "
+                    "{:g} mm deep",
+                    diameter, too_short->number, too_short->cutting_length, depth)
+              : fmt::format("the library has no {:g} mm drill", diameter);
+  return c;
+}
+
+}  // namespace usina::job

@@ -1,0 +1,84 @@
+// The example jobs (examples/jobs/) made into one program, posted for every
+// control and read back by usina in that control's dialect: the same tool
+// path (issue 16, extending GenRoundTrip), tool changes in order.
+#include <gtest/gtest.h>
+
+#include "../post/round_trip.hpp"
+#include "canon/toolpath.hpp"
+#include "job/make.hpp"
+#include "job_test_util.hpp"
+
+namespace usina::job {
+namespace {
+
+constexpr double kTol = 1e-3;  // fanuc and grbl write 3 decimals
+constexpr const char* kPosts[] = {"rs274ngc", "fanuc", "grbl", "romi"};
+
+canon::Toolpath made(const std::string& example, core::DiagnosticList& diags) {
+  core::SourceManager sources;
+  std::string io;
+  const auto l = load_job(testing::repo("examples/jobs/" + example), sources, diags, io);
+  EXPECT_TRUE(l) << io << (diags.all().empty() ? "" : diags.all()[0].message);
+  canon::Toolpath tp;
+  if (l) {
+    EXPECT_TRUE(make_job(*l, tp, diags))
+        << (diags.all().empty() ? "" : core::render(diags.all().back(), sources));
+  }
+  return tp;
+}
+
+std::vector<int> tool_changes(const canon::Toolpath& tp) {
+  std::vector<int> out;
+  for (const canon::Op& op : tp.ops()) {
+    if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) out.push_back(t->tool);
+  }
+  return out;
+}
+
+void round_trip(const canon::Toolpath& tp) {
+  for (const char* post : kPosts) {
+    SCOPED_TRACE(post);
+    core::DiagnosticList diags;
+    const std::string text = test::post_text(tp.ops(), post, diags);
+    EXPECT_FALSE(diags.has_errors()) << (diags.all().empty() ? "" : diags.all()[0].message);
+    if (const auto back = test::interpret_in(text, post)) {
+      test::expect_same_path(tp.ops(), *back, kTol);
+    }
+  }
+}
+
+TEST(JobRoundTrip, PlateHolesPocketProfile) {
+  core::DiagnosticList diags;
+  const canon::Toolpath tp = made("plate.toml", diags);
+  // D5 drill, D6.8 drill (holes by diameter, smallest first), the D6 end
+  // mill the R4 corners allow, the D10 named for the outline.
+  EXPECT_EQ(tool_changes(tp), (std::vector<int>{6, 5, 2, 1}));
+  // The D6's 12936 rev/min is above the machine's 10000: a note.
+  EXPECT_NE(testing::find(diags, core::Code::JobCuttingLimited), nullptr);
+  EXPECT_FALSE(diags.has_errors());
+  round_trip(tp);
+}
+
+TEST(JobRoundTrip, EllipseCover) {
+  core::DiagnosticList diags;
+  const canon::Toolpath tp = made("ellipse_cover.toml", diags);
+  // The ellipse's tightest curve is R7.5: the D10 fits, and the profile
+  // names it too: one tool change.
+  EXPECT_EQ(tool_changes(tp), (std::vector<int>{1}));
+  EXPECT_FALSE(diags.has_errors());
+  round_trip(tp);
+}
+
+TEST(JobRoundTrip, OneProgramEnd) {
+  core::DiagnosticList diags;
+  const canon::Toolpath tp = made("plate.toml", diags);
+  int ends = 0;
+  for (const canon::Op& op : tp.ops())
+    ends += std::holds_alternative<canon::ProgramEnd>(op.kind) ? 1 : 0;
+  EXPECT_EQ(ends, 1);
+  ASSERT_FALSE(tp.ops().empty());
+  EXPECT_TRUE(std::holds_alternative<canon::ProgramEnd>(tp.ops().back().kind));
+}
+
+}  // namespace
+}  // namespace usina::job
