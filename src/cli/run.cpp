@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/apt_run.hpp"
 #include "cli/run_guard.hpp"
 #include "cli/validators.hpp"
 #include "core/output_file.hpp"
@@ -137,6 +138,10 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   auto program = open_input(o.file);
   if (!program) return 2;
   const std::uint32_t main_id = sources.add(std::move(program));
+  // An APT part program (issue 15, docs/apt.md): the APT processor's road.
+  if (is_apt_file(o.file))
+    return run_apt_program(sources, main_id, o.machine_units == "inch" ? 25.4 : 1.0, sink, diags,
+                           static_cast<std::uint64_t>(o.max_ops));
   std::string name = o.dialect;
   if (name == "auto") {
     const gcode::DialectGuess guess =
