@@ -31,7 +31,7 @@ option name (W_DEPRECATED_OPTION: the docs show the current names).
 
 Where it runs: each .md file in a new temporary folder holding a copy of
 examples/ (and every file of examples/ also at the top, so `cover.dxf` and
-`examples/cover.dxf` both work), tests/programs/ (a link), build/usina (a
+`examples/cover.dxf` both work), data/ and tests/programs/ (links), build/usina (a
 link to the binary under test) and an empty docs/images/; `usina` on the PATH
 is the binary under test. A file's commands run in the order written, so an
 example may read what an earlier one wrote.
@@ -175,6 +175,8 @@ def prepare(folder, root, usina):
     for f in examples.iterdir():
         if f.is_file():
             shutil.copy(f, folder / f.name)
+    # data/ (the materials of usina job) as a link, as the jobs of examples/ find it.
+    (folder / "data").symlink_to(root / "data")
     (folder / "tests").mkdir()
     (folder / "tests" / "programs").symlink_to(root / "tests" / "programs")
     (folder / "build").mkdir()

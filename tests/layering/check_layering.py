@@ -23,8 +23,10 @@ ALLOWED = {
     "draw": {"core", "canon"},
     "sim": {"core", "canon"},
     "post": {"core", "canon"},
+    # job (issue 16): the cam generators, driven by a job file, on a machine profile.
+    "job": {"core", "canon", "cam", "sim"},
     "dnc": {"core", "canon", "gcode", "apt", "cam", "draw", "sim", "post"},
-    "cli": {"core", "canon", "gcode", "apt", "cam", "draw", "sim", "post", "dnc"},
+    "cli": {"core", "canon", "gcode", "apt", "cam", "draw", "sim", "post", "dnc", "job"},
 }
 
 SUFFIXES = {".hpp", ".cpp", ".h", ".cc", ".inl", ".ipp"}
