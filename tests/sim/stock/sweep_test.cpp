@@ -1,6 +1,6 @@
 // The sweep against brute force: the lowest point of each tool over a cell
 // along a straight move, closed form (or bisection) against the tool placed
-// at a million points of the move; and a sweep cuts only what it passes over.
+// at 100,000 points of the move; and a sweep cuts only what it passes over.
 #include "sim/stock/sweep.hpp"
 
 #include <cmath>
