@@ -150,7 +150,7 @@
   X(RapidCutsStock, E_RAPID_CUTS_STOCK)                          \
   X(CutBelowFloor, E_CUT_BELOW_FLOOR)                            \
   X(SimToolDefaulted, W_SIM_TOOL_DEFAULTED)                      \
-  X(SimMotionNotModeled, W_SIM_MOTION_NOT_MODELED)                \
+  X(SimMotionNotModeled, W_SIM_MOTION_NOT_MODELED)               \
   /* job: job files, tool libraries, materials, cutting data */  \
   X(BadJob, E_BAD_JOB)                                           \
   X(UnknownJobKey, E_UNKNOWN_JOB_KEY)                            \
