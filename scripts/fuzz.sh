@@ -31,6 +31,7 @@ out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
 targets=(parser interpreter romi fanuc grbl dxf remote_request)
 targets+=(apt)
+targets+=(job_toml)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
@@ -42,6 +43,8 @@ cam_targets=" dxf "
 dnc_targets=" remote_request "
 # The targets of APT part programs link the apt module (core and canon under it).
 apt_targets=" apt "
+# The target of the job's TOML files links the job module's readers (toml++).
+job_targets=" job_toml "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -57,6 +60,8 @@ mapfile -t gcode_sources < <(cd "$root" &&
 mapfile -t cam_sources < <(cd "$root" && ls src/cam/*.cpp | sort)
 dnc_sources=(src/dnc/tape_code.cpp src/dnc/tape_reader.cpp src/dnc/remote_request.cpp)
 mapfile -t apt_sources < <(cd "$root" && ls src/apt/*.cpp | sort)
+job_sources=(src/job/toml_reader.cpp src/job/job_file.cpp src/job/tools.cpp src/job/materials.cpp
+  src/sim/profile_keys.cpp)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
@@ -76,8 +81,9 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
   for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}" "${dnc_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
-  for s in "${apt_sources[@]}"; do
+  for s in "${apt_sources[@]}" "${job_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
+    if [[ "$s" == src/job/* ]]; then echo "  defines = -DTOML_HEADER_ONLY=0 -DTOML_SHARED_LIB=1"; fi
   done
   for t in "${targets[@]}"; do
     if [[ "$dialects" == *" $t "* ]]; then
@@ -91,6 +97,9 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
     elif [[ "$cam_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}")"
       echo "  libs = $cam_libs"
+    elif [[ "$job_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}" "${job_sources[@]}")"
+      echo "  libs = $cam_libs -ltomlplusplus"
     elif [[ "$apt_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${apt_sources[@]}")"
     else

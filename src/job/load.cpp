@@ -27,16 +27,16 @@ std::optional<std::pair<std::string_view, std::uint32_t>> open(const std::string
 // found here, so its diagnostics show their line too.
 class LocatedLines final : public core::DiagnosticSink {
  public:
-  LocatedLines(core::DiagnosticSink& next, std::string_view text) : next_(next), text_(text) {}
+  LocatedLines(core::DiagnosticSink& next, std::string_view text) : next_(next), lines_(text) {}
 
   void report(core::Diagnostic d) override {
-    if (d.loc.line > 0) d.loc.line_offset = line_offset(text_, d.loc.line);
+    if (d.loc.line > 0) d.loc.line_offset = lines_.offset(d.loc.line);
     next_.report(std::move(d));
   }
 
  private:
   core::DiagnosticSink& next_;
-  std::string_view text_;
+  LineStarts lines_;
 };
 
 bool find_stock_material(LoadedJob& l, core::DiagnosticSink& diags) {

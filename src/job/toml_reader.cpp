@@ -9,14 +9,15 @@
 
 namespace usina::job {
 
-std::uint64_t line_offset(std::string_view text, std::uint32_t line) {
-  std::uint64_t offset = 0;
-  for (std::uint32_t l = 1; l < line; ++l) {
-    const std::size_t nl = text.find('\n', offset);
-    if (nl == std::string_view::npos) break;
-    offset = nl + 1;
-  }
-  return offset;
+LineStarts::LineStarts(std::string_view text) {
+  starts_.push_back(0);
+  for (std::size_t nl = text.find('\n'); nl != std::string_view::npos; nl = text.find('\n', nl + 1))
+    starts_.push_back(nl + 1);
+}
+
+std::uint64_t LineStarts::offset(std::uint32_t line) const {
+  if (line == 0) return 0;
+  return starts_[std::min<std::size_t>(line, starts_.size()) - 1];
 }
 
 std::optional<toml::table> TomlReader::parse() {
@@ -30,7 +31,7 @@ std::optional<toml::table> TomlReader::parse() {
 
 core::SourceLoc TomlReader::loc(const toml::source_region& where) const {
   const auto line = static_cast<std::uint32_t>(where.begin.line);
-  return {file_, line, static_cast<std::uint32_t>(where.begin.column), 1, line_offset(text_, line)};
+  return {file_, line, static_cast<std::uint32_t>(where.begin.column), 1, lines_.offset(line)};
 }
 
 void TomlReader::report(core::Code code, const toml::source_region& where, std::string message,

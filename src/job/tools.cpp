@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <set>
 #include <utility>
 
 #include <fmt/format.h>
@@ -114,10 +115,11 @@ std::optional<std::vector<Tool>> read_tool_library(std::string_view toml_text, s
   const toml::array* entries = r.entries(*root, "tool", "the tool library");
   if (entries == nullptr) return std::nullopt;
   std::vector<Tool> tools;
+  std::set<int> numbers;  // a search of `tools` for each tool is quadratic
   for (const toml::node& e : *entries) {
     const auto tool = read_tool(r, *e.as_table());
     if (!tool) continue;
-    if (find_tool(tools, tool->number) != nullptr) {
+    if (!numbers.insert(tool->number).second) {
       r.fail(e.source(), fmt::format("tool {} is in the library twice", tool->number));
       continue;
     }

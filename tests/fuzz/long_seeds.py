@@ -171,6 +171,27 @@ APT_SIZES = {"statement": 200_000, "comment": 100_000, "nesting": 20_000,
              "continuation": 200_000, "program": 1_000_000,
              "contour": 1_000_000}
 
+# --- usina job's TOML files (the first byte picks the reader: 0 job, 1 tools, 2 materials)
+
+JOB_OPERATION = ('[[operation]]\ntype = "pocket"\nlayer = "POCKET"\ndepth = 4.0\n'
+                 'step_down = 2.0\ntool = "auto"\n\n')
+JOB_TOOL = ('[[tool]]\nnumber = 1\nname = "10 mm end mill"\ntype = "flat"\ndiameter = 10.0\n'
+            'flutes = 3\ncutting_length = 22.0\noverall_length = 72.0\nmaterial = "carbide"\n\n')
+JOB_TOML = {
+    # A job of 1 MB: its header, then operations.
+    "operations": lambda n: '0[job]\nname = "long"\ntools = "t.toml"\nmaterials = "m.toml"\n'
+    'drawing = "d.dxf"\n[stock]\nshape = "box"\nsize = [100.0, 100.0, 10.0]\n'
+    'material = "aluminium-wrought"\n\n' + repeat_to(JOB_OPERATION, n),
+    # A tool library of 1 MB.
+    "tools": lambda n: "1" + repeat_to(JOB_TOOL, n),
+    # Arrays nested 10,000 deep (toml++ stops at its own limit).
+    "nesting": lambda n: "0a = " + "[" * (n // 2) + "]" * (n // 2) + "\n",
+    # A string of 200 KB in a materials file.
+    "string": lambda n: '2x = "' + "a" * n + '"\n',
+}
+JOB_TOML_SIZES = {"operations": 1_000_000, "tools": 1_000_000, "nesting": 20_000,
+                  "string": 200_000}
+
 TARGETS = {
     "parser": (ngc_families(), SIZES, "ngc"),
     "interpreter": (ngc_families(), SIZES, "ngc"),
@@ -180,6 +201,7 @@ TARGETS = {
     "dxf": (DXF, DXF_SIZES, "dxf"),
     "remote_request": (REQUEST, REQUEST_SIZES, "tape"),
     "apt": (APT, APT_SIZES, "apt"),
+    "job_toml": (JOB_TOML, JOB_TOML_SIZES, "toml"),
 }
 
 
