@@ -86,6 +86,7 @@ nlohmann::json day_json(const MachineDay& d, double elapsed) {
                         {"alarm_seconds", alarm},
                         {"link_down_seconds", down},
                         {"unknown_seconds", std::max(0.0, elapsed - d.known_seconds)},
+                        {"server_off_seconds", seconds(d, "off")},
                         {"parts", d.parts},
                         {"utilisation", running / kDaySeconds}};
   out["availability"] = d.known_seconds > 0

@@ -6,6 +6,7 @@
 
 #include "dnc/http_tls.hpp"
 #include "dnc/store_jobs.hpp"
+#include "dnc/store_utilisation.hpp"
 
 namespace usina::dnc {
 
@@ -35,10 +36,16 @@ tl::expected<std::unique_ptr<Server>, std::string> Server::open(asio::io_context
   auto store = Store::open(where, std::move(options));
   if (!store) return tl::unexpected(store.error().message);
   // A job a previous run did not see to its end was cut off: never resent.
+  // It ended, and its machines went off, when that run was last alive.
+  auto alive = last_heartbeat(**store);
+  if (!alive) return tl::unexpected(alive.error().message);
   auto cut = interrupt_unfinished_jobs(**store,
                                        "the server stopped while the job was queued or "
-                                       "running (the bytes are those last recorded)");
+                                       "running (the bytes are those last recorded)",
+                                       *alive);
   if (!cut) return tl::unexpected(cut.error().message);
+  if (auto off = close_activity_of_dead_server(**store); !off)
+    return tl::unexpected(off.error().message);
   return std::unique_ptr<Server>(new Server(io, std::move(*store), std::move(config)));
 }
 

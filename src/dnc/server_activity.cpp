@@ -7,6 +7,10 @@
 namespace usina::dnc {
 namespace {
 
+// Seconds between heartbeats: after a kill -9 at most this much of the
+// machines' last activity is counted past the server's death.
+constexpr unsigned kHeartbeatTicks = 10;
+
 std::string_view activity_of(const MachineRuntime& m) {
   const StationState s = m.station ? m.station->state() : StationState::Offline;
   switch (s) {
@@ -29,6 +33,12 @@ void Machines::note_activity(MachineRuntime& m, bool server_stopped) {
   if (m.activity == now) return;
   m.activity = now;
   keep(m, record_activity(store_, m.config.link.name, now, store_.now_us()));
+}
+
+void Machines::heartbeat() {
+  if (ticks_since_heartbeat_++ % kHeartbeatTicks != 0) return;
+  if (auto r = record_heartbeat(store_, store_.now_us()); !r)
+    events_.publish("server.error", {{"error", r.error().message}});
 }
 
 }  // namespace usina::dnc

@@ -109,6 +109,7 @@ void Machines::publish_job(const JobRecord& job) {
 // Once a second: a progress event for each job that moved, and now and
 // then its progress written (what a restart after kill -9 shows).
 void Machines::tick() {
+  heartbeat();
   for (auto& m : machines_) {
     if (!m->current) continue;
     const JobReport* r = m->station->job();

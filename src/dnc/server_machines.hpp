@@ -104,6 +104,9 @@ class Machines {
   // Records the machine's activity when it changed (server_activity.cpp);
   // `off` when the server stops.
   void note_activity(MachineRuntime& m, bool server_stopped = false);
+  // Every kHeartbeatTicks ticks, the server's sign of life in the store
+  // (server_activity.cpp): where a kill -9 ends the machines' activity.
+  void heartbeat();
   void on_punch(MachineRuntime& m, const ReceivedProgram& r);
   void on_request(MachineRuntime& m, const RemoteRequest& r, const AnswerFunction& answer);
   void on_request_answered(MachineRuntime& m, const JobReport& r);
@@ -120,6 +123,7 @@ class Machines {
   std::function<void()> stopped_;
   const std::map<std::string, sim::MachineProfile>* profiles_ = nullptr;
   bool stopping_ = false;
+  unsigned ticks_since_heartbeat_ = 0;
   // The restart programs of queued restart jobs, by job id (a job queued
   // before a restart of the server is interrupted, so memory is enough).
   std::map<std::int64_t, std::shared_ptr<const std::string>> restarts_;

@@ -1,5 +1,7 @@
 #include "dnc/store_jobs.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -112,7 +114,8 @@ StoreResult<std::vector<JobRecord>> list_jobs(Store& store, std::string_view mac
   return out;
 }
 
-StoreResult<std::int64_t> interrupt_unfinished_jobs(Store& store, std::string_view reason) {
+StoreResult<std::int64_t> interrupt_unfinished_jobs(Store& store, std::string_view reason,
+                                                    std::optional<std::int64_t> last_alive_us) {
   auto rows =
       store.db().query(fmt::format("SELECT {} FROM jobs WHERE state IN ('queued', "
                                    "'running') ORDER BY id",
@@ -122,7 +125,8 @@ StoreResult<std::int64_t> interrupt_unfinished_jobs(Store& store, std::string_vi
   for (const SqlRow& r : *rows) {
     JobRecord j = job_of(r);
     j.state = "interrupted";
-    j.ended_at_us = store.now_us();
+    j.ended_at_us = last_alive_us ? std::max({*last_alive_us, j.started_at_us, j.created_at_us})
+                                  : store.now_us();
     j.reason = fmt::format("interrupted at byte {}, line {}: {}", j.bytes_sent, j.line, reason);
     if (auto u = update_job(store, j, server); !u) return tl::unexpected(u.error());
   }

@@ -43,8 +43,11 @@ StoreResult<JobRecord> find_job(Store& store, std::int64_t id);
 // The machine's jobs, newest first.
 StoreResult<std::vector<JobRecord>> list_jobs(Store& store, std::string_view machine,
                                               std::size_t limit);
-// Queued and running jobs become interrupted with `reason`; how many.
-StoreResult<std::int64_t> interrupt_unfinished_jobs(Store& store, std::string_view reason);
+// Queued and running jobs become interrupted with `reason`; how many. They
+// ended when the server was last seen alive (`last_alive_us`, its last
+// heartbeat, never before the job's start), else now.
+StoreResult<std::int64_t> interrupt_unfinished_jobs(Store& store, std::string_view reason,
+                                                    std::optional<std::int64_t> last_alive_us);
 
 // What the drip feeds of a machine say about its parts: each drip feed that
 // ran to its end is a part; its start to end is the cycle's time.

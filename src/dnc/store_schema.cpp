@@ -177,11 +177,20 @@ CREATE TABLE machine_activity (
 CREATE INDEX machine_activity_by_time ON machine_activity (machine, at, id);
 )SQL";
 
+// Version 5: the server's last sign of life (store_utilisation.hpp), written
+// every few seconds while it runs, so a server killed without a word (kill
+// -9, a power cut) still has its machines' activity end near its death.
+constexpr std::string_view kV5 = R"SQL(
+CREATE TABLE server_heartbeat (
+  server TEXT PRIMARY KEY,
+  at BIGINT NOT NULL
+);
+)SQL";
+
 constexpr Migration kMigrations[] = {
-    {1, kV1, kV1Sqlite, kV1Postgres},
-    {2, kV2, "SELECT 1", "SELECT 1"},
-    {3, kV3, "SELECT 1", "SELECT 1"},
-    {4, kV4, "SELECT 1", "SELECT 1"},
+    {1, kV1, kV1Sqlite, kV1Postgres}, {2, kV2, "SELECT 1", "SELECT 1"},
+    {3, kV3, "SELECT 1", "SELECT 1"}, {4, kV4, "SELECT 1", "SELECT 1"},
+    {5, kV5, "SELECT 1", "SELECT 1"},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

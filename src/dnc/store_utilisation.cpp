@@ -77,6 +77,45 @@ StoreResult<void> record_activity(Store& store, std::string_view machine, std::s
   return tx.commit();
 }
 
+StoreResult<void> record_heartbeat(Store& store, std::int64_t at_us) {
+  Transaction tx(store.db());
+  if (auto b = tx.begin_write(); !b) return b;
+  // SQLite (3.24 on) and PostgreSQL both spell the upsert this way.
+  auto r = store.db().query(
+      "INSERT INTO server_heartbeat (server, at) VALUES ('usina', $1) "
+      "ON CONFLICT (server) DO UPDATE SET at = excluded.at",
+      {at_us});
+  if (!r) return tl::unexpected(r.error());
+  return tx.commit();
+}
+
+StoreResult<std::optional<std::int64_t>> last_heartbeat(Store& store) {
+  auto rows = store.db().query("SELECT at FROM server_heartbeat WHERE server = 'usina'", {});
+  if (!rows) return tl::unexpected(rows.error());
+  if (rows->empty()) return std::optional<std::int64_t>{};
+  return std::optional<std::int64_t>(rows->front().integer(0));
+}
+
+StoreResult<std::int64_t> close_activity_of_dead_server(Store& store) {
+  auto beat = last_heartbeat(store);
+  if (!beat) return tl::unexpected(beat.error());
+  // Each machine's last activity (the latest time, the latest row of it).
+  auto rows = store.db().query(
+      "SELECT a.machine, a.activity, a.at FROM machine_activity a WHERE a.id = "
+      "(SELECT b.id FROM machine_activity b WHERE b.machine = a.machine "
+      "ORDER BY b.at DESC, b.id DESC LIMIT 1)",
+      {});
+  if (!rows) return tl::unexpected(rows.error());
+  std::int64_t closed = 0;
+  for (const SqlRow& r : *rows) {
+    if (r.text(1) == "off") continue;
+    const std::int64_t at = std::max(r.integer(2), beat->value_or(r.integer(2)));
+    if (auto w = record_activity(store, r.text(0), "off", at); !w) return tl::unexpected(w.error());
+    ++closed;
+  }
+  return closed;
+}
+
 StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
                                                   std::int64_t first_day, std::int64_t last_day) {
   std::vector<MachineDay> days;

@@ -26,6 +26,21 @@ constexpr std::string_view kActivities[] = {"feeding", "transfer", "idle", "alar
 StoreResult<void> record_activity(Store& store, std::string_view machine, std::string_view activity,
                                   std::int64_t at_us);
 
+// The server is alive at `at_us` (schema version 5): written every few
+// seconds while it runs (server_machines.cpp).
+StoreResult<void> record_heartbeat(Store& store, std::int64_t at_us);
+
+// The server's last sign of life: its last heartbeat, or nothing before the first.
+StoreResult<std::optional<std::int64_t>> last_heartbeat(Store& store);
+
+// At a start: a machine whose last activity is not "off" belonged to a
+// server that died without stopping (kill -9, a power cut). Its activity
+// ends with "off" at the later of that activity's start and the last
+// heartbeat, so the time the server was dead is not counted as what the
+// machine was last seen doing (at most one heartbeat's interval is).
+// Returns how many machines it closed.
+StoreResult<std::int64_t> close_activity_of_dead_server(Store& store);
+
 struct MachineDay {
   std::int64_t day = 0;                   // days since 1970-01-01 (UTC)
   std::map<std::string, double> seconds;  // activity → seconds of the day

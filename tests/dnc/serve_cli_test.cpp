@@ -265,6 +265,10 @@ TEST(ServeCli, AFeedCutByKill9IsInterruptedAfterTheRestart) {
   const auto after = c2.get("/api/jobs/" + id, c2.log_in("boss", "a long password")).json();
   EXPECT_EQ(after["state"], "interrupted") << after.dump();
   EXPECT_NE(after["reason"].get<std::string>().find("the server stopped"), std::string::npos);
+  // The dead server's time is "off" (from its heartbeat), not more feeding.
+  const auto day = c2.get("/api/machines/mill-1/utilisation", c2.log_in("boss", "a long password"))
+                       .json()["days"][0];
+  EXPECT_GT(day["server_off_seconds"].get<double>(), 0.0) << day.dump();
   ::kill(second, SIGTERM);
   EXPECT_EQ(wait_exit(second), 0);
   fs::remove_all(dir);
