@@ -5,16 +5,25 @@
 // Exit status: 0; 1 when the job (or its tool library, materials, machine
 // profile, drawing) has an error, reported at its line; 2 for a file that
 // cannot be read or a bad option.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "cli/post_output.hpp"
 #include "cli/verbs.hpp"
+#include "core/output_file.hpp"
 #include "core/source.hpp"
+#include "draw/builder.hpp"
+#include "draw/layer_style.hpp"
+#include "draw/svg_writer.hpp"
 #include "job/load.hpp"
 #include "job/make.hpp"
+#include "job/sheet.hpp"
 
 namespace usina::cli {
 namespace {
@@ -22,7 +31,83 @@ namespace {
 struct JobCli {
   std::string file;
   PostOutput output;
+  std::string sheet;  // --sheet: the setup sheet's HTML file
 };
+
+// The stock's outline, in grey, beside the tool path.
+void draw_stock(const job::Stock& s, draw::Drawing& d) {
+  draw::Layer& layer = d.layer("STOCK");
+  layer.style = {8, {150, 150, 150}, false};
+  if (s.shape == "box") {
+    const core::Vec2 a{s.origin[0], s.origin[1]};
+    const core::Vec2 b{a.x + s.size[0], a.y + s.size[1]};
+    layer.entities.emplace_back(draw::Polyline{{a, {b.x, a.y}, b, {a.x, b.y}}, true});
+  } else {
+    layer.entities.emplace_back(draw::Circle{{s.origin[0], s.origin[1]}, s.size[0] / 2});
+  }
+}
+
+// --sheet and -o may not name one file (neither exists yet: no inode to compare).
+bool same_path(const std::string& a, const std::string& b) {
+  std::error_code ec1, ec2;
+  const auto ca = std::filesystem::weakly_canonical(a, ec1);
+  const auto cb = std::filesystem::weakly_canonical(b, ec2);
+  return ec1 || ec2 ? a == b : ca == cb;
+}
+
+// Each drill step's holes as circles of its drill's diameter.
+void draw_holes(const job::SheetLog& log, draw::Drawing& d) {
+  for (const job::SheetStep& s : log.steps) {
+    for (const core::Vec2& c : s.holes)
+      d.layer(draw::kHolesLayer).entities.emplace_back(draw::Circle{c, s.tool.diameter / 2});
+  }
+}
+
+// The job made once into the post and, for the sheet, into the timer and
+// the picture. The sheet's file is opened (and checked) before anything is
+// written, and put in place after the program.
+int run_with_sheet(const JobCli& o, const job::LoadedJob& loaded, core::SourceManager& sources,
+                   DiagnosticPrinter& diags) {
+  if (o.output.out != "-" && same_path(o.sheet, o.output.out)) {
+    fmt::print(stderr, "usina: error: --sheet and -o name the same file, {}\n", o.sheet);
+    return 2;
+  }
+  std::vector<std::string> not_these = o.output.inputs;
+  if (o.output.out != "-") not_these.push_back(o.output.out);
+  auto sheet_file = core::OutputFile::open(o.sheet, not_these);
+  if (!sheet_file) {
+    fmt::print(stderr, "usina: error: {}\n", sheet_file.error());
+    return 2;
+  }
+  job::SheetLog log;
+  const sim::MachineProfile machine = loaded.machine.value_or(sim::default_machine_profile());
+  job::SheetTimer timer(machine, log);
+  draw::Drawing picture;
+  draw::DrawingBuilder builder(picture, draw::View::Toolpath);
+  const int status = write_program(o.output, [&](canon::Sink& sink, PostDiagnostics& post_diags) {
+    post_diags.set_sources(&sources);
+    canon::TeeSink both({&sink, &timer, &builder});
+    return job::make_job(loaded, both, diags, &log) && diags.errors() == 0 ? 0 : 1;
+  });
+  if (status != 0) return status;  // the sheet's temporary goes with sheet_file
+  timer.finish();
+  draw_stock(loaded.job.stock, picture);
+  draw_holes(log, picture);
+  std::ostringstream svg;
+  draw::write_svg(picture, svg);
+  const std::string program = o.output.out == "-" ? "(standard output)" : o.output.out;
+  // Inside the page the SVG element goes without its XML declaration.
+  const std::string svg_text = svg.str();
+  const std::size_t element = std::min(svg_text.find("<svg"), svg_text.size());
+  const std::string html =
+      job::sheet_html(loaded, log, timer, std::string_view(svg_text).substr(element), program);
+  std::fwrite(html.data(), 1, html.size(), sheet_file->stream());
+  if (auto w = sheet_file->commit(); !w) {
+    fmt::print(stderr, "usina: error: {}\n", w.error());
+    return 2;
+  }
+  return 0;
+}
 
 int run_job(JobCli& o) {
   core::SourceManager sources;
@@ -39,6 +124,7 @@ int run_job(JobCli& o) {
   o.output.inputs = {o.file, loaded->job.tools, loaded->job.materials};
   if (!loaded->job.drawing.empty()) o.output.inputs.push_back(loaded->job.drawing);
   if (!loaded->job.machine.empty()) o.output.inputs.push_back(loaded->job.machine);
+  if (!o.sheet.empty()) return run_with_sheet(o, *loaded, sources, diags);
   return write_program(o.output, [&](canon::Sink& sink, PostDiagnostics& post_diags) {
     post_diags.set_sources(&sources);
     return job::make_job(*loaded, sink, diags) && diags.errors() == 0 ? 0 : 1;
@@ -53,6 +139,9 @@ void add_job(CLI::App& app) {
       "job", "a whole part from a job file: stock, material, tools, operations (docs/job.md)");
   cmd->add_option("JOB", o->file, "the job file (TOML)")->required();
   add_post_options(*cmd, o->output);
+  cmd->add_option("--sheet", o->sheet,
+                  "also write the setup sheet (HTML: stock, zero, tools and stick-out, "
+                  "operations and times, cycle time and cost)");
   cmd->callback([o] { set_exit_status(run_job(*o)); });
 }
 

@@ -24,8 +24,8 @@ constexpr Range kFeed{0.001, 1e6, "mm/min"};
 constexpr Range kTabs{0, 100, "tabs"};
 
 constexpr std::string_view kTop[] = {"job", "stock", "operation"};
-constexpr std::string_view kJobKeys[] = {"name",      "machine", "tools",
-                                         "materials", "drawing", "safe_z"};
+constexpr std::string_view kJobKeys[] = {"name",    "machine", "tools",     "materials",
+                                         "drawing", "safe_z",  "setup_note"};
 constexpr std::string_view kStockKeys[] = {"shape",  "size",     "diameter",
                                            "height", "material", "origin"};
 // The keys every operation has, then each type's own.
@@ -72,6 +72,7 @@ void read_header(TomlReader& r, const toml::table& root, const std::string& fold
   job.materials = path("materials", true, job.materials_loc);
   job.drawing = path("drawing", false, job.drawing_loc);
   job.safe_z = r.number(t, "[job]", "safe_z", kSmall, false).value_or(5.0);
+  job.setup_note = r.text(t, "[job]", "setup_note", false).value_or("");
 }
 
 void read_stock(TomlReader& r, const toml::table& root, Stock& s) {

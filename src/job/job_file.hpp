@@ -61,6 +61,7 @@ struct Job {
   std::string drawing;  // empty: no drawing (an ellipse pocket needs none)
   core::SourceLoc tools_loc, materials_loc, drawing_loc, machine_loc;
   double safe_z = 5.0;
+  std::string setup_note;  // fixtures, clamping, zero: for the setup sheet (--sheet)
   Stock stock;
   std::vector<Operation> operations;
 };

@@ -62,6 +62,8 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
     // Each hole's moves, as G81/G83 make them: the generator's canned-cycle
     // form first feeds down to the R plane where its writer thinks the tool
     // is (X0 Y0), and after another operation the tool is elsewhere.
+    // Seen from above a hole's moves are a point: the sheet draws its circle.
+    if (cx.sheet != nullptr) cx.sheet->steps.back().holes = g.centers;
     o.form = cam::HoleForm::Moves;
     o.depth = op.depth;
     o.retract = op.retract;
@@ -141,9 +143,9 @@ void job_header(Context& cx) {
 
 }  // namespace
 
-bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags) {
+bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags, SheetLog* sheet) {
   ProgramSink program(sink);
-  Context cx{j, program, diags};
+  Context cx{j, program, diags, sheet};
   job_header(cx);
   for (std::size_t i = 0; i < j.job.operations.size(); ++i) {
     const Operation& op = j.job.operations[i];

@@ -9,11 +9,15 @@
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
 #include "job/load.hpp"
+#include "job/sheet.hpp"
 
 namespace usina::job {
 
 // False after an error (reported at the job file's line when it has one).
 // Ops may have reached the sink by then: the caller writes no program.
-bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags);
+// `sheet`, when given, learns each step (operation and tool) as it begins:
+// the setup sheet's (job/sheet.hpp).
+bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags,
+              SheetLog* sheet = nullptr);
 
 }  // namespace usina::job

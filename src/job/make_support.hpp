@@ -11,6 +11,7 @@
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
 #include "job/load.hpp"
+#include "job/sheet.hpp"
 
 namespace usina::job {
 
@@ -64,6 +65,7 @@ struct Context {
   const LoadedJob& j;
   ProgramSink& sink;
   core::DiagnosticSink& diags;
+  SheetLog* sheet = nullptr;  // the setup sheet's record of the steps, if one is written
 };
 
 // The tool of `op`: named, or the largest flat end mill whose radius is

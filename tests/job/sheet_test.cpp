@@ -1,0 +1,139 @@
+// The setup sheet (usina job --sheet; job/sheet.hpp): each step of the job
+// with its tool, stick-out, speeds and time, the times adding up to stats'
+// cycle time, the author's text escaped; and the sheet's file as safe as
+// the program's (never an input, never the program, nothing when the job
+// fails).
+#include "job/sheet.hpp"
+
+#include <gtest/gtest.h>
+
+#include "canon/sink.hpp"
+#include "job/make.hpp"
+#include "job_test_util.hpp"
+#include "sim/stats.hpp"
+#include "support/files.hpp"
+#include "support/usina_process.hpp"
+
+namespace usina::job {
+namespace {
+
+using test::quote;
+
+struct Made {
+  std::unique_ptr<testing::Loaded> loaded;
+  SheetLog log;
+  std::unique_ptr<SheetTimer> timer;
+};
+
+std::unique_ptr<Made> made_with_sheet(const std::string& text) {
+  auto m = std::make_unique<Made>();
+  m->loaded = testing::load_text(text);
+  EXPECT_TRUE(m->loaded->job) << m->loaded->io_error;
+  if (!m->loaded->job) return m;
+  m->timer = std::make_unique<SheetTimer>(sim::default_machine_profile(), m->log);
+  canon::NullSink program;
+  canon::TeeSink both({&program, m->timer.get()});
+  EXPECT_TRUE(make_job(*m->loaded->job, both, m->loaded->diags, &m->log));
+  m->timer->finish();
+  return m;
+}
+
+const std::string kTwoOperations =
+    "[[operation]]\ntype = \"pocket\"\nlayer = \"POCKET\"\ndepth = 4.0\nstep_down = 2.0\n"
+    "tool = \"auto\"\n"
+    "[[operation]]\ntype = \"profile\"\nlayer = \"OUTLINE\"\nside = \"outside\"\n"
+    "depth = 10.5\nstep_down = 3.5\ntool = 1\n";
+
+TEST(SetupSheet, EachOperationIsAStepWhoseTimesAddUpToTheCycleTime) {
+  const auto m = made_with_sheet(testing::job_text(kTwoOperations));
+  ASSERT_TRUE(m->timer);
+  ASSERT_EQ(m->log.steps.size(), 2u);
+  EXPECT_EQ(m->log.steps[0].depth, 4.0);
+  EXPECT_EQ(m->log.steps[1].tool.number, 1);
+  EXPECT_FALSE(m->log.steps[0].chosen.empty());  // tool = "auto" says why
+  EXPECT_TRUE(m->log.steps[1].chosen.empty());   // a named tool
+  double sum = 0.0;
+  for (const SheetStep& s : m->log.steps) {
+    EXPECT_GT(s.time.cutting_s, 0.0) << s.title;
+    EXPECT_GT(s.rpm, 0.0);
+    sum += s.time.total_s();
+  }
+  // Before the first step only the header's comments: nothing takes time.
+  EXPECT_NEAR(sum, m->timer->report().total.total_s(), 1e-6);
+}
+
+TEST(SetupSheet, TheToolListGivesEachToolItsDeepestCutAndStickOut) {
+  const auto m = made_with_sheet(testing::job_text(kTwoOperations));
+  ASSERT_TRUE(m->timer);
+  const std::string html = sheet_html(*m->loaded->job, m->log, *m->timer, "<svg></svg>", "p.ngc");
+  // T1 cuts the profile 10.5 deep: 12.5 mm out of the holder at the least.
+  const std::size_t t1 = html.find("<tr><td>T1</td>");
+  ASSERT_NE(t1, std::string::npos) << html;
+  const std::string row = html.substr(t1, html.find("</tr>", t1) - t1);
+  EXPECT_NE(row.find("<td>10.5</td><td>12.5</td>"), std::string::npos) << row;
+  EXPECT_NE(html.find("Cycle time"), std::string::npos);
+  EXPECT_NE(html.find("no [cost] per_hour"), std::string::npos);  // the default profile has none
+}
+
+TEST(SetupSheet, TheAuthorsTextIsEscaped) {
+  std::string text = testing::job_text(kTwoOperations);
+  text.replace(text.find("name = \"test\""), 13,
+               "name = \"<script>alert(1)</script>\"\nsetup_note = \"vise & <b>jaws</b>\"");
+  const auto m = made_with_sheet(text);
+  ASSERT_TRUE(m->timer);
+  const std::string html = sheet_html(*m->loaded->job, m->log, *m->timer, "", "p.ngc");
+  EXPECT_EQ(html.find("<script>"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(html.find("vise &amp; &lt;b&gt;jaws&lt;/b&gt;"), std::string::npos);
+}
+
+TEST(SetupSheetCli, ThePlateExampleWritesTheProgramAndItsSheet) {
+  const test::TempDir dir;
+  const std::string job = testing::repo("examples/jobs/plate.toml");
+  const test::Run r =
+      test::usina("job " + quote(job) + " --post fanuc -o " + quote(dir.path("plate.nc")) +
+                  " --sheet " + quote(dir.path("plate.html")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(test::exists(dir.path("plate.nc")));
+  const std::string html = test::slurp(dir.path("plate.html"));
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);  // the SVG's declaration left out
+  // Six holes seen from above: circles of their drills' diameters (D5 and D6.8).
+  EXPECT_EQ(test::count(html, "<circle"), 6u) << html;
+  EXPECT_NE(html.find("Setup sheet: plate"), std::string::npos);
+  EXPECT_NE(html.find("an hour of the machine"), std::string::npos);  // small_vmc has a cost
+}
+
+TEST(SetupSheetCli, TheSheetIsNeverTheProgramNorAnInput) {
+  const test::TempDir dir;
+  const std::string job = dir.write("job.toml", testing::job_text(kTwoOperations));
+  const std::string same = dir.path("same.out");
+  test::Run r = test::usina("job " + quote(job) + " --post rs274ngc -o " + quote(same) +
+                            " --sheet " + quote(same));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("the same file"), std::string::npos) << r.err;
+  EXPECT_FALSE(test::exists(same));
+  const std::string before = test::slurp(job);
+  r = test::usina("job " + quote(job) + " --post rs274ngc -o " + quote(dir.path("p.ngc")) +
+                  " --sheet " + quote(job));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(test::slurp(job), before);
+  EXPECT_FALSE(test::exists(dir.path("p.ngc")));  // refused before anything was written
+}
+
+TEST(SetupSheetCli, AJobWithAnErrorLeavesNoSheet) {
+  const test::TempDir dir;
+  const std::string job = dir.write(
+      "job.toml", testing::job_text("[[operation]]\ntype = \"pocket\"\nlayer = \"NO_SUCH\"\n"
+                                    "depth = 4.0\ntool = \"auto\"\n"));
+  const test::Run r =
+      test::usina("job " + quote(job) + " --post rs274ngc -o " + quote(dir.path("p.ngc")) +
+                  " --sheet " + quote(dir.path("p.html")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_FALSE(test::exists(dir.path("p.html")));
+  EXPECT_FALSE(test::exists(dir.path("p.ngc")));
+}
+
+}  // namespace
+}  // namespace usina::job
