@@ -25,6 +25,25 @@ const Dialect* find_dialect(std::string_view name) {
   return nullptr;
 }
 
+RunModes run_modes(const ModalState& s) {
+  RunModes m;
+  m.inch = s.units == core::LengthUnit::Inch;
+  m.plane = s.plane == core::Plane::XY ? 17 : (s.plane == core::Plane::ZX ? 18 : 19);
+  m.incremental = s.incremental;
+  // 1 = G54 ... 6 = G59, 7 = G59.1 ... 9 = G59.3
+  if (s.coord_system_chosen)
+    m.work_offset = s.coord_system <= 6 ? 530 + 10 * s.coord_system : 590 + s.coord_system - 6;
+  m.length_h = s.length_h;
+  m.feed_mode = s.feed_mode == FeedMode::InverseTime   ? 93
+                : s.feed_mode == FeedMode::UnitsPerRev ? 95
+                                                       : 94;
+  m.motion = s.motion;
+  for (std::size_t a = 0; a < 3; ++a)
+    m.frame_moved = m.frame_moved || s.g92[a] != 0.0;
+  m.frame_moved = m.frame_moved || s.rotation_deg != 0.0;
+  return m;
+}
+
 const CodeEntry* Dialect::find_code(char letter, int code) const {
   for (const CodeEntry& e : codes) {
     if (e.letter == letter && e.code == code) return &e;

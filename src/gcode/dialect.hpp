@@ -45,6 +45,24 @@ struct DialectOption {
 using OptionValues = std::map<std::string, std::string, std::less<>>;
 
 // What runs a program in a dialect.
+// The modes in force after a run, as the program's G words name them: what
+// a restart's preamble writes back (gcode/resume_point.hpp). The runner
+// knows them from running the program, subroutines, macros and computed
+// words included; no reading of the text can.
+struct RunModes {
+  bool inch = false;
+  int plane = 17;            // 17, 18 or 19
+  bool incremental = false;  // G91
+  int work_offset = 0;       // G54 ... G59.3 in tenths when the program chose one, else 0
+  int length_h = -1;         // ModalState::length_h
+  int feed_mode = 94;        // 93, 94 or 95
+  int motion = 0;            // the motion mode in tenths (G80: 800)
+  bool frame_moved = false;  // a G92 or G52 offset, or a rotation, in force
+};
+
+// The modes of the RS274NGC interpreter's state (rs274ngc, fanuc, grbl).
+RunModes run_modes(const ModalState& s);
+
 class ProgramRunner {
  public:
   virtual ~ProgramRunner() = default;
@@ -59,6 +77,10 @@ class ProgramRunner {
   virtual std::optional<std::vector<VarFileEntry>> persistent_variables() const {
     return std::nullopt;
   }
+
+  // The modes in force where the run ended (RunModes). nullopt: the
+  // dialect's runner does not report them.
+  virtual std::optional<RunModes> modes() const { return std::nullopt; }
 };
 
 struct RunContext {

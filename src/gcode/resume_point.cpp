@@ -88,6 +88,7 @@ class Observer final : public canon::Sink {
 struct RunResult {
   bool ok = true;
   std::string error;
+  std::optional<RunModes> modes;  // where the run ended
 };
 
 RunResult run_in_dialect(std::string text, const Dialect& dialect, Observer& obs) {
@@ -102,9 +103,9 @@ RunResult run_in_dialect(std::string text, const Dialect& dialect, Observer& obs
   runner->run(id);
   for (const core::Diagnostic& d : diags.all()) {
     if (d.severity == core::Severity::Error)
-      return {false, fmt::format("{} (line {})", d.message, d.loc.line)};
+      return {false, fmt::format("{} (line {})", d.message, d.loc.line), std::nullopt};
   }
-  return {};
+  return {true, {}, runner->modes()};
 }
 
 tl::expected<std::size_t, std::string> start_index(std::string_view text, const Dialect& dialect,
@@ -140,27 +141,32 @@ bool is_motion(int g) {
   return g == 0 || g == 10 || g == 20 || g == 30 || g == 800 || is_cycle(g);
 }
 
-struct Modes {
-  canon::ResumeState s;
-  int motion = 0;
-  std::optional<std::string> frame_change;  // "G10 at line 4"
-};
+// A word that moves the coordinate frame, first seen in the main part of
+// the text before the start: "G10 at line 4". (The runner's modes see a
+// G92 or a rotation wherever it was run; G10 writes parameters they do not
+// show.)
+std::optional<std::string> frame_word(const std::vector<ScanLine>& lines, std::size_t before,
+                                      bool romi) {
+  for (std::size_t i = 0; i < before && !romi; ++i) {
+    if (lines[i].in_sub) continue;
+    for (const int g : lines[i].g) {
+      if (g == 100 || g == 920 || g == 521 || g == 520 || g == 680 || g == 510 || g == 511 ||
+          g == 160)
+        return fmt::format("G{:g} at line {}", g / 10.0, i + 1);
+    }
+  }
+  return std::nullopt;
+}
 
-void apply_g(int g, const ScanLine& l, std::size_t line, bool romi, Modes& m) {
-  if (g == (romi ? 700 : 200)) m.s.inch = true;
-  if (g == (romi ? 710 : 210)) m.s.inch = false;
-  if (g == 170 || g == 180 || g == 190) m.s.plane = g / 10;
-  if (g == 900) m.s.incremental = false;
-  if (g == 910) m.s.incremental = true;
-  if ((g >= 540 && g <= 590 && g % 10 == 0) || g == 591 || g == 592 || g == 593)
-    m.s.work_offset = g;
-  if (g == 430) m.s.length_offset = l.h.value_or(0);
-  if (g == 490) m.s.length_offset.reset();
-  if (g == 930 || g == 940 || g == 950) m.s.feed_mode = g / 10;
-  if (is_motion(g)) m.motion = g;
-  const bool frame = !romi && (g == 100 || g == 920 || g == 521 || g == 520 || g == 680 ||
-                               g == 510 || g == 511 || g == 160);
-  if (frame && !m.frame_change) m.frame_change = fmt::format("G{:g} at line {}", g / 10.0, line);
+// The modes a restart writes back, from the runner that ran the program
+// before the start.
+void take_modes(const RunModes& r, canon::ResumeState& s) {
+  s.inch = r.inch;
+  s.plane = r.plane;
+  s.incremental = r.incremental;
+  s.work_offset = r.work_offset;
+  if (r.length_h >= 0) s.length_offset = r.length_h;
+  s.feed_mode = r.feed_mode;
 }
 
 std::string head_of(const std::vector<ScanLine>& lines, std::string_view dialect,
@@ -218,45 +224,53 @@ tl::expected<ResumePoint, std::string> find_resume_point(std::string_view text,
         fmt::format("line {} is inside {}: its count or condition cannot be "
                     "restored; start at the block that opens it",
                     line, first.inside));
-  Modes m;
   ResumePoint p;
   for (std::size_t i = 0; i < *at; ++i) {
-    if (lines[i].in_sub) {
-      p.definitions += std::string(lines[i].raw) + "\n";
-      continue;
-    }
-    for (const int g : lines[i].g)
-      apply_g(g, lines[i], i + 1, romi, m);
+    if (lines[i].in_sub) p.definitions += std::string(lines[i].raw) + "\n";
   }
-  if (m.frame_change)
+  if (const auto frame = frame_word(lines, *at, romi))
     return Fail(
         fmt::format("the program moves its coordinate frame before line {} ({}): "
                     "usina cannot restore it; start before that block",
-                    line, *m.frame_change));
+                    line, *frame));
+  Observer obs;
+  std::string prefix(text.substr(0, first.offset));
+  if (!prefix.empty() && prefix[0] == '%' && dialect_name != "romi") prefix += "%\n";
+  const RunResult before = run_in_dialect(std::move(prefix), *dialect, obs);
+  if (!before.ok)
+    return Fail(fmt::format("the program before line {} does not run: {}", line, before.error));
+  const RunModes modes = before.modes.value_or(RunModes{});
+  if (modes.frame_moved)
+    return Fail(
+        fmt::format("the program moves its coordinate frame before line {} (a G92 or "
+                    "G52 offset, or a rotation, mirror or scale, is in force there): "
+                    "usina cannot restore it; start before that block",
+                    line));
+  canon::ResumeState& s = p.state;
+  take_modes(modes, s);
   for (const int g : first.g)
-    if (is_motion(g)) m.s.block_has_motion = true;
-  if (!m.s.block_has_motion && first.axis && is_cycle(m.motion))
+    if (is_motion(g)) s.block_has_motion = true;
+  if (!s.block_has_motion && first.axis && is_cycle(modes.motion))
     return Fail(
         fmt::format("line {} continues the canned cycle G{:g} without restating it: "
                     "its R, Z and Q levels cannot be restored; start at the block "
                     "with the cycle's G word",
-                    line, m.motion / 10.0));
-  if (!m.s.block_has_motion && first.axis && (m.motion == 20 || m.motion == 30))
+                    line, modes.motion / 10.0));
+  if (!s.block_has_motion && first.axis && (modes.motion == 20 || modes.motion == 30))
     return Fail(
         fmt::format("line {} continues the arc mode G{} without restating it; "
                     "start at the block with its G word",
-                    line, m.motion / 10));
-  if (m.s.feed_mode == 93)
+                    line, modes.motion / 10));
+  if (s.feed_mode == 93)
     return Fail("inverse-time feed (G93) is in force: usina will not choose the plunge's time");
-  m.s.motion = m.motion == 0 ? 0 : 10;
+  if (modes.length_h == -2)
+    return Fail(
+        fmt::format("a G43.1 or G43.2 length offset is in force before line {}: usina "
+                    "cannot write it back; start before that block",
+                    line));
+  s.motion = modes.motion == 0 ? 0 : 10;
   for (const int mc : first.m)
-    if (mc == 6) m.s.start_block_changes_tool = true;
-  Observer obs;
-  std::string prefix(text.substr(0, first.offset));
-  if (!prefix.empty() && prefix[0] == '%' && dialect_name != "romi") prefix += "%\n";
-  if (auto r = run_in_dialect(std::move(prefix), *dialect, obs); !r.ok)
-    return Fail(fmt::format("the program before line {} does not run: {}", line, r.error));
-  canon::ResumeState& s = m.s;
+    if (mc == 6) s.start_block_changes_tool = true;
   s.line = static_cast<std::uint32_t>(line);
   s.n_word = first.n;
   if (start.kind == ResumeStart::Kind::Tool) s.by_tool = static_cast<int>(start.value);
@@ -270,7 +284,6 @@ tl::expected<ResumePoint, std::string> find_resume_point(std::string_view text,
   s.moved = obs.moved;
   s.start = obs.pos / per;
   s.safe_z = std::max(obs.max_z, obs.pos.z) / per;
-  p.state = s;
   p.head = head_of(lines, dialect_name, *at);
   p.offset = first.offset;
   return p;

@@ -143,6 +143,19 @@ void Engine::input_signals(double value) {
 
 // #500-#999 as they stand; a vacant one has no line (a var file holds
 // numbers only).
+// The interpreter's modes, with what this front end keeps itself: the
+// length offset's register (the interpreter is given its value, G43.1) and
+// the transformations and polar modes that move the frame.
+std::optional<RunModes> Engine::modes() const {
+  RunModes m = run_modes(interp_.state());
+  if (length_sign_ == 0) m.length_h = -1;
+  // G44 (a negative offset) is not written back: -2 refuses the restart.
+  else
+    m.length_h = length_sign_ > 0 ? static_cast<int>(std::clamp(h_register_, 0L, 99'999'999L)) : -2;
+  m.frame_moved = m.frame_moved || xf_.active() || polar_;
+  return m;
+}
+
 std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
   std::vector<VarFileEntry> out;
   for (const auto& [index, value] : common_) {

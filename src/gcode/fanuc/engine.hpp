@@ -218,6 +218,8 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   bool run(std::uint32_t file) override;
   std::optional<std::vector<VarFileEntry>> persistent_variables() const override;
 
+  std::optional<RunModes> modes() const override;
+
  private:
   struct Loop {
     TapePos do_block;

@@ -161,7 +161,9 @@ bool Runner::run(std::uint32_t file) {
   Pass pass(c_, dialect_, file);
   for (const auto& [index, value] : params_)
     pass.interpreter().set_parameter(index, value);
-  return pass.run(*source);
+  const bool ok = pass.run(*source);
+  modes_ = run_modes(pass.interpreter().state());
+  return ok;
 }
 
 }  // namespace usina::gcode::grbl

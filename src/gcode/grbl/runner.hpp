@@ -24,10 +24,13 @@ class Runner final : public ProgramRunner {
 
   bool run(std::uint32_t file) override;
 
+  std::optional<RunModes> modes() const override { return modes_; }
+
  private:
   const Dialect& dialect_;
   RunContext c_;
   std::vector<std::pair<int, double>> params_;
+  std::optional<RunModes> modes_;  // after run()
 };
 
 }  // namespace grbl

@@ -162,6 +162,7 @@ bool Interpreter::modal_settings(BlockWords& w) {
     const int n = g <= 590 ? g / 10 - 53 : 6 + g - 590;
     const bool again = n == s.coord_system && !rules_.reselect_reloads_work_offsets;
     if (!again && !select_coord_system(n)) return false;
+    s.coord_system_chosen = true;
   }
   if (w.g[kGroupPathControl] != -1 && !path_control(w)) return false;
   if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;

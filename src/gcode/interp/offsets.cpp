@@ -221,6 +221,7 @@ bool Interpreter::tool_length(BlockWords& w) {
   ModalState& s = state_;
   const GCode g = w.g[kGroupToolLength];
   Axes next{};
+  if (g == 490) s.length_h = -1;
   if (g == 430 || g == 432) {
     std::optional<int> h;
     if (w.has('H') && !(h = whole(w, 'H', 0, kMaxToolNumber))) return false;
@@ -232,12 +233,14 @@ bool Interpreter::tool_length(BlockWords& w) {
       return error(core::Code::UnknownTool, w.has('H') ? w.col_of('H') : w.gcol[kGroupToolLength],
                    fmt::format("tool {} is not in the tool table", tool));
     }
+    s.length_h = g == 430 ? h.value_or(0) : -2;
     if (g == 432) next = s.tool_offset;
     if (t != nullptr) {
       for (int a = 0; a < 3; ++a)
         next[static_cast<std::size_t>(a)] += t->offset[a];
     }
   } else if (g == 431) {
+    s.length_h = -2;
     for (int a = 0; a < 3; ++a) {
       if (w.has(kAxisLetters[a])) next[static_cast<std::size_t>(a)] = mm(w.get(kAxisLetters[a]));
     }

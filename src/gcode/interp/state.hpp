@@ -51,6 +51,11 @@ struct ModalState {
   bool css = false;                           // G96
   bool lathe_diameter = false;                // G7
   int coord_system = 1;                       // 1 = G54 ... 9 = G59.3
+  bool coord_system_chosen = false;           // a G54-G59.3 word ran (a restart writes it back)
+  // The length offset as the program wrote it, for a restart's preamble:
+  // G43's H (0 when it gave none: the tool in the spindle), -1 under G49,
+  // -2 for G43.1 and G43.2, whose offsets a restart cannot write back.
+  int length_h = -1;
 
   double feed = 0.0;   // mm/min (G94), mm/rev (G95) or 1/min (G93)
   double speed = 0.0;  // rpm, or surface speed under G96

@@ -145,4 +145,16 @@ bool Engine::evaluate_words() {
   return true;
 }
 
+std::optional<RunModes> Engine::modes() const {
+  const Modal& m = exec_.state();
+  RunModes out;
+  out.inch = m.units == core::LengthUnit::Inch;
+  out.incremental = m.incremental;
+  out.motion = m.drill.active ? 810 : 10 * m.motion;
+  const Transform& t = m.tf;
+  out.frame_moved =
+      t.mirror_x || t.mirror_y || t.scale_x != 1.0 || t.scale_y != 1.0 || t.rotation_deg != 0.0;
+  return out;
+}
+
 }  // namespace usina::gcode::romi

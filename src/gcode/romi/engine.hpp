@@ -32,6 +32,10 @@ class Engine final : public ProgramRunner, private ParameterSource {
   // The modal state between blocks: after a failed block, as it was before.
   const Modal& state() const { return exec_.state(); }
 
+  // Romi's modes as RS274NGC's words name them (G70/G71 are inch/mm, G81 a
+  // canned cycle); a mirror, scale or rotation in force moves the frame.
+  std::optional<RunModes> modes() const override;
+
   // Whether a handler of this name exists (every name in the dialect's
   // table must: a test checks).
   static bool knows_handler(std::string_view name) {

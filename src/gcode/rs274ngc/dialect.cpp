@@ -23,6 +23,8 @@ class Rs274Runner final : public ProgramRunner {
 
   bool run(std::uint32_t file) override { return interp_.run(file); }
 
+  std::optional<RunModes> modes() const override { return run_modes(interp_.state()); }
+
   // LinuxCNC's save_parameters(): its required parameters (homes, G92, the
   // selected system, the nine work systems) and every number the parameter
   // file it started from held.
