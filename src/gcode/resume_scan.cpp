@@ -56,7 +56,6 @@ void read_words(const std::string& s, std::string_view raw, bool romi, ScanLine&
     if (c == 'N' && !l.n) l.n = std::lround(*v);
     if (c == 'G') l.g.push_back(static_cast<int>(std::lround(*v * 10)));
     if (c == 'M') l.m.push_back(static_cast<int>(std::lround(*v)));
-    if (c == 'H') l.h = static_cast<int>(std::lround(*v));
     if (std::string_view("XYZABCUVW").find(c) != std::string_view::npos) l.axis = true;
   }
   // romi: a lower-case x y z is an incremental move

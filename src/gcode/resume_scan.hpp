@@ -1,7 +1,8 @@
 // The word scan behind resume_point: each line of a program with its N, G,
-// M, H, T words, whether it moves an axis, and where it stands in the
-// program's structure (a subroutine's definition, a loop, after the end).
-// A scan, not a run: it reads the words as written, in file order.
+// M words, whether it moves an axis, and where it stands in the program's
+// structure (a subroutine's definition, a loop, after the end). A scan, not
+// a run: it finds the start block and what surrounds it; the modes in force
+// there come from running the program (ProgramRunner::modes).
 #pragma once
 
 #include <cstddef>
@@ -18,7 +19,6 @@ struct ScanLine {
   std::optional<long> n;
   std::vector<int> g;  // tenths: G59.1 is 591
   std::vector<int> m;
-  std::optional<int> h;
   bool axis = false;      // an X Y Z A B C U V W word (a move, or a cycle's next hole)
   bool in_sub = false;    // inside a subroutine's definition (its bounds included)
   std::string inside;     // the loop or condition around it ("" at the top level)
