@@ -43,7 +43,7 @@ Reading drill_reading(std::vector<cam::Vec2> points, cam::DrillOptions o,
 void check_grid(FormFields& f, int nx, int ny, double dx, double dy) {
   if (!f.ok()) return;
   if (static_cast<double>(nx) * ny > kMaxHoles) {
-    f.fail("ny", fmt::format("{} × {} holes are more than {}", nx, ny, kMaxHoles));
+    f.fail("nx", fmt::format("{} × {} holes are more than {}", nx, ny, kMaxHoles));
     return;
   }
   for (const auto& [n, d, name] : {std::tuple{nx, dx, "dx"}, std::tuple{ny, dy, "dy"}}) {

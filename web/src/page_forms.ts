@@ -137,7 +137,7 @@ class FormsPage {
     const cycleForm = h(
       'form',
       { class: 'card wide', 'aria-labelledby': 'cycle-h' },
-      h('h2', { id: 'cycle-h', text: 'Cycle' }),
+      h('h2', { id: 'cycle-h', text: 'The cycle' }),
       field('Cycle', this.cycleSelect, 'form-cycle'),
       field('Machine', this.machineSelect, 'form-machine'),
       field('Control (dialect)', this.dialectSelect, 'form-dialect'),
