@@ -53,9 +53,8 @@ tl::expected<PreviewRequest, HttpResponse> preview_request(ApiCall& c) {
     const auto it = c.ctx.profiles.find(**machine_class);
     if (it != c.ctx.profiles.end()) r.profile = &it->second;
   }
-  // dump() writes an object's keys sorted: the same form, the same key.
-  r.key = "form:" +
-          sha256_hex(cycle + "\n" + r.body.dump(-1, ' ', false, json::error_handler_t::replace));
+  // The body's bytes as sent (a drawing may be megabytes: not written again).
+  r.key = "form:" + cycle + ":" + sha256_hex(c.req.body());
   return r;
 }
 

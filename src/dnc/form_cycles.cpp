@@ -23,6 +23,7 @@ constexpr Cycle kCycles[] = {
     {"ellipse_pocket", read_ellipse},      {"rect_pocket", read_rect_pocket},
     {"circle_pocket", read_circle_pocket}, {"drill_grid", read_drill_grid},
     {"bolt_circle", read_bolt_circle},     {"engrave", read_engrave},
+    {"profile_dxf", read_profile_dxf},
 };
 
 std::string read_dialect(FormFields& f) {
@@ -38,7 +39,7 @@ std::string read_dialect(FormFields& f) {
 // The generator into the dialect's post; every error to `out.errors`.
 void write_program(const Reading& r, const post::PostOptions& options, FormProgram& out) {
   std::ostringstream text;
-  FieldDiagnostics diags(r.phrases, r.work_field);
+  FieldDiagnostics diags(r.phrases, r.work_field, r.other_field);
   auto post = post::make_post(out.dialect, text, options, diags);
   const bool made = post != nullptr && r.generate && r.generate(*post, diags);
   if (post) post->finish();

@@ -95,12 +95,15 @@ std::string FieldDiagnostics::field_of(const core::Diagnostic& d) const {
   case core::Code::GenMaterialLeft: return "finish_allowance";
   case core::Code::TextNotInFont: return "text";
   case core::Code::FontUnreadable: return "font";
+  case core::Code::DxfUnreadable:
+  case core::Code::DxfMalformed:
+  case core::Code::DxfNoEntities: return "dxf";
   default: break;
   }
   for (const Phrase& p : phrases_) {
     if (d.message.find(p.words) != std::string::npos) return std::string(p.field);
   }
-  return {};
+  return std::string(other_field_);
 }
 
 void FieldDiagnostics::report(core::Diagnostic d) {
@@ -109,6 +112,7 @@ void FieldDiagnostics::report(core::Diagnostic d) {
     return;
   }
   std::string field = field_of(d);
+  if (d.loc.line != 0) d.message += fmt::format(" (line {} of the drawing)", d.loc.line);
   errors.push_back({std::move(field), std::move(d.message), std::string(core::code_name(d.code))});
 }
 

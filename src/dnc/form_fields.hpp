@@ -65,7 +65,8 @@ class FormFields {
 
 // A generator's diagnostics for a form: errors become FieldErrors (the
 // field found by the code, else by the first of `phrases` in the message),
-// warnings and notes are kept for the preview's diagnostics.
+// a drawing's errors to "dxf" with their line; warnings and notes are
+// kept for the preview's diagnostics.
 class FieldDiagnostics final : public core::DiagnosticSink {
  public:
   struct Phrase {
@@ -73,9 +74,11 @@ class FieldDiagnostics final : public core::DiagnosticSink {
     std::string_view field;
   };
 
-  // `work_field`: where too much work is said (the value that most changes it).
-  FieldDiagnostics(std::vector<Phrase> phrases, std::string_view work_field)
-      : phrases_(std::move(phrases)), work_field_(work_field) {}
+  // `work_field`: where too much work is said (the value that most changes
+  // it); `other_field`: where an error goes that nothing else names.
+  FieldDiagnostics(std::vector<Phrase> phrases, std::string_view work_field,
+                   std::string_view other_field = "")
+      : phrases_(std::move(phrases)), work_field_(work_field), other_field_(other_field) {}
 
   void report(core::Diagnostic d) override;
 
@@ -87,6 +90,7 @@ class FieldDiagnostics final : public core::DiagnosticSink {
 
   std::vector<Phrase> phrases_;
   std::string_view work_field_;
+  std::string_view other_field_;
 };
 
 }  // namespace usina::dnc

@@ -1,6 +1,7 @@
 // What each cycle of the forms (form_cycles.hpp) gives: its fields read
 // into a generator to run, and where that generator's errors go. One file
-// a kind of cycle (form_pockets.cpp, form_ellipse.cpp, form_holes.cpp):
+// a kind of cycle (form_pockets.cpp, form_ellipse.cpp, form_holes.cpp,
+// form_profile.cpp):
 // the cam headers of the ellipse and of the pockets cannot meet in one
 // file (each has its own cam::Ring).
 #pragma once
@@ -25,6 +26,7 @@ struct Reading {
   Generate generate;
   std::vector<Phrase> phrases;  // the message's words → the field (FieldDiagnostics)
   std::string_view work_field;
+  std::string_view other_field = "";  // an error no phrase names (the drawing's, for a profile)
 };
 
 // The fields every cycle has (tool, feeds, spindle, safe Z, the bound on
@@ -39,5 +41,6 @@ Reading read_circle_pocket(FormFields& f, post::PostOptions& post);
 Reading read_drill_grid(FormFields& f, post::PostOptions& post);
 Reading read_bolt_circle(FormFields& f, post::PostOptions& post);
 Reading read_engrave(FormFields& f, post::PostOptions& post);
+Reading read_profile_dxf(FormFields& f, post::PostOptions& post);
 
 }  // namespace usina::dnc

@@ -2,6 +2,8 @@
 // program in each control, read back by that dialect with no error; each
 // bad field named; too much work refused before anything is made; roles.
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -37,6 +39,14 @@ json form_of(std::string_view cycle) {
   if (cycle == "bolt_circle") {
     return {{"radius", 40}, {"count", 6},           {"start_angle", 15},
             {"depth", 12},  {"tool_diameter", 8.5}, {"peck", 3}};
+  }
+  if (cycle == "profile_dxf") {
+    // docs/cam.md's profile of the plate, its drawing as the page uploads it.
+    std::ifstream in(std::string(USINA_TEST_DIR) + "/../examples/plate.dxf");
+    std::stringstream dxf;
+    dxf << in.rdbuf();
+    return {{"dxf", dxf.str()}, {"side", "outside"}, {"depth", 6},     {"step_down", 2},
+            {"lead_radius", 4}, {"tabs", 4},         {"tab_width", 5}, {"tab_height", 1.5}};
   }
   return {{"text", "USINA 2026"}, {"height", 8}, {"at_x", 10}, {"at_y", 5}, {"tool_diameter", 0.5}};
 }
@@ -129,6 +139,9 @@ TEST_F(FormsRoute, EachCyclesOwnBadFieldIsNamedWithUsinaGensMessage) {
       {"engrave", "font", "../../etc/passwd", "E_GEN_BAD_VALUE"},
       {"engrave", "font", "nosuchfont", "E_FONT_UNREADABLE"},
       {"rect_pocket", "dialect", "heidenhain", "E_GEN_BAD_VALUE"},
+      {"profile_dxf", "dxf", "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n", "E_DXF_MALFORMED"},
+      {"profile_dxf", "tab_height", 6, "E_GEN_BAD_VALUE"},
+      {"profile_dxf", "side", "around", "E_GEN_BAD_VALUE"},
   };
   for (const auto& [cycle, field, value, code] : cases) {
     json body = form_of(cycle);
