@@ -4,7 +4,8 @@
 // drawn before anything is saved, the draft saved for romi-1 and found in
 // the library; the cutting calculator filling the spindle speed.
 import { logInAs } from './flows.mjs';
-import { canvasPixels } from './harness.mjs';
+import { join } from 'node:path';
+import { canvasPixels, web } from './harness.mjs';
 
 // docs/gen.md's example of the seed 002 pocket.
 const SEED_002 = [
@@ -20,7 +21,12 @@ const SEED_002 = [
 ];
 
 async function previewShown(page) {
-  await page.locator('#form-status', { hasText: /^Preview: / }).waitFor();
+  try {
+    await page.locator('#form-status', { hasText: /^Preview: / }).waitFor();
+  } catch (e) {
+    const errors = await page.locator('.field-error').allInnerTexts();
+    throw new Error(`no preview: "${await page.locator('#form-status').innerText()}" ${JSON.stringify(errors.filter((x) => x))}`);
+  }
   return page.locator('#form-status').innerText();
 }
 
@@ -69,8 +75,16 @@ export async function formsFlow(page, h, t) {
   const saved = (await h.api('boss', 'GET', '/api/programs/ELLIPSE-1')).json.revisions[0];
   t.check(saved.author === 'prog' && saved.check_ok && /elliptical pocket X50 Y40 RX30 RY18/.test(await (await fetch(`${h.base}/api/programs/ELLIPSE-1/revisions/${saved.revision}/text`, { headers: { Authorization: `Bearer ${await h.logIn('boss')}` } })).text()), "the draft is prog's, its check passed, and it is seed 002's pocket");
 
-  // The cutting calculator fills the spindle speed (1000 × 200 / (π × 8) = 7958).
+  // A profile of the plate drawing (examples/plate.dxf), uploaded from the page.
   await page.getByRole('link', { name: 'New program' }).click();
+  await page.getByLabel('Cycle', { exact: true }).selectOption('profile_dxf');
+  await page.getByLabel('Drawing (DXF)').setInputFiles(join(web, '..', 'examples', 'plate.dxf'));
+  await page.getByLabel('Depth (mm)', { exact: true }).fill('6');
+  await page.getByLabel('Lead arc radius (0: none) (mm)').fill('4');
+  const profile = await previewShown(page);
+  t.check(/the check passed/.test(profile) && (await page.locator('#preview-h').innerText()) === 'Preview (rs274ngc)', `a profile of an uploaded drawing is previewed ("${profile}")`);
+
+  // The cutting calculator fills the spindle speed (1000 × 200 / (π × 8) = 7958).
   await page.getByLabel('Cutting speed v (m/min)').fill('200');
   await page.getByLabel('Tool diameter D (mm)').fill('8');
   await page.getByRole('button', { name: 'Use in the form' }).click();

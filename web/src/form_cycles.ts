@@ -15,6 +15,8 @@ export interface FieldDef {
   value?: number; // docs/gen.md's default; none: required
   text?: boolean; // a string, not a number
   textValue?: string;
+  file?: boolean; // a file's text (a drawing), chosen by the user
+  choices?: string[]; // one of these strings (the first is the default)
 }
 
 export interface CycleDef {
@@ -106,6 +108,22 @@ export const CYCLES: CycleDef[] = [
       ...CUTTING,
     ],
   },
+  {
+    name: 'profile_dxf',
+    title: 'Profile from a DXF drawing',
+    fields: [
+      { name: 'dxf', label: 'Drawing (DXF)', unit: '', min: 1, max: 64 * 1024 * 1024, minIncluded: true, text: true, file: true },
+      { name: 'layer', label: 'Layer (optional)', unit: '', min: 1, max: 255, minIncluded: true, text: true, textValue: '' },
+      { name: 'side', label: 'Side', unit: '', min: 0, max: 0, minIncluded: true, text: true, choices: ['outside', 'inside', 'auto', 'left', 'right', 'on'], textValue: 'outside' },
+      length('depth', 'Depth'),
+      length('step_down', 'Step down', 1),
+      lengthOrZero('lead_radius', 'Lead arc radius (0: none)', 0),
+      { name: 'tabs', label: 'Tabs (0: none)', unit: '', min: 0, max: 10000, minIncluded: true, whole: true, value: 0 },
+      length('tab_width', 'Tab width', 3),
+      length('tab_height', 'Tab height', 1),
+      ...CUTTING,
+    ],
+  },
 ];
 
 function numberText(v: number): string {
@@ -117,6 +135,8 @@ function numberText(v: number): string {
 export function checkField(f: FieldDef, raw: string): string {
   const what = f.label.replace(/ \(.*\)$/, '').toLowerCase();
   if (raw.trim() === '') return f.value === undefined && f.textValue === undefined ? `the ${what} is required` : '';
+  if (f.choices) return f.choices.includes(raw) ? '' : `the ${what} is one of ${f.choices.join(', ')}`;
+  if (f.file && raw.length > f.max) return `the ${what} is ${raw.length} bytes; at most ${f.max}`;
   if (f.text) {
     if (raw.length > f.max) return `the ${what} has ${raw.length} characters; give 1 to ${f.max}`;
     if (f.name === 'text' && /[^ -~]/.test(raw)) return 'printable ASCII only: the fonts have no other characters';

@@ -33,8 +33,16 @@ interface FieldError {
 
 interface Inputs {
   cycle: CycleDef;
-  controls: Map<string, HTMLInputElement>;
+  controls: Map<string, HTMLInputElement | HTMLSelectElement>;
   errors: Map<string, HTMLElement>;
+  files: Map<string, string>; // a file field's text, once read
+  fileRead: () => void;
+}
+
+// A field's value as the page checks and sends it.
+function rawValue(inputs: Inputs, f: FieldDef): string {
+  if (f.file) return inputs.files.get(f.name) ?? '';
+  return inputs.controls.get(f.name)?.value ?? '';
 }
 
 function fromBase64(s: string): ArrayBuffer {
@@ -44,7 +52,20 @@ function fromBase64(s: string): ArrayBuffer {
   return bytes.buffer;
 }
 
-function fieldControl(f: FieldDef): HTMLInputElement {
+function fieldControl(f: FieldDef, inputs: Inputs): HTMLInputElement | HTMLSelectElement {
+  if (f.choices) return h('select', {}, ...f.choices.map((c) => h('option', { value: c, text: c })));
+  if (f.file) {
+    const file = h('input', { type: 'file', accept: '.dxf,*/*', required: true });
+    file.addEventListener('change', () => {
+      const chosen = file.files?.[0];
+      if (!chosen) return;
+      void chosen.text().then((text) => {
+        inputs.files.set(f.name, text);
+        inputs.fileRead();
+      });
+    });
+    return file;
+  }
   if (f.text) return h('input', { type: 'text', autocomplete: 'off', value: f.textValue, maxlength: f.max });
   const step = f.whole ? '1' : 'any';
   return h('input', { type: 'number', inputmode: 'decimal', step, min: f.min, max: f.max, value: f.value, required: f.value === undefined });
@@ -54,7 +75,7 @@ function fieldControl(f: FieldDef): HTMLInputElement {
 // (named by aria-describedby, so a screen reader reads the error with it).
 function fieldRow(f: FieldDef, inputs: Inputs): HTMLElement {
   const id = `form-${f.name}`;
-  const control = fieldControl(f);
+  const control = fieldControl(f, inputs);
   const error = h('p', { id: `${id}-error`, class: 'field-error', 'aria-live': 'polite' });
   control.setAttribute('aria-describedby', error.id);
   control.name = f.name;
@@ -79,7 +100,7 @@ function setError(inputs: Inputs, name: string, message: string): void {
 function checkAll(inputs: Inputs): boolean {
   let ok = true;
   for (const f of inputs.cycle.fields) {
-    const message = checkField(f, inputs.controls.get(f.name)?.value ?? '');
+    const message = checkField(f, rawValue(inputs, f));
     setError(inputs, f.name, message);
     if (message) ok = false;
   }
@@ -91,7 +112,7 @@ function body(inputs: Inputs, dialect: string, machineClass: string): Record<str
   const out: Record<string, unknown> = { dialect };
   if (machineClass) out.machine_class = machineClass;
   for (const f of inputs.cycle.fields) {
-    const raw = inputs.controls.get(f.name)?.value ?? '';
+    const raw = rawValue(inputs, f);
     if (raw.trim() === '') continue;
     out[f.name] = f.text ? raw : Number(raw);
   }
@@ -161,7 +182,7 @@ class FormsPage {
   // The chosen cycle's fields, with their defaults.
   private build(): void {
     const cycle = CYCLES.find((c) => c.name === this.cycleSelect.value) ?? CYCLES[0];
-    this.inputs = { cycle, controls: new Map(), errors: new Map() };
+    this.inputs = { cycle, controls: new Map(), errors: new Map(), files: new Map(), fileRead: () => this.changed(0) };
     this.fieldsHost.replaceChildren(h('legend', { text: `${cycle.title}: fields` }), ...cycle.fields.map((f) => fieldRow(f, this.inputs)));
     this.preview = null;
     this.viewerHost.hidden = true;
