@@ -64,9 +64,9 @@ cam::Cutting read_cutting(FormFields& f) {
   return c;
 }
 
-cam::Vec2 read_point(FormFields& f, std::string_view x, std::string_view y) {
-  return {f.number(x, fmt::format("the {}", x), kCoordinate, 0.0),
-          f.number(y, fmt::format("the {}", y), kCoordinate, 0.0)};
+cam::Vec2 read_point(FormFields& f, std::string_view x, std::string_view y, std::string_view what) {
+  return {f.number(x, fmt::format("{}'s X", what), kCoordinate, 0.0),
+          f.number(y, fmt::format("{}'s Y", what), kCoordinate, 0.0)};
 }
 
 const std::vector<std::string_view>& form_cycles() {

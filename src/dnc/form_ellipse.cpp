@@ -12,7 +12,7 @@ constexpr cam::Range kResolution{0.0001, cam::kMaxCoordinate, true, "mm"};
 
 Reading read_ellipse(FormFields& f, post::PostOptions&) {
   cam::EllipsePocket p;
-  p.center = read_point(f, "center_x", "center_y");
+  p.center = read_point(f, "center_x", "center_y", "the centre");
   p.rx = f.number("rx", "the radius along X", cam::kLength, std::nullopt);
   p.ry = f.number("ry", "the radius along Y", cam::kLength, std::nullopt);
   p.depth = f.number("depth", "the depth", cam::kLength, std::nullopt);

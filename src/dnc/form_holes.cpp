@@ -65,7 +65,7 @@ bool font_name(std::string_view s) {
 }  // namespace
 
 Reading read_drill_grid(FormFields& f, post::PostOptions& post) {
-  const cam::Vec2 origin = read_point(f, "x0", "y0");
+  const cam::Vec2 origin = read_point(f, "x0", "y0", "the first hole");
   const int nx = f.whole("nx", "the holes along X", 1, kMaxHoles, std::nullopt);
   const int ny = f.whole("ny", "the holes along Y", 1, kMaxHoles, std::nullopt);
   const double dx = f.number("dx", "the spacing along X", kSpacing, std::nullopt);
@@ -77,7 +77,7 @@ Reading read_drill_grid(FormFields& f, post::PostOptions& post) {
 }
 
 Reading read_bolt_circle(FormFields& f, post::PostOptions& post) {
-  const cam::Vec2 c = read_point(f, "center_x", "center_y");
+  const cam::Vec2 c = read_point(f, "center_x", "center_y", "the bolt circle's centre");
   const double r = f.number("radius", "the bolt circle's radius", cam::kLength, std::nullopt);
   const int n = f.whole("count", "the count of holes", 1, kMaxHoles, std::nullopt);
   const double start = f.number("start_angle", "the start angle", cam::kAngle, 0.0);
@@ -90,7 +90,7 @@ Reading read_engrave(FormFields& f, post::PostOptions&) {
   cam::EngraveOptions o;
   o.text = f.text("text", "the text", static_cast<std::size_t>(cam::kMaxPasses), std::nullopt);
   o.height = f.number("height", "the text height", cam::kLength, std::nullopt);
-  o.at = read_point(f, "at_x", "at_y");
+  o.at = read_point(f, "at_x", "at_y", "the baseline's start");
   o.depth = f.number("depth", "the depth", cam::kLength, 0.2);
   const std::string font = f.text("font", "the font", 40, std::string("rowmans"));
   o.cut = read_cutting(f);

@@ -40,7 +40,7 @@ Reading read_rect_pocket(FormFields& f, post::PostOptions&) {
   const double w = f.number("width", "the rectangle's width", cam::kLength, std::nullopt);
   const double h = f.number("height", "the rectangle's height", cam::kLength, std::nullopt);
   const double r = f.number("corner_radius", "the corner radius", cam::kLengthOrZero, 0.0);
-  const cam::Vec2 c = read_point(f, "center_x", "center_y");
+  const cam::Vec2 c = read_point(f, "center_x", "center_y", "the centre");
   cam::PocketOptions o = read_pocket_options(f);
   // As usina gen pocket --rect checks it (gen_cam_options.cpp).
   if (f.ok() && 2 * r > std::min(w, h)) {
@@ -53,7 +53,7 @@ Reading read_rect_pocket(FormFields& f, post::PostOptions&) {
 
 Reading read_circle_pocket(FormFields& f, post::PostOptions&) {
   const double r = f.number("radius", "the circle's radius", cam::kLength, std::nullopt);
-  const cam::Vec2 c = read_point(f, "center_x", "center_y");
+  const cam::Vec2 c = read_point(f, "center_x", "center_y", "the centre");
   return pocket_reading({cam::circle(c, r), {}}, read_pocket_options(f));
 }
 

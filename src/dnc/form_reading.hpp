@@ -32,8 +32,8 @@ struct Reading {
 // The fields every cycle has (tool, feeds, spindle, safe Z, the bound on
 // the work), with docs/gen.md's defaults.
 cam::Cutting read_cutting(FormFields& f);
-// A point of two coordinate fields.
-cam::Vec2 read_point(FormFields& f, std::string_view x, std::string_view y);
+// A point of two coordinate fields; `what` names it ("the centre": "the centre's X").
+cam::Vec2 read_point(FormFields& f, std::string_view x, std::string_view y, std::string_view what);
 
 Reading read_ellipse(FormFields& f, post::PostOptions& post);
 Reading read_rect_pocket(FormFields& f, post::PostOptions& post);
