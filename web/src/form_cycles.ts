@@ -7,6 +7,7 @@
 export interface FieldDef {
   name: string; // the field of the request body
   label: string;
+  what?: string; // how a message names it, when not "the " + the label
   unit: string;
   min: number;
   max: number;
@@ -31,7 +32,7 @@ export const FORM_MAX_MOVES = 1_000_000;
 
 const length = (name: string, label: string, value?: number): FieldDef => ({ name, label, unit: 'mm', min: 0, max: M, minIncluded: false, value });
 const lengthOrZero = (name: string, label: string, value: number): FieldDef => ({ name, label, unit: 'mm', min: 0, max: M, minIncluded: true, value });
-const coordinate = (name: string, label: string, value = 0): FieldDef => ({ name, label, unit: 'mm', min: -M, max: M, minIncluded: true, value });
+const coordinate = (name: string, label: string, what: string, value: number | undefined = 0): FieldDef => ({ name, label, what, unit: 'mm', min: -M, max: M, minIncluded: true, value });
 const count = (name: string, label: string, value?: number): FieldDef => ({ name, label, unit: '', min: 1, max: 100000, minIncluded: true, whole: true, value });
 
 const CUTTING: FieldDef[] = [
@@ -57,8 +58,8 @@ export const CYCLES: CycleDef[] = [
     name: 'ellipse_pocket',
     title: 'Elliptical pocket (seed 002)',
     fields: [
-      coordinate('center_x', 'Centre X'),
-      coordinate('center_y', 'Centre Y'),
+      coordinate('center_x', 'Centre X', "the centre's X"),
+      coordinate('center_y', 'Centre Y', "the centre's Y"),
       length('rx', 'Radius along X'),
       length('ry', 'Radius along Y'),
       ...POCKET,
@@ -70,26 +71,26 @@ export const CYCLES: CycleDef[] = [
   {
     name: 'rect_pocket',
     title: 'Rectangular pocket',
-    fields: [length('width', 'Width'), length('height', 'Height'), lengthOrZero('corner_radius', 'Corner radius', 0), coordinate('center_x', 'Centre X'), coordinate('center_y', 'Centre Y'), ...POCKET, ...CUTTING],
+    fields: [{ ...length('width', 'Width'), what: "the rectangle's width" }, { ...length('height', 'Height'), what: "the rectangle's height" }, lengthOrZero('corner_radius', 'Corner radius', 0), coordinate('center_x', 'Centre X', "the centre's X"), coordinate('center_y', 'Centre Y', "the centre's Y"), ...POCKET, ...CUTTING],
   },
   {
     name: 'circle_pocket',
     title: 'Circular pocket',
-    fields: [length('radius', 'Radius'), coordinate('center_x', 'Centre X'), coordinate('center_y', 'Centre Y'), ...POCKET, ...CUTTING],
+    fields: [{ ...length('radius', 'Radius'), what: "the circle's radius" }, coordinate('center_x', 'Centre X', "the centre's X"), coordinate('center_y', 'Centre Y', "the centre's Y"), ...POCKET, ...CUTTING],
   },
   {
     name: 'drill_grid',
     title: 'Drilling: a grid of holes',
-    fields: [coordinate('x0', 'First hole X'), coordinate('y0', 'First hole Y'), count('nx', 'Holes along X'), count('ny', 'Holes along Y'), coordinate('dx', 'Spacing along X', undefined), coordinate('dy', 'Spacing along Y', undefined), ...DRILL, ...CUTTING],
+    fields: [coordinate('x0', 'First hole X', "the first hole's X"), coordinate('y0', 'First hole Y', "the first hole's Y"), count('nx', 'Holes along X'), count('ny', 'Holes along Y'), coordinate('dx', 'Spacing along X', 'the spacing along X', undefined), coordinate('dy', 'Spacing along Y', 'the spacing along Y', undefined), ...DRILL, ...CUTTING],
   },
   {
     name: 'bolt_circle',
     title: 'Drilling: a bolt circle',
     fields: [
-      coordinate('center_x', 'Centre X'),
-      coordinate('center_y', 'Centre Y'),
-      length('radius', 'Radius'),
-      count('count', 'Holes'),
+      coordinate('center_x', 'Centre X', "the centre's X"),
+      coordinate('center_y', 'Centre Y', "the centre's Y"),
+      { ...length('radius', 'Radius'), what: "the bolt circle's radius" },
+      { ...count('count', 'Holes'), what: 'the count of holes' },
       { name: 'start_angle', label: 'Start angle (from +X, counter-clockwise)', unit: '°', min: -360, max: 360, minIncluded: true, value: 0 },
       ...DRILL,
       ...CUTTING,
@@ -100,9 +101,9 @@ export const CYCLES: CycleDef[] = [
     title: 'Engraving text',
     fields: [
       { name: 'text', label: 'Text (printable ASCII)', unit: '', min: 1, max: 10000, minIncluded: true, text: true },
-      length('height', 'Height of a capital'),
-      coordinate('at_x', 'Baseline start X'),
-      coordinate('at_y', 'Baseline start Y'),
+      { ...length('height', 'Height of a capital'), what: 'the text height' },
+      coordinate('at_x', 'Baseline start X', "the baseline's start's X"),
+      coordinate('at_y', 'Baseline start Y', "the baseline's start's Y"),
       length('depth', 'Depth', 0.2),
       { name: 'font', label: 'Font (Hershey)', unit: '', min: 1, max: 40, minIncluded: true, text: true, textValue: 'rowmans' },
       ...CUTTING,
@@ -117,8 +118,8 @@ export const CYCLES: CycleDef[] = [
       { name: 'side', label: 'Side', unit: '', min: 0, max: 0, minIncluded: true, text: true, choices: ['outside', 'inside', 'auto', 'left', 'right', 'on'], textValue: 'outside' },
       length('depth', 'Depth'),
       length('step_down', 'Step down', 1),
-      lengthOrZero('lead_radius', 'Lead arc radius (0: none)', 0),
-      { name: 'tabs', label: 'Tabs (0: none)', unit: '', min: 0, max: 10000, minIncluded: true, whole: true, value: 0 },
+      { ...lengthOrZero('lead_radius', 'Lead arc radius (0: none)', 0), what: 'the lead radius' },
+      { name: 'tabs', label: 'Tabs (0: none)', what: 'the tab count', unit: '', min: 0, max: 10000, minIncluded: true, whole: true, value: 0 },
       length('tab_width', 'Tab width', 3),
       length('tab_height', 'Tab height', 1),
       ...CUTTING,
@@ -133,20 +134,21 @@ function numberText(v: number): string {
 // What is wrong with `raw` for `f` (as the server would say it), or ''.
 // An empty field takes its default; one without a default is required.
 export function checkField(f: FieldDef, raw: string): string {
-  const what = f.label.replace(/ \(.*\)$/, '').toLowerCase();
-  if (raw.trim() === '') return f.value === undefined && f.textValue === undefined ? `the ${what} is required` : '';
-  if (f.choices) return f.choices.includes(raw) ? '' : `the ${what} is one of ${f.choices.join(', ')}`;
-  if (f.file && raw.length > f.max) return `the ${what} is ${raw.length} bytes; at most ${f.max}`;
+  const bare = f.label.replace(/ \(.*\)$/, '');
+  const what = f.what ?? `the ${bare.charAt(0).toLowerCase()}${bare.slice(1)}`;
+  if (raw.trim() === '') return f.value === undefined && f.textValue === undefined ? `${what} is required` : '';
+  if (f.choices) return f.choices.includes(raw) ? '' : `${what} is one of ${f.choices.join(', ')}`;
+  if (f.file && raw.length > f.max) return `${what} is ${raw.length} bytes; at most ${f.max}`;
   if (f.text) {
-    if (raw.length > f.max) return `the ${what} has ${raw.length} characters; give 1 to ${f.max}`;
+    if (raw.length > f.max) return `${what} has ${raw.length} characters; give 1 to ${f.max}`;
     if (f.name === 'text' && /[^ -~]/.test(raw)) return 'printable ASCII only: the fonts have no other characters';
     return '';
   }
   const v = Number(raw);
   const unit = f.unit ? ` ${f.unit}` : '';
   const range = f.minIncluded ? `from ${numberText(f.min)} to ${numberText(f.max)}${unit}` : `above ${numberText(f.min)} and at most ${numberText(f.max)}${unit}`;
-  if (!Number.isFinite(v)) return `the ${what} must be a number`;
-  if ((f.minIncluded ? v < f.min : v <= f.min) || v > f.max) return `the ${what} is ${raw}${unit}; give a number ${range}`;
-  if (f.whole && !Number.isInteger(v)) return `the ${what} is ${raw}; give a whole number`;
+  if (!Number.isFinite(v)) return `${what} must be a number`;
+  if ((f.minIncluded ? v < f.min : v <= f.min) || v > f.max) return `${what} is ${raw}${unit}; give a number ${range}`;
+  if (f.whole && !Number.isInteger(v)) return `${what} is ${raw}; give a whole number`;
   return '';
 }
