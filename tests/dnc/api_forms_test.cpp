@@ -1,15 +1,18 @@
 // POST /api/forms/{cycle}/preview against a real server: each cycle's
 // program in each control, read back by that dialect with no error; each
 // bad field named; too much work refused before anything is made; roles.
+#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "dnc/form_cycles.hpp"
+#include "pool_gate.hpp"
 #include "server_fixture.hpp"
 #include "support/dialect_run.hpp"
 
@@ -217,6 +220,28 @@ TEST_F(FormsRoute, AFormSentAgainIsAnsweredFromTheCacheAndSavesAsADraft) {
   ASSERT_EQ(saved.status, 201) << saved.body;
   EXPECT_EQ(saved.json()["state"], "draft");
   EXPECT_TRUE(saved.json()["check_ok"]);
+}
+
+// The work is the pool's: while a preview is held there, the loop answers.
+TEST_F(FormsRoute, TheLoopAnswersWhileAPreviewIsMade) {
+  test::Gate gate;
+  server.server().toolpaths().before_run = [&gate] { gate.enter(); };
+  std::atomic<int> finished{0};
+  int preview_done = 0;
+  test::Reply made;
+  std::jthread page([&] {
+    made = preview("ellipse_pocket", form_of("ellipse_pocket"));
+    preview_done = ++finished;
+  });
+  test::ReleaseOnExit release{gate};
+  ASSERT_TRUE(gate.wait_entered(1));
+  const test::Reply session = client().get("/api/session", prog);
+  const int session_done = ++finished;
+  EXPECT_EQ(session.status, 200);
+  gate.release();
+  page.join();
+  EXPECT_EQ(made.status, 200) << made.body;
+  EXPECT_LT(session_done, preview_done);
 }
 
 }  // namespace
