@@ -30,6 +30,8 @@ constexpr std::array kRoutes{
     // The figures of each tool, for the page (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/tools", A::Permission, P::ReadPrograms,
              api_tool_figures},
+    // A cycle's form made into a program, previewed (docs/dnc-server.md, "Forms for cycles").
+    ApiRoute{V::post, "/api/forms/{}/preview", A::Permission, P::UploadRevision, api_form_preview},
     // Who may make which move is the state table's (may_change_state).
     ApiRoute{V::post, "/api/programs/{}/revisions/{}/state", A::AnyUser, P::ReadPrograms,
              api_change_state},
@@ -147,7 +149,9 @@ bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAn
   if (!target) return false;
   for (const ApiRoute& route : kRoutes) {
     const bool figures = route.handler == api_tool_figures;
-    if ((route.handler != api_toolpath && !figures) || route.method != req.method()) continue;
+    const bool form = route.handler == api_form_preview;
+    if ((route.handler != api_toolpath && !figures && !form) || route.method != req.method())
+      continue;
     auto params = match(route.pattern, target->segments);
     if (!params) continue;
     ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_};
@@ -155,7 +159,9 @@ bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAn
       answer(with_www_authenticate(std::move(*refused)));
       return true;
     }
-    if (figures) {
+    if (form) {
+      api_form_preview_later(call, std::move(answer));
+    } else if (figures) {
       api_tool_figures_later(call, std::move(answer));
     } else {
       api_toolpath_later(call, std::move(answer));

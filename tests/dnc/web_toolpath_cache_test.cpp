@@ -16,10 +16,14 @@
 #include <gtest/gtest.h>
 
 #include "dnc/web_toolpath_service.hpp"
+#include "pool_gate.hpp"
 #include "server_fixture.hpp"
 
 namespace usina::dnc {
 namespace {
+
+using test::Gate;
+using test::ReleaseOnExit;
 
 ToolpathStream bytes_of(std::size_t n) {
   return std::make_shared<const std::string>(n, 'x');
@@ -98,42 +102,6 @@ std::string long_program(int blocks) {
                         std::sin(i * 0.001) * i * 0.01);
   return text + "M2\n";
 }
-
-// Holds the pool's runs until released (the test's hook, before_run).
-class Gate {
- public:
-  void enter() {
-    std::unique_lock lock(m_);
-    ++entered_;
-    cv_.notify_all();
-    cv_.wait(lock, [&] { return open_; });
-  }
-
-  // False after a guard of 60 s (a broken server; no test asserts a time).
-  bool wait_entered(int n) {
-    std::unique_lock lock(m_);
-    return cv_.wait_for(lock, std::chrono::seconds(60), [&] { return entered_ >= n; });
-  }
-
-  void release() {
-    std::lock_guard lock(m_);
-    open_ = true;
-    cv_.notify_all();
-  }
-
- private:
-  std::mutex m_;
-  std::condition_variable cv_;
-  int entered_ = 0;
-  bool open_ = false;
-};
-
-// Opens the gate before the server stops (its pool waits for the held run).
-struct ReleaseOnExit {
-  Gate& gate;
-
-  ~ReleaseOnExit() { gate.release(); }
-};
 
 struct Uploaded {
   std::string oper;

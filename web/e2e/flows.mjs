@@ -277,7 +277,7 @@ export async function libraryFlow(page, h, t) {
 // must fit its width (no sideways scrolling), the layout wrapping instead.
 export async function zoomFlow(page, h, t, rev) {
   await page.setViewportSize({ width: 640, height: 430 });
-  const pages = [['library', 'Library'], ['machines', 'Machines'], [`program/seed-000/${rev}`, 'Program seed-000']];
+  const pages = [['library', 'Library'], ['machines', 'Machines'], [`program/seed-000/${rev}`, 'Program seed-000'], ['new', 'New program']];
   for (const [hash, heading] of pages) {
     await page.goto(`${h.base}/#/${hash}`);
     await page.getByRole('heading', { name: heading, exact: true }).waitFor();

@@ -130,3 +130,29 @@ export class Harness {
     rmSync(this.scratch, { recursive: true, force: true });
   }
 }
+
+// The viewer's canvas read back: the pixels that are not its background,
+// and where a pixel of tool 1's colour is (a feed to click).
+export async function canvasPixels(page) {
+  return page.evaluate(() => {
+    const c = document.querySelector('#viewer canvas');
+    const t = document.createElement('canvas');
+    t.width = c.width;
+    t.height = c.height;
+    const g = t.getContext('2d');
+    g.drawImage(c, 0, 0);
+    const d = g.getImageData(0, 0, t.width, t.height).data;
+    const bg = [0x1d, 0x23, 0x2a];
+    let drawn = 0;
+    let feed = null; // a pixel of tool 1's colour (#ffb74d): a feed to click
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) drawn++;
+      if (!feed && Math.abs(d[i] - 0xff) < 30 && Math.abs(d[i + 1] - 0xb7) < 40 && Math.abs(d[i + 2] - 0x4d) < 50) {
+        const px = (i / 4) % t.width;
+        const py = Math.floor(i / 4 / t.width);
+        feed = { x: (px * c.clientWidth) / t.width, y: (py * c.clientHeight) / t.height };
+      }
+    }
+    return { drawn, feed, total: d.length / 4 };
+  });
+}

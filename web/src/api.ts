@@ -94,6 +94,7 @@ export class ApiError extends Error {
   constructor(
     readonly status: number,
     message: string,
+    readonly body?: unknown, // the answer's JSON, when it was (a form's 400 names its fields)
   ) {
     super(message);
   }
@@ -121,14 +122,15 @@ async function call(method: string, path: string, body?: unknown): Promise<Respo
   });
   if (!res.ok) {
     let message = `${res.status} ${res.statusText}`;
+    let j: { error?: string } | undefined;
     try {
-      const j = (await res.json()) as { error?: string };
+      j = (await res.json()) as { error?: string };
       if (j.error) message = j.error;
     } catch {
       /* not JSON: keep the status line */
     }
     if (res.status === 401) setToken('');
-    throw new ApiError(res.status, message);
+    throw new ApiError(res.status, message, j);
   }
   return res;
 }

@@ -1,10 +1,11 @@
-// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines.
+// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines, #/new.
 import { ApiError, getJson, postJson, setToken, token } from './api';
 import { h, show } from './dom';
 import { loginPage } from './page_login';
 import { libraryPage } from './page_library';
 import { programPage } from './page_program';
 import { machinesPage, leaveMachines } from './page_machines';
+import { formsPage } from './page_forms';
 
 const main = document.getElementById('main') as HTMLElement;
 
@@ -21,6 +22,7 @@ async function route(): Promise<void> {
     if (parts[0] === 'login') await loginPage(main);
     else if (parts[0] === 'program' && parts[1]) await programPage(main, parts[1], parts[2]);
     else if (parts[0] === 'machines') await machinesPage(main);
+    else if (parts[0] === 'new') await formsPage(main);
     else await libraryPage(main);
   } catch (e) {
     if (e instanceof ApiError && e.status === 401) {

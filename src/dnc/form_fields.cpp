@@ -1,0 +1,119 @@
+#include "dnc/form_fields.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace usina::dnc {
+namespace {
+
+// cam::check_range's message, kept instead of printed.
+class FirstMessage final : public core::DiagnosticSink {
+ public:
+  void report(core::Diagnostic d) override {
+    if (message.empty()) message = std::move(d.message);
+  }
+
+  std::string message;
+};
+
+}  // namespace
+
+const nlohmann::json* FormFields::find(std::string_view name) {
+  asked_.emplace_back(name);
+  const auto it = body_.find(name);
+  if (it == body_.end() || it->is_null()) return nullptr;
+  return &*it;
+}
+
+double FormFields::number(std::string_view name, std::string_view what, const cam::Range& range,
+                          std::optional<double> fallback) {
+  const nlohmann::json* v = find(name);
+  if (v == nullptr) {
+    if (fallback) return *fallback;
+    fail(std::string(name), fmt::format("{} is required", what));
+    return 0.0;
+  }
+  if (!v->is_number()) {
+    fail(std::string(name), fmt::format("{} must be a number", what));
+    return 0.0;
+  }
+  const double x = v->get<double>();
+  FirstMessage said;
+  if (cam::check_range(what, x, range, said)) return x;
+  fail(std::string(name), std::move(said.message));
+  return 0.0;
+}
+
+int FormFields::whole(std::string_view name, std::string_view what, int min, int max,
+                      std::optional<int> fallback) {
+  const cam::Range range{static_cast<double>(min), static_cast<double>(max), true, ""};
+  const double x = number(name, what, range, fallback);
+  if (x == std::floor(x)) return static_cast<int>(x);
+  fail(std::string(name), fmt::format("{} is {:g}; give a whole number", what, x));
+  return 0;
+}
+
+std::string FormFields::text(std::string_view name, std::string_view what, std::size_t max_chars,
+                             std::optional<std::string> fallback) {
+  const nlohmann::json* v = find(name);
+  if (v == nullptr) {
+    if (fallback) return *fallback;
+    fail(std::string(name), fmt::format("{} is required", what));
+    return {};
+  }
+  if (!v->is_string()) {
+    fail(std::string(name), fmt::format("{} must be a string", what));
+    return {};
+  }
+  std::string s = v->get<std::string>();
+  if (s.empty() || s.size() > max_chars) {
+    fail(std::string(name),
+         fmt::format("{} has {} characters; give 1 to {}", what, s.size(), max_chars));
+    return {};
+  }
+  return s;
+}
+
+void FormFields::fail(std::string field, std::string message, std::string code) {
+  errors_.push_back({std::move(field), std::move(message), std::move(code)});
+}
+
+void FormFields::refuse_unknown(std::initializer_list<std::string_view> also) {
+  for (const auto& [key, value] : body_.items()) {
+    const bool known = std::find(asked_.begin(), asked_.end(), key) != asked_.end() ||
+                       std::find(also.begin(), also.end(), key) != also.end();
+    if (!known) fail(key, fmt::format("\"{}\" is no field of this cycle", key));
+  }
+}
+
+std::string FieldDiagnostics::field_of(const core::Diagnostic& d) const {
+  switch (d.code) {
+  case core::Code::GenTooMuchWork: return std::string(work_field_);
+  case core::Code::GenToolTooBig: return "tool_diameter";
+  case core::Code::GenMaterialLeft: return "finish_allowance";
+  case core::Code::TextNotInFont: return "text";
+  case core::Code::FontUnreadable: return "font";
+  case core::Code::DxfUnreadable:
+  case core::Code::DxfMalformed:
+  case core::Code::DxfNoEntities: return "dxf";
+  default: break;
+  }
+  for (const Phrase& p : phrases_) {
+    if (d.message.find(p.words) != std::string::npos) return std::string(p.field);
+  }
+  return std::string(other_field_);
+}
+
+void FieldDiagnostics::report(core::Diagnostic d) {
+  if (d.severity != core::Severity::Error) {
+    others.push_back(std::move(d));
+    return;
+  }
+  std::string field = field_of(d);
+  if (d.loc.line != 0) d.message += fmt::format(" (line {} of the drawing)", d.loc.line);
+  errors.push_back({std::move(field), std::move(d.message), std::string(core::code_name(d.code))});
+}
+
+}  // namespace usina::dnc

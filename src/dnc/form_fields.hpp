@@ -1,0 +1,96 @@
+// A cycle form's fields as the page sends them (docs/dnc-server.md, "Forms
+// for cycles"): a JSON object of numbers and strings, read one field at a
+// time with the range `usina gen` checks it against (cam/limits.hpp), so
+// that every bad field is named in the answer, not only the first one.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cam/limits.hpp"
+#include "core/diagnostic.hpp"
+
+namespace usina::dnc {
+
+// One bad field: its name in the body ("" for the form as a whole), what is
+// wrong with it, and the diagnostic code `usina gen` gives it.
+struct FieldError {
+  std::string field;
+  std::string message;
+  std::string code = "E_GEN_BAD_VALUE";
+};
+
+// Coordinates: within ±100 m of the origin, as cam::check_point has them.
+inline constexpr cam::Range kCoordinate{-cam::kMaxCoordinate, cam::kMaxCoordinate, true, "mm"};
+
+class FormFields {
+ public:
+  explicit FormFields(const nlohmann::json& body) : body_(body) {}
+
+  // The number `name` (`what` says it in a message): `fallback` when it is
+  // absent, an error when it is absent and has none, is no number, or is out
+  // of `range`. After an error: 0 (nothing is generated then).
+  double number(std::string_view name, std::string_view what, const cam::Range& range,
+                std::optional<double> fallback);
+  // A whole number from `min` to `max`.
+  int whole(std::string_view name, std::string_view what, int min, int max,
+            std::optional<int> fallback);
+  // A string of 1 to `max_chars` characters.
+  std::string text(std::string_view name, std::string_view what, std::size_t max_chars,
+                   std::optional<std::string> fallback);
+
+  void fail(std::string field, std::string message, std::string code = "E_GEN_BAD_VALUE");
+
+  // Every key of the body that no reading asked for is an error: a misspelt
+  // field would silently take its default. `also` are keys read elsewhere.
+  void refuse_unknown(std::initializer_list<std::string_view> also);
+
+  const std::vector<FieldError>& errors() const { return errors_; }
+
+  std::vector<FieldError> take_errors() { return std::move(errors_); }
+
+  bool ok() const { return errors_.empty(); }
+
+ private:
+  const nlohmann::json* find(std::string_view name);
+
+  const nlohmann::json& body_;
+  std::vector<std::string> asked_;
+  std::vector<FieldError> errors_;
+};
+
+// A generator's diagnostics for a form: errors become FieldErrors (the
+// field found by the code, else by the first of `phrases` in the message),
+// a drawing's errors to "dxf" with their line; warnings and notes are
+// kept for the preview's diagnostics.
+class FieldDiagnostics final : public core::DiagnosticSink {
+ public:
+  struct Phrase {
+    std::string_view words;
+    std::string_view field;
+  };
+
+  // `work_field`: where too much work is said (the value that most changes
+  // it); `other_field`: where an error goes that nothing else names.
+  FieldDiagnostics(std::vector<Phrase> phrases, std::string_view work_field,
+                   std::string_view other_field = "")
+      : phrases_(std::move(phrases)), work_field_(work_field), other_field_(other_field) {}
+
+  void report(core::Diagnostic d) override;
+
+  std::vector<FieldError> errors;
+  std::vector<core::Diagnostic> others;
+
+ private:
+  std::string field_of(const core::Diagnostic& d) const;
+
+  std::vector<Phrase> phrases_;
+  std::string_view work_field_;
+  std::string_view other_field_;
+};
+
+}  // namespace usina::dnc

@@ -1,0 +1,52 @@
+// The profile's form: usina gen profile --dxf with the drawing's text in
+// the body (the page's upload; bounded by the server's max_upload and by
+// the DXF reader's own 64 MiB), read by the same checked reader as a file.
+#include "cam/chain.hpp"
+#include "cam/dxf_import.hpp"
+#include "cam/profile.hpp"
+#include "dnc/form_reading.hpp"
+
+namespace usina::dnc {
+namespace {
+
+constexpr cam::Range kTabCount{0.0, 10000.0, true, ""};
+
+}  // namespace
+
+Reading read_profile_dxf(FormFields& f, post::PostOptions&) {
+  const std::string dxf = f.text("dxf", "the drawing", cam::kMaxDxfBytes, std::nullopt);
+  cam::DxfOptions d;
+  const std::string layer = f.text("layer", "the layer", 255, std::string());
+  if (!layer.empty()) d.layer = layer;
+  d.spline_tolerance = f.number("spline_tolerance", "the spline tolerance", cam::kTolerance, 0.01);
+  cam::ProfileOptions o;
+  const std::string side = f.text("side", "the side", 10, std::string("outside"));
+  o.depth = f.number("depth", "the depth", cam::kLength, std::nullopt);
+  o.step_down = f.number("step_down", "the step down", cam::kLength, 1.0);
+  o.lead_radius = f.number("lead_radius", "the lead radius", cam::kLengthOrZero, 0.0);
+  o.tabs.count = static_cast<int>(f.number("tabs", "the tab count", kTabCount, 0.0));
+  o.tabs.width = f.number("tab_width", "the tab width", cam::kLength, 3.0);
+  o.tabs.height = f.number("tab_height", "the tab height", cam::kLength, 1.0);
+  o.cut = read_cutting(f);
+  if (const auto s = cam::profile_side(side)) {
+    o.side = *s;
+  } else if (f.ok()) {
+    f.fail("side", "the side is outside, inside, left, right, on or auto");
+  }
+  return {[dxf, d, o](canon::Sink& sink, core::DiagnosticSink& diags) {
+            auto entities = cam::read_dxf_text(dxf, "the drawing", d, diags);
+            if (!entities) return false;
+            return cam::generate_profile(cam::chain(std::move(*entities)), o, sink, diags);
+          },
+          {{"tab height", "tab_height"},
+           {"tabs", "tabs"},
+           {"lead", "lead_radius"},
+           {"open", "side"},
+           {"step down", "step_down"},
+           {"passes", "step_down"},
+           {"spline", "spline_tolerance"}},
+          "dxf",
+          "dxf"};
+}
+
+}  // namespace usina::dnc
