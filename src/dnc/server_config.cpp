@@ -12,6 +12,21 @@
 namespace usina::dnc {
 namespace {
 
+// A byte count of [server] max_upload or [web] max_file_bytes: at least 1 KiB;
+// at most 1 GiB, as a request body or a served file is held in memory (a
+// count of 2^63 would let anyone's upload exhaust it).
+constexpr std::int64_t kMinByteLimit = 1024;
+constexpr std::int64_t kMaxByteLimit = std::int64_t{1} << 30;
+
+// A login lasts a minute at least (shorter, every session has ended before
+// its first request) and 30 days at most.
+constexpr double kMinSessionHours = 1.0 / 60.0;
+constexpr double kMaxSessionHours = 24.0 * 30;
+
+bool byte_limit_ok(const std::optional<std::int64_t>& v) {
+  return v && *v >= kMinByteLimit && *v <= kMaxByteLimit;
+}
+
 void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source_region& at,
           std::string message) {
   core::Diagnostic d;
@@ -39,11 +54,13 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
     }
   }
   if (const toml::node* n = t->get("max_upload")) {
-    const auto v = n->value<std::int64_t>();
-    if (v && *v >= 1024) {
+    const auto v = n->value_exact<std::int64_t>();
+    if (byte_limit_ok(v)) {
       c.max_upload = static_cast<std::uint64_t>(*v);
     } else {
-      fail(diags, file_id, n->source(), "server.max_upload must be a count of bytes, 1024 or more");
+      fail(diags, file_id, n->source(),
+           fmt::format("server.max_upload must be a count of bytes from {} to {} (1 GiB)",
+                       kMinByteLimit, kMaxByteLimit));
       ok = false;
     }
   }
@@ -66,10 +83,13 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
   }
   if (const toml::node* n = t->get("session_hours")) {
     const auto v = n->value<double>();
-    if (v && *v > 0.0 && *v <= 24.0 * 30) {
+    if (v && *v >= kMinSessionHours && *v <= kMaxSessionHours) {
       c.session_hours = *v;
     } else {
-      fail(diags, file_id, n->source(), "server.session_hours must be a number of hours, 0 to 720");
+      fail(diags, file_id, n->source(),
+           fmt::format("server.session_hours must be a number of hours from {:.4g} (a minute) to "
+                       "{:g} (30 days)",
+                       kMinSessionHours, kMaxSessionHours));
       ok = false;
     }
   }
@@ -92,12 +112,13 @@ bool read_web_table(const toml::table& root, ServerConfig& c, std::uint32_t file
     }
   }
   if (const toml::node* n = t->get("max_file_bytes")) {
-    const auto v = n->value<std::int64_t>();
-    if (v && *v >= 1024) {
+    const auto v = n->value_exact<std::int64_t>();
+    if (byte_limit_ok(v)) {
       c.web_max_file_bytes = static_cast<std::uint64_t>(*v);
     } else {
       fail(diags, file_id, n->source(),
-           "web.max_file_bytes must be a count of bytes, 1024 or more");
+           fmt::format("web.max_file_bytes must be a count of bytes from {} to {} (1 GiB)",
+                       kMinByteLimit, kMaxByteLimit));
       ok = false;
     }
   }
@@ -162,6 +183,19 @@ std::optional<std::string> read_file(const std::filesystem::path& p) {
 }
 
 }  // namespace
+
+std::string pattern_error(const std::string& pattern) {
+  if (pattern.size() > kMaxDataPatternLength) {
+    return fmt::format("it is {} characters long; a pattern may have at most {}", pattern.size(),
+                       kMaxDataPatternLength);
+  }
+  try {
+    if (!pattern.empty()) std::regex(pattern, kDataPatternFlags);
+  } catch (const std::regex_error& e) {
+    return e.what();
+  }
+  return {};
+}
 
 bool load_profiles(ServerConfig& config, const std::string& base_dir, core::DiagnosticSink& diags) {
   std::map<std::string, std::string> files;  // class -> its profile's file
