@@ -47,7 +47,8 @@ apt_targets=" apt "
 # The target of the job's TOML files links the job module's readers (toml++).
 job_targets=" job_toml "
 # The target of the configuration files and option values links their readers
-# (sim, dnc, gcode, sim/stock files; toml++).
+# (sim, dnc and sim/stock files; toml++) and the gcode module (the tool table,
+# the var file, and the dialects a [[machine]] may name).
 config_targets=" config "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
@@ -69,7 +70,6 @@ job_sources=(src/job/toml_reader.cpp src/job/job_file.cpp src/job/tools.cpp src/
 config_sources=(src/sim/machine_profile.cpp src/sim/stock/tool_shape.cpp src/sim/stock/height_map.cpp
   src/dnc/server_config.cpp src/dnc/machine_config.cpp src/dnc/link_config.cpp
   src/dnc/data_config.cpp src/dnc/link_port.cpp)
-config_links=(src/gcode/tool_table.cpp src/gcode/var_file.cpp src/sim/profile_keys.cpp)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
@@ -112,7 +112,7 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}" "${job_sources[@]}")"
       echo "  libs = $cam_libs -ltomlplusplus"
     elif [[ "$config_targets" == *" $t "* ]]; then
-      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${config_sources[@]}" "${config_links[@]}")"
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${gcode_sources[@]}" "${config_sources[@]}" src/sim/profile_keys.cpp)"
       echo "  libs = -ltomlplusplus"
     elif [[ "$apt_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${apt_sources[@]}")"
