@@ -75,7 +75,7 @@ void server_config(std::string_view text) {
     trap_outside(m.link.xon_timeout, 1.0, 86400.0);
     trap_outside(m.link.receive_idle, 0.1, 3600.0);
     if (!dnc::standard_baud(m.link.baud)) std::abort();
-    if (!dnc::pattern_error(m.part_count_pattern).empty()) std::abort();
+    if (m.part_count_pattern.size() > dnc::kMaxDataPatternLength) std::abort();
   }
 }
 

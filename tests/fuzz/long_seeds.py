@@ -201,15 +201,21 @@ PROFILE_AXES = "".join('[axes.%s]\nmin = -0.0\nmax = 1e6\nrapid = 1e6\nmax_feed 
 PROFILE_HEAD = '0[machine]\nname = "long"\nunits = "inch"\n' + PROFILE_AXES
 
 
-def serve_machines(n):
-    """usina-serve.toml with [[machine]] tables, each named apart, to about n bytes."""
+def serve_machines(n, numbers=False):
+    """usina-serve.toml with [[machine]] tables, each named apart, to about n bytes;
+    with `numbers`, each table's numbers at the edges of a double (every one an error)."""
     out = ['1[server]\nsession_hours = 720\n[mqtt]\nurl = "mqtt://[::1]"\n']
     size = len(out[0])
     i = 0
+    edges = ("nan", "inf", "-inf", "1e308", "-0.0", "-1e308")
     while size < n:
+        if numbers:
+            limits = "xon_timeout = %s\nreceive_idle = %s\nskid = %s\n" % (
+                edges[i % 6], edges[(i + 1) % 6], edges[(i + 2) % 6])
+        else:
+            limits = "xon_timeout = 1.0\nreceive_idle = 3600\nskid = 65536\n"
         out.append('[[machine]]\nname = "m%d"\nport = "tcp://10.0.%d.%d:4001"\nbaud = 115200\n'
-                   'xon_timeout = 1e308\nreceive_idle = -0.0\nskid = nan\n'
-                   'part_count_pattern = "^PART ([0-9]+)"\n\n' % (i, i % 256, i % 251))
+                   '%spart_count_pattern = "^PART ([0-9]+)"\n\n' % (i, i % 256, i % 251, limits))
         size += len(out[-1])
         i += 1
     return "".join(out)
@@ -226,12 +232,15 @@ def tool_lines(n):
 def var_lines(n):
     """A parameter file: every number 1..5601 in order, then again (each one a
     repeat), values at the edges of a double, to about n bytes."""
-    values = ("0.000000", "1e308", "-1.8e308", "nan", "-0", "inf", "4.9e-324", "+12.5")
+    values = ("0.000000", "-1.8e308", "nan", "-0", "inf", "4.9e-324", "+12.5")
     out = ["3"]
     size = 1
     i = 0
     while size < n:
-        out.append("%d\t%s\n" % (i % 5601 + 1, values[i % len(values)]))
+        # 1e308 now and then: written back with six decimals it takes 10 ms
+        # under ASan (309 digits), and 5,601 of them a minute.
+        value = "1e308" if i % 500 == 0 else values[i % len(values)]
+        out.append("%d\t%s\n" % (i % 5601 + 1, value))
         size += len(out[-1])
         i += 1
     return "".join(out)
@@ -247,8 +256,10 @@ CONFIG = {
     "nesting": lambda n: "0[machine]\nname = " + "[" * (n // 2) + "]" * (n // 2) + "\n",
     # Inline tables nested 10,000 deep in usina-serve.toml.
     "inline": lambda n: "1server = " + "{a=" * (n // 3) + "1" + "}" * (n // 3) + "\n",
-    # usina-serve.toml of 1 MB: [[machine]] tables, numbers out of range.
+    # usina-serve.toml of 1 MB: [[machine]] tables, each with its data pattern.
     "machines": serve_machines,
+    # The same with numbers at the edges of a double (nan, inf, 1e308, -0).
+    "numbers": lambda n: serve_machines(n, numbers=True),
     # A data pattern of 200 KB (std::regex recursed once a character).
     "pattern": lambda n: '1[[machine]]\nname = "m"\nport = "/dev/ttyS0"\npart_count_pattern = "'
     + "(" * (n // 2) + "a" + ")" * (n // 2) + '"\n',
@@ -264,7 +275,7 @@ CONFIG = {
     "port": lambda n: "6tcp://" + "h" * n + ":4001",
 }
 CONFIG_SIZES = {"keys": 1_000_000, "string": 1_000_000, "nesting": 20_000, "inline": 30_000,
-                "machines": 1_000_000, "pattern": 200_000, "tools": 1_000_000,
+                "machines": 1_000_000, "numbers": 1_000_000, "pattern": 200_000, "tools": 1_000_000,
                 "vars": 1_000_000, "stock": 200_000, "shape": 200_000, "port": 200_000}
 
 TARGETS = {
