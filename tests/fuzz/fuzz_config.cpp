@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
@@ -101,7 +102,7 @@ void var_file(std::string_view text) {
   for (const gcode::VarFileEntry& e : *entries) {
     if (e.number < gcode::kMinVarFileParameter || e.number > gcode::kMaxVarFileParameter)
       std::abort();
-    trap_outside(e.value, -1.8e308, 1.8e308);
+    trap_outside(e.value, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
   }
   (void)gcode::write_var_file(*entries);  // throws (and so traps) on what it cannot write
 }
