@@ -1,13 +1,17 @@
 #include "dnc/server_config.hpp"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "dnc/machine_config.hpp"
+#include "sim/profile_keys.hpp"
 
 namespace usina::dnc {
 namespace {
@@ -37,6 +41,66 @@ void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source
   d.loc.col = at.begin.column;
   d.message = std::move(message);
   diags.report(std::move(d));
+}
+
+// The tables of the file and their keys ([[machine]]'s are machine_config's).
+constexpr std::array<std::string_view, 5> kTables{"machine", "server", "web", "mtconnect", "mqtt"};
+constexpr std::array<std::string_view, 5> kServerKeys{"listen", "max_upload", "session_hours",
+                                                      "tls_cert", "tls_key"};
+constexpr std::array<std::string_view, 2> kWebKeys{"root", "max_file_bytes"};
+constexpr std::array<std::string_view, 2> kMtconnectKeys{"listen", "heartbeat_ms"};
+constexpr std::array<std::string_view, 3> kMqttKeys{"url", "prefix", "client_id"};
+
+std::span<const std::string_view> table_keys(std::string_view table) {
+  if (table == "server") return kServerKeys;
+  if (table == "web") return kWebKeys;
+  if (table == "mtconnect") return kMtconnectKeys;
+  if (table == "mqtt") return kMqttKeys;
+  return {};
+}
+
+void unknown_key(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::key& key,
+                 std::string_view where, std::span<const std::string_view> keys) {
+  const std::string_view near = sim::nearest_key(key.str(), keys);
+  core::Diagnostic d;
+  d.code = core::Code::UnknownDncKey;
+  d.severity = core::Severity::Warning;
+  d.loc.file = file_id;
+  d.loc.line = key.source().begin.line;
+  d.loc.col = key.source().begin.column;
+  d.message = fmt::format("unknown key `{}` {} is not read; {}", key.str(), where,
+                          near.empty() ? std::string("docs/dnc-server.md lists the keys")
+                                       : fmt::format("did you mean `{}`?", near));
+  diags.report(std::move(d));
+}
+
+// A misspelt table or key was ignored without a word (`max_uplaod` left the
+// limit at 64 MiB): each is a warning with the nearest name; a known table
+// that is no table (`server = 5`) is an error.
+bool check_tables(const toml::table& root, std::uint32_t file_id, core::DiagnosticSink& diags) {
+  bool ok = true;
+  for (auto&& [key, node] : root) {
+    const std::string_view name = key.str();
+    if (std::find(kTables.begin(), kTables.end(), name) == kTables.end()) {
+      unknown_key(diags, file_id, key, "at the top of the configuration", kTables);
+      continue;
+    }
+    if (name == "machine") continue;  // read_machine_links checks it
+    const toml::table* t = node.as_table();
+    if (t == nullptr) {
+      fail(diags, file_id, node.source(),
+           fmt::format("{} must be a table: write [{}]", name, name));
+      ok = false;
+      continue;
+    }
+    for (auto&& [sub, value] : *t) {
+      (void)value;
+      const auto keys = table_keys(name);
+      if (std::find(keys.begin(), keys.end(), sub.str()) == keys.end())
+        unknown_key(diags, file_id, sub, fmt::format("in [{}]", name), keys);
+    }
+  }
+  return ok;
 }
 
 // The `[server]` table; false when a value is wrong.
@@ -236,7 +300,8 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   } catch (const toml::parse_error&) {
     return std::nullopt;  // reported by read_machine_links
   }
-  bool ok = read_server_table(root, c, file_id, diags);
+  bool ok = check_tables(root, file_id, diags);
+  ok = read_server_table(root, c, file_id, diags) && ok;
   ok = read_web_table(root, c, file_id, diags) && ok;
   ok = read_data_tables(root, c.mtconnect, c.mqtt, file_id, diags) && ok;
   if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;
