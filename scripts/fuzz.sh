@@ -32,6 +32,7 @@ fuzz="$root/tests/fuzz"
 targets=(parser interpreter romi fanuc grbl dxf remote_request)
 targets+=(apt)
 targets+=(job_toml)
+targets+=(config)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
@@ -45,6 +46,10 @@ dnc_targets=" remote_request "
 apt_targets=" apt "
 # The target of the job's TOML files links the job module's readers (toml++).
 job_targets=" job_toml "
+# The target of the configuration files and option values links their readers
+# (sim, dnc and sim/stock files; toml++) and the gcode module (the tool table,
+# the var file, and the dialects a [[machine]] may name).
+config_targets=" config "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -62,6 +67,9 @@ dnc_sources=(src/dnc/tape_code.cpp src/dnc/tape_reader.cpp src/dnc/remote_reques
 mapfile -t apt_sources < <(cd "$root" && ls src/apt/*.cpp | sort)
 job_sources=(src/job/toml_reader.cpp src/job/job_file.cpp src/job/tools.cpp src/job/materials.cpp
   src/sim/profile_keys.cpp)
+config_sources=(src/sim/machine_profile.cpp src/sim/stock/tool_shape.cpp src/sim/stock/height_map.cpp
+  src/dnc/server_config.cpp src/dnc/machine_config.cpp src/dnc/link_config.cpp
+  src/dnc/data_config.cpp src/dnc/link_port.cpp)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
@@ -81,9 +89,11 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
   for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}" "${dnc_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
-  for s in "${apt_sources[@]}" "${job_sources[@]}"; do
+  for s in "${apt_sources[@]}" "${job_sources[@]}" "${config_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
-    if [[ "$s" == src/job/* ]]; then echo "  defines = -DTOML_HEADER_ONLY=0 -DTOML_SHARED_LIB=1"; fi
+    if [[ "$s" == src/job/* || "$s" == src/sim/machine_profile.cpp || "$s" == src/dnc/* ]]; then
+      echo "  defines = -DTOML_HEADER_ONLY=0 -DTOML_SHARED_LIB=1"
+    fi
   done
   for t in "${targets[@]}"; do
     if [[ "$dialects" == *" $t "* ]]; then
@@ -91,6 +101,7 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
       echo "  defines = -DUSINA_FUZZ_DIALECT=\\\"$t\\\""
     else
       echo "build obj/tests/fuzz/fuzz_$t.o: cxx $fuzz/fuzz_$t.cpp"
+      if [[ "$config_targets" == *" $t "* ]]; then echo "  defines = -DTOML_HEADER_ONLY=0 -DTOML_SHARED_LIB=1"; fi
     fi
     if [[ "$dnc_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${dnc_sources[@]}")"
@@ -100,6 +111,9 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
     elif [[ "$job_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}" "${job_sources[@]}")"
       echo "  libs = $cam_libs -ltomlplusplus"
+    elif [[ "$config_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${gcode_sources[@]}" "${config_sources[@]}" src/sim/profile_keys.cpp)"
+      echo "  libs = -ltomlplusplus"
     elif [[ "$apt_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${apt_sources[@]}")"
     else

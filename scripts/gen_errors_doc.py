@@ -673,8 +673,10 @@ EXPLAIN = {
         "the values it takes.",
         "Correct the key named in the message; docs/dnc.md lists every key with its values."),
     "W_UNKNOWN_DNC_KEY": (
-        "A `[[machine]]` table has a key usina does not read, e.g. `buad` for `baud`: its value "
-        "is not used. The message gives the key's line and the nearest valid name.",
+        "A `[[machine]]` table has a key usina does not read, e.g. `buad` for `baud`, or "
+        "usina-serve.toml has a table or a key of `[server]`, `[web]`, `[mtconnect]` or `[mqtt]` "
+        "it does not read (`max_uplaod`): its value is not used. The message gives the key's "
+        "line and the nearest valid name.",
         "Correct the key's spelling (the message suggests one), or remove it; docs/dnc.md lists "
         "the keys."),
     "E_TAPE_NO_CODE": (

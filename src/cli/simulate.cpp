@@ -28,7 +28,6 @@
 #include "gcode/tool_table.hpp"
 #include "sim/stock/simulator.hpp"
 #include "sim/stock/stock_files.hpp"
-#include "sim/stock/words.hpp"
 
 namespace usina::cli {
 namespace {
@@ -93,33 +92,9 @@ tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(const Sim
     }
   }
   for (const std::string& spec : o.tool_shapes) {
-    const std::size_t eq = spec.find('=');
-    const std::size_t slash = spec.find('/');
-    const auto number = stock::finite_number(std::string_view(spec).substr(0, eq));
-    if (eq == std::string::npos || !number || *number < 0 || *number > 99999 ||
-        *number != static_cast<int>(*number)) {
-      return tl::unexpected(fmt::format(
-          "--tool-shape '{}' is not T=SHAPE or T=SHAPE/D (e.g. 3=ball/6, 4=bull:1/10)", spec));
-    }
-    const int n = static_cast<int>(*number);
-    double diameter = tools.count(n) != 0 ? tools[n].diameter : 0.0;
-    if (slash != std::string::npos) {
-      const auto d = stock::finite_number(std::string_view(spec).substr(slash + 1));
-      if (!d)
-        return tl::unexpected(fmt::format("--tool-shape '{}': the diameter is not a number", spec));
-      diameter = *d;
-    }
-    if (diameter <= 0.0) {
-      return tl::unexpected(fmt::format(
-          "--tool-shape '{}': tool {} has no diameter in the tool table; write it: {}/D", spec, n,
-          spec));
-    }
-    auto shape = stock::parse_shape(
-        std::string_view(spec).substr(
-            eq + 1, slash == std::string::npos ? std::string::npos : slash - eq - 1),
-        diameter);
-    if (!shape) return tl::unexpected(fmt::format("--tool-shape '{}': {}", spec, shape.error()));
-    tools[n] = *shape;
+    auto tool = stock::parse_tool_spec(spec, tools);
+    if (!tool) return tl::unexpected(tool.error());
+    tools[tool->first] = tool->second;
   }
   return tools;
 }

@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "dnc/link_port.hpp"
+#include "gcode/dialect.hpp"
 #include "sim/profile_keys.hpp"
 
 namespace usina::dnc {
@@ -172,6 +173,15 @@ void read_identity(Reader& r, const toml::table& t, LinkConfig& c) {
   c.name = name.value_or("");
   r.set_machine(c.name);
   c.dialect = r.text(t, "dialect", false).value_or("rs274ngc");
+  // An unknown dialect was accepted here and refused every punch later.
+  if (gcode::find_dialect(c.dialect) == nullptr) {
+    std::string known;
+    for (const gcode::Dialect* d : gcode::all_dialects())
+      known += fmt::format("{}{}", known.empty() ? "" : ", ", d->name);
+    r.fail(t.get("dialect")->source(),
+           fmt::format("{} = \"{}\" is no dialect usina reads; give one of {}", r.where("dialect"),
+                       c.dialect, known));
+  }
   const std::optional<std::string> port = r.text(t, "port", true);
   if (port) {
     if (const auto parsed = parse_port(*port); !parsed) {

@@ -1,16 +1,35 @@
 #include "dnc/server_config.hpp"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "dnc/machine_config.hpp"
+#include "sim/profile_keys.hpp"
 
 namespace usina::dnc {
 namespace {
+
+// A byte count of [server] max_upload or [web] max_file_bytes: at least 1 KiB;
+// at most 1 GiB, as a request body or a served file is held in memory (a
+// count of 2^63 would let anyone's upload exhaust it).
+constexpr std::int64_t kMinByteLimit = 1024;
+constexpr std::int64_t kMaxByteLimit = std::int64_t{1} << 30;
+
+// A login lasts a minute at least (shorter, every session has ended before
+// its first request) and 30 days at most.
+constexpr double kMinSessionHours = 1.0 / 60.0;
+constexpr double kMaxSessionHours = 24.0 * 30;
+
+bool byte_limit_ok(const std::optional<std::int64_t>& v) {
+  return v && *v >= kMinByteLimit && *v <= kMaxByteLimit;
+}
 
 void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source_region& at,
           std::string message) {
@@ -22,6 +41,66 @@ void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source
   d.loc.col = at.begin.column;
   d.message = std::move(message);
   diags.report(std::move(d));
+}
+
+// The tables of the file and their keys ([[machine]]'s are machine_config's).
+constexpr std::array<std::string_view, 5> kTables{"machine", "server", "web", "mtconnect", "mqtt"};
+constexpr std::array<std::string_view, 5> kServerKeys{"listen", "max_upload", "session_hours",
+                                                      "tls_cert", "tls_key"};
+constexpr std::array<std::string_view, 2> kWebKeys{"root", "max_file_bytes"};
+constexpr std::array<std::string_view, 2> kMtconnectKeys{"listen", "heartbeat_ms"};
+constexpr std::array<std::string_view, 3> kMqttKeys{"url", "prefix", "client_id"};
+
+std::span<const std::string_view> table_keys(std::string_view table) {
+  if (table == "server") return kServerKeys;
+  if (table == "web") return kWebKeys;
+  if (table == "mtconnect") return kMtconnectKeys;
+  if (table == "mqtt") return kMqttKeys;
+  return {};
+}
+
+void unknown_key(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::key& key,
+                 std::string_view where, std::span<const std::string_view> keys) {
+  const std::string_view near = sim::nearest_key(key.str(), keys);
+  core::Diagnostic d;
+  d.code = core::Code::UnknownDncKey;
+  d.severity = core::Severity::Warning;
+  d.loc.file = file_id;
+  d.loc.line = key.source().begin.line;
+  d.loc.col = key.source().begin.column;
+  d.message = fmt::format("unknown key `{}` {} is not read; {}", key.str(), where,
+                          near.empty() ? std::string("docs/dnc-server.md lists the keys")
+                                       : fmt::format("did you mean `{}`?", near));
+  diags.report(std::move(d));
+}
+
+// A misspelt table or key was ignored without a word (`max_uplaod` left the
+// limit at 64 MiB): each is a warning with the nearest name; a known table
+// that is no table (`server = 5`) is an error.
+bool check_tables(const toml::table& root, std::uint32_t file_id, core::DiagnosticSink& diags) {
+  bool ok = true;
+  for (auto&& [key, node] : root) {
+    const std::string_view name = key.str();
+    if (std::find(kTables.begin(), kTables.end(), name) == kTables.end()) {
+      unknown_key(diags, file_id, key, "at the top of the configuration", kTables);
+      continue;
+    }
+    if (name == "machine") continue;  // read_machine_links checks it
+    const toml::table* t = node.as_table();
+    if (t == nullptr) {
+      fail(diags, file_id, node.source(),
+           fmt::format("{} must be a table: write [{}]", name, name));
+      ok = false;
+      continue;
+    }
+    for (auto&& [sub, value] : *t) {
+      (void)value;
+      const auto keys = table_keys(name);
+      if (std::find(keys.begin(), keys.end(), sub.str()) == keys.end())
+        unknown_key(diags, file_id, sub, fmt::format("in [{}]", name), keys);
+    }
+  }
+  return ok;
 }
 
 // The `[server]` table; false when a value is wrong.
@@ -39,11 +118,13 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
     }
   }
   if (const toml::node* n = t->get("max_upload")) {
-    const auto v = n->value<std::int64_t>();
-    if (v && *v >= 1024) {
+    const auto v = n->value_exact<std::int64_t>();
+    if (byte_limit_ok(v)) {
       c.max_upload = static_cast<std::uint64_t>(*v);
     } else {
-      fail(diags, file_id, n->source(), "server.max_upload must be a count of bytes, 1024 or more");
+      fail(diags, file_id, n->source(),
+           fmt::format("server.max_upload must be a count of bytes from {} to {} (1 GiB)",
+                       kMinByteLimit, kMaxByteLimit));
       ok = false;
     }
   }
@@ -66,10 +147,13 @@ bool read_server_table(const toml::table& root, ServerConfig& c, std::uint32_t f
   }
   if (const toml::node* n = t->get("session_hours")) {
     const auto v = n->value<double>();
-    if (v && *v > 0.0 && *v <= 24.0 * 30) {
+    if (v && *v >= kMinSessionHours && *v <= kMaxSessionHours) {
       c.session_hours = *v;
     } else {
-      fail(diags, file_id, n->source(), "server.session_hours must be a number of hours, 0 to 720");
+      fail(diags, file_id, n->source(),
+           fmt::format("server.session_hours must be a number of hours from {:.4g} (a minute) to "
+                       "{:g} (30 days)",
+                       kMinSessionHours, kMaxSessionHours));
       ok = false;
     }
   }
@@ -92,12 +176,13 @@ bool read_web_table(const toml::table& root, ServerConfig& c, std::uint32_t file
     }
   }
   if (const toml::node* n = t->get("max_file_bytes")) {
-    const auto v = n->value<std::int64_t>();
-    if (v && *v >= 1024) {
+    const auto v = n->value_exact<std::int64_t>();
+    if (byte_limit_ok(v)) {
       c.web_max_file_bytes = static_cast<std::uint64_t>(*v);
     } else {
       fail(diags, file_id, n->source(),
-           "web.max_file_bytes must be a count of bytes, 1024 or more");
+           fmt::format("web.max_file_bytes must be a count of bytes from {} to {} (1 GiB)",
+                       kMinByteLimit, kMaxByteLimit));
       ok = false;
     }
   }
@@ -163,6 +248,19 @@ std::optional<std::string> read_file(const std::filesystem::path& p) {
 
 }  // namespace
 
+std::string pattern_error(const std::string& pattern) {
+  if (pattern.size() > kMaxDataPatternLength) {
+    return fmt::format("it is {} characters long; a pattern may have at most {}", pattern.size(),
+                       kMaxDataPatternLength);
+  }
+  try {
+    if (!pattern.empty()) std::regex(pattern, kDataPatternFlags);
+  } catch (const std::regex_error& e) {
+    return e.what();
+  }
+  return {};
+}
+
 bool load_profiles(ServerConfig& config, const std::string& base_dir, core::DiagnosticSink& diags) {
   std::map<std::string, std::string> files;  // class -> its profile's file
   for (const ServerMachine& m : config.machines) {
@@ -202,7 +300,8 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   } catch (const toml::parse_error&) {
     return std::nullopt;  // reported by read_machine_links
   }
-  bool ok = read_server_table(root, c, file_id, diags);
+  bool ok = check_tables(root, file_id, diags);
+  ok = read_server_table(root, c, file_id, diags) && ok;
   ok = read_web_table(root, c, file_id, diags) && ok;
   ok = read_data_tables(root, c.mtconnect, c.mqtt, file_id, diags) && ok;
   if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;

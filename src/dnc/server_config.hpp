@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -58,7 +59,22 @@ struct ServerConfig {
   std::map<std::string, sim::MachineProfile> profiles;
 };
 
-// Why `pattern` is not an ECMAScript regular expression; empty when it is.
+// A machine's data patterns are ECMAScript, case-insensitive.
+inline constexpr auto kDataPatternFlags = std::regex::ECMAScript | std::regex::icase;
+
+// The longest data pattern: std::regex compiles and matches by recursion, a
+// call or more per character, so a pattern of 100,000 characters (or
+// parentheses 10,000 deep) overflows the stack of `usina serve` as it reads
+// its configuration.
+inline constexpr std::size_t kMaxDataPatternLength = 256;
+
+// The longest line of a punch matched against the data patterns: longer
+// lines are no DPRNT output, and matching one of 100,000 characters
+// overflows the stack the same way.
+inline constexpr std::size_t kMaxDataLineLength = 1024;
+
+// Why `pattern` is not an ECMAScript regular expression (or is longer than
+// kMaxDataPatternLength); empty when it is one.
 std::string pattern_error(const std::string& pattern);
 
 // The configuration in `toml_text`, or nothing when it has an error

@@ -14,12 +14,10 @@
 namespace usina::dnc {
 namespace {
 
-constexpr auto kFlags = std::regex::ECMAScript | std::regex::icase;
-
 std::optional<std::regex> compiled(const std::string& pattern) {
-  if (pattern.empty()) return std::nullopt;
+  if (pattern.empty() || pattern.size() > kMaxDataPatternLength) return std::nullopt;
   try {
-    return std::regex(pattern, kFlags);
+    return std::regex(pattern, kDataPatternFlags);
   } catch (const std::regex_error&) {
     return std::nullopt;
   }
@@ -54,15 +52,6 @@ std::optional<std::int64_t> micros(const std::optional<double>& seconds) {
 }
 
 }  // namespace
-
-std::string pattern_error(const std::string& pattern) {
-  try {
-    if (!pattern.empty()) std::regex(pattern, kFlags);
-  } catch (const std::regex_error& e) {
-    return e.what();
-  }
-  return {};
-}
 
 void Machines::load_reports(MachineRuntime& m) {
   auto t = control_totals(store_, m.config.link.name);
@@ -125,6 +114,8 @@ bool Machines::machine_data(MachineRuntime& m, const ReceivedProgram& r) {
       c.last_message = *text;
       keep(m, record_control_message(store_, machine, *text, store_.now_us()));
       events_.publish("machine.message", {{"machine", machine}, {"text", *text}});
+    } else if (line.size() > kMaxDataLineLength) {
+      continue;  // no DPRNT line, and std::regex would recurse once a character
     } else if (cycle && std::regex_search(line, got, *cycle)) {
       any = true;
       printed_cycle = number(got);

@@ -329,8 +329,11 @@ std::optional<ToolTable> read_tool_table(const core::SourceFile& file, std::uint
     throw std::invalid_argument(
         fmt::format("read_tool_table: mm_per_unit {} is not positive", mm_per_unit));
   }
-  ToolTable table(true);
-  std::map<int, std::uint32_t> line_of;  // tool number -> line it was last read from
+  // Tools by number, each with the line it was last read from; the table is
+  // filled in ascending order at the end, so each tool goes at its end
+  // (inserting each line's tool in place was quadratic in a table listed in
+  // descending order).
+  std::map<int, std::pair<ToolEntry, std::uint32_t>> read;
   std::size_t bad_lines = 0;
   std::uint32_t line_number = 0;
   for_each_line(file.text(), [&](std::string_view text, std::uint64_t offset) {
@@ -345,16 +348,21 @@ std::optional<ToolTable> read_tool_table(const core::SourceFile& file, std::uint
       return;
     }
     if (semicolon != std::string_view::npos) tool->comment = trim(text.substr(semicolon + 1));
-    const auto [it, inserted] = line_of.try_emplace(tool->number, line_number);
-    if (!inserted) {
+    const auto at = read.find(tool->number);
+    if (at != read.end()) {
       line.report(Severity::Warning, trim(words),
                   fmt::format("tool {} is also on line {}; this line replaces it", tool->number,
-                              it->second),
+                              at->second.second),
                   core::Code::ToolRedefined);
-      it->second = line_number;
+      at->second = {std::move(*tool), line_number};
+    } else {
+      const int number = tool->number;
+      read.emplace(number, std::pair{std::move(*tool), line_number});
     }
-    table.set(std::move(*tool));
   });
+  ToolTable table(true);
+  for (auto& entry : read)
+    table.set(std::move(entry.second.first));
   if (table.empty() && bad_lines > 0) return std::nullopt;
   return table;
 }

@@ -90,6 +90,18 @@ class Reader {
     return *v;
   }
 
+  // number(), for a count: 2.5 segments was taken for 2.
+  double whole_number(const toml::table& t, const std::string& section, const char* key,
+                      double fallback, const KeyRange& range) {
+    const double v = number(t, section, key, fallback, range);
+    if (v != std::floor(v)) {
+      fail(t.get(key)->source(),
+           fmt::format("[{}] {} = {:g} must be a whole number", section, key, v));
+      return fallback;
+    }
+    return v;
+  }
+
   const toml::table* section(const toml::table& root, const char* name, bool required) {
     const toml::node* n = root.get(name);
     if (n == nullptr) {
@@ -150,10 +162,19 @@ class Reader {
 void read_machine(Reader& r, const toml::table& root, MachineProfile& p) {
   const toml::table* m = r.section(root, "machine", true);
   if (m == nullptr) return;
-  p.name = m->get("name") != nullptr ? m->get("name")->value_or<std::string>("") : "";
+  if (const toml::node* name = m->get("name")) {
+    // A name that is no string was read as none.
+    if (name->is_string()) {
+      p.name = name->value_or<std::string>("");
+    } else {
+      r.fail(name->source(), "[machine] name must be a string, e.g. name = \"Mill 1\"");
+    }
+  }
   const toml::node* units = m->get("units");
   const std::string u = units != nullptr ? units->value_or<std::string>("") : "mm";
-  if (u != "mm" && u != "inch") {
+  if (units != nullptr && !units->is_string()) {
+    r.fail(units->source(), "[machine] units must be the string \"mm\" or \"inch\"");
+  } else if (u != "mm" && u != "inch") {
     r.fail(units != nullptr ? units->source() : m->source(),
            fmt::format("[machine] units = \"{}\": must be \"mm\" or \"inch\"", u));
   }
@@ -219,7 +240,7 @@ void read_planner(Reader& r, const toml::table& pl, MachineProfile& p) {
   lc.kink_ratio = r.number(pl, "planner", "kink_ratio", lc.kink_ratio, kKinkRatio);
   lc.gap_cycles = r.number(pl, "planner", "gap_cycles", lc.gap_cycles, kGapCycles);
   lc.max_feed_scale = r.number(pl, "planner", "max_feed_scale", lc.max_feed_scale, kFeedScale);
-  lc.optimization_depth = static_cast<std::size_t>(r.number(
+  lc.optimization_depth = static_cast<std::size_t>(r.whole_number(
       pl, "planner", "optimization_depth", static_cast<double>(lc.optimization_depth), kDepth));
   if (const toml::node* b = pl.get("arc_blend")) {
     if (b->is_boolean()) {

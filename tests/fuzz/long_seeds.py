@@ -192,6 +192,92 @@ JOB_TOML = {
 JOB_TOML_SIZES = {"operations": 1_000_000, "tools": 1_000_000, "nesting": 20_000,
                   "string": 200_000}
 
+# --- configuration files and option values (the first byte picks the reader:
+# 0 machine profile, 1 usina-serve.toml, 2 tool table, 3 var file, 4 --stock,
+# 5 --tool-shape, 6 a link's port or mqtt.url)
+
+PROFILE_AXES = "".join('[axes.%s]\nmin = -0.0\nmax = 1e6\nrapid = 1e6\nmax_feed = 1\naccel = 1e6\n'
+                       'jerk = 0\n' % a for a in "xyzabc")
+PROFILE_HEAD = '0[machine]\nname = "long"\nunits = "inch"\n' + PROFILE_AXES
+
+
+def serve_machines(n, numbers=False):
+    """usina-serve.toml with [[machine]] tables, each named apart, to about n bytes;
+    with `numbers`, each table's numbers at the edges of a double (every one an error)."""
+    out = ['1[server]\nsession_hours = 720\n[mqtt]\nurl = "mqtt://[::1]"\n']
+    size = len(out[0])
+    i = 0
+    edges = ("nan", "inf", "-inf", "1e308", "-0.0", "-1e308")
+    while size < n:
+        if numbers:
+            limits = "xon_timeout = %s\nreceive_idle = %s\nskid = %s\n" % (
+                edges[i % 6], edges[(i + 1) % 6], edges[(i + 2) % 6])
+        else:
+            limits = "xon_timeout = 1.0\nreceive_idle = 3600\nskid = 65536\n"
+        out.append('[[machine]]\nname = "m%d"\nport = "tcp://10.0.%d.%d:4001"\nbaud = 115200\n'
+                   '%spart_count_pattern = "^PART ([0-9]+)"\n\n' % (i, i % 256, i % 251, limits))
+        size += len(out[-1])
+        i += 1
+    return "".join(out)
+
+
+def tool_lines(n):
+    """A tool table listed in descending order of tool number (each line placed
+    before all the others so far), to about n bytes."""
+    count = n // 40
+    return "2" + "".join("T%d P%d X+0.5 Z-1.5 D%d.25 ;ball\n" % (count - i, i, i % 50)
+                         for i in range(count))
+
+
+def var_lines(n):
+    """A parameter file: every number 1..5601 in order, then again (each one a
+    repeat), values at the edges of a double, to about n bytes."""
+    values = ("0.000000", "-1.8e308", "nan", "-0", "inf", "4.9e-324", "+12.5")
+    out = ["3"]
+    size = 1
+    i = 0
+    while size < n:
+        # 1e308 now and then: written back with six decimals it takes 10 ms
+        # under ASan (309 digits), and 5,601 of them a minute.
+        value = "1e308" if i % 500 == 0 else values[i % len(values)]
+        out.append("%d\t%s\n" % (i % 5601 + 1, value))
+        size += len(out[-1])
+        i += 1
+    return "".join(out)
+
+
+CONFIG = {
+    # A profile of 1 MB: its axes, then 100,000 keys it does not read.
+    "keys": lambda n: PROFILE_HEAD + "[cost]\n" + "".join(
+        "per_hour_%d = 1\n" % i for i in range(n // 18)),
+    # A profile whose name is a string of 1 MB.
+    "string": lambda n: '0[machine]\nname = "' + "a" * n + '"\n' + PROFILE_AXES,
+    # Arrays nested 10,000 deep in a profile (toml++ stops at its own limit).
+    "nesting": lambda n: "0[machine]\nname = " + "[" * (n // 2) + "]" * (n // 2) + "\n",
+    # Inline tables nested 10,000 deep in usina-serve.toml.
+    "inline": lambda n: "1server = " + "{a=" * (n // 3) + "1" + "}" * (n // 3) + "\n",
+    # usina-serve.toml of 1 MB: [[machine]] tables, each with its data pattern.
+    "machines": serve_machines,
+    # The same with numbers at the edges of a double (nan, inf, 1e308, -0).
+    "numbers": lambda n: serve_machines(n, numbers=True),
+    # A data pattern of 200 KB (std::regex recursed once a character).
+    "pattern": lambda n: '1[[machine]]\nname = "m"\nport = "/dev/ttyS0"\npart_count_pattern = "'
+    + "(" * (n // 2) + "a" + ")" * (n // 2) + '"\n',
+    # A tool table of 1 MB in descending order of tool number.
+    "tools": tool_lines,
+    # A parameter file of 1 MB.
+    "vars": var_lines,
+    # --stock with a side of 200 KB of digits.
+    "stock": lambda n: "4box:" + "1" * n + "x2x3",
+    # --tool-shape with 200 KB of words, and a comment of words no shape has.
+    "shape": lambda n: "51=" + repeat_to("blob ", n) + "/6",
+    # A port of 200 KB.
+    "port": lambda n: "6tcp://" + "h" * n + ":4001",
+}
+CONFIG_SIZES = {"keys": 1_000_000, "string": 1_000_000, "nesting": 20_000, "inline": 30_000,
+                "machines": 1_000_000, "numbers": 1_000_000, "pattern": 200_000, "tools": 1_000_000,
+                "vars": 1_000_000, "stock": 200_000, "shape": 200_000, "port": 200_000}
+
 TARGETS = {
     "parser": (ngc_families(), SIZES, "ngc"),
     "interpreter": (ngc_families(), SIZES, "ngc"),
@@ -202,6 +288,7 @@ TARGETS = {
     "remote_request": (REQUEST, REQUEST_SIZES, "tape"),
     "apt": (APT, APT_SIZES, "apt"),
     "job_toml": (JOB_TOML, JOB_TOML_SIZES, "toml"),
+    "config": (CONFIG, CONFIG_SIZES, "txt"),
 }
 
 

@@ -147,3 +147,46 @@ std::string shape_name(const ToolShape& t) {
 }
 
 }  // namespace usina::sim::stock
+
+namespace usina::sim::stock {
+
+tl::expected<std::pair<int, ToolShape>, std::string> parse_tool_spec(
+    std::string_view spec, const std::map<int, ToolShape>& known) {
+  const std::size_t eq = spec.find('=');
+  const std::size_t slash = spec.find('/');
+  const auto number = finite_number(spec.substr(0, eq));
+  if (eq == std::string_view::npos || !number || *number < 0 || *number > 99999 ||
+      *number != static_cast<int>(*number)) {
+    return tl::unexpected(fmt::format(
+        "--tool-shape '{}' is not T=SHAPE or T=SHAPE/D (e.g. 3=ball/6, 4=bull:1/10)", spec));
+  }
+  const int n = static_cast<int>(*number);
+  const auto listed = known.find(n);
+  double diameter = listed != known.end() ? listed->second.diameter : 0.0;
+  if (slash != std::string_view::npos) {
+    const auto d = finite_number(spec.substr(slash + 1));
+    if (!d)
+      return tl::unexpected(fmt::format("--tool-shape '{}': the diameter is not a number", spec));
+    // A diameter written here is checked as written, not taken for a missing one.
+    if (*d <= 0.0 || *d > kMaxToolDiameter) {
+      return tl::unexpected(
+          fmt::format("--tool-shape '{}': the diameter must be more than 0 and at most {:g} mm, "
+                      "not {:g}",
+                      spec, kMaxToolDiameter, *d));
+    }
+    diameter = *d;
+  }
+  if (diameter <= 0.0) {
+    return tl::unexpected(
+        fmt::format("--tool-shape '{}': tool {} has no diameter in the tool table; write it: {}/D",
+                    spec, n, spec));
+  }
+  auto shape =
+      parse_shape(spec.substr(eq + 1, slash == std::string_view::npos ? std::string_view::npos
+                                                                      : slash - eq - 1),
+                  diameter);
+  if (!shape) return tl::unexpected(fmt::format("--tool-shape '{}': {}", spec, shape.error()));
+  return std::pair{n, *shape};
+}
+
+}  // namespace usina::sim::stock

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include <tl/expected.hpp>
 
@@ -51,5 +52,11 @@ ToolShape shape_from_comment(std::string_view comment, double diameter);
 tl::expected<void, std::string> check_shape(const ToolShape& t);
 
 std::string shape_name(const ToolShape& t);
+
+// One value of `usina simulate --tool-shape`, "T=SHAPE" or "T=SHAPE/D": the
+// tool's number (0..99999) and its shape. Without /D the diameter is the
+// one `known` (the tool table's tools) gives tool T. An error says what is wrong.
+tl::expected<std::pair<int, ToolShape>, std::string> parse_tool_spec(
+    std::string_view spec, const std::map<int, ToolShape>& known);
 
 }  // namespace usina::sim::stock
