@@ -33,6 +33,7 @@ targets=(parser interpreter romi fanuc grbl dxf remote_request)
 targets+=(apt)
 targets+=(job_toml)
 targets+=(config)
+targets+=(forms)
 # The dialect targets are one source, fuzz_dialect.cpp, built once per dialect
 # with -DUSINA_FUZZ_DIALECT="<name>"; the others have a source of their own.
 dialects=" romi fanuc grbl "
@@ -50,6 +51,9 @@ job_targets=" job_toml "
 # (sim, dnc and sim/stock files; toml++) and the gcode module (the tool table,
 # the var file, and the dialects a [[machine]] may name).
 config_targets=" config "
+# The target of the web page's forms links their readers, the generators
+# (cam) and the posts.
+forms_targets=" forms "
 
 command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
 command -v ninja >/dev/null || { echo "fuzz.sh: ninja not found (apt-get install ninja-build)" >&2; exit 2; }
@@ -70,6 +74,8 @@ job_sources=(src/job/toml_reader.cpp src/job/job_file.cpp src/job/tools.cpp src/
 config_sources=(src/sim/machine_profile.cpp src/sim/stock/tool_shape.cpp src/sim/stock/height_map.cpp
   src/dnc/server_config.cpp src/dnc/machine_config.cpp src/dnc/link_config.cpp
   src/dnc/data_config.cpp src/dnc/link_port.cpp)
+mapfile -t post_sources < <(cd "$root" && ls src/post/*.cpp | sort)
+mapfile -t forms_sources < <(cd "$root" && ls src/dnc/form_*.cpp | sort)
 
 # A generated ninja file: parallel, incremental, header dependencies tracked.
 mkdir -p "$out"
@@ -89,7 +95,8 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
   for s in "${base_sources[@]}" "${gcode_sources[@]}" "${cam_sources[@]}" "${dnc_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
   done
-  for s in "${apt_sources[@]}" "${job_sources[@]}" "${config_sources[@]}"; do
+  for s in "${apt_sources[@]}" "${job_sources[@]}" "${config_sources[@]}" "${post_sources[@]}" \
+    "${forms_sources[@]}"; do
     echo "build obj/${s%.cpp}.o: cxx $root/$s"
     if [[ "$s" == src/job/* || "$s" == src/sim/machine_profile.cpp || "$s" == src/dnc/* ]]; then
       echo "  defines = -DTOML_HEADER_ONLY=0 -DTOML_SHARED_LIB=1"
@@ -114,6 +121,9 @@ objects() { for s in "$@"; do printf 'obj/%s.o ' "${s%.cpp}"; done; }
     elif [[ "$config_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${gcode_sources[@]}" "${config_sources[@]}" src/sim/profile_keys.cpp)"
       echo "  libs = -ltomlplusplus"
+    elif [[ "$forms_targets" == *" $t "* ]]; then
+      echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${cam_sources[@]}" "${post_sources[@]}" "${forms_sources[@]}")"
+      echo "  libs = $cam_libs"
     elif [[ "$apt_targets" == *" $t "* ]]; then
       echo "build fuzz_$t: link obj/tests/fuzz/fuzz_$t.o $(objects "${base_sources[@]}" "${apt_sources[@]}")"
     else

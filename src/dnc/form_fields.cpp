@@ -77,6 +77,17 @@ std::string FormFields::text(std::string_view name, std::string_view what, std::
 }
 
 void FormFields::fail(std::string field, std::string message, std::string code) {
+  // A body of thousands of unknown keys would make an answer larger than
+  // itself: the first ones are named, the rest counted in one entry.
+  if (errors_.size() > kMaxFieldErrors) return;
+  if (errors_.size() == kMaxFieldErrors) {
+    errors_.push_back(
+        {"", fmt::format("more than {} fields are wrong; the rest are not listed", kMaxFieldErrors),
+         std::move(code)});
+    return;
+  }
+  // A field's name is the user's: at most 64 of its characters in the message.
+  if (field.size() > kMaxFieldName) field = field.substr(0, kMaxFieldName) + "...";
   errors_.push_back({std::move(field), std::move(message), std::move(code)});
 }
 
@@ -84,7 +95,11 @@ void FormFields::refuse_unknown(std::initializer_list<std::string_view> also) {
   for (const auto& [key, value] : body_.items()) {
     const bool known = std::find(asked_.begin(), asked_.end(), key) != asked_.end() ||
                        std::find(also.begin(), also.end(), key) != also.end();
-    if (!known) fail(key, fmt::format("\"{}\" is no field of this cycle", key));
+    if (!known) {
+      const std::string shown =
+          key.size() > kMaxFieldName ? key.substr(0, kMaxFieldName) + "..." : key;
+      fail(key, fmt::format("\"{}\" is no field of this cycle", shown));
+    }
   }
 }
 

@@ -27,6 +27,11 @@ struct FieldError {
 // Coordinates: within ±100 m of the origin, as cam::check_point has them.
 inline constexpr cam::Range kCoordinate{-cam::kMaxCoordinate, cam::kMaxCoordinate, true, "mm"};
 
+// The bad fields an answer names at most (one more entry says there were
+// more), and the characters of a field's name it repeats.
+inline constexpr std::size_t kMaxFieldErrors = 100;
+inline constexpr std::size_t kMaxFieldName = 64;
+
 class FormFields {
  public:
   explicit FormFields(const nlohmann::json& body) : body_(body) {}

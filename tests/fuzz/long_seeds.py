@@ -15,6 +15,7 @@ and OUT_DIR/fuzz/<target>/<family>.<ext>, each under 64 KB, for the fuzzers
 to start from. The output is deterministic; every file is within the
 fuzzers' -max_len (1 MiB).
 """
+import json
 import os
 import sys
 
@@ -278,6 +279,32 @@ CONFIG_SIZES = {"keys": 1_000_000, "string": 1_000_000, "nesting": 20_000, "inli
                 "machines": 1_000_000, "numbers": 1_000_000, "pattern": 200_000, "tools": 1_000_000,
                 "vars": 1_000_000, "stock": 200_000, "shape": 200_000, "port": 200_000}
 
+# --- the web page's forms (the first byte picks the cycle by its value mod 7:
+# "1" ellipse pocket ... "6" engraving, "0" the profile of a DXF)
+
+
+def json_object_of_keys(n):
+    keys, size, i = [], 2, 0
+    while size < n:
+        k = '"k%d":%d' % (i, i)
+        keys.append(k)
+        size += len(k) + 1
+        i += 1
+    return "{" + ",".join(keys) + "}"
+
+
+FORMS = {
+    # An engraving of 1 MB of text.
+    "text": lambda n: '6{"text":"' + repeat_to("USINA ", n) + '","height":8,"tool_diameter":0.5}',
+    # A body of 1 MB of unknown fields (each is an error naming the nearest field).
+    "keys": lambda n: "2" + json_object_of_keys(n),
+    # Arrays nested 10,000 deep as a field's value.
+    "nesting": lambda n: '3{"radius":' + "[" * (n // 2) + "]" * (n // 2) + "}",
+    # A profile of a 1 MB drawing of lines, in the body as the page sends it.
+    "dxf": lambda n: '0{"dxf":' + json.dumps(dxf_lines(n)) + ',"depth":2}',
+}
+FORMS_SIZES = {"text": 1_000_000, "keys": 1_000_000, "nesting": 20_000, "dxf": 600_000}
+
 TARGETS = {
     "parser": (ngc_families(), SIZES, "ngc"),
     "interpreter": (ngc_families(), SIZES, "ngc"),
@@ -289,6 +316,7 @@ TARGETS = {
     "apt": (APT, APT_SIZES, "apt"),
     "job_toml": (JOB_TOML, JOB_TOML_SIZES, "toml"),
     "config": (CONFIG, CONFIG_SIZES, "txt"),
+    "forms": (FORMS, FORMS_SIZES, "json"),
 }
 
 
