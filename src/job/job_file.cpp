@@ -37,6 +37,8 @@ constexpr std::string_view kProfileKeys[] = {USINA_JOB_COMMON, "layer", "step_do
                                              "lead_radius",    "tabs",  "tab_width", "tab_height"};
 constexpr std::string_view kEllipseKeys[] = {USINA_JOB_COMMON, "center",  "rx", "ry",
                                              "step_down",      "stepover"};
+constexpr std::string_view kFaceKeys[] = {USINA_JOB_COMMON, "step_down", "stepover"};
+constexpr std::string_view kEngraveKeys[] = {USINA_JOB_COMMON, "text", "font", "height", "at"};
 #undef USINA_JOB_COMMON
 
 struct TypeName {
@@ -50,6 +52,8 @@ constexpr TypeName kTypes[] = {
     {OpType::Pocket, "pocket", kPocketKeys},
     {OpType::Profile, "profile", kProfileKeys},
     {OpType::EllipsePocket, "ellipse_pocket", kEllipseKeys},
+    {OpType::Face, "face", kFaceKeys},
+    {OpType::Engrave, "engrave", kEngraveKeys},
 };
 
 std::string relative_to(const std::string& folder, const std::string& path) {
@@ -124,8 +128,18 @@ void read_tool(TomlReader& r, const toml::table& t, const std::string& what, Ope
   }
 }
 
+void read_engrave_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
+  op.text = r.text(t, w, "text", true).value_or("");
+  if (const toml::node* n = t.get("text"); n != nullptr && op.text.empty())
+    r.fail(n->source(), fmt::format("{} text is empty: there is nothing to engrave", w));
+  op.font = r.text(t, w, "font", false).value_or("rowmans");
+  op.height = r.number(t, w, "height", kSmall, false).value_or(5.0);
+  if (const auto a = r.numbers(t, w, "at", 2, kCoord, true)) op.at = {(*a)[0], (*a)[1]};
+}
+
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
-  const bool layered = op.type != OpType::EllipsePocket;
+  const bool layered =
+      op.type == OpType::Drill || op.type == OpType::Pocket || op.type == OpType::Profile;
   if (layered) {
     op.layer = r.text(t, w, "layer", true).value_or("");
     if (const toml::node* l = t.get("layer")) op.layer_loc = r.loc(l->source());
@@ -146,6 +160,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
     op.rx = r.number(t, w, "rx", kSize, true).value_or(0);
     op.ry = r.number(t, w, "ry", kSize, true).value_or(0);
   }
+  if (op.type == OpType::Engrave) read_engrave_keys(r, t, w, op);
   if (!cam::profile_side(op.side)) {
     r.fail(
         t.get("side")->source(),
@@ -166,7 +181,7 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   if (found == nullptr) {
     r.fail(core::Code::JobUnknownOperation, t.get("type")->source(),
            fmt::format("{}: type \"{}\" is not an operation usina makes: give drill, pocket, "
-                       "profile or ellipse_pocket",
+                       "profile, ellipse_pocket, face or engrave",
                        what, *type));
     return;
   }

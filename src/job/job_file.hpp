@@ -15,20 +15,20 @@
 
 namespace usina::job {
 
-enum class OpType { Drill, Pocket, Profile, EllipsePocket };
+enum class OpType { Drill, Pocket, Profile, EllipsePocket, Face, Engrave };
 
 std::string_view op_type_name(OpType t);
 
 struct Operation {
   OpType type = OpType::Pocket;
   core::SourceLoc loc;  // its [[operation]] header
-  std::string layer;    // of the drawing; empty for an ellipse pocket
+  std::string layer;    // of the drawing; empty for an ellipse pocket, a facing, an engraving
   core::SourceLoc layer_loc;
   std::optional<int> tool;  // nullopt: "auto", the job chooses
   core::SourceLoc tool_loc;
   double depth = 0;                 // mm below the stock's top (Z0)
   std::optional<double> step_down;  // default: half the tool's diameter
-  std::optional<double> stepover;   // pocket, ellipse; default: half the tool's diameter
+  std::optional<double> stepover;   // pocket, ellipse: default half the tool's diameter; face: 70 %
   std::optional<double> diameter;   // drill: only the holes of this diameter
   double peck = 0;                  // drill: G83 pecks, 0 for G81
   double retract = 1.0;             // drill: the R plane above Z0
@@ -40,7 +40,11 @@ struct Operation {
   std::array<double, 2> center{0, 0};  // ellipse
   double rx = 0;
   double ry = 0;
-  std::optional<double> rpm;  // given: the cutting data are not used
+  std::string text;                // engrave: the text, in a single-stroke Hershey font
+  std::string font = "rowmans";    // engrave
+  double height = 5.0;             // engrave: a capital letter's height, mm
+  std::array<double, 2> at{0, 0};  // engrave: where the first letter's baseline starts
+  std::optional<double> rpm;       // given: the cutting data are not used
   std::optional<double> feed;
   std::optional<double> plunge_feed;
 };

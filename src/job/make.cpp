@@ -157,6 +157,8 @@ bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags
     case OpType::Pocket: ok = run_pocket(cx, op, title); break;
     case OpType::Profile: ok = run_profile(cx, op, title); break;
     case OpType::EllipsePocket: ok = run_ellipse(cx, op, title); break;
+    case OpType::Face: ok = run_face(cx, op, title); break;
+    case OpType::Engrave: ok = run_engrave(cx, op, title); break;
     }
     if (!ok) return false;
   }

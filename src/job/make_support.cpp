@@ -56,6 +56,34 @@ std::optional<std::vector<cam::Path>> layer_paths(const LoadedJob& j, const Oper
   return paths;
 }
 
+namespace {
+
+bool is_end_mill(ToolType t) {
+  return t == ToolType::Flat || t == ToolType::Ball || t == ToolType::Bull;
+}
+
+// Whether an operation of `op` runs a tool of type `t`, and what it takes.
+bool takes_tool(OpType op, ToolType t) {
+  switch (op) {
+  case OpType::Drill: return t == ToolType::Drill;
+  case OpType::Face: return t == ToolType::Face || t == ToolType::Flat || t == ToolType::Bull;
+  case OpType::Engrave:
+    return t == ToolType::Engraver || t == ToolType::Flat || t == ToolType::Ball;
+  default: return is_end_mill(t);
+  }
+}
+
+std::string_view tools_taken(OpType op) {
+  switch (op) {
+  case OpType::Drill: return "a drill";
+  case OpType::Face: return "a face mill, or a flat or bull end mill";
+  case OpType::Engrave: return "an engraver, or a flat or ball end mill";
+  default: return "a flat, ball or bull end mill";
+  }
+}
+
+}  // namespace
+
 const Tool* named_tool(const LoadedJob& j, const Operation& op, core::DiagnosticSink& diags) {
   const Tool* t = find_tool(j.tools, *op.tool);
   if (t == nullptr) {
@@ -65,21 +93,21 @@ const Tool* named_tool(const LoadedJob& j, const Operation& op, core::Diagnostic
   }
   // A drill drills and an end mill mills: the cutting data and the moves
   // are each kind's own.
-  const bool drill_op = op.type == OpType::Drill;
-  const bool mill =
-      t->type == ToolType::Flat || t->type == ToolType::Ball || t->type == ToolType::Bull;
-  if (drill_op ? t->type != ToolType::Drill : !mill) {
+  const std::string_view takes = tools_taken(op.type);
+  if (!takes_tool(op.type, t->type)) {
     diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
                   fmt::format("T{} is a {} tool; a {} operation takes {}", t->number,
-                              tool_type_name(t->type), op_type_name(op.type),
-                              drill_op ? "a drill" : "a flat, ball or bull end mill")});
+                              tool_type_name(t->type), op_type_name(op.type), takes)});
     return nullptr;
   }
-  if (t->cutting_length < op.depth) {
+  // A facing cuts its depth in passes: the tool reaches one.
+  const double reach = op.type == OpType::Face ? op.step_down.value_or(op.depth) : op.depth;
+  if (t->cutting_length < reach) {
     diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
                   fmt::format("T{} cuts {:g} mm deep at most (its cutting length); the "
-                              "operation goes {:g} mm deep",
-                              t->number, t->cutting_length, op.depth)});
+                              "operation goes {:g} mm deep{}",
+                              t->number, t->cutting_length, reach,
+                              op.type == OpType::Face ? " a pass" : "")});
     return nullptr;
   }
   return t;

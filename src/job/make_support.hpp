@@ -82,4 +82,8 @@ bool prepare(Context& cx, const Operation& op, const Tool& tool, bool slotting,
 // cam/pocket.hpp each have a Ring, so they live in separate files).
 bool run_ellipse(Context& cx, const Operation& op, const std::string& title);
 
+// Facing the stock's top and engraving text (make_top.cpp).
+bool run_face(Context& cx, const Operation& op, const std::string& title);
+bool run_engrave(Context& cx, const Operation& op, const std::string& title);
+
 }  // namespace usina::job

@@ -164,6 +164,51 @@ ToolChoice largest_end_mill(const std::vector<Tool>& tools, double max_radius, d
   return c;
 }
 
+namespace {
+
+// The tool of `type` reaching `depth` that `better` prefers, or null.
+template <class Better>
+const Tool* best_of(const std::vector<Tool>& tools, ToolType type, double depth, Better better) {
+  const Tool* best = nullptr;
+  for (const Tool& t : tools) {
+    if (t.type == type && t.cutting_length >= depth && (best == nullptr || better(t, *best)))
+      best = &t;
+  }
+  return best;
+}
+
+bool larger(const Tool& a, const Tool& b) {
+  return a.diameter > b.diameter;
+}
+
+}  // namespace
+
+ToolChoice face_mill(const std::vector<Tool>& tools, double step) {
+  ToolChoice c;
+  if ((c.tool = best_of(tools, ToolType::Face, step, larger))) {
+    c.why = fmt::format("T{}: the largest face mill with a cutting length of {:g} mm or more",
+                        c.tool->number, step);
+  } else if ((c.tool = best_of(tools, ToolType::Flat, step, larger))) {
+    c.why =
+        fmt::format("T{}: no face mill reaches {:g} mm a pass; the largest flat end mill that does",
+                    c.tool->number, step);
+  } else {
+    c.why = fmt::format("no face mill or flat end mill has a cutting length of {:g} mm", step);
+  }
+  return c;
+}
+
+ToolChoice engraver(const std::vector<Tool>& tools, double depth) {
+  ToolChoice c;
+  c.tool = best_of(tools, ToolType::Engraver, depth,
+                   [](const Tool& a, const Tool& b) { return a.diameter < b.diameter; });
+  c.why = c.tool != nullptr
+              ? fmt::format("T{}: the smallest engraver with a cutting length of {:g} mm or more",
+                            c.tool->number, depth)
+              : fmt::format("the library has no engraver with a cutting length of {:g} mm", depth);
+  return c;
+}
+
 ToolChoice drill_of(const std::vector<Tool>& tools, double diameter, double depth) {
   ToolChoice c;
   const Tool* too_short = nullptr;

@@ -49,6 +49,13 @@ struct ToolChoice {
 // the corners") and whose cutting length reaches `depth`.
 ToolChoice largest_end_mill(const std::vector<Tool>& tools, double max_radius, double depth);
 
+// The largest face mill whose cutting length reaches `step` (a facing
+// pass): the fewest rows. Without one, the largest flat end mill that does.
+ToolChoice face_mill(const std::vector<Tool>& tools, double step);
+
+// The smallest engraver whose cutting length reaches `depth`: the finest line.
+ToolChoice engraver(const std::vector<Tool>& tools, double depth);
+
 // A drill of `diameter` (within 0.005 mm) whose cutting length reaches `depth`.
 ToolChoice drill_of(const std::vector<Tool>& tools, double diameter, double depth);
 

@@ -37,7 +37,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   switch (data[0] % 3) {
   case 0: {
     const auto job = job::read_job(text, 0, "/nonexistent-fuzz-folder", diags);
-    if (job) trap_unless_finite(job->safe_z);
+    if (!job) break;
+    trap_unless_finite(job->safe_z);
+    for (const job::Operation& op : job->operations)
+      trap_unless_finite(op.height + op.at[0] + op.at[1] + op.depth);
     break;
   }
   case 1: {

@@ -1,8 +1,11 @@
 // Bad job files: every one a diagnostic at the TOML line and column of what
 // is wrong (issue 16, "every bad job file ... a diagnostic with the TOML line").
+#include <tuple>
+
 #include <gtest/gtest.h>
 
 #include "canon/sink.hpp"
+#include "canon/toolpath.hpp"
 #include "job/make.hpp"
 #include "job_test_util.hpp"
 
@@ -208,6 +211,68 @@ TEST(JobFile, RpmWithoutFeedIsAnError) {
   const core::Diagnostic* d = find(l->diags, core::Code::BadJob);
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->loc.line, kFirstOpLine + 5);
+}
+
+TEST(JobFile, AFaceMillDoesNotEngraveAndAnEngraverDoesNotFace) {
+  for (const auto& [type, tool, takes] :
+       {std::tuple{"engrave\"\ntext = \"A\"\nat = [10.0, 10.0]", "10", "an engraver"},
+        std::tuple{"face\"", "11", "a face mill"}}) {
+    const auto l =
+        load_text(job_text(std::string("[[operation]]\ntype = \"") + type +
+                           "\ndepth = 0.5\nrpm = 9000\nfeed = 300\ntool = " + tool + "\n"));
+    ASSERT_TRUE(l->job) << type;
+    core::DiagnosticList diags;
+    EXPECT_FALSE(make(*l, diags));
+    const core::Diagnostic* d = find(diags, core::Code::JobNoToolFits);
+    ASSERT_NE(d, nullptr) << type;
+    EXPECT_NE(d->message.find(takes), std::string::npos) << d->message;
+  }
+}
+
+TEST(JobFile, AnEngravingNeedsItsTextAndWhere) {
+  const auto l = load_text(job_text("[[operation]]\ntype = \"engrave\"\ndepth = 0.2\ntool = 11\n"));
+  EXPECT_FALSE(l->job);
+  const core::Diagnostic* d = find(l->diags, core::Code::BadJob);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("text"), std::string::npos) << d->message;
+  const auto empty = load_text(job_text(
+      "[[operation]]\ntype = \"engrave\"\ntext = \"\"\nat = [0.0, 0.0]\ndepth = 0.2\ntool = 11\n"));
+  EXPECT_FALSE(empty->job);
+  const core::Diagnostic* e = find(empty->diags, core::Code::BadJob);
+  ASSERT_NE(e, nullptr);
+  EXPECT_NE(e->message.find("nothing to engrave"), std::string::npos) << e->message;
+  EXPECT_EQ(e->loc.line, kFirstOpLine + 2);
+}
+
+TEST(JobFile, ACharacterTheFontLacksIsAnErrorAtTheOperation) {
+  const auto l = load_text(
+      job_text("[[operation]]\ntype = \"engrave\"\ntext = \"caf\u00e9\"\nat = [0.0, 0.0]\n"
+               "depth = 0.2\nrpm = 9000\nfeed = 300\ntool = 11\n"));
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  EXPECT_FALSE(make(*l, diags));
+  ASSERT_TRUE(diags.has_errors());
+  EXPECT_EQ(diags.all().back().loc.line, kFirstOpLine);
+}
+
+TEST(JobFile, AFacingOfTheStockFromItsCorner) {
+  const auto l =
+      load_text(job_text("[[operation]]\ntype = \"face\"\ndepth = 0.5\ntool = \"auto\"\n"));
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  canon::Toolpath tp;
+  ASSERT_TRUE(make_job(*l->job, tp, diags)) << (diags.all().empty() ? "" : diags.all()[0].message);
+  // The 130 x 90 stock from X0 Y0 (job_text gives no origin): the rows
+  // run from 2 mm left of it to 2 mm right of it with the D50's radius.
+  double lo = 1e300, hi = -1e300;
+  for (const canon::Op& op : tp.ops()) {
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind)) {
+      lo = std::min(lo, f->to.x);
+      hi = std::max(hi, f->to.x);
+    }
+  }
+  EXPECT_DOUBLE_EQ(lo, -27);
+  EXPECT_DOUBLE_EQ(hi, 157);
 }
 
 }  // namespace

@@ -69,6 +69,25 @@ TEST(JobRoundTrip, EllipseCover) {
   round_trip(tp);
 }
 
+TEST(JobRoundTrip, NameplateFacedEngravedDrilledCutOut) {
+  core::DiagnosticList diags;
+  const canon::Toolpath tp = made("nameplate.toml", diags);
+  // The D50 face mill, the engraver (both lines: one change), the D5
+  // drill, the D10 for the outline.
+  EXPECT_EQ(tool_changes(tp), (std::vector<int>{10, 11, 6, 1}));
+  EXPECT_FALSE(diags.has_errors());
+  // The faced top: the deepest the face mill goes is -0.5.
+  double deepest = 0;
+  int tool = 0;
+  for (const canon::Op& op : tp.ops()) {
+    if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) tool = t->tool;
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind); f && tool == 10)
+      deepest = std::min(deepest, f->to.z);
+  }
+  EXPECT_DOUBLE_EQ(deepest, -0.5);
+  round_trip(tp);
+}
+
 TEST(JobRoundTrip, OneProgramEnd) {
   core::DiagnosticList diags;
   const canon::Toolpath tp = made("plate.toml", diags);

@@ -114,5 +114,30 @@ TEST(ToolChoice, HolesGroupedByDiameter) {
   EXPECT_EQ(others, 1u);
 }
 
+TEST(ToolChoice, AFaceMillForFacingElseTheLargestEndMill) {
+  auto tools = shop();
+  const ToolChoice c = face_mill(tools, 0.5);
+  ASSERT_NE(c.tool, nullptr);
+  EXPECT_EQ(c.tool->number, 10);  // the D50 face mill
+  // Deeper a pass than its 6 mm: the D10 end mill (22 mm of flute).
+  const ToolChoice deep = face_mill(tools, 8);
+  ASSERT_NE(deep.tool, nullptr);
+  EXPECT_EQ(deep.tool->number, 1);
+  EXPECT_NE(deep.why.find("no face mill"), std::string::npos) << deep.why;
+  EXPECT_EQ(face_mill(tools, 30).tool, nullptr);
+}
+
+TEST(ToolChoice, TheSmallestEngraverThatReaches) {
+  auto tools = shop();
+  Tool fine = *find_tool(tools, 11);
+  fine.number = 13;
+  fine.diameter = 2;
+  tools.push_back(fine);
+  EXPECT_EQ(engraver(tools, 0.2).tool->number, 13);
+  const ToolChoice none = engraver(tools, 3);  // 2 mm of flute
+  EXPECT_EQ(none.tool, nullptr);
+  EXPECT_NE(none.why.find("no engraver"), std::string::npos) << none.why;
+}
+
 }  // namespace
 }  // namespace usina::job
