@@ -9,6 +9,7 @@
 
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/base64.hpp"
 #include "dnc/form_cycles.hpp"
 #include "dnc/sha256.hpp"
 #include "dnc/store_check.hpp"
@@ -58,22 +59,6 @@ tl::expected<PreviewRequest, HttpResponse> preview_request(ApiCall& c) {
   return r;
 }
 
-std::string base64(std::string_view in) {
-  static constexpr char kDigits[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((in.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < in.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, in.size() - i);
-    std::uint32_t v = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      v = (v << 8) | (k < n ? static_cast<unsigned char>(in[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k)
-      out += k <= n ? kDigits[(v >> (18 - 6 * k)) & 63u] : '=';
-  }
-  return out;
-}
-
 json errors_json(const std::vector<FieldError>& errors) {
   json list = json::array();
   for (const FieldError& e : errors)
@@ -119,7 +104,7 @@ std::string preview_work(const PreviewRequest& r) {
                     {"diagnostics", diagnostics_json(p, check)},
                     {"checks", json::parse(check.to_json())},
                     {"check_ok", check.blocking() == 0},
-                    {"toolpath", base64(stream)}};
+                    {"toolpath", to_base64(stream)}};
   return "200\n" + out.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 

@@ -12,10 +12,10 @@
 #include <set>
 
 #include <fmt/format.h>
-#include <openssl/evp.h>
 
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/base64.hpp"
 #include "dnc/store_import.hpp"
 #include "dnc/store_names.hpp"
 #include "dnc/tar_writer.hpp"
@@ -28,22 +28,6 @@ constexpr std::size_t kMaxExportBytes = 512u << 20;  // the archive is built in 
 
 HttpResponse bad(const ApiCall& c, const std::string& message) {
   return error_response(c.req, http::status::bad_request, message);
-}
-
-// Standard base64 (with padding); nothing when it is not.
-std::optional<std::string> from_base64(std::string_view in) {
-  if (in.size() % 4 != 0) return std::nullopt;
-  std::string out(in.size() / 4 * 3, '\0');
-  const int n = EVP_DecodeBlock(reinterpret_cast<unsigned char*>(out.data()),
-                                reinterpret_cast<const unsigned char*>(in.data()),
-                                static_cast<int>(in.size()));
-  if (n < 0) return std::nullopt;
-  // EVP_DecodeBlock counts the padding's zero bytes: take them off.
-  std::size_t size = static_cast<std::size_t>(n);
-  for (std::size_t i = in.size(); i > 0 && in[i - 1] == '='; --i)
-    --size;
-  out.resize(size);
-  return out;
 }
 
 // One entry's bytes: `text` (UTF-8) or `text_base64` (any bytes).
