@@ -26,12 +26,13 @@ constexpr std::array kRoutes{
              api_revision_text},
     // The viewer's binary tool path (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/toolpath", A::Permission, P::ReadPrograms,
-             api_toolpath},
+             api_toolpath, api_toolpath_later},
     // The figures of each tool, for the page (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/tools", A::Permission, P::ReadPrograms,
-             api_tool_figures},
+             api_tool_figures, api_tool_figures_later},
     // A cycle's form made into a program, previewed (docs/dnc-server.md, "Forms for cycles").
-    ApiRoute{V::post, "/api/forms/{}/preview", A::Permission, P::UploadRevision, api_form_preview},
+    ApiRoute{V::post, "/api/forms/{}/preview", A::Permission, P::UploadRevision, api_form_preview,
+             api_form_preview_later},
     // Who may make which move is the state table's (may_change_state).
     ApiRoute{V::post, "/api/programs/{}/revisions/{}/state", A::AnyUser, P::ReadPrograms,
              api_change_state},
@@ -148,10 +149,7 @@ bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAn
   auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
   if (!target) return false;
   for (const ApiRoute& route : kRoutes) {
-    const bool figures = route.handler == api_tool_figures;
-    const bool form = route.handler == api_form_preview;
-    if ((route.handler != api_toolpath && !figures && !form) || route.method != req.method())
-      continue;
+    if (route.later == nullptr || route.method != req.method()) continue;
     auto params = match(route.pattern, target->segments);
     if (!params) continue;
     ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_};
@@ -159,13 +157,7 @@ bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAn
       answer(with_www_authenticate(std::move(*refused)));
       return true;
     }
-    if (form) {
-      api_form_preview_later(call, std::move(answer));
-    } else if (figures) {
-      api_tool_figures_later(call, std::move(answer));
-    } else {
-      api_toolpath_later(call, std::move(answer));
-    }
+    route.later(call, std::move(answer));
     return true;
   }
   return false;

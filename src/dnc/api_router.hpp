@@ -45,6 +45,8 @@ struct ApiCall {
 };
 
 using ApiHandler = HttpResponse (*)(ApiCall&);
+// A route whose work is done off the loop: it answers later, once.
+using ApiLaterHandler = void (*)(ApiCall&, HttpAnswer);
 
 enum class Access { Public, AnyUser, Permission };
 
@@ -54,6 +56,7 @@ struct ApiRoute {
   Access access;
   Permission permission;  // when access is Permission
   ApiHandler handler;
+  ApiLaterHandler later = nullptr;  // the server's road (Api::handle_later); `handler` in tests
 };
 
 // Every route, for the router and the tests that walk them.
