@@ -34,6 +34,7 @@ RunModes run_modes(const ModalState& s) {
   if (s.coord_system_chosen)
     m.work_offset = s.coord_system <= 6 ? 530 + 10 * s.coord_system : 590 + s.coord_system - 6;
   m.length_h = s.length_h;
+  m.offsets_written = s.offsets_written;
   m.feed_mode = s.feed_mode == FeedMode::InverseTime   ? 93
                 : s.feed_mode == FeedMode::UnitsPerRev ? 95
                                                        : 94;

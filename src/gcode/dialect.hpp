@@ -51,13 +51,14 @@ using OptionValues = std::map<std::string, std::string, std::less<>>;
 // words included; no reading of the text can.
 struct RunModes {
   bool inch = false;
-  int plane = 17;            // 17, 18 or 19
-  bool incremental = false;  // G91
-  int work_offset = 0;       // G54 ... G59.3 in tenths when the program chose one, else 0
-  int length_h = -1;         // ModalState::length_h
-  int feed_mode = 94;        // 93, 94 or 95
-  int motion = 0;            // the motion mode in tenths (G80: 800)
-  bool frame_moved = false;  // a G92 or G52 offset, or a rotation, in force
+  int plane = 17;                // 17, 18 or 19
+  bool incremental = false;      // G91
+  int work_offset = 0;           // G54 ... G59.3 in tenths when the program chose one, else 0
+  int length_h = -1;             // ModalState::length_h
+  int feed_mode = 94;            // 93, 94 or 95
+  int motion = 0;                // the motion mode in tenths (G80: 800)
+  bool offsets_written = false;  // ModalState::offsets_written
+  bool frame_moved = false;      // a G92 or G52 offset, or a rotation, in force
 };
 
 // The modes of the RS274NGC interpreter's state (rs274ngc, fanuc, grbl).

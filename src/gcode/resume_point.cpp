@@ -158,6 +158,24 @@ std::optional<std::string> frame_word(const std::vector<ScanLine>& lines, std::s
   return std::nullopt;
 }
 
+// The text the run before the start reads: the blocks before it, and for
+// fanuc the programs after the main one (`O9 ... M99` after M30, called by
+// an M98 before the start; the next O block ends the main program there).
+std::string run_before(std::string_view text, const std::vector<ScanLine>& lines, std::size_t start,
+                       std::string_view dialect) {
+  std::string prefix(text.substr(0, lines[start].offset));
+  if (dialect == "fanuc") {
+    for (std::size_t i = start; i < lines.size(); ++i) {
+      const std::string_view raw =
+          lines[i].raw.substr(std::min(lines[i].raw.size(), lines[i].raw.find_first_not_of(" \t")));
+      if (!raw.empty() && (raw[0] == 'O' || raw[0] == 'o' || raw[0] == ':'))
+        return prefix + std::string(text.substr(lines[i].offset));
+    }
+  }
+  if (!prefix.empty() && prefix[0] == '%' && dialect != "romi") prefix += "%\n";
+  return prefix;
+}
+
 // The modes a restart writes back, from the runner that ran the program
 // before the start.
 void take_modes(const RunModes& r, canon::ResumeState& s) {
@@ -234,8 +252,7 @@ tl::expected<ResumePoint, std::string> find_resume_point(std::string_view text,
                     "usina cannot restore it; start before that block",
                     line, *frame));
   Observer obs;
-  std::string prefix(text.substr(0, first.offset));
-  if (!prefix.empty() && prefix[0] == '%' && dialect_name != "romi") prefix += "%\n";
+  std::string prefix = run_before(text, lines, *at, dialect_name);
   const RunResult before = run_in_dialect(std::move(prefix), *dialect, obs);
   if (!before.ok)
     return Fail(fmt::format("the program before line {} does not run: {}", line, before.error));
@@ -245,6 +262,12 @@ tl::expected<ResumePoint, std::string> find_resume_point(std::string_view text,
         fmt::format("the program moves its coordinate frame before line {} (a G92 or "
                     "G52 offset, or a rotation, mirror or scale, is in force there): "
                     "usina cannot restore it; start before that block",
+                    line));
+  if (modes.offsets_written)
+    return Fail(
+        fmt::format("the program writes offsets before line {} (a G10, or a home, G92 or "
+                    "work offset parameter, in a subroutine or macro): usina cannot restore "
+                    "them; start before that block",
                     line));
   canon::ResumeState& s = p.state;
   take_modes(modes, s);

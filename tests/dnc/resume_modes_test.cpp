@@ -103,5 +103,51 @@ TEST(ResumeModes, ADynamicLengthOffsetIsRefused) {
   EXPECT_NE(why.find("G43.1 or G43.2"), std::string::npos) << why;
 }
 
+// G10 and offset parameters write values the modes do not show: a G10 in
+// the main text is refused by its line (resume_point's frame_word); one run
+// inside a subroutine or macro, or a parameter assignment, by the run.
+TEST(ResumeModes, AG10RunInsideASubroutineIsRefused) {
+  const std::string text =
+      "o7 sub\nG10 L2 P1 X10\no7 endsub\nG21 G90 G54\nG0 X0 Y0 Z5\no7 call\n"
+      "G1 X20 F100\nG1 X30\nM2\n";
+  const std::string why = refusal(text, "rs274ngc", {K::Line, 8});
+  EXPECT_NE(why.find("writes offsets before line 8"), std::string::npos) << why;
+}
+
+TEST(ResumeModes, AWorkOffsetParameterWrittenBeforeTheStartIsRefused) {
+  const std::string text = "G21 G90\n#5221=10\nG54\nG0 X0 Y0 Z5\nG1 X5 F100\nG1 X10\nM2\n";
+  const std::string why = refusal(text, "rs274ngc", {K::Line, 6});
+  EXPECT_NE(why.find("work offset parameter"), std::string::npos) << why;
+}
+
+TEST(ResumeModes, AFanucG10InAMacroIsRefused) {
+  const std::string text =
+      "%\nO1\nG21 G90 G54\nG0 X0 Y0 Z5\nM98 P9\nG1 X10 F100\nN80 G1 X20\nM30\n"
+      "O9\nG10 L2 P1 X5\nM99\n%\n";
+  const std::string why = refusal(text, "fanuc", {K::NWord, 80});
+  EXPECT_NE(why.find("writes offsets"), std::string::npos) << why;
+}
+
+TEST(ResumeModes, AG10SubroutineCalledOnlyAfterTheStartIsNoObstacle) {
+  const std::string text =
+      "o7 sub\nG10 L2 P1 X10\no7 endsub\nG21 G90 G54\nG0 X0 Y0 Z5\nG1 X20 F100\n"
+      "G1 X30\no7 call\nM2\n";
+  const std::string r = restart(text, "rs274ngc", {K::Line, 7});
+  EXPECT_NE(r.find("o7 sub"), std::string::npos) << r;  // its definition goes with it
+}
+
+TEST(ResumeModes, AFanucSubprogramAfterTheEndRunsBeforeTheStart) {
+  // O9 after M30 is called by M98 before N80: the run before the start
+  // needs it (it was "no program O0009" when the text was cut at N80).
+  const std::string text =
+      "%\nO1\nG21 G90 G54\nT1 M6\nG0 X0 Y0 Z5.\nM98 P9\nG1 X1. F100\nN80 G1 X2.\nM30\n"
+      "O9\nS800 M3\nG91\nM99\n%\n";
+  const std::string r = restart(text, "fanuc", {K::NWord, 80});
+  const std::string p = preamble(r, "N80");
+  EXPECT_NE(p.find("S800 M03"), std::string::npos) << p;
+  EXPECT_TRUE(p.ends_with("G91\n")) << p;
+  EXPECT_NE(r.find("O9\nS800"), std::string::npos) << r;  // the subprogram stays in the restart
+}
+
 }  // namespace
 }  // namespace usina::dnc

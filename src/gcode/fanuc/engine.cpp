@@ -153,6 +153,7 @@ std::optional<RunModes> Engine::modes() const {
   else
     m.length_h = length_sign_ > 0 ? static_cast<int>(std::clamp(h_register_, 0L, 99'999'999L)) : -2;
   m.frame_moved = m.frame_moved || xf_.active() || polar_;
+  m.offsets_written = m.offsets_written || offsets_written_;
   return m;
 }
 

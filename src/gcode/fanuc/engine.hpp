@@ -355,7 +355,8 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   std::optional<double> register_variable(long index) const;
   std::map<long, std::array<double, 2>> h_regs_, d_regs_;  // geometry, wear
   std::set<long> warned_registers_;
-  int length_sign_ = 0;  // G43 +1, G44 -1, G49 0
+  int length_sign_ = 0;           // G43 +1, G44 -1, G49 0
+  bool offsets_written_ = false;  // a G10 or a work offset variable ran (RunModes)
   int comp_side_ = 40;
   long h_register_ = 0, d_register_ = 0;
 

@@ -379,6 +379,7 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
   }
   if (!stroke_codes(b, w) || !work_codes(b, w)) return false;
   if (w.has_g(100)) {
+    offsets_written_ = true;
     const long l = std::lround(w.get('L', 0));
     if (l >= 10 && l <= 13) return write_register(b, w, l);
     return work_offset(b, w, l);  // L2, L20, L50 (fanuc/workspaces.cpp)

@@ -151,7 +151,10 @@ bool Engine::write(long index, Value v, const TapeBlock& b, std::size_t pos) {
                    fmt::format("#3006 stop: {}", b.comment)});
     return true;
   }
-  if (auto written = write_work_variable(index, v.v, b)) return *written;
+  if (auto written = write_work_variable(index, v.v, b)) {
+    offsets_written_ = true;
+    return *written;
+  }
   return error(core::Code::ReadOnlyParameter, b, pos,
                index == 0
                    ? std::string("#0 is always vacant; it cannot be written (Fanuc alarm 116)")

@@ -179,6 +179,7 @@ bool Interpreter::assign(std::span<const EvaluatedAssign> assigns) {
   for (const EvaluatedAssign& a : assigns) {
     if (a.index > 0) {
       params_.set(a.index, a.value);
+      if (a.index >= 5161 && a.index <= 5389) state_.offsets_written = true;
     } else if (predefined(a.name)) {
       return error(core::Code::ReadOnlyParameter, a.col,
                    fmt::format("#<{}> is a read-only parameter", a.name));

@@ -116,6 +116,7 @@ bool Interpreter::g92(BlockWords& w) {
 }
 
 bool Interpreter::g10(BlockWords& w) {
+  state_.offsets_written = true;
   if (!w.has('L')) return error(core::Code::MissingWord, w.gcol[kGroupNonModal], "G10 needs L");
   const auto lw = whole(w, 'L', 0, 100);
   if (!lw) return false;

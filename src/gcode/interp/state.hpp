@@ -56,6 +56,9 @@ struct ModalState {
   // G43's H (0 when it gave none: the tool in the spindle), -1 under G49,
   // -2 for G43.1 and G43.2, whose offsets a restart cannot write back.
   int length_h = -1;
+  // A G10 ran, or the program wrote a home, G92 or work offset parameter
+  // (#5161-#5389): offsets a restart's preamble cannot write back.
+  bool offsets_written = false;
 
   double feed = 0.0;   // mm/min (G94), mm/rev (G95) or 1/min (G93)
   double speed = 0.0;  // rpm, or surface speed under G96
