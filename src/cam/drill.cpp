@@ -26,6 +26,11 @@ void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
     }
   }
   w.feed(to(bottom));
+  if (o.pitch > 0.0) {
+    w.emit(canon::Spindle{o.cut.rpm, canon::SpindleDir::Ccw});
+    w.feed(to(r));
+    w.emit(canon::Spindle{o.cut.rpm, canon::SpindleDir::Cw});
+  }
   w.rapid(to(o.cut.safe_z));
 }
 
@@ -40,6 +45,11 @@ bool check_ranges(const DrillOptions& o, core::DiagnosticSink& diags) {
   ok = check_range("the retract height (--retract)", o.retract, kLengthOrZero, diags) && ok;
   ok = check_range("the peck (--peck)", o.peck, kLengthOrZero, diags) && ok;
   ok = check_range("the peck clearance", o.peck_clearance, kLengthOrZero, diags) && ok;
+  ok = check_range("the thread pitch", o.pitch, kLengthOrZero, diags) && ok;
+  if (ok && o.pitch > 0.0 && o.peck > 0.0)
+    ok = fail(diags, core::Code::GenBadValue, "a tap is not pecked: give no peck with a pitch");
+  if (ok && o.pitch > 0.0 && o.form == HoleForm::Features)
+    ok = fail(diags, core::Code::GenBadValue, "tapping is written as moves, not as a drill cycle");
   return ok;
 }
 
@@ -110,12 +120,16 @@ std::vector<Vec2> grid(Vec2 origin, int nx, int ny, double dx, double dy) {
   return out;
 }
 
-bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& o, canon::Sink& sink,
+bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& given, canon::Sink& sink,
                     core::DiagnosticSink& diags) {
+  DrillOptions o = given;
+  if (o.pitch > 0.0) o.cut.feed = o.cut.plunge_feed = o.pitch * o.cut.rpm;  // synchronised
   if (!check_drill(points, o, diags)) return false;
   ProgramWriter w(sink, o.cut);
-  w.begin(fmt::format("usina gen drill: {} holes, depth {:g} mm{}", points.size(), o.depth,
-                      o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string()));
+  w.begin(
+      fmt::format("usina gen drill: {} holes, depth {:g} mm{}{}", points.size(), o.depth,
+                  o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string(),
+                  o.pitch > 0.0 ? fmt::format(", tapped, pitch {:g} mm", o.pitch) : std::string()));
   w.rapid_over(points.front());
   if (o.form == HoleForm::Features) {
     const Vec2 p = points.front();

@@ -34,6 +34,10 @@ struct DrillOptions {
   double retract = 1.0;         // mm above the top: the R plane each hole starts and ends at
   double peck = 0.0;            // mm per peck (G83), 0 for one feed to the bottom (G81)
   double peck_clearance = 1.0;  // mm above the last peck's bottom the drill comes back down to
+  // Tapping (G84 as moves) when above 0: the thread's pitch, mm. The feed
+  // is then the pitch a revolution (cut.feed is not read), the spindle
+  // reverses at the bottom and the tap feeds back out to R.
+  double pitch = 0.0;
 };
 
 // Checks, then the holes in the given order. False, with nothing emitted,

@@ -32,6 +32,7 @@ constexpr std::string_view kStockKeys[] = {"shape",  "size",     "diameter",
 #define USINA_JOB_COMMON "type", "tool", "depth", "rpm", "feed", "plunge_feed"
 constexpr std::string_view kDrillKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "peck",
                                            "retract"};
+constexpr std::string_view kSpotKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract"};
 constexpr std::string_view kPocketKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "stepover"};
 constexpr std::string_view kProfileKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "side",
                                              "lead_radius",    "tabs",  "tab_width", "tab_height"};
@@ -49,6 +50,8 @@ struct TypeName {
 
 constexpr TypeName kTypes[] = {
     {OpType::Drill, "drill", kDrillKeys},
+    {OpType::Spot, "spot", kSpotKeys},
+    {OpType::Tap, "tap", kSpotKeys},
     {OpType::Pocket, "pocket", kPocketKeys},
     {OpType::Profile, "profile", kProfileKeys},
     {OpType::EllipsePocket, "ellipse_pocket", kEllipseKeys},
@@ -138,8 +141,9 @@ void read_engrave_keys(TomlReader& r, const toml::table& t, const std::string& w
 }
 
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
-  const bool layered =
-      op.type == OpType::Drill || op.type == OpType::Pocket || op.type == OpType::Profile;
+  const bool layered = op.type == OpType::Drill || op.type == OpType::Spot ||
+                       op.type == OpType::Tap || op.type == OpType::Pocket ||
+                       op.type == OpType::Profile;
   if (layered) {
     op.layer = r.text(t, w, "layer", true).value_or("");
     if (const toml::node* l = t.get("layer")) op.layer_loc = r.loc(l->source());
@@ -180,8 +184,8 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   }
   if (found == nullptr) {
     r.fail(core::Code::JobUnknownOperation, t.get("type")->source(),
-           fmt::format("{}: type \"{}\" is not an operation usina makes: give drill, pocket, "
-                       "profile, ellipse_pocket, face or engrave",
+           fmt::format("{}: type \"{}\" is not an operation usina makes: give drill, spot, "
+                       "tap, pocket, profile, ellipse_pocket, face or engrave",
                        what, *type));
     return;
   }
@@ -193,8 +197,16 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   op.rpm = r.number(t, what, "rpm", kRpm, false);
   op.feed = r.number(t, what, "feed", kFeed, false);
   op.plunge_feed = r.number(t, what, "plunge_feed", kFeed, false);
-  // One without the other would mix the job's figure with the data's.
-  if (op.rpm.has_value() != op.feed.has_value()) {
+  // A tap's feed is its pitch a revolution, and no table has tapping speeds.
+  if (op.type == OpType::Tap) {
+    if (!op.rpm)
+      r.fail(t.source(), fmt::format("{} needs rpm: the tables have no tapping speeds", what));
+    if (op.feed)
+      r.fail(t.get("feed")->source(),
+             fmt::format("{} gives feed: a tap feeds its pitch a revolution (feed = pitch x rpm)",
+                         what));
+  } else if (op.rpm.has_value() != op.feed.has_value()) {
+    // One without the other would mix the job's figure with the data's.
     const char* given = op.rpm ? "rpm" : "feed";
     r.fail(t.get(given)->source(),
            fmt::format("{} gives {} alone: give both rpm and feed, or neither (the cutting "

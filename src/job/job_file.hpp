@@ -15,7 +15,7 @@
 
 namespace usina::job {
 
-enum class OpType { Drill, Pocket, Profile, EllipsePocket, Face, Engrave };
+enum class OpType { Drill, Spot, Tap, Pocket, Profile, EllipsePocket, Face, Engrave };
 
 std::string_view op_type_name(OpType t);
 

@@ -17,6 +17,46 @@ namespace {
 
 constexpr double kNoCorner = std::numeric_limits<double>::infinity();
 
+// A drill of the holes' diameter, a spot drill at least as wide (its 90°
+// point chamfers the hole's edge as it centres it), or the tap whose tap
+// drill the holes are; null after an error.
+const Tool* hole_tool(Context& cx, const Operation& op, double diameter, std::string& chosen) {
+  const bool spot = op.type == OpType::Spot;
+  const bool tap = op.type == OpType::Tap;
+  if (op.tool) {
+    const Tool* tool = named_tool(cx.j, op, cx.diags);
+    if (tool != nullptr && tap && tool->pitch <= 0) {
+      cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
+                       fmt::format("T{} has no pitch in the library {}: a tap operation needs "
+                                   "it (pitch = mm)",
+                                   tool->number, cx.j.job.tools)});
+      return nullptr;
+    }
+    const double size = tool == nullptr ? 0 : tap ? tool->diameter - tool->pitch : tool->diameter;
+    const bool fits = tool == nullptr || (spot  ? size >= diameter - 0.005
+                                          : tap ? std::abs(size - diameter) <= 0.1
+                                                : std::abs(size - diameter) <= 0.005);
+    if (!fits) {
+      cx.diags.report(
+          {core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
+           fmt::format("T{} is D{:g}; the holes of layer \"{}\" are D{:g}{}", tool->number,
+                       tool->diameter, op.layer, diameter,
+                       spot  ? ": a spot drill narrower than a hole cannot centre it"
+                       : tap ? ": they are not the tap drill of its thread (nominal less pitch)"
+                             : "")});
+      return nullptr;
+    }
+    return tool;
+  }
+  const ToolChoice c = spot  ? spot_drill(cx.j.tools, diameter, op.depth)
+                       : tap ? tap_for(cx.j.tools, diameter, op.depth)
+                             : drill_of(cx.j.tools, diameter, op.depth + op.retract);
+  if (c.tool == nullptr)
+    cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc, c.why});
+  chosen = c.why;
+  return c.tool;
+}
+
 bool run_drill(Context& cx, const Operation& op, const std::string& title) {
   const auto paths = layer_paths(cx.j, op, cx.diags);
   if (!paths) return false;
@@ -35,24 +75,8 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
     return false;
   }
   for (const HoleGroup& g : groups) {
-    const Tool* tool = nullptr;
     std::string chosen;
-    if (op.tool) {
-      tool = named_tool(cx.j, op, cx.diags);
-      if (tool && std::abs(tool->diameter - g.diameter) > 0.005) {
-        cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc,
-                         fmt::format("T{} is D{:g}; the holes of layer \"{}\" are D{:g}",
-                                     tool->number, tool->diameter, op.layer, g.diameter)});
-        return false;
-      }
-    } else {
-      const ToolChoice c = drill_of(cx.j.tools, g.diameter, op.depth + op.retract);
-      if (c.tool == nullptr) {
-        cx.diags.report({core::Code::JobNoToolFits, core::Severity::Error, op.tool_loc, c.why});
-      }
-      tool = c.tool;
-      chosen = c.why;
-    }
+    const Tool* tool = hole_tool(cx, op, g.diameter, chosen);
     cam::DrillOptions o;
     if (tool == nullptr ||
         !prepare(cx, op, *tool, false, chosen, o.cut,
@@ -68,6 +92,7 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
     o.depth = op.depth;
     o.retract = op.retract;
     o.peck = op.peck;
+    if (op.type == OpType::Tap) o.pitch = tool->pitch;
     AtOperation at(cx.diags, op.loc, title);
     if (!cam::generate_drill(g.centers, o, cx.sink, at)) return false;
   }
@@ -153,7 +178,9 @@ bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags
                                           op.layer.empty() ? "" : " layer " + op.layer);
     bool ok = false;
     switch (op.type) {
-    case OpType::Drill: ok = run_drill(cx, op, title); break;
+    case OpType::Drill:
+    case OpType::Spot:
+    case OpType::Tap: ok = run_drill(cx, op, title); break;
     case OpType::Pocket: ok = run_pocket(cx, op, title); break;
     case OpType::Profile: ok = run_profile(cx, op, title); break;
     case OpType::EllipsePocket: ok = run_ellipse(cx, op, title); break;

@@ -66,6 +66,8 @@ bool is_end_mill(ToolType t) {
 bool takes_tool(OpType op, ToolType t) {
   switch (op) {
   case OpType::Drill: return t == ToolType::Drill;
+  case OpType::Spot: return t == ToolType::Spot;
+  case OpType::Tap: return t == ToolType::Tap;
   case OpType::Face: return t == ToolType::Face || t == ToolType::Flat || t == ToolType::Bull;
   case OpType::Engrave:
     return t == ToolType::Engraver || t == ToolType::Flat || t == ToolType::Ball;
@@ -76,6 +78,8 @@ bool takes_tool(OpType op, ToolType t) {
 std::string_view tools_taken(OpType op) {
   switch (op) {
   case OpType::Drill: return "a drill";
+  case OpType::Spot: return "a spot drill";
+  case OpType::Tap: return "a tap";
   case OpType::Face: return "a face mill, or a flat or bull end mill";
   case OpType::Engrave: return "an engraver, or a flat or ball end mill";
   default: return "a flat, ball or bull end mill";
@@ -127,7 +131,9 @@ MachineLimits limits_of(const LoadedJob& j) {
 bool from_cutting_data(const LoadedJob& j, const Operation& op, const Tool& tool, bool slotting,
                        CuttingConditions& c, core::DiagnosticSink& diags) {
   const Material& m = j.materials[j.material];
-  const CutKind kind = tool.type == ToolType::Drill ? CutKind::Drill : CutKind::Mill;
+  // A spot drill drills: the tables' drilling rows (none for carbide).
+  const bool drills = tool.type == ToolType::Drill || tool.type == ToolType::Spot;
+  const CutKind kind = drills ? CutKind::Drill : CutKind::Mill;
   const CuttingRow* row = cutting_row(m, tool, kind);
   const auto conditions =
       row ? cutting_conditions(*row, tool, slotting, limits_of(j)) : std::nullopt;
@@ -157,10 +163,16 @@ bool cutting_values(const LoadedJob& j, const Operation& op, const Tool& tool, b
   cut.tool_diameter = tool.diameter;
   cut.safe_z = j.job.safe_z;
   CuttingConditions c;
-  if (op.rpm && op.feed) {
+  if (op.type == OpType::Tap && op.rpm) {
+    c.rpm = *op.rpm;
+    c.feed = c.plunge_feed = tool.pitch * c.rpm;
+    c.why.push_back(fmt::format("n {:g} as the job gives it; vf = pitch {:g} x n = {:g}", c.rpm,
+                                tool.pitch, c.feed));
+  } else if (op.rpm && op.feed) {
     c.rpm = *op.rpm;
     c.feed = *op.feed;
-    c.plunge_feed = tool.type == ToolType::Drill ? c.feed : c.feed / 2;
+    c.plunge_feed =
+        tool.type == ToolType::Drill || tool.type == ToolType::Spot ? c.feed : c.feed / 2;
     c.why.push_back(fmt::format("n {:g} and vf {:g} as the job gives them", c.rpm, c.feed));
   } else if (!from_cutting_data(j, op, tool, slotting, c, diags)) {
     return false;

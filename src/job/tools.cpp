@@ -27,12 +27,13 @@ constexpr std::array kMaterials = {
 constexpr std::string_view kToolKeys[] = {
     "number",        "type",           "name",           "diameter",
     "flutes",        "cutting_length", "overall_length", "holder_diameter",
-    "holder_length", "material"};
+    "holder_length", "material",       "pitch"};
 
 constexpr Range kNumber{1, 9999, ""};
 constexpr Range kDiameter{0.01, 500, "mm"};
 constexpr Range kFlutes{1, 50, "flutes"};
 constexpr Range kLength{0.01, 1000, "mm"};
+constexpr Range kPitch{0.05, 10, "mm"};
 
 template <typename E, std::size_t N>
 std::optional<E> by_name(const std::array<std::pair<E, const char*>, N>& names,
@@ -66,6 +67,7 @@ std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
   tool.holder_diameter = r.number(t, what, "holder_diameter", kLength, false).value_or(0.0);
   tool.holder_length = r.number(t, what, "holder_length", kLength, false).value_or(0.0);
   tool.name = r.text(t, what, "name", false).value_or("");
+  tool.pitch = r.number(t, what, "pitch", kPitch, false).value_or(0.0);
   if (number && *number != std::floor(*number)) {
     r.fail(t.get("number")->source(), fmt::format("{}: the number must be whole", what));
     return std::nullopt;
@@ -88,6 +90,10 @@ std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
   tool.flutes = static_cast<int>(flutes.value_or(2.0));
   tool.cutting_length = *cutting;
   tool.material = *ma;
+  if (tool.type != ToolType::Tap && tool.pitch > 0) {
+    r.fail(t.get("pitch")->source(), fmt::format("{}: only a tap has a pitch", what));
+    return std::nullopt;
+  }
   return tool;
 }
 
@@ -206,6 +212,42 @@ ToolChoice engraver(const std::vector<Tool>& tools, double depth) {
               ? fmt::format("T{}: the smallest engraver with a cutting length of {:g} mm or more",
                             c.tool->number, depth)
               : fmt::format("the library has no engraver with a cutting length of {:g} mm", depth);
+  return c;
+}
+
+ToolChoice spot_drill(const std::vector<Tool>& tools, double diameter, double depth) {
+  ToolChoice c;
+  for (const Tool& t : tools) {
+    if (t.type == ToolType::Spot && t.diameter >= diameter - 0.005 && t.cutting_length >= depth &&
+        (c.tool == nullptr || t.diameter < c.tool->diameter))
+      c.tool = &t;
+  }
+  c.why = c.tool != nullptr
+              ? fmt::format("T{}: the smallest spot drill of D{:g} or more reaching {:g} mm",
+                            c.tool->number, diameter, depth)
+              : fmt::format("no spot drill of D{:g} or more reaches {:g} mm", diameter, depth);
+  return c;
+}
+
+ToolChoice tap_for(const std::vector<Tool>& tools, double diameter, double depth) {
+  ToolChoice c;
+  for (const Tool& t : tools) {
+    if (t.type != ToolType::Tap || t.pitch <= 0 || std::abs(t.diameter - t.pitch - diameter) > 0.1)
+      continue;
+    if (t.cutting_length >= depth) {
+      c.tool = &t;
+      c.why = fmt::format("T{}: the M{:g} x {:g} tap, whose tap drill is D{:g}", t.number,
+                          t.diameter, t.pitch, diameter);
+      return c;
+    }
+    c.why = fmt::format("the M{:g} tap T{} cuts {:g} mm deep at most; the holes need {:g}",
+                        t.diameter, t.number, t.cutting_length, depth);
+  }
+  if (c.why.empty())
+    c.why = fmt::format(
+        "no tap with its pitch in the library has D{:g} as its tap drill (nominal "
+        "diameter less pitch, within 0.1 mm)",
+        diameter);
   return c;
 }
 

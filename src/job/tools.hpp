@@ -28,6 +28,7 @@ struct Tool {
   double overall_length = 0;   // mm
   double holder_diameter = 0;  // mm, 0: not given
   double holder_length = 0;    // mm, 0: not given
+  double pitch = 0;            // a tap's thread pitch, mm; 0: not given
   ToolMaterial material = ToolMaterial::Hss;
 };
 
@@ -55,6 +56,15 @@ ToolChoice face_mill(const std::vector<Tool>& tools, double step);
 
 // The smallest engraver whose cutting length reaches `depth`: the finest line.
 ToolChoice engraver(const std::vector<Tool>& tools, double depth);
+
+// The smallest spot drill at least `diameter` wide whose cutting length
+// reaches `depth`.
+ToolChoice spot_drill(const std::vector<Tool>& tools, double diameter, double depth);
+
+// The tap for holes of `diameter` (its tap drill): the tap whose nominal
+// diameter less its pitch is within 0.1 mm of it (ISO 2306's tap drills
+// for coarse metric threads: M8 x 1.25 in 6.8), reaching `depth`.
+ToolChoice tap_for(const std::vector<Tool>& tools, double diameter, double depth);
 
 // A drill of `diameter` (within 0.005 mm) whose cutting length reaches `depth`.
 ToolChoice drill_of(const std::vector<Tool>& tools, double diameter, double depth);

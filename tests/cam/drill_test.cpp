@@ -120,5 +120,38 @@ TEST(Drill, ErrorsNothingEmitted) {
   EXPECT_EQ(tp.size(), 0u);
 }
 
+TEST(Drill, TappingFeedsThePitchAndReversesAtTheBottom) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  DrillOptions o = options();
+  o.cut.rpm = 300;
+  o.cut.feed = 999;  // not read: a tap feeds its pitch a revolution
+  o.pitch = 1.25;
+  ASSERT_TRUE(generate_drill({{0, 0}}, o, tp, d)) << (d.all().empty() ? "" : d.all()[0].message);
+  std::vector<std::string> seq;
+  for (const canon::Op& op : tp.ops()) {
+    if (op.origin != canon::Origin::Cycle) continue;
+    if (const auto* s = std::get_if<canon::Spindle>(&op.kind)) {
+      seq.push_back(s->dir == canon::SpindleDir::Ccw ? "ccw" : "cw");
+    } else if (const auto* f = std::get_if<canon::Feed>(&op.kind)) {
+      EXPECT_DOUBLE_EQ(*f->f, 375.0);  // 1.25 mm x 300 rev/min
+      seq.push_back(fmt::format("feed {:g}", f->to.z));
+    }
+  }
+  const std::vector<std::string> expect{"feed -12", "ccw", "feed 2", "cw"};
+  EXPECT_EQ(seq, expect);
+}
+
+TEST(Drill, ATapIsNotPecked) {
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  DrillOptions o = options();
+  o.pitch = 1.25;
+  o.peck = 3;
+  EXPECT_FALSE(generate_drill({{0, 0}}, o, tp, d));
+  EXPECT_EQ(count_code(d, core::Code::GenBadValue), 1);
+  EXPECT_TRUE(tp.ops().empty());
+}
+
 }  // namespace
 }  // namespace usina::cam

@@ -1,5 +1,6 @@
 // Bad job files: every one a diagnostic at the TOML line and column of what
 // is wrong (issue 16, "every bad job file ... a diagnostic with the TOML line").
+#include <cmath>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -273,6 +274,118 @@ TEST(JobFile, AFacingOfTheStockFromItsCorner) {
   }
   EXPECT_DOUBLE_EQ(lo, -27);
   EXPECT_DOUBLE_EQ(hi, 157);
+}
+
+TEST(JobFile, SpotDrillingCentresEveryHoleWithOneSpotDrill) {
+  const auto l =
+      load_text(job_text("[[operation]]\ntype = \"spot\"\nlayer = \"HOLES\"\ndepth = 2.0\n"
+                         "rpm = 3000\nfeed = 300\ntool = \"auto\"\n"));
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  canon::Toolpath tp;
+  ASSERT_TRUE(make_job(*l->job, tp, diags)) << (diags.all().empty() ? "" : diags.all()[0].message);
+  int changes = 0, spot_depths = 0;
+  for (const canon::Op& op : tp.ops()) {
+    if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) {
+      EXPECT_EQ(t->tool, 8);  // the D10 spot drill, for the D5 and the D6.8 holes
+      ++changes;
+    }
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind); f && std::abs(f->to.z + 2) < 1e-9)
+      ++spot_depths;
+  }
+  EXPECT_EQ(changes, 1);
+  EXPECT_EQ(spot_depths, 6);  // the plate's six holes
+}
+
+TEST(JobFile, ASpotDrillWithoutDataOrTooNarrowIsAnError) {
+  // The tables have no carbide drilling row: a carbide spot drill needs its speeds.
+  const auto l = load_text(job_text(
+      "[[operation]]\ntype = \"spot\"\nlayer = \"HOLES\"\ndepth = 2.0\ntool = \"auto\"\n"));
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  EXPECT_FALSE(make(*l, diags));
+  EXPECT_NE(find(diags, core::Code::JobNoCuttingData), nullptr);
+  // A drill is no spot drill.
+  const auto drill =
+      load_text(job_text("[[operation]]\ntype = \"spot\"\nlayer = \"HOLES\"\n"
+                         "depth = 2.0\nrpm = 3000\nfeed = 300\ntool = 6\n"));
+  ASSERT_TRUE(drill->job);
+  core::DiagnosticList d2;
+  EXPECT_FALSE(make(*drill, d2));
+  const core::Diagnostic* d = find(d2, core::Code::JobNoToolFits);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("a spot drill"), std::string::npos) << d->message;
+}
+
+TEST(JobFile, TappingTheM8HolesWithTheirTap) {
+  const auto l =
+      load_text(job_text("[[operation]]\ntype = \"tap\"\nlayer = \"HOLES\"\n"
+                         "diameter = 6.8\ndepth = 10.0\nrpm = 300\ntool = \"auto\"\n"));
+  ASSERT_TRUE(l->job) << (l->diags.all().empty() ? "" : l->diags.all()[0].message);
+  core::DiagnosticList diags;
+  canon::Toolpath tp;
+  ASSERT_TRUE(make_job(*l->job, tp, diags)) << (diags.all().empty() ? "" : diags.all()[0].message);
+  int reversals = 0, tool = 0;
+  for (const canon::Op& op : tp.ops()) {
+    if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) tool = t->tool;
+    if (const auto* s = std::get_if<canon::Spindle>(&op.kind))
+      reversals += s->dir == canon::SpindleDir::Ccw ? 1 : 0;
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind)) {
+      EXPECT_DOUBLE_EQ(*f->f, 375.0);
+    }
+  }
+  EXPECT_EQ(tool, 9);
+  EXPECT_EQ(reversals, 4);  // the plate's four D6.8 holes
+}
+
+TEST(JobFile, ATapNeedsItsSpeedAndNoFeed) {
+  const auto none = load_text(
+      job_text("[[operation]]\ntype = \"tap\"\nlayer = \"HOLES\"\ndepth = 10.0\ntool = 9\n"));
+  EXPECT_FALSE(none->job);
+  const core::Diagnostic* d = find(none->diags, core::Code::BadJob);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("needs rpm"), std::string::npos) << d->message;
+  const auto fed =
+      load_text(job_text("[[operation]]\ntype = \"tap\"\nlayer = \"HOLES\"\n"
+                         "depth = 10.0\nrpm = 300\nfeed = 400\ntool = 9\n"));
+  EXPECT_FALSE(fed->job);
+  const core::Diagnostic* e = find(fed->diags, core::Code::BadJob);
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->loc.line, kFirstOpLine + 5);
+  EXPECT_NE(e->message.find("pitch x rpm"), std::string::npos) << e->message;
+}
+
+TEST(JobFile, HolesThatAreNoTapDrillOfTheTapAreAnError) {
+  // The D5 holes are an M6's tap drill, not the M8's.
+  const auto l =
+      load_text(job_text("[[operation]]\ntype = \"tap\"\nlayer = \"HOLES\"\n"
+                         "diameter = 5.0\ndepth = 10.0\nrpm = 300\ntool = 9\n"));
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  EXPECT_FALSE(make(*l, diags));
+  const core::Diagnostic* d = find(diags, core::Code::JobNoToolFits);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("tap drill"), std::string::npos) << d->message;
+}
+
+TEST(JobFile, ANamedTapWithoutItsPitchIsAnError) {
+  const test::TempDir dir;
+  const std::string tools =
+      dir.write("tools.toml",
+                "[[tool]]\nnumber = 9\ntype = \"tap\"\ndiameter = 8.0\ncutting_length = 20.0\n"
+                "material = \"hss\"\n");
+  std::string text = job_text(
+      "[[operation]]\ntype = \"tap\"\nlayer = \"HOLES\"\n"
+      "diameter = 6.8\ndepth = 10.0\nrpm = 300\ntool = 9\n");
+  const std::string shop = testing::repo("examples/tools/shop.toml");
+  text.replace(text.find(shop), shop.size(), tools);
+  const auto l = load_text(text);
+  ASSERT_TRUE(l->job) << (l->diags.all().empty() ? l->io_error : l->diags.all()[0].message);
+  core::DiagnosticList diags;
+  EXPECT_FALSE(make(*l, diags));
+  const core::Diagnostic* d = find(diags, core::Code::JobNoToolFits);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("T9 has no pitch"), std::string::npos) << d->message;
 }
 
 }  // namespace

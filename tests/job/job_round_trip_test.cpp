@@ -88,6 +88,21 @@ TEST(JobRoundTrip, NameplateFacedEngravedDrilledCutOut) {
   round_trip(tp);
 }
 
+TEST(JobRoundTrip, TappingReadsBackInEveryControl) {
+  // The plate's M8 holes drilled, then tapped: the spindle reverses at each
+  // bottom, and every post writes that back as the control reads it.
+  const auto l = testing::load_text(testing::job_text(
+      "[[operation]]\ntype = \"drill\"\nlayer = \"HOLES\"\ndiameter = 6.8\ndepth = 12.0\n"
+      "tool = \"auto\"\n[[operation]]\ntype = \"tap\"\nlayer = \"HOLES\"\ndiameter = 6.8\n"
+      "depth = 10.0\nrpm = 300\ntool = \"auto\"\n"));
+  ASSERT_TRUE(l->job);
+  core::DiagnosticList diags;
+  canon::Toolpath tp;
+  ASSERT_TRUE(make_job(*l->job, tp, diags)) << (diags.all().empty() ? "" : diags.all()[0].message);
+  EXPECT_EQ(tool_changes(tp), (std::vector<int>{5, 9}));
+  round_trip(tp);
+}
+
 TEST(JobRoundTrip, OneProgramEnd) {
   core::DiagnosticList diags;
   const canon::Toolpath tp = made("plate.toml", diags);

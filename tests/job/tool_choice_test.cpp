@@ -139,5 +139,39 @@ TEST(ToolChoice, TheSmallestEngraverThatReaches) {
   EXPECT_NE(none.why.find("no engraver"), std::string::npos) << none.why;
 }
 
+TEST(ToolChoice, ASpotDrillAtLeastAsWideAsTheHole) {
+  const auto tools = shop();
+  EXPECT_EQ(spot_drill(tools, 6.8, 2).tool->number, 8);  // D10
+  EXPECT_EQ(spot_drill(tools, 10, 2).tool->number, 8);
+  const ToolChoice wide = spot_drill(tools, 12, 2);
+  EXPECT_EQ(wide.tool, nullptr);
+  EXPECT_NE(wide.why.find("D12"), std::string::npos) << wide.why;
+  EXPECT_EQ(spot_drill(tools, 5, 6).tool, nullptr);  // 5 mm of cutting length
+}
+
+TEST(ToolChoice, TheTapWhoseTapDrillTheHolesAre) {
+  const auto tools = shop();
+  const ToolChoice m8 = tap_for(tools, 6.8, 12);  // M8 x 1.25: 8 - 1.25 = 6.75
+  ASSERT_NE(m8.tool, nullptr);
+  EXPECT_EQ(m8.tool->number, 9);
+  EXPECT_NE(m8.why.find("M8 x 1.25"), std::string::npos) << m8.why;
+  EXPECT_EQ(tap_for(tools, 5.0, 12).tool, nullptr);
+  const ToolChoice deep = tap_for(tools, 6.8, 25);  // 20 mm of thread
+  EXPECT_EQ(deep.tool, nullptr);
+  EXPECT_NE(deep.why.find("20"), std::string::npos) << deep.why;
+}
+
+TEST(ToolChoice, OnlyATapHasAPitch) {
+  core::DiagnosticList d;
+  const auto tools = read_tool_library(
+      "[[tool]]\nnumber = 1\ntype = \"drill\"\ndiameter = 6.8\ncutting_length = 60.0\n"
+      "pitch = 1.25\nmaterial = \"hss\"\n",
+      0, d);
+  EXPECT_FALSE(tools);
+  ASSERT_EQ(d.error_count(), 1);
+  EXPECT_EQ(d.all()[0].loc.line, 6u);
+  EXPECT_NE(d.all()[0].message.find("only a tap"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace usina::job
