@@ -47,10 +47,11 @@ tl::expected<LibraryQuery, std::string> library_query(const Target& target) {
   }
   if (const auto it = in.find("tool"); it != in.end() && !it->second.empty()) {
     q.tool = whole(it->second, 0, kMaxToolNumber);
-    if (!q.tool)
+    if (!q.tool) {
       return tl::unexpected(fmt::format(
           "tool must be a whole number from 0 to {} (the T word's number, without the T)",
           kMaxToolNumber));
+    }
   }
   if (const auto it = in.find("state"); it != in.end() && !it->second.empty()) {
     q.state = parse_state(it->second);

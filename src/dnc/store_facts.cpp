@@ -1,5 +1,7 @@
 #include "dnc/store_facts.hpp"
 
+#include <algorithm>
+#include <array>
 #include <set>
 
 #include <fmt/format.h>
@@ -53,10 +55,9 @@ bool romi_statement(std::string_view inside) {
       ++k;
     return k < inside.size() && inside[k] == '=';
   }
-  for (const std::string_view word : {"if", "goto", "rpt", "call", "sub", "ret"}) {
-    if (head.starts_with(word)) return true;
-  }
-  return false;
+  constexpr std::array<std::string_view, 6> kKeywords = {"if", "goto", "rpt", "call", "sub", "ret"};
+  return std::ranges::any_of(kKeywords,
+                             [&](std::string_view word) { return head.starts_with(word); });
 }
 
 // One pass over the text, block by block.
@@ -259,9 +260,10 @@ StoreResult<void> record_facts(Database& db, std::string_view program, std::stri
   auto rows =
       db.query("SELECT id FROM revisions WHERE program = $1 AND hash = $2", {program, hash});
   if (!rows) return tl::unexpected(rows.error());
-  if (rows->empty())
+  if (rows->empty()) {
     return store_error(StoreErrorKind::NotFound,
                        fmt::format("program {} has no revision {}", program, hash));
+  }
   return record_facts_of(db, rows->front().integer(0), facts);
 }
 
