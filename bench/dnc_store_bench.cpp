@@ -1,6 +1,8 @@
 // Google Benchmark of the DNC program store (issue 13's speed targets):
 // - the normalised and the plain diff of two 1 MB programs, the second
 //   renumbered, with CR LF line ends and one block in a hundred changed;
+// - the library search's scan of a 30 MB program (store_facts.hpp), a tool
+//   change and a comment every 1,000 blocks;
 // - 10,000 revisions stored one upload (one transaction, with its check and
 //   audit entry) at a time, then listed, on SQLite in a temporary folder, and
 //   on PostgreSQL when USINA_BENCH_PG names a database URL (for example one
@@ -14,6 +16,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "dnc/store_facts.hpp"
 #include "dnc/store_program_diff.hpp"
 #include "dnc/store_revisions.hpp"
 
@@ -59,6 +62,26 @@ void BM_PlainDiff1MB(benchmark::State& state) {
 }
 
 BENCHMARK(BM_PlainDiff1MB)->Unit(benchmark::kMillisecond);
+
+void BM_ProgramFacts30MB(benchmark::State& state) {
+  std::string text = "%\nO1000 (FACTS BENCH)\n";
+  for (int n = 1; text.size() < (30u << 20); ++n) {
+    if (n % 1000 == 0)
+      text += "T" + std::to_string(n / 1000 % 40 + 1) + " M6 (TOOL " + std::to_string(n) + ")\n";
+    text += "N" + std::to_string(n * 10) + " G1 X" + std::to_string(n % 500) + ".25 Y" +
+            std::to_string((n * 7) % 300) + ".0 F1200\n";
+  }
+  std::size_t tools = 0;
+  for (auto _ : state) {
+    const ProgramFacts f = read_facts(text, "fanuc");
+    tools = f.tools.size();
+    benchmark::DoNotOptimize(tools);
+  }
+  state.counters["tools"] = static_cast<double>(tools);
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
+BENCHMARK(BM_ProgramFacts30MB)->Unit(benchmark::kMillisecond);
 
 constexpr int kRevisions = 10'000;
 

@@ -21,9 +21,9 @@ std::string shown(std::string_view s) {
   return out;
 }
 
-// Length of the UTF-8 sequence at s[i], 0 when malformed (overlong forms,
-// surrogates and code points past U+10FFFF included).
-std::size_t sequence_at(std::string_view s, std::size_t i) {
+}  // namespace
+
+std::size_t utf8_sequence_length(std::string_view s, std::size_t i) {
   const auto b0 = static_cast<unsigned char>(s[i]);
   if (b0 < 0x80) return 1;
   std::size_t n = 0;
@@ -48,11 +48,9 @@ std::size_t sequence_at(std::string_view s, std::size_t i) {
   return n;
 }
 
-}  // namespace
-
 bool valid_utf8(std::string_view s) {
   for (std::size_t i = 0; i < s.size();) {
-    const std::size_t n = sequence_at(s, i);
+    const std::size_t n = utf8_sequence_length(s, i);
     if (n == 0) return false;
     i += n;
   }

@@ -22,5 +22,8 @@ StoreResult<void> check_name(std::string_view what, std::string_view name);
 StoreResult<void> check_text(std::string_view what, std::string_view text, std::size_t max_bytes);
 
 bool valid_utf8(std::string_view s);
+// The length of the UTF-8 sequence at s[i], 0 when malformed (overlong
+// forms, surrogates and code points past U+10FFFF included).
+std::size_t utf8_sequence_length(std::string_view s, std::size_t i);
 
 }  // namespace usina::dnc

@@ -6,6 +6,7 @@
 #include "dnc/sha256.hpp"
 #include "dnc/store_audit.hpp"
 #include "dnc/store_blobs.hpp"
+#include "dnc/store_facts.hpp"
 #include "dnc/store_names.hpp"
 #include "gcode/dialect.hpp"
 #include "gcode/dialect_guess.hpp"
@@ -118,8 +119,8 @@ std::string failed_check_reason(const CheckResults& c) {
 }
 
 StoreResult<PutResult> write_revision(Store& store, const Upload& u, Revision v,
-                                      const CheckResults& checks, std::string_view machine_class,
-                                      const Actor& actor) {
+                                      const CheckResults& checks, const ProgramFacts& facts,
+                                      std::string_view machine_class, const Actor& actor) {
   Transaction tx(store.db());
   if (auto b = tx.begin_write(); !b) return tl::unexpected(b.error());
   if (auto p = ensure_program(store, u, machine_class, v.dialect); !p)
@@ -128,6 +129,8 @@ StoreResult<PutResult> write_revision(Store& store, const Upload& u, Revision v,
   if (auto b = put_blob(store, v.hash, u.text); !b) return tl::unexpected(b.error());
   store.hook("upload.blob-written");
   if (auto r = insert_revision(store, v, actor); !r) return tl::unexpected(r.error());
+  if (auto f = record_facts(store.db(), v.program, v.hash, facts); !f)
+    return tl::unexpected(f.error());
   if (checks.blocking() > 0) {
     if (auto s =
             set_state(store, v, RevisionState::CheckFailed, failed_check_reason(checks), actor);
@@ -155,6 +158,7 @@ StoreResult<PutResult> put_revision(Store& store, const Upload& u, const Actor& 
   if (machine_class.empty()) machine_class = *existing ? (*existing)->machine_class : "default";
   // The check runs outside the transaction: a long program never holds the writers up.
   const CheckResults checks = check_program(u.text, {dialect, u.profile});
+  const ProgramFacts facts = read_facts(u.text, dialect);
   Revision v;
   v.program = u.name;
   v.hash = sha256_hex(u.text);
@@ -165,7 +169,7 @@ StoreResult<PutResult> put_revision(Store& store, const Upload& u, const Actor& 
   v.dialect = dialect;
   v.check_blocking = checks.blocking();
   v.checks_json = checks.to_json();
-  return write_revision(store, u, std::move(v), checks, machine_class, actor);
+  return write_revision(store, u, std::move(v), checks, facts, machine_class, actor);
 }
 
 StoreResult<Program> find_program(Store& store, std::string_view name) {

@@ -5,17 +5,22 @@
 
 #include <fmt/format.h>
 
+#include "dnc/store_facts.hpp"
+
 namespace usina::dnc {
 namespace {
 
 // One migration: its SQL for both back ends with `@ID@` (an integer key the
 // database numbers) and `@BYTES@` (a byte column) spelled per back end, then
-// what only one back end needs (triggers differ).
+// what only one back end needs (triggers differ), then what fills the new
+// tables from the rows already there (nullptr: nothing), in the same
+// transaction.
 struct Migration {
   int version;
   std::string_view common;
   std::string_view sqlite_only;
   std::string_view postgres_only;
+  StoreResult<void> (*fill)(Database&);
 };
 
 // Version 1: programs, content-addressed blobs, immutable revisions, the
@@ -187,10 +192,32 @@ CREATE TABLE server_heartbeat (
 );
 )SQL";
 
+// Version 6: what the library's search reads of each revision
+// (store_facts.hpp): its program numbers and comments, and the tools it
+// calls (indexed by tool). The revisions stored before it get theirs as the
+// migration runs, read from their blobs, so every revision has its facts.
+constexpr std::string_view kV6 = R"SQL(
+CREATE TABLE revision_facts (
+  revision BIGINT PRIMARY KEY REFERENCES revisions(id),
+  o_numbers TEXT NOT NULL,
+  comments TEXT NOT NULL
+);
+CREATE TABLE revision_tools (
+  revision BIGINT NOT NULL REFERENCES revisions(id),
+  tool BIGINT NOT NULL,
+  PRIMARY KEY (revision, tool)
+);
+CREATE INDEX revision_tools_by_tool ON revision_tools (tool, revision);
+CREATE INDEX programs_by_class ON programs (machine_class);
+)SQL";
+
 constexpr Migration kMigrations[] = {
-    {1, kV1, kV1Sqlite, kV1Postgres}, {2, kV2, "SELECT 1", "SELECT 1"},
-    {3, kV3, "SELECT 1", "SELECT 1"}, {4, kV4, "SELECT 1", "SELECT 1"},
-    {5, kV5, "SELECT 1", "SELECT 1"},
+    {1, kV1, kV1Sqlite, kV1Postgres, nullptr},
+    {2, kV2, "SELECT 1", "SELECT 1", nullptr},
+    {3, kV3, "SELECT 1", "SELECT 1", nullptr},
+    {4, kV4, "SELECT 1", "SELECT 1", nullptr},
+    {5, kV5, "SELECT 1", "SELECT 1", nullptr},
+    {6, kV6, "SELECT 1", "SELECT 1", &record_missing_facts},
 };
 
 std::string spelled(std::string_view sql, Backend b) {
@@ -223,6 +250,9 @@ StoreResult<void> run(Database& db, const Migration& m) {
   const Backend b = db.backend();
   if (auto r = db.script(spelled(m.common, b)); !r) return r;
   if (auto r = db.script(b == Backend::Sqlite ? m.sqlite_only : m.postgres_only); !r) return r;
+  if (m.fill != nullptr) {
+    if (auto r = m.fill(db); !r) return r;
+  }
   auto r = db.query("INSERT INTO schema_version (version) VALUES ($1)",
                     {static_cast<std::int64_t>(m.version)});
   if (!r) return tl::unexpected(r.error());

@@ -56,6 +56,11 @@ TEST(ApiLibrary, MalformedQueriesAreRefusedWithTheReason) {
       {"limit=5x", "limit must be"},
       {"offset=-1", "offset must be"},
       {"released=yes", "released must be 1 or 0"},
+      {"tool=T5", "tool must be a whole number from 0 to 99999999"},
+      {"tool=-1", "tool must be"},
+      {"tool=1.5", "tool must be"},
+      {"tool=100000000", "tool must be"},
+      {"text=%FF", "text is not UTF-8"},
   };
   for (const auto& [query, why] : bad) {
     const test::Reply r = c.get(std::string("/api/programs?") + query, prog);
@@ -65,6 +70,46 @@ TEST(ApiLibrary, MalformedQueriesAreRefusedWithTheReason) {
   const test::Reply long_q = c.get("/api/programs?q=" + std::string(201, 'a'), prog);
   EXPECT_EQ(long_q.status, 400);
   EXPECT_NE(long_q.body.find("q is longer than 200 bytes"), std::string::npos) << long_q.body;
+  const test::Reply long_text = c.get("/api/programs?text=" + std::string(201, 'a'), prog);
+  EXPECT_EQ(long_text.status, 400);
+  EXPECT_NE(long_text.body.find("text is longer than 200 bytes"), std::string::npos)
+      << long_text.body;
+}
+
+TEST(ApiLibrary, TextAndToolSearchTheNewestRevisionsCommentsNumbersAndTools) {
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  const std::string prog = c.log_in("prog", test::kPassword);
+  const std::pair<const char*, const char*> programs[] = {
+      {"BRACKET", "%\nO4711 (BRACKET FOR PUMP)\nT5 M6\nG0 X1 Y1\nM2\n%\n"},
+      {"FLANGE", "(six holes)\nT12 M6\nG0 X1 Y1\nM2\n"},
+      {"PUMP_COVER", "(lid)\nT5 M6\nG0 X1 Y1\nM2\n"},
+  };
+  for (const auto& [name, text] : programs)
+    ASSERT_EQ(c.post("/api/programs", upload(name, "mill", text), prog).status, 201) << name;
+  const auto names = [&](const std::string& query) {
+    const test::Reply r = c.get("/api/programs?" + query, prog);
+    EXPECT_EQ(r.status, 200) << query << ": " << r.body;
+    const nlohmann::json page = r.json();
+    std::vector<std::string> out;
+    for (const auto& p : page["programs"])
+      out.push_back(p["name"]);
+    return out;
+  };
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(names("text=pump"), (Names{"BRACKET", "PUMP_COVER"}));  // a comment, a name
+  EXPECT_EQ(names("q=pump"), Names{"PUMP_COVER"});                  // q stays the name
+  EXPECT_EQ(names("text=O4711"), Names{"BRACKET"});
+  EXPECT_EQ(names("text=SIX%20HOLES"), Names{"FLANGE"});
+  EXPECT_EQ(names("tool=5"), (Names{"BRACKET", "PUMP_COVER"}));
+  EXPECT_EQ(names("tool=12"), Names{"FLANGE"});
+  EXPECT_EQ(names("tool=5&text=lid"), Names{"PUMP_COVER"});
+  EXPECT_EQ(names("tool="), (Names{"BRACKET", "FLANGE", "PUMP_COVER"}));  // empty: any
+  const auto page = c.get("/api/programs?tool=5&limit=1&offset=1", prog).json();
+  EXPECT_EQ(page["total"], 2);
+  EXPECT_EQ(page["programs"][0]["name"], "PUMP_COVER");
+  EXPECT_EQ(page["machine_classes"], nlohmann::json::array({"mill"}));
 }
 
 }  // namespace

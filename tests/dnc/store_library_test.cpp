@@ -1,6 +1,8 @@
 // The library page on both back ends: filters by class, dialect, newest
 // state and released revision, a part of the name in any case (with LIKE's
-// own characters taken literally), the count on every page, paging.
+// own characters taken literally), the count on every page, paging; the
+// search of the newest revision's comments, program numbers and tools, and
+// the facts of a store's revisions made when it comes to schema version 6.
 #include "dnc/store_library.hpp"
 
 #include <string>
@@ -8,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dnc/store_schema.hpp"
 #include "store_fixture.hpp"
 
 namespace usina::dnc {
@@ -57,6 +60,35 @@ class StoreLibrary : public test::StoreTest {
   }
 
   std::string released_then_draft;
+
+  // A revision of `name` with this text, a draft.
+  void put_text(Store& s, const std::string& name, const std::string& dialect,
+                const std::string& text) {
+    auto r = put_revision(s, {name, "mill", dialect, text, "t", nullptr}, {"ana", "t"});
+    ASSERT_TRUE(r) << name << ": " << r.error().message;
+  }
+
+  // Three programs with comments, program numbers and tools; PLATE's newest
+  // revision no longer has its first one's comment and tool.
+  void fill_texts(Store& s) {
+    put_text(s, "BRACKET", "fanuc", "%\nO4711 (BRACKET FOR PUMP)\nT5 M6\nG0 X0 Y0\nM30\n%\n");
+    put_text(s, "FLANGE", "rs274ngc", "(Flange, 6 holes; 100%)\nT12 M6\nG0 X0\nM2\n");
+    put_text(s, "PLATE", "rs274ngc", "(old fixture)\nT7 M6\nG0 X0\nM2\n");
+    put_text(s, "PLATE", "rs274ngc", "(new clamp)\nT8 M6\nG0 X0\nM2\n");
+  }
+
+  std::vector<std::string> text_search(Store& s, const std::string& text,
+                                       std::optional<std::int64_t> tool = std::nullopt) {
+    LibraryQuery q;
+    q.text = text;
+    q.tool = tool;
+    auto page = library_page(s, q);
+    EXPECT_TRUE(page) << page.error().message;
+    if (page) {
+      EXPECT_EQ(page->total, static_cast<std::int64_t>(page->programs.size()));
+    }
+    return page ? names(*page) : std::vector<std::string>{};
+  }
 };
 
 TEST_P(StoreLibrary, EveryProgramWithItsNewestAndReleasedRevision) {
@@ -131,6 +163,79 @@ TEST_P(StoreLibrary, PagesShareTheirCount) {
       all.push_back(n);
   }
   EXPECT_EQ(all, (std::vector<std::string>{"LATHE_10", "O1000", "O2000", "PlateX5", "Plate_50"}));
+}
+
+TEST_P(StoreLibrary, TextFindsACommentAProgramNumberOrANameInAnyCase) {
+  auto s = open();
+  ASSERT_TRUE(s);
+  fill_texts(*s);
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(text_search(*s, "pump"), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "For Pump"), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "O4711"), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "o47"), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "6 holes"), Names{"FLANGE"});
+  EXPECT_EQ(text_search(*s, "ACKE"), Names{"BRACKET"});  // the name
+  EXPECT_EQ(text_search(*s, "100%"), Names{"FLANGE"});   // % is a character
+  EXPECT_EQ(text_search(*s, "1_0"), Names{});            // _ too
+  EXPECT_EQ(text_search(*s, "new clamp"), Names{"PLATE"});
+  EXPECT_EQ(text_search(*s, "old fixture"), Names{});  // only the newest revision's
+  EXPECT_EQ(text_search(*s, "T5"), Names{});           // a tool is no comment
+}
+
+TEST_P(StoreLibrary, ToolFindsTheProgramsWhoseNewestRevisionCallsIt) {
+  auto s = open();
+  ASSERT_TRUE(s);
+  fill_texts(*s);
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(text_search(*s, "", 5), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "", 12), Names{"FLANGE"});
+  EXPECT_EQ(text_search(*s, "", 8), Names{"PLATE"});
+  EXPECT_EQ(text_search(*s, "", 7), Names{});  // PLATE's older revision
+  EXPECT_EQ(text_search(*s, "", 0), Names{});
+  EXPECT_EQ(text_search(*s, "clamp", 8), Names{"PLATE"});
+  EXPECT_EQ(text_search(*s, "flange", 8), Names{});  // both must hold
+  LibraryQuery q;
+  q.tool = 12;
+  q.dialect = "fanuc";
+  EXPECT_TRUE(library_page(*s, q).value().programs.empty());
+}
+
+TEST_P(StoreLibrary, AStoreOfAnOlderSchemaGetsItsRevisionsFactsWhenOpened) {
+  {
+    auto s = open();
+    ASSERT_TRUE(s);
+    fill_texts(*s);
+  }
+  {
+    auto db = raw();
+    ASSERT_TRUE(db);
+    // The store as version 5 left it: no facts, no tools.
+    ASSERT_TRUE(
+        db->script("DROP TABLE revision_tools; DROP TABLE revision_facts; "
+                   "DROP INDEX programs_by_class; "
+                   "DELETE FROM schema_version WHERE version = 6"));
+  }
+  auto s = open();
+  ASSERT_TRUE(s);
+  auto version = raw()->query("SELECT MAX(version) FROM schema_version");
+  ASSERT_TRUE(version);
+  EXPECT_EQ(version->front().integer(0), current_schema_version());
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(text_search(*s, "pump"), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "o4711"), Names{"BRACKET"});
+  EXPECT_EQ(text_search(*s, "", 8), Names{"PLATE"});
+  EXPECT_EQ(text_search(*s, "", 7), Names{});
+  auto facts = raw()->query("SELECT COUNT(*) FROM revision_facts");
+  ASSERT_TRUE(facts);
+  EXPECT_EQ(facts->front().integer(0), 4);  // every revision, PLATE's older one too
+}
+
+TEST_P(StoreLibrary, TheMachineClassesOfTheLibrary) {
+  auto s = open();
+  ASSERT_TRUE(s);
+  fill(*s);
+  EXPECT_EQ(library_machine_classes(*s).value(), (std::vector<std::string>{"lathe", "mill"}));
 }
 
 USINA_STORE_BACKENDS(StoreLibrary);

@@ -228,6 +228,16 @@ export async function machineFlow(page, h, t, first) {
   }
 }
 
+// The library's count once its table shows the page it last asked for
+// (the table is aria-busy from a change of the search or a filter until then).
+export async function listed(page) {
+  await page.locator('#library-table[aria-busy="false"]').waitFor();
+  return page.locator('#library-count').innerText();
+}
+
+// "N programs" as a number.
+const counted = (text) => Number(text.match(/^(\d+) programs?$/)?.[1] ?? NaN);
+
 // The library's filters and pages: 60 small rs274ngc programs of the class
 // `lathe` beside the ROMI ones.
 export async function libraryFlow(page, h, t) {
@@ -239,24 +249,29 @@ export async function libraryFlow(page, h, t) {
   await page.getByRole('link', { name: 'Library' }).click();
   await page.getByRole('heading', { name: 'Library' }).waitFor();
   const rows = () => page.locator('table[aria-label="Programs"] tbody tr').count();
-  const total = Number((await page.locator('#library-count').innerText()).match(/of (\d+)/)[1]);
+  const total = counted(await listed(page));
   t.check((await rows()) === 50 && (await page.locator('#library-page').innerText()) === `Page 1 of ${Math.ceil(total / 50)}`, `the library shows its first 50 of ${total} programs`);
   await page.getByLabel('Filter by dialect').selectOption('romi');
-  const romi = await page.locator('#library-count').innerText();
-  t.check(new RegExp(`^${total - 60} of ${total} programs$`).test(romi) && (await rows()) === total - 60, `the dialect filter leaves the ROMI programs (${romi})`);
+  const romi = await listed(page);
+  t.check(counted(romi) === total - 60 && (await rows()) === total - 60, `the dialect filter leaves the ROMI programs (${romi})`);
   await page.getByLabel('Filter by dialect').selectOption('');
+  await listed(page);
   await page.getByLabel('Filter by machine class').selectOption('lathe');
+  await listed(page);
   await page.getByRole('button', { name: 'Next page' }).click();
+  await listed(page);
   t.check((await page.locator('#library-page').innerText()) === 'Page 2 of 2' && (await rows()) === 10 && (await page.getByRole('button', { name: 'Next page' }).isDisabled()), 'the class filter and the next page: the last 10 lathe programs');
   await page.getByRole('button', { name: 'Previous page' }).click();
+  await listed(page);
   t.check((await page.locator('#library-page').innerText()) === 'Page 1 of 2' && (await rows()) === 50, 'the previous page: the first 50 lathe programs');
   await page.getByLabel('Filter by machine class').selectOption('');
+  await listed(page);
   // Every lathe program is a draft; the ROMI ones went on along the states.
   await page.getByLabel('Filter by state').selectOption('draft');
-  const drafts = await page.locator('#library-count').innerText();
-  const draftRows = Number(drafts.match(/^(\d+) of/)[1]);
-  const listed = await h.api('boss', 'GET', '/api/programs?state=draft');
-  t.check(draftRows >= 60 && draftRows === listed.json.total, `the state filter leaves the programs whose newest revision is a draft (${drafts}; the server counts ${listed.json.total})`);
+  const drafts = await listed(page);
+  const draftRows = counted(drafts);
+  const listedDrafts = await h.api('boss', 'GET', '/api/programs?state=draft');
+  t.check(draftRows >= 60 && draftRows === listedDrafts.json.total, `the state filter leaves the programs whose newest revision is a draft (${drafts}; the server counts ${listedDrafts.json.total})`);
   // L000 released through the API: the list is read when the page opens.
   const l000 = (await h.api('boss', 'GET', '/api/programs/L000')).json.revisions[0].revision;
   for (const state of ['checked', 'approved', 'released']) {
@@ -265,11 +280,13 @@ export async function libraryFlow(page, h, t) {
   }
   await page.getByRole('link', { name: 'Machines' }).click();
   await page.getByRole('link', { name: 'Library' }).click();
+  await page.getByRole('heading', { name: 'Library' }).waitFor();
   await page.getByLabel('Filter by state').selectOption('has a released revision');
   const released = await h.api('boss', 'GET', '/api/programs?released=1');
-  const shown = await page.locator('#library-count').innerText();
-  t.check(released.json.total >= 1 && (await page.getByRole('link', { name: 'L000' }).count()) === 1 && new RegExp(`^${released.json.total} of ${total} programs$`).test(shown), `the released filter (${shown}; the server counts ${released.json.total})`);
+  const shown = await listed(page);
+  t.check(released.json.total >= 1 && (await page.getByRole('link', { name: 'L000' }).count()) === 1 && counted(shown) === released.json.total, `the released filter (${shown}; the server counts ${released.json.total})`);
   await page.getByLabel('Filter by state').selectOption('');
+  await listed(page);
   await t.shot(page, 'web-library.png');
 }
 

@@ -44,6 +44,16 @@ export interface ProgramSummary {
   released_revision?: string | null;
 }
 
+// A page of the library (GET /api/programs): `total` counts every program
+// the filters match; `machine_classes` are those of the whole library.
+export interface LibraryList {
+  programs: ProgramSummary[];
+  total: number;
+  limit: number;
+  offset: number;
+  machine_classes?: string[];
+}
+
 export interface Program extends ProgramSummary {
   released: string | null;
   revisions: Revision[];
@@ -111,7 +121,7 @@ export function setToken(t: string): void {
   else sessionStorage.removeItem(TOKEN);
 }
 
-async function call(method: string, path: string, body?: unknown): Promise<Response> {
+async function call(method: string, path: string, body?: unknown, signal?: AbortSignal): Promise<Response> {
   const headers: Record<string, string> = {};
   if (token()) headers['Authorization'] = `Bearer ${token()}`;
   if (body !== undefined) headers['Content-Type'] = 'application/json';
@@ -119,6 +129,7 @@ async function call(method: string, path: string, body?: unknown): Promise<Respo
     method,
     headers,
     body: body === undefined ? undefined : JSON.stringify(body),
+    signal,
   });
   if (!res.ok) {
     let message = `${res.status} ${res.statusText}`;
@@ -135,8 +146,9 @@ async function call(method: string, path: string, body?: unknown): Promise<Respo
   return res;
 }
 
-export async function getJson<T>(path: string): Promise<T> {
-  return (await (await call('GET', path)).json()) as T;
+// `signal` cancels the request (a newer one replaced it).
+export async function getJson<T>(path: string, signal?: AbortSignal): Promise<T> {
+  return (await (await call('GET', path, undefined, signal)).json()) as T;
 }
 
 export async function postJson<T>(path: string, body: unknown): Promise<T> {

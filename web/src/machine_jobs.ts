@@ -2,7 +2,7 @@
 // block (a line number or an N word) or a tool change; stop the running
 // job. Each asks for confirmation first, and each is one call of the API,
 // which writes the audit log (docs/web.md, "The machines' jobs").
-import { ApiError, enc, getJson, postJson, type Job, type Machine, type Program, type ProgramSummary } from './api';
+import { ApiError, enc, getJson, postJson, type Job, type LibraryList, type Machine, type Program } from './api';
 import { confirmAction } from './confirm';
 import { field, h, status } from './dom';
 
@@ -32,7 +32,25 @@ class ProgramPicker {
     this.list = h('datalist', { id: id('programs') });
     this.program = h('input', { list: id('programs'), autocomplete: 'off', required: true });
     this.program.addEventListener('change', () => void this.fill());
-    void getJson<{ programs: ProgramSummary[] }>('/api/programs').then((l) => this.list.replaceChildren(...l.programs.map((p) => h('option', { value: p.name }))));
+    this.program.addEventListener('input', () => this.suggest());
+    this.suggest();
+  }
+
+  private asked = 0; // the newest suggestion asked for: older answers are dropped
+  private timer = 0;
+
+  // The names the datalist offers: the first 20 holding what is typed, asked
+  // of the server 250 ms after the last key (a library of 10,000 programs is
+  // never read whole for a list of names).
+  suggest(): void {
+    window.clearTimeout(this.timer);
+    this.timer = window.setTimeout(() => {
+      const n = ++this.asked;
+      const q = new URLSearchParams({ limit: '20', q: this.name() });
+      void getJson<LibraryList>(`/api/programs?${q}`)
+        .then((l) => n === this.asked && this.list.replaceChildren(...l.programs.map((p) => h('option', { value: p.name }))))
+        .catch(() => undefined); // no suggestions; the field still takes a typed name
+    }, 250);
   }
 
   name(): string {
