@@ -52,19 +52,23 @@ double cells_depth(HeightMap& map, const Path& p, const Holder& h, std::size_t i
 
 }  // namespace
 
-double holder_depth(HeightMap& map, const Path& p, const ToolShape& tool, HolderStretch side) {
+double holder_depth(HeightMap& map, const Path& p, const ToolShape& tool, HolderStretch side,
+                    double found) {
   const Holder h{tool.holder / 2.0, tool.stickout, tool.radius()};
   // Heights are at most 0 (the top): a face that stays above it meets nothing,
   // which is most moves of most programs, at one comparison.
-  if (p.tip_lowest(0.0, p.length) + h.face >= -kHolderContact) return 0.0;
-  if (p.rises && p.length == 0.0) return 0.0;  // straight up: lowest where it was
+  if (p.tip_lowest(0.0, p.length) + h.face >= -kHolderContact) return found;
+  if (p.rises && p.length == 0.0) return found;  // straight up: lowest where it was
   const double bx = p.ax + p.ux * p.length, by = p.ay + p.uy * p.length;
   std::size_t i0 = 0, i1 = 0, j0 = 0, j1 = 0;
   map.columns(std::min(p.ax, bx) - h.radius, std::max(p.ax, bx) + h.radius, i0, i1);
   map.rows(std::min(p.ay, by) - h.radius, std::max(p.ay, by) + h.radius, j0, j1);
   const std::size_t T = HeightMap::kTile;
   const double half = 0.5 * std::hypot(map.dx(), map.dy()) * static_cast<double>(T);
-  double deepest = 0.0;
+  // A tile whose highest cell stands no deeper above the face's lowest over
+  // it than the deepest found so far cannot change the answer (a buried
+  // holder would otherwise compare every cell under it, every move).
+  double deepest = std::max(found, kHolderContact);
   for (std::size_t tj = j0 / T; tj * T < j1; ++tj) {
     for (std::size_t ti = i0 / T; ti * T < i1; ++ti) {
       const double qx = map.x(ti * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dx() - p.ax;
@@ -77,13 +81,13 @@ double holder_depth(HeightMap& map, const Path& p, const ToolShape& tool, Holder
       const double floor = p.tip_lowest(std::clamp(along - reach, 0.0, p.length),
                                         std::clamp(along + reach, 0.0, p.length)) +
                            h.face;
-      if (static_cast<double>(map.tile_max(ti, tj)) <= floor + kHolderContact) continue;
+      if (static_cast<double>(map.tile_max(ti, tj)) <= floor + deepest) continue;
       deepest =
           std::max(deepest, cells_depth(map, p, h, std::max(i0, ti * T), std::min(i1, (ti + 1) * T),
                                         std::max(j0, tj * T), std::min(j1, (tj + 1) * T), side));
     }
   }
-  return deepest > kHolderContact ? deepest : 0.0;
+  return deepest > kHolderContact ? deepest : found;
 }
 
 }  // namespace usina::sim::stock

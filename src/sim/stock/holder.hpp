@@ -28,7 +28,9 @@ enum class HolderStretch {
 };
 
 // The deepest the holder of `tool` goes into the stock over that stretch of
-// the move `p`, mm; 0 when it clears it (by more than -kHolderContact).
-double holder_depth(HeightMap& map, const Path& p, const ToolShape& tool, HolderStretch stretch);
+// the move `p`, or `found` (a depth known already) when that is deeper, mm;
+// 0 when it clears it (by more than -kHolderContact) and found is 0.
+double holder_depth(HeightMap& map, const Path& p, const ToolShape& tool, HolderStretch stretch,
+                    double found);
 
 }  // namespace usina::sim::stock

@@ -308,12 +308,13 @@ Cut sweep(HeightMap& map, const ToolShape& tool, const core::Vec3& a, const core
   const Path p = path_of(a, b, map.top());
   const Watch watch = watch_of(tool, a, b, map);
   const bool holder = tool.holder > 0.0;
-  const double before = holder ? holder_depth(map, p, tool, HolderStretch::BeforeTheTool) : 0.0;
+  const double before =
+      holder ? holder_depth(map, p, tool, HolderStretch::BeforeTheTool, 0.0) : 0.0;
   Cut cut = with_lowest(tool, p, [&](const auto& lowest) {
     return sweep_with(map, tool.radius(), p, mark, lowest, watch);
   });
   if (holder) {
-    cut.holder_hit = std::max(before, holder_depth(map, p, tool, HolderStretch::AfterTheTool));
+    cut.holder_hit = holder_depth(map, p, tool, HolderStretch::AfterTheTool, before);
   }
   return cut;
 }

@@ -173,6 +173,25 @@ TEST(StockReach, AHolderMeetsAPinBeforeTheToolCutsItAway) {
   EXPECT_DOUBLE_EQ(c.holder_hit, 5.0);  // the pin's top at 0, the face at -5
 }
 
+TEST(StockReach, TheDeepestContactIsReportedWhereverItIsFound) {
+  // Two pins on the holder's way, 2 and 5 mm above its face, in either order
+  // (tiles a shallower contact already found cannot beat are passed over).
+  for (const bool deep_first : {false, true}) {
+    auto map = pin(14.5, 15.5, 29.5, 30.5, -25.0f);
+    for (std::size_t j = 0; j < map->ny(); ++j) {
+      for (std::size_t i = 0; i < map->nx(); ++i) {
+        const double x = map->x(i), y = map->y(j);
+        if (std::abs(y - 30.0) > 0.5) continue;
+        if (std::abs(x - 15.0) <= 0.5) map->at(i, j) = deep_first ? 0.0f : -3.0f;
+        if (std::abs(x - 25.0) <= 0.5) map->at(i, j) = deep_first ? -3.0f : 0.0f;
+      }
+    }
+    const ToolShape tool = *tool_from_comment("holder:20 stickout:10", 6.0);
+    EXPECT_DOUBLE_EQ(sweep(*map, tool, {5, 30, -15}, {35, 30, -15}, 1).holder_hit, 5.0)
+        << deep_first;
+  }
+}
+
 TEST(StockReach, AHolderComingDownBehindTheToolMeetsWhatTheToolLeft) {
   // A 2 mm pin under the tool's start; the tool ramps down 45° and leaves
   // it, its holder (1 mm above the tip) still over it, 4 mm lower. The cell
