@@ -69,23 +69,32 @@ double holder_depth(HeightMap& map, const Path& p, const ToolShape& tool, Holder
   // it than the deepest found so far cannot change the answer (a buried
   // holder would otherwise compare every cell under it, every move).
   double deepest = std::max(found, kHolderContact);
-  for (std::size_t tj = j0 / T; tj * T < j1; ++tj) {
-    for (std::size_t ti = i0 / T; ti * T < i1; ++ti) {
-      const double qx = map.x(ti * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dx() - p.ax;
-      const double qy = map.y(tj * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dy() - p.ay;
-      const double along = qx * p.ux + qy * p.uy;
-      const double d = std::sqrt(distance2(p, along, qx * p.uy - qy * p.ux)) - half;
-      if (d > h.radius) continue;
-      // The face's lowest while the holder can be over the tile.
-      const double reach = h.radius + half;
-      const double floor = p.tip_lowest(std::clamp(along - reach, 0.0, p.length),
-                                        std::clamp(along + reach, 0.0, p.length)) +
-                           h.face;
-      if (static_cast<double>(map.tile_max(ti, tj)) <= floor + deepest) continue;
-      deepest =
-          std::max(deepest, cells_depth(map, p, h, std::max(i0, ti * T), std::min(i1, (ti + 1) * T),
-                                        std::max(j0, tj * T), std::min(j1, (tj + 1) * T), side));
-    }
+  const auto visit = [&](std::size_t ti, std::size_t tj) {
+    const double qx = map.x(ti * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dx() - p.ax;
+    const double qy = map.y(tj * T) + 0.5 * (static_cast<double>(T) - 1.0) * map.dy() - p.ay;
+    const double along = qx * p.ux + qy * p.uy;
+    const double d = std::sqrt(distance2(p, along, qx * p.uy - qy * p.ux)) - half;
+    if (d > h.radius) return;
+    // The face's lowest while the holder can be over the tile.
+    const double reach = h.radius + half;
+    const double floor = p.tip_lowest(std::clamp(along - reach, 0.0, p.length),
+                                      std::clamp(along + reach, 0.0, p.length)) +
+                         h.face;
+    if (static_cast<double>(map.tile_max(ti, tj)) <= floor + deepest) return;
+    deepest =
+        std::max(deepest, cells_depth(map, p, h, std::max(i0, ti * T), std::min(i1, (ti + 1) * T),
+                                      std::max(j0, tj * T), std::min(j1, (tj + 1) * T), side));
+  };
+  if (i1 <= i0 || j1 <= j0) return found;
+  // From the end of the move where the face is lowest: the deepest contact
+  // found first passes over most of the rest.
+  const bool from_end = p.k < 0.0;
+  const std::size_t ta = i0 / T, tb = (i1 - 1) / T, sa = j0 / T, sb = (j1 - 1) / T;
+  const bool i_down = (p.ux > 0.0) == from_end, j_down = (p.uy > 0.0) == from_end;
+  for (std::size_t m = 0; m <= sb - sa; ++m) {
+    const std::size_t tj = j_down ? sb - m : sa + m;
+    for (std::size_t n = 0; n <= tb - ta; ++n)
+      visit(i_down ? tb - n : ta + n, tj);
   }
   return deepest > kHolderContact ? deepest : found;
 }
