@@ -29,13 +29,31 @@ std::pair<std::string, std::string> split_word(std::string_view words) {
   return {w.substr(0, colon), w.substr(colon + 1)};
 }
 
-}  // namespace
-
-// tool_reach.cpp: the words above the end, and whether they go together.
-tl::expected<void, std::string> check_reach(const ToolShape& t);
-
 // The end's own numbers: diameter, corner radius, point angle.
-tl::expected<void, std::string> check_end(const ToolShape& t);
+tl::expected<void, std::string> check_end(const ToolShape& t) {
+  if (!std::isfinite(t.diameter) || t.diameter <= 0.0 || t.diameter > kMaxToolDiameter) {
+    return tl::unexpected(
+        fmt::format("a tool's diameter must be more than 0 and at most {:g} mm, not {:g}",
+                    kMaxToolDiameter, t.diameter));
+  }
+  if (t.kind == ToolKind::BullNose && (!std::isfinite(t.corner_radius) || t.corner_radius <= 0.0 ||
+                                       t.corner_radius >= t.radius())) {
+    return tl::unexpected(fmt::format(
+        "a bull nose's corner radius must be more than 0 and less than the tool's radius "
+        "({:g} mm), not {:g}",
+        t.radius(), t.corner_radius));
+  }
+  if ((t.kind == ToolKind::Drill || t.kind == ToolKind::Vee) &&
+      (!std::isfinite(t.angle) || t.angle < kMinToolAngle || t.angle > kMaxToolAngle)) {
+    return tl::unexpected(
+        fmt::format("a point's included angle must be {:g} to {:g} degrees, "
+                    "not {:g}",
+                    kMinToolAngle, kMaxToolAngle, t.angle));
+  }
+  return {};
+}
+
+}  // namespace
 
 double ToolShape::cone_slope() const {
   return 1.0 / std::tan(angle * std::numbers::pi / 360.0);
@@ -63,29 +81,6 @@ double ToolShape::lift(double r) const {
 tl::expected<void, std::string> check_shape(const ToolShape& t) {
   if (auto ok = check_end(t); !ok) return ok;
   return check_reach(t);
-}
-
-tl::expected<void, std::string> check_end(const ToolShape& t) {
-  if (!std::isfinite(t.diameter) || t.diameter <= 0.0 || t.diameter > kMaxToolDiameter) {
-    return tl::unexpected(
-        fmt::format("a tool's diameter must be more than 0 and at most {:g} mm, not {:g}",
-                    kMaxToolDiameter, t.diameter));
-  }
-  if (t.kind == ToolKind::BullNose && (!std::isfinite(t.corner_radius) || t.corner_radius <= 0.0 ||
-                                       t.corner_radius >= t.radius())) {
-    return tl::unexpected(fmt::format(
-        "a bull nose's corner radius must be more than 0 and less than the tool's radius "
-        "({:g} mm), not {:g}",
-        t.radius(), t.corner_radius));
-  }
-  if ((t.kind == ToolKind::Drill || t.kind == ToolKind::Vee) &&
-      (!std::isfinite(t.angle) || t.angle < kMinToolAngle || t.angle > kMaxToolAngle)) {
-    return tl::unexpected(
-        fmt::format("a point's included angle must be {:g} to {:g} degrees, "
-                    "not {:g}",
-                    kMinToolAngle, kMaxToolAngle, t.angle));
-  }
-  return {};
 }
 
 tl::expected<ToolShape, std::string> parse_shape(std::string_view words, double diameter) {

@@ -68,6 +68,9 @@ ToolShape shape_from_comment(std::string_view comment, double diameter);
 // no-plunge tool flat or bull nose (a ball, a drill or a V cuts at its centre).
 tl::expected<void, std::string> check_shape(const ToolShape& t);
 
+// The part of check_shape for the words above the end (tool_reach.cpp).
+tl::expected<void, std::string> check_reach(const ToolShape& t);
+
 // Reads the words above the end from `text` (words apart by spaces or
 // commas): "flutes:L", "holder:D", "stickout:L", "no-plunge", "no-plunge:A"
 // (degrees; default 5). `strict` (a --tool-shape value): any other word is
