@@ -71,7 +71,8 @@ dnc_sources=(src/dnc/tape_code.cpp src/dnc/tape_reader.cpp src/dnc/remote_reques
 mapfile -t apt_sources < <(cd "$root" && ls src/apt/*.cpp | sort)
 job_sources=(src/job/toml_reader.cpp src/job/job_file.cpp src/job/tools.cpp src/job/materials.cpp
   src/sim/profile_keys.cpp)
-config_sources=(src/sim/machine_profile.cpp src/sim/stock/tool_shape.cpp src/sim/stock/height_map.cpp
+config_sources=(src/sim/machine_profile.cpp src/sim/stock/tool_shape.cpp src/sim/stock/tool_reach.cpp
+  src/sim/stock/height_map.cpp
   src/dnc/server_config.cpp src/dnc/machine_config.cpp src/dnc/link_config.cpp
   src/dnc/data_config.cpp src/dnc/link_port.cpp)
 mapfile -t post_sources < <(cd "$root" && ls src/post/*.cpp | sort)

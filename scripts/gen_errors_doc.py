@@ -733,6 +733,26 @@ EXPLAIN = {
         "or C); the stock is not cut by it, so the result may show material the machine "
         "removes.",
         "Simulate 3-axis programs only (a vertical tool along Z); see docs/simulate.md."),
+    "E_SHANK_RUBS_STOCK": (
+        "`usina simulate`: a tool given its flute length (`flutes:L` in `--tool-shape` or the "
+        "tool table's comment) enters stock that stands higher above its tip than the flutes "
+        "reach: the shank above them, which does not cut, rubs the stock. The message gives "
+        "how far the stock stands above the flutes. A tool without `flutes:` is not checked.",
+        "Cut in steps no deeper than the flutes, or use a tool with longer flutes; check the "
+        "flute length given."),
+    "E_HOLDER_HITS_STOCK": (
+        "`usina simulate`: a tool given its holder (`holder:D` and `stickout:L`) goes so deep "
+        "that the holder, a cylinder of diameter D from L mm above the tip up, meets the stock "
+        "(closer than 0.001 mm). The message gives how deep it goes into the stock. A tool "
+        "without `holder:` is not checked.",
+        "Give the tool a longer stick-out or a slimmer holder, or cut the deep feature with a "
+        "longer tool."),
+    "W_PLUNGE_NOT_CENTRE_CUTTING": (
+        "`usina simulate`: a tool marked `no-plunge` (it does not cut at its centre; "
+        "`no-plunge:A` its steepest ramp, 5 degrees unless given) goes down steeper than its "
+        "ramp into stock that stands more than 0.01 mm above its tip under its axis.",
+        "Ramp or helix into the material no steeper than the tool allows, drill a start hole "
+        "first, or use a centre-cutting tool."),
     # job: job files, tool libraries, materials, cutting data
     "E_BAD_JOB": (
         "The job file given to `usina job` cannot be used: it is not valid TOML, a required "

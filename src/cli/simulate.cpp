@@ -87,7 +87,13 @@ tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(const Sim
     const double per = o.run.machine_units == "inch" ? 25.4 : 1.0;
     if (auto table = gcode::read_tool_table(*file, 0, per, ignored)) {
       for (const gcode::ToolEntry& t : table->entries()) {
-        if (t.diameter > 0.0) tools[t.number] = stock::shape_from_comment(t.comment, t.diameter);
+        if (t.diameter <= 0.0) continue;
+        auto tool = stock::tool_from_comment(t.comment, t.diameter);
+        if (!tool) {
+          return tl::unexpected(
+              fmt::format("{}: tool {}'s comment: {}", o.run.tool_table, t.number, tool.error()));
+        }
+        tools[t.number] = *tool;
       }
     }
   }
@@ -99,13 +105,33 @@ tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(const Sim
   return tools;
 }
 
+// A tool as the report lists it: the words above its end only where given.
+json tool_json(const stock::ToolVolume& t) {
+  json j = {{"tool", t.tool}, {"shape", stock::shape_name(t.shape)}};
+  if (t.shape.flutes > 0.0) j["flutes_mm"] = t.shape.flutes;
+  if (t.shape.holder > 0.0) j["holder_mm"] = t.shape.holder;
+  if (t.shape.stickout > 0.0) j["stickout_mm"] = t.shape.stickout;
+  if (t.shape.plunge_ramp > 0.0) j["plunge_ramp_deg"] = t.shape.plunge_ramp;
+  return j;
+}
+
+json operations_json(const stock::StockSimulator& sim) {
+  json ops = json::array();
+  for (const stock::Operation& op : sim.operations()) {
+    ops.push_back({{"tool", op.tool},
+                   {"lines", {op.first_line, op.last_line}},
+                   {"removed_mm3", op.removed_mm3}});
+  }
+  return ops;
+}
+
 json report_json(const SimulateOptions& o, const stock::HeightMap& map,
                  const stock::StockSimulator& sim, bool complete) {
   json per_tool = json::object();
   json tools = json::array();
   for (const stock::ToolVolume& t : sim.tools()) {
     per_tool[std::to_string(t.tool)] = {{"removed_mm3", t.removed_mm3}};
-    tools.push_back({{"tool", t.tool}, {"shape", stock::shape_name(t.shape)}});
+    tools.push_back(tool_json(t));
   }
   json checks = json::array();
   for (const stock::Check& c : sim.checks()) {
@@ -124,6 +150,7 @@ json report_json(const SimulateOptions& o, const stock::HeightMap& map,
           {"removed_mm3", sim.removed_mm3()},
           {"rapid_removed_mm3", sim.rapid_removed_mm3()},
           {"per_tool", std::move(per_tool)},
+          {"per_operation", operations_json(sim)},
           {"tools", std::move(tools)},
           {"checks", std::move(checks)}};
 }
@@ -187,6 +214,12 @@ void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim
   for (const stock::ToolVolume& t : sim.tools()) {
     fmt::print("  T{:<5} {:>14.3f} mm³  {}\n", t.tool, t.removed_mm3, stock::shape_name(t.shape));
   }
+  if (sim.operations().size() > 1) {
+    for (const stock::Operation& op : sim.operations()) {
+      fmt::print("  lines {}-{} T{:<5} {:>10.3f} mm³\n", op.first_line, op.last_line, op.tool,
+                 op.removed_mm3);
+    }
+  }
   if (sim.rapid_removed_mm3() > 0.0) {
     fmt::print("  by rapids {:>11.3f} mm³\n", sim.rapid_removed_mm3());
   }
@@ -242,7 +275,8 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--resolution", opts->resolution, "cell size of the height map, mm")
       ->capture_default_str();
   cmd->add_option("--tool-shape", opts->tool_shapes,
-                  "T=SHAPE[/D]: flat, ball, bull:R, drill[:A], vee[:A] (docs/simulate.md)");
+                  "T=SHAPE[/D][,WORD]...: flat, ball, bull:R, drill[:A], vee[:A]; flutes:L, "
+                  "holder:D, stickout:L, no-plunge[:A] (docs/simulate.md)");
   cmd->add_option("--floor", opts->floor, "Z mm the tool may not cut below");
   cmd->add_option("-o,--output", opts->outputs,
                   "OUT.png (picture), OUT.stl (the stock), OUT.json (the report); repeatable");

@@ -151,6 +151,9 @@
   X(CutBelowFloor, E_CUT_BELOW_FLOOR)                            \
   X(SimToolDefaulted, W_SIM_TOOL_DEFAULTED)                      \
   X(SimMotionNotModeled, W_SIM_MOTION_NOT_MODELED)               \
+  X(ShankRubsStock, E_SHANK_RUBS_STOCK)                          \
+  X(HolderHitsStock, E_HOLDER_HITS_STOCK)                        \
+  X(PlungeNotCentreCutting, W_PLUNGE_NOT_CENTRE_CUTTING)         \
   /* job: job files, tool libraries, materials, cutting data */  \
   X(BadJob, E_BAD_JOB)                                           \
   X(UnknownJobKey, E_UNKNOWN_JOB_KEY)                            \

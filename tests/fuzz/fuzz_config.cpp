@@ -8,7 +8,8 @@
 //   2  a LinuxCNC tool table (bit 6 of the first byte, 'B': an inch machine)
 //   3  a LinuxCNC parameter (.var) file, then written back
 //   4  `usina simulate --stock` (box:WxLxH), checked as the height map does
-//   5  `usina simulate --tool-shape` (T=SHAPE[/D]) and a tool table comment's shape
+//   5  `usina simulate --tool-shape` (T=SHAPE[/D][,WORD]...) and a tool table
+//      comment's shape and words above the end (flutes:, holder:, stickout:, no-plunge)
 //   6  a link's port (device, tcp://, tcp-listen://) and mqtt.url
 //
 // Any input must give a value or a diagnostic, never a crash, a hang, or a
@@ -80,6 +81,20 @@ void server_config(std::string_view text) {
   }
 }
 
+// A tool as the simulation takes it: its end within the bounds, and the
+// words above it within theirs and going together (check_shape passes).
+void check_tool(const sim::stock::ToolShape& t) {
+  trap_outside(t.diameter, 1e-9, sim::stock::kMaxToolDiameter);
+  trap_outside(t.corner_radius, 0.0, t.radius());
+  trap_outside(t.angle, sim::stock::kMinToolAngle, sim::stock::kMaxToolAngle);
+  trap_outside(t.lift(t.radius()), 0.0, 1e7);
+  trap_outside(t.flutes, 0.0, sim::stock::kMaxToolLength);
+  trap_outside(t.holder, 0.0, sim::stock::kMaxToolLength);
+  trap_outside(t.stickout, 0.0, sim::stock::kMaxToolLength);
+  trap_outside(t.plunge_ramp, 0.0, 90.0);
+  if (!sim::stock::check_shape(t)) std::abort();
+}
+
 void tool_table(std::string_view text, bool inch) {
   DiscardDiagnostics diags;
   const auto file = core::SourceFile::from_string("fuzz.tbl", std::string(text));
@@ -90,7 +105,8 @@ void tool_table(std::string_view text, bool inch) {
     trap_outside(t.offset.x, -1e4, 1e4);
     trap_outside(t.offset.y, -1e4, 1e4);
     trap_outside(t.offset.z, -1e4, 1e4);
-    if (t.diameter > 0.0) (void)sim::stock::shape_from_comment(t.comment, t.diameter);
+    if (t.diameter <= 0.0) continue;
+    if (const auto tool = sim::stock::tool_from_comment(t.comment, t.diameter)) check_tool(*tool);
   }
 }
 
@@ -117,18 +133,12 @@ void stock(std::string_view text) {
   }
 }
 
-void check_tool(const sim::stock::ToolShape& t) {
-  trap_outside(t.diameter, 1e-9, sim::stock::kMaxToolDiameter);
-  trap_outside(t.corner_radius, 0.0, t.radius());
-  trap_outside(t.angle, sim::stock::kMinToolAngle, sim::stock::kMaxToolAngle);
-  trap_outside(t.lift(t.radius()), 0.0, 1e7);
-}
-
 void tool_shape(std::string_view text) {
   std::map<int, sim::stock::ToolShape> known;
   known[1].diameter = 6.0;
   if (const auto spec = sim::stock::parse_tool_spec(text, known)) check_tool(spec->second);
   check_tool(sim::stock::shape_from_comment(text, 10.0));
+  if (const auto tool = sim::stock::tool_from_comment(text, 10.0)) check_tool(*tool);
 }
 
 void addresses(std::string_view text) {

@@ -71,7 +71,12 @@ void StockSimulator::ensure_tool(const canon::Op& op) {
   if (!slot_) tool_change(op, canon::ToolChange{tool_number_, tool_diameter_});
 }
 
+void StockSimulator::begin_operation(const canon::Op& op, int tool) {
+  operations_.push_back({tool, op.src.line, op.src.line, 0.0});
+}
+
 void StockSimulator::tool_change(const canon::Op& op, const canon::ToolChange& t) {
+  begin_operation(op, t.tool);
   tool_number_ = t.tool;
   tool_diameter_ = t.diameter;
   for (std::size_t i = 0; i < tools_.size(); ++i) {
@@ -87,7 +92,8 @@ void StockSimulator::tool_change(const canon::Op& op, const canon::ToolChange& t
     shape = it->second;
     if (shape->diameter <= 0.0 && stream_has_diameter) shape->diameter = *t.diameter;
   } else if (stream_has_diameter) {
-    shape = ToolShape{ToolKind::Flat, *t.diameter, 0.0, 118.0};
+    shape = ToolShape{};
+    shape->diameter = *t.diameter;
   }
   if (!shape || !check_shape(*shape)) {
     shape = options_.default_tool;
@@ -129,6 +135,9 @@ Cut StockSimulator::cut_to(const core::Vec3& to, bool rapid) {
 void StockSimulator::checked(const canon::Op& op, const Cut& cut, bool rapid) {
   removed_ += cut.removed_mm3;
   tools_[slot_.value_or(0)].removed_mm3 += cut.removed_mm3;
+  operations_.back().removed_mm3 += cut.removed_mm3;
+  operations_.back().last_line = op.src.line;
+  check_reach(op, cut);
   if (rapid) rapid_removed_ += cut.removed_mm3;
   if (rapid && cut.deepest > options_.rapid_tolerance) {
     report(op, core::Code::RapidCutsStock, core::Severity::Error,
@@ -140,6 +149,31 @@ void StockSimulator::checked(const canon::Op& op, const Cut& cut, bool rapid) {
     report(op, core::Code::CutBelowFloor, core::Severity::Error,
            fmt::format("the tool cuts down to Z{:.4f}, {:.4f} mm below the floor Z{:g}", cut.lowest,
                        *options_.floor - cut.lowest, *options_.floor));
+  }
+}
+
+void StockSimulator::check_reach(const canon::Op& op, const Cut& cut) {
+  const ToolVolume& t = tools_[slot_.value_or(0)];
+  if (cut.shank_rub > 0.0) {
+    report(op, core::Code::ShankRubsStock, core::Severity::Error,
+           fmt::format("stock stands {:.3f} mm above the flutes of tool {} ({:g} mm long) where "
+                       "the tool enters it: the shank rubs it; cut in steps no deeper than the "
+                       "flutes, or use a tool with longer flutes",
+                       cut.shank_rub, t.tool, t.shape.flutes));
+  }
+  if (cut.holder_hit > 0.0) {
+    report(op, core::Code::HolderHitsStock, core::Severity::Error,
+           fmt::format("the holder of tool {} (diameter {:g} mm, {:g} mm above the tip) goes "
+                       "{:.3f} mm into the stock: give the tool a longer stick-out, or a slimmer "
+                       "holder",
+                       t.tool, t.shape.holder, t.shape.stickout, cut.holder_hit));
+  }
+  if (cut.plunge_into > 0.0) {
+    report(op, core::Code::PlungeNotCentreCutting, core::Severity::Warning,
+           fmt::format("tool {} does not cut at its centre (no-plunge) and goes down steeper "
+                       "than {:g}° into stock standing {:.3f} mm above its tip under its axis: "
+                       "ramp or helix in no steeper than that, or drill a start hole",
+                       t.tool, t.shape.plunge_ramp, cut.plunge_into));
   }
 }
 

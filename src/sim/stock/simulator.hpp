@@ -43,6 +43,15 @@ struct ToolVolume {
   double removed_mm3 = 0.0;
 };
 
+// An operation: from one tool change to the next (the program's first moves,
+// before any change, are one too).
+struct Operation {
+  int tool = 0;
+  std::uint32_t first_line = 0;  // the tool change's, or the first move's
+  std::uint32_t last_line = 0;   // the last move's before the next change
+  double removed_mm3 = 0.0;
+};
+
 class StockSimulator final : public canon::Sink {
  public:
   StockSimulator(HeightMap& map, SimulateOptions options, core::DiagnosticSink& diags);
@@ -52,6 +61,9 @@ class StockSimulator final : public canon::Sink {
   // The volume each tool removed, in order of first use (the mark of a cell
   // cut by tools_[n] is n + 1).
   const std::vector<ToolVolume>& tools() const { return tools_; }
+
+  // The volume each operation removed, in the program's order.
+  const std::vector<Operation>& operations() const { return operations_; }
 
   double removed_mm3() const { return removed_; }
 
@@ -69,6 +81,8 @@ class StockSimulator final : public canon::Sink {
   void tool_change(const canon::Op& op, const canon::ToolChange& t);
   Cut cut_to(const core::Vec3& to, bool rapid);
   void checked(const canon::Op& op, const Cut& cut, bool rapid);
+  void check_reach(const canon::Op& op, const Cut& cut);
+  void begin_operation(const canon::Op& op, int tool);
   void report(const canon::Op& op, core::Code code, core::Severity severity, std::string message);
   void ensure_tool(const canon::Op& op);
   bool abc_moves(const canon::Op& op, const canon::Abc& abc);
@@ -79,6 +93,7 @@ class StockSimulator final : public canon::Sink {
   core::Vec3 pos_{};
   canon::Abc abc_{};
   std::vector<ToolVolume> tools_;
+  std::vector<Operation> operations_;
   std::optional<std::size_t> slot_;  // of the tool in the spindle, once it cut or was named
   int tool_number_ = 0;
   std::optional<double> tool_diameter_;  // as the stream gave it

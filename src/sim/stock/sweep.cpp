@@ -2,41 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "sim/stock/holder.hpp"
+#include "sim/stock/path.hpp"
 
 namespace usina::sim::stock {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The move in the frame of its XY projection: a cell at `along` mm from the
-// start along the path and `e` mm beside it is under the tool's axis at
-// s = along + u when u² + e² <= R²; the tip is then at z0 + k s.
-struct Path {
-  double ax = 0.0, ay = 0.0, z0 = 0.0;
-  double ux = 1.0, uy = 0.0;  // unit XY direction (any, for a plunge)
-  double length = 0.0;        // mm of XY
-  double k = 0.0;             // dz per mm of XY (0 for a plunge, z0 the lower end)
-};
-
-Path path_of(const core::Vec3& a, const core::Vec3& b, double top) {
-  Path p;
-  p.ax = a.x;
-  p.ay = a.y;
-  const double dx = b.x - a.x;
-  const double dy = b.y - a.y;
-  p.length = std::hypot(dx, dy);
-  // Below a nanometre of XY a move is a plunge: its tool stands at one place.
-  if (p.length < 1e-9) {
-    p.length = 0.0;
-    p.z0 = std::min(a.z, b.z) - top;
-    return p;
-  }
-  p.ux = dx / p.length;
-  p.uy = dy / p.length;
-  p.z0 = a.z - top;
-  p.k = (b.z - a.z) / p.length;
-  return p;
-}
 
 // Each shape: the lowest of g(u) = k u + lift(√(e² + u²)) over u in
 // [ul, uh]; g is convex (a convex tool's lower surface along a line), so its
@@ -171,24 +145,48 @@ inline double lowest_at(const Path& p, double r2, double along, double e, const 
   return p.z0 + p.k * along + lowest(p.k, e2, w, lo - along, hi - along);
 }
 
-// The square of the cell's distance from the path's XY projection.
-inline double distance2(const Path& p, double along, double e) {
-  const double past = along < 0.0 ? along : (along > p.length ? along - p.length : 0.0);
-  return e * e + past * past;
-}
+// What one sweep watches above the tool's end (docs/simulate.md, "Shank,
+// holder, plunge"): both looked at only in the cells the move cuts (a cell
+// it does not cut has its stock below the whole tool).
+struct Watch {
+  double flutes = 0.0;  // mm; 0: the shank is not checked
+  bool plunge = false;  // a no-plunge tool going down steeper than its ramp
+  double axis2 = 0.0;   // mm²: a cell this near the axis's path is under the axis
+
+  bool any() const { return flutes > 0.0 || plunge; }
+};
 
 // What one sweep adds up.
 struct Tally {
   double removed = 0.0;
   double lowest = kInf;
   float deepest = 0.0f;
+  double shank = 0.0;   // mm, the most stock stood above the flutes where the tool entered it
+  double plunge = 0.0;  // mm, the most stock stood above the tip under the axis
 };
+
+// The shank (above the flutes, as wide as the tool) meets the stock of a
+// column only where the tool enters it: the flutes cut the column's side
+// below their top; later in the move the column is below the tool's end.
+// A column the tool covers from the move's start it entered before (or it is
+// the program's first place: no entry). A non-centre-cutting tool going down
+// steeply: the stock under its axis stood above its tip there.
+inline void watch_cell(const Path& p, double r2, double along, double e, double d2, double h,
+                       const Watch& w, Tally& t) {
+  if (w.flutes > 0.0) {
+    const double enter = along - std::sqrt(std::max(0.0, r2 - e * e));
+    if (enter > 0.0) t.shank = std::max(t.shank, h - (p.tip(enter) + w.flutes));
+  }
+  if (w.plunge && d2 <= w.axis2) {
+    t.plunge = std::max(t.plunge, h - p.tip(std::clamp(along, 0.0, p.length)));
+  }
+}
 
 // The cells [i0, i1) x [j0, j1) of one tile; true when one was lowered.
 template <class Lowest>
 bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::size_t i1,
                  std::size_t j0, std::size_t j1, std::uint8_t mark, const Lowest& lowest,
-                 Tally& t) {
+                 const Watch& watch, Tally& t) {
   const float floor = static_cast<float>(-map.box().height);
   const double dalong = map.dx() * p.ux, de = map.dx() * p.uy;
   bool lowered = false;
@@ -205,6 +203,7 @@ bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::
       if (lowest.cannot_cut(d2, along, hi)) continue;
       const double z = lowest_at(p, r2, along, e, lowest);
       if (!(z < hi)) continue;
+      if (watch.any()) watch_cell(p, r2, along, e, d2, hi, watch, t);
       t.lowest = std::min(t.lowest, z);
       const float now = std::max(static_cast<float>(z), floor);
       if (now >= h[i]) continue;
@@ -224,7 +223,7 @@ bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::
 // point over it, is passed over whole.
 template <class Lowest>
 Cut sweep_with(HeightMap& map, double radius, const Path& p, std::uint8_t mark,
-               const Lowest& lowest) {
+               const Lowest& lowest, const Watch& watch) {
   const double bx = p.ax + p.ux * p.length, by = p.ay + p.uy * p.length;
   std::size_t i0 = 0, i1 = 0, j0 = 0, j1 = 0;
   map.columns(std::min(p.ax, bx) - radius, std::max(p.ax, bx) + radius, i0, i1);
@@ -246,14 +245,34 @@ Cut sweep_with(HeightMap& map, double radius, const Path& p, std::uint8_t mark,
           lowest.tile_floor(std::max(0.0, d), along, half)) {
         continue;
       }
-      if (sweep_cells(map, p, r2, ci0, ci1, cj0, cj1, mark, lowest, t)) map.touch(ti, tj);
+      if (sweep_cells(map, p, r2, ci0, ci1, cj0, cj1, mark, lowest, watch, t)) {
+        map.touch(ti, tj);
+      }
     }
   }
   Cut cut;
   cut.removed_mm3 = t.removed * map.cell_area();
   cut.deepest = static_cast<double>(t.deepest);
   cut.lowest = t.lowest + map.top();
+  cut.shank_rub = t.shank > kShankContact ? t.shank : 0.0;
+  cut.plunge_into = t.plunge > kPlungeStock ? t.plunge : 0.0;
   return cut;
+}
+
+// What the move is watched for: the shank when the flutes are given; the
+// plunge when the tool does not cut at its centre and goes down steeper than
+// its ramp (straight down is 90°).
+Watch watch_of(const ToolShape& tool, const core::Vec3& a, const core::Vec3& b,
+               const HeightMap& map) {
+  Watch w;
+  w.flutes = tool.flutes;
+  if (tool.plunge_ramp > 0.0 && b.z < a.z) {
+    const double angle = std::atan2(a.z - b.z, std::hypot(b.x - a.x, b.y - a.y));
+    w.plunge = angle > tool.plunge_ramp * std::numbers::pi / 180.0;
+    // Half a cell's diagonal: any place has a cell centre this near.
+    w.axis2 = 0.25 * (map.dx() * map.dx() + map.dy() * map.dy());
+  }
+  return w;
 }
 
 // Calls f with the shape's Lowest for the path.
@@ -277,6 +296,9 @@ void Cut::add(const Cut& c) {
   removed_mm3 += c.removed_mm3;
   deepest = std::max(deepest, c.deepest);
   lowest = std::min(lowest, c.lowest);
+  shank_rub = std::max(shank_rub, c.shank_rub);
+  holder_hit = std::max(holder_hit, c.holder_hit);
+  plunge_into = std::max(plunge_into, c.plunge_into);
 }
 
 Cut sweep(HeightMap& map, const ToolShape& tool, const core::Vec3& a, const core::Vec3& b,
@@ -284,8 +306,17 @@ Cut sweep(HeightMap& map, const ToolShape& tool, const core::Vec3& a, const core
   // Nothing below the top: no cell can be reached (every cell is at or below it).
   if (std::min(a.z, b.z) >= map.top()) return {};
   const Path p = path_of(a, b, map.top());
-  return with_lowest(
-      tool, p, [&](const auto& lowest) { return sweep_with(map, tool.radius(), p, mark, lowest); });
+  const Watch watch = watch_of(tool, a, b, map);
+  const bool holder = tool.holder > 0.0;
+  const double before =
+      holder ? holder_depth(map, p, tool, HolderStretch::BeforeTheTool, 0.0) : 0.0;
+  Cut cut = with_lowest(tool, p, [&](const auto& lowest) {
+    return sweep_with(map, tool.radius(), p, mark, lowest, watch);
+  });
+  if (holder) {
+    cut.holder_hit = holder_depth(map, p, tool, HolderStretch::AfterTheTool, before);
+  }
+  return cut;
 }
 
 double envelope(const ToolShape& tool, const core::Vec3& a, const core::Vec3& b, double cx,

@@ -14,18 +14,29 @@
 
 namespace usina::sim::stock {
 
+// A shank within this of the stock is not taken for rubbing it (mm).
+inline constexpr double kShankContact = 0.001;
+// Stock this high above the tip under a non-centre-cutting tool's axis is
+// not taken for a plunge into it (mm).
+inline constexpr double kPlungeStock = 0.01;
+
 struct Cut {
   double removed_mm3 = 0.0;
   double deepest = 0.0;  // mm: the most one cell lost
   // The lowest the tool's lower surface came over a cell of the stock
   // (cut or not), Z mm; +inf when it passed over none.
   double lowest = std::numeric_limits<double>::infinity();
+  // Above the end, each 0 when clear (docs/simulate.md, "Shank, holder, plunge"):
+  double shank_rub = 0.0;    // mm: stock above the flutes where the tool entered it
+  double holder_hit = 0.0;   // mm: the deepest the holder went into stock
+  double plunge_into = 0.0;  // mm: stock above the tip under a no-plunge tool's axis
 
   void add(const Cut& c);
 };
 
 // Sweeps `tool` with its tip from `a` to `b` (Z up, the tool vertical):
-// lowers the cells under it, marks those it cut with `mark`.
+// lowers the cells under it, marks those it cut with `mark`; checks the
+// shank, the holder and a plunge where the tool's words ask for it.
 Cut sweep(HeightMap& map, const ToolShape& tool, const core::Vec3& a, const core::Vec3& b,
           std::uint8_t mark);
 

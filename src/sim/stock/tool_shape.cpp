@@ -29,6 +29,30 @@ std::pair<std::string, std::string> split_word(std::string_view words) {
   return {w.substr(0, colon), w.substr(colon + 1)};
 }
 
+// The end's own numbers: diameter, corner radius, point angle.
+tl::expected<void, std::string> check_end(const ToolShape& t) {
+  if (!std::isfinite(t.diameter) || t.diameter <= 0.0 || t.diameter > kMaxToolDiameter) {
+    return tl::unexpected(
+        fmt::format("a tool's diameter must be more than 0 and at most {:g} mm, not {:g}",
+                    kMaxToolDiameter, t.diameter));
+  }
+  if (t.kind == ToolKind::BullNose && (!std::isfinite(t.corner_radius) || t.corner_radius <= 0.0 ||
+                                       t.corner_radius >= t.radius())) {
+    return tl::unexpected(fmt::format(
+        "a bull nose's corner radius must be more than 0 and less than the tool's radius "
+        "({:g} mm), not {:g}",
+        t.radius(), t.corner_radius));
+  }
+  if ((t.kind == ToolKind::Drill || t.kind == ToolKind::Vee) &&
+      (!std::isfinite(t.angle) || t.angle < kMinToolAngle || t.angle > kMaxToolAngle)) {
+    return tl::unexpected(
+        fmt::format("a point's included angle must be {:g} to {:g} degrees, "
+                    "not {:g}",
+                    kMinToolAngle, kMaxToolAngle, t.angle));
+  }
+  return {};
+}
+
 }  // namespace
 
 double ToolShape::cone_slope() const {
@@ -55,26 +79,8 @@ double ToolShape::lift(double r) const {
 }
 
 tl::expected<void, std::string> check_shape(const ToolShape& t) {
-  if (!std::isfinite(t.diameter) || t.diameter <= 0.0 || t.diameter > kMaxToolDiameter) {
-    return tl::unexpected(
-        fmt::format("a tool's diameter must be more than 0 and at most {:g} mm, not {:g}",
-                    kMaxToolDiameter, t.diameter));
-  }
-  if (t.kind == ToolKind::BullNose && (!std::isfinite(t.corner_radius) || t.corner_radius <= 0.0 ||
-                                       t.corner_radius >= t.radius())) {
-    return tl::unexpected(fmt::format(
-        "a bull nose's corner radius must be more than 0 and less than the tool's radius "
-        "({:g} mm), not {:g}",
-        t.radius(), t.corner_radius));
-  }
-  if ((t.kind == ToolKind::Drill || t.kind == ToolKind::Vee) &&
-      (!std::isfinite(t.angle) || t.angle < kMinToolAngle || t.angle > kMaxToolAngle)) {
-    return tl::unexpected(
-        fmt::format("a point's included angle must be {:g} to {:g} degrees, "
-                    "not {:g}",
-                    kMinToolAngle, kMaxToolAngle, t.angle));
-  }
-  return {};
+  if (auto ok = check_end(t); !ok) return ok;
+  return check_reach(t);
 }
 
 tl::expected<ToolShape, std::string> parse_shape(std::string_view words, double diameter) {
@@ -153,18 +159,26 @@ namespace usina::sim::stock {
 tl::expected<std::pair<int, ToolShape>, std::string> parse_tool_spec(
     std::string_view spec, const std::map<int, ToolShape>& known) {
   const std::size_t eq = spec.find('=');
-  const std::size_t slash = spec.find('/');
   const auto number = finite_number(spec.substr(0, eq));
   if (eq == std::string_view::npos || !number || *number < 0 || *number > 99999 ||
       *number != static_cast<int>(*number)) {
-    return tl::unexpected(fmt::format(
-        "--tool-shape '{}' is not T=SHAPE or T=SHAPE/D (e.g. 3=ball/6, 4=bull:1/10)", spec));
+    return tl::unexpected(
+        fmt::format("--tool-shape '{}' is not T=SHAPE[/D][,WORD]... (e.g. 3=ball/6, 4=bull:1/10, "
+                    "1=flat/6,flutes:20,holder:32,stickout:30)",
+                    spec));
   }
+  // The shape and its diameter end at the first comma; the words above the end follow.
+  const std::size_t comma = spec.find(',', eq);
+  const std::string_view end = spec.substr(
+      eq + 1, comma == std::string_view::npos ? std::string_view::npos : comma - eq - 1);
+  const std::string_view words =
+      comma == std::string_view::npos ? std::string_view{} : spec.substr(comma + 1);
+  const std::size_t slash = end.find('/');
   const int n = static_cast<int>(*number);
   const auto listed = known.find(n);
   double diameter = listed != known.end() ? listed->second.diameter : 0.0;
   if (slash != std::string_view::npos) {
-    const auto d = finite_number(spec.substr(slash + 1));
+    const auto d = finite_number(end.substr(slash + 1));
     if (!d)
       return tl::unexpected(fmt::format("--tool-shape '{}': the diameter is not a number", spec));
     // A diameter written here is checked as written, not taken for a missing one.
@@ -178,14 +192,22 @@ tl::expected<std::pair<int, ToolShape>, std::string> parse_tool_spec(
   }
   if (diameter <= 0.0) {
     return tl::unexpected(
-        fmt::format("--tool-shape '{}': tool {} has no diameter in the tool table; write it: {}/D",
-                    spec, n, spec));
+        fmt::format("--tool-shape '{}': tool {} has no diameter in the tool table; write it: "
+                    "{}=SHAPE/D",
+                    spec, n, n));
   }
-  auto shape =
-      parse_shape(spec.substr(eq + 1, slash == std::string_view::npos ? std::string_view::npos
-                                                                      : slash - eq - 1),
-                  diameter);
+  auto shape = parse_shape(end.substr(0, slash), diameter);
   if (!shape) return tl::unexpected(fmt::format("--tool-shape '{}': {}", spec, shape.error()));
+  if (listed != known.end()) {
+    // What the table's comment said above the end stays unless written again.
+    shape->flutes = listed->second.flutes;
+    shape->holder = listed->second.holder;
+    shape->stickout = listed->second.stickout;
+    shape->plunge_ramp = listed->second.plunge_ramp;
+  }
+  auto read = read_reach_words(words, true, *shape);
+  if (read) read = check_shape(*shape);
+  if (!read) return tl::unexpected(fmt::format("--tool-shape '{}': {}", spec, read.error()));
   return std::pair{n, *shape};
 }
 
