@@ -15,13 +15,6 @@
 namespace usina::sim::stock {
 namespace {
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
 bool separator(char c) {
   return c == ',' || std::isspace(static_cast<unsigned char>(c)) != 0;
 }

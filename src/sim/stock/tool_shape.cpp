@@ -14,13 +14,6 @@
 namespace usina::sim::stock {
 namespace {
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
 // "ball" -> (ball, ""), "bull:1.5" -> (bull, "1.5").
 std::pair<std::string, std::string> split_word(std::string_view words) {
   const std::string w = lower(words);
