@@ -32,6 +32,11 @@ struct BlockWords {
 
   void clear_letter(char letter) { present &= ~(1u << slot(letter)); }
 
+  // Written as an increment whatever G90/G91 say (EvaluatedWord::incremental).
+  bool incremental(char letter) const { return (increments >> slot(letter)) & 1u; }
+
+  void mark_incremental(char letter) { increments |= 1u << slot(letter); }
+
   bool has_axis() const {
     for (const char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'}) {
       if (has(c)) return true;
@@ -44,6 +49,7 @@ struct BlockWords {
   std::array<double, kSlots> value{};
   std::array<std::uint32_t, kSlots> col{};
   std::uint32_t present = 0;
+  std::uint32_t increments = 0;  // by slot: the words marked as increments
 
   // G and M codes by modal group (-1: none in this block) and their columns.
   std::array<GCode, kGGroups> g{};
@@ -59,6 +65,7 @@ struct BlockWords {
 
   void reset() {
     present = 0;
+    increments = 0;
     g.fill(-1);
     m.fill(-1);
     m7_and_m8 = false;

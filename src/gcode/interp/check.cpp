@@ -1,5 +1,7 @@
 // Step 2 of a block: its codes sorted into modal groups, conflicts and
 // words that no code of the block uses reported.
+#include <string_view>
+
 #include <fmt/format.h>
 
 #include "gcode/interp/block_words.hpp"
@@ -108,7 +110,28 @@ bool Interpreter::check(BlockWords& w) {
   if (g0 == 530 && w.motion != 0 && w.motion != 10) {
     return error(core::Code::NotAllowedInMode, w.gcol[kGroupNonModal], "G53 needs G0 or G1 motion");
   }
-  return comp_forbids(w) && check_unused(w);
+  return comp_forbids(w) && check_unused(w) && check_increments(w);
+}
+
+// A word marked as an increment (EvaluatedWord::incremental) counts from
+// where a move starts: only a move to a point takes it (target()). G53's
+// words are machine coordinates; a canned cycle's, G10's, G52's and G92's
+// are read under G90/G91 alone.
+bool Interpreter::check_increments(const BlockWords& w) {
+  if (w.increments == 0) return true;
+  const GCode g0 = w.g[kGroupNonModal];
+  const bool to_point =
+      uses_axes(g0) ? (g0 == 280 || g0 == 300) : w.motion != -1 && !is_cycle(w.motion) && g0 != 530;
+  if (to_point) return true;
+  char letter = 'X';
+  for (const char c : std::string_view(kAxisLetters)) {
+    if (w.incremental(c)) {
+      letter = c;
+      break;
+    }
+  }
+  return error(core::Code::NotAllowedInMode, w.col_of(letter),
+               fmt::format("{} written as an increment outside a move to a point", letter));
 }
 
 // What LinuxCNC refuses while cutter radius compensation is on.

@@ -5,7 +5,9 @@
 // words), evaluates every value, and gives the interpreter numbers with the
 // places the user wrote them at; it never writes G-code text for the
 // interpreter to read again. From here on the road is the same for every
-// dialect: rs274ngc's own reader, fanuc, and the front ends to come.
+// dialect: rs274ngc's own reader, fanuc and grbl hand it to the RS274NGC
+// interpreter, romi to its executor (romi/exec.hpp, its own handlers in its
+// groups' order); the front ends to come hand it over too.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +29,11 @@ struct EvaluatedWord {
   // word the front end made (a dialect's cycle, a kept modal value): its
   // diagnostics point at the block.
   std::uint32_t col = 0;
+  // Written as an increment whatever G90/G91 say (romi's lower-case words,
+  // docs/romi.md): the word counts from where its move starts. The
+  // interpreter takes it on the axis words of a move to a point (G0-G3,
+  // G33, G38, splines, G28/G30's point) and refuses it elsewhere.
+  bool incremental = false;
 };
 
 // An RS274NGC parameter assignment with its value read (RS274NGC 3.2.1:

@@ -1,6 +1,7 @@
 #include "gcode/interp/interpreter.hpp"
 
 #include <cmath>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -170,6 +171,13 @@ bool Interpreter::sort_word(const EvaluatedWord& word, BlockWords& w) {
   if (w.has(word.letter)) {
     return error(core::Code::RepeatedWord, word.col,
                  fmt::format("{} word appears twice in the block", word.letter));
+  }
+  if (word.incremental) {
+    if (std::string_view(kAxisLetters).find(word.letter) == std::string_view::npos) {
+      return error(core::Code::NotAllowedInMode, word.col,
+                   fmt::format("{} written as an increment: only axis words may be", word.letter));
+    }
+    w.mark_incremental(word.letter);
   }
   w.set(word.letter, v, word.col);
   return true;

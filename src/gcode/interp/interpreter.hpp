@@ -207,6 +207,7 @@ class Interpreter final : private ParameterSource {
   bool place_m(BlockWords& w, int m, std::uint32_t col);
   bool check(BlockWords& w);
   bool check_unused(const BlockWords& w);
+  bool check_increments(const BlockWords& w);
   bool execute(std::span<const CommentText> notes, BlockWords& w);
   bool comments(std::span<const CommentText> notes);
   bool tool_and_spindle(BlockWords& w);

@@ -41,7 +41,7 @@ Axes Interpreter::target(const BlockWords& w, bool machine_coords) const {
     double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
     if (a == 0 && s.lathe_diameter) v /= 2.0;  // G7: X words are diameters
     const auto i = static_cast<std::size_t>(a);
-    end[i] = s.incremental ? base[i] + v : v;
+    end[i] = s.incremental || w.incremental(letter) ? base[i] + v : v;
   }
   if (w.has_polar()) {
     // LinuxCNC polar words: @ radius and ^ angle (degrees) about the origin;

@@ -90,10 +90,8 @@ void Engine::step() {
     return;
   }
   if (block_.base.percent) return;
-  exec_.begin_block(block_.base.loc, block_.base.comments);
-  const bool ok = block();
-  exec_.end_block(ok);
-  if (!ok) {
+  run_.at(block_.base.loc);
+  if (!block()) {
     run_.fail();
     return;
   }
@@ -101,8 +99,7 @@ void Engine::step() {
 }
 
 // The block's steps around the executor's: the dashes read as minus signs,
-// the comments, the assignments, the words evaluated and imported, the execution, the
-// jumps.
+// the assignments, the words evaluated and run, the jumps.
 bool Engine::block() {
   for (const std::uint32_t dash : block_.dashes) {
     if (dialect_options_.typographic_dash_is_error) {
@@ -112,15 +109,15 @@ bool Engine::block() {
     run_.note(core::Code::TypographicDash, core::Severity::Warning, dash,
               "a typographic dash read as a minus sign");
   }
-  exec_.comments();
-  if (!statements(false)) return false;
-  if (!evaluate_words() || !exec_.execute()) return false;
-  return statements(true);
+  if (!statements(false) || !evaluate_words()) return false;
+  const EvaluatedBlock evaluated{block_.base.loc, words_, {}, block_.base.comments};
+  return exec_.run_evaluated(evaluated, [this] { return statements(true); });
 }
 
-// Step 1: every word's value, handed to the executor as it comes (step 2
-// checks each on arrival, as grbl imports its words).
+// Step 1: every word's value, with its column, and lower-case words marked
+// as increments when the dialect's option says so.
 bool Engine::evaluate_words() {
+  words_.clear();
   EvalError err;
   for (const RomiWord& w : block_.words) {
     const ExprNode& node = block_.base.expr(w.value);
@@ -130,17 +127,8 @@ bool Engine::evaluate_words() {
     if (const auto ok = word_out_of_range(w.letter, *v); !ok) {
       return error(core::Code::ValueOutOfRange, w.col, ok.error());
     }
-    if (w.letter == 'G' || w.letter == 'M') {
-      const double tenths = std::round(*v * 10.0);
-      if (!(*v >= 0 && tenths <= CodeTable::kMaxTenths) || std::fabs(*v * 10.0 - tenths) > 1e-6) {
-        return error(w.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode, w.col,
-                     fmt::format("{}{} is not a code", w.letter, *v));
-      }
-      if (!exec_.import_code(w.letter, static_cast<int>(tenths), w.col)) return false;
-      continue;
-    }
     const bool incremental = w.lower && dialect_options_.lowercase_incremental;
-    if (!exec_.import_word(w.letter, *v, incremental, w.col)) return false;
+    words_.push_back({w.letter, *v, w.col, incremental});
   }
   return true;
 }

@@ -97,6 +97,7 @@ class Engine final : public ProgramRunner, private ParameterSource {
   Executor exec_;
 
   RomiBlock block_;
+  std::vector<EvaluatedWord> words_;  // the block's, evaluated (kept: no allocation a block)
   std::uint32_t file_ = 0;
   Cursor cursor_;
   std::vector<Frame> frames_;

@@ -59,41 +59,65 @@ void Executor::start(const std::vector<CodeEntry>& start_codes, const core::Sour
   modal_ = work_;
 }
 
-void Executor::begin_block(const core::SourceLoc& loc, const std::vector<CommentText>& comments) {
-  at(loc);
+bool Executor::run_evaluated(const EvaluatedBlock& block, const std::function<bool()>& after) {
+  begin_block(block);
+  comments();
+  bool ok = true;
+  for (const EvaluatedWord& w : block.words) {
+    if (!(ok = import(w))) break;
+  }
+  ok = ok && execute() && (!after || after());
+  end_block(ok);
+  return ok;
+}
+
+void Executor::begin_block(const EvaluatedBlock& block) {
+  at(block.loc);
   words_.reset();
   block_codes_.clear();
-  comments_ = &comments;
+  comments_ = block.comments;
 }
 
 void Executor::comments() {
-  for (const CommentText& c : *comments_) {
+  for (const CommentText& c : comments_) {
     in_order([this, text = std::string(c.text)] { machine_.emit(canon::Comment{text}); });
   }
 }
 
-bool Executor::import_code(char letter, int tenths, std::uint32_t col) {
-  const Code* c = codes_.find(letter, tenths);
+bool Executor::import(const EvaluatedWord& w) {
+  if (w.letter == 'G' || w.letter == 'M') return import_code(w.letter, w.value, w.col);
+  return import_word(w);
+}
+
+// A G or M code as written (G01: 1, G38.2 would be 38.2) into its group:
+// romi's codes are whole numbers, looked up in tenths.
+bool Executor::import_code(char letter, double value, std::uint32_t col) {
+  const double tenths = std::round(value * 10.0);
+  if (!(value >= 0 && tenths <= CodeTable::kMaxTenths) || std::fabs(value * 10.0 - tenths) > 1e-6) {
+    return error(letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode, col,
+                 fmt::format("{}{} is not a code", letter, value));
+  }
+  const Code* c = codes_.find(letter, static_cast<int>(tenths));
   if (c == nullptr) {
     return error(letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode, col,
-                 fmt::format("{} is not a code of the {} dialect", code_name(letter, tenths),
-                             codes_.dialect_name()));
+                 fmt::format("{} is not a code of the {} dialect",
+                             code_name(letter, static_cast<int>(tenths)), codes_.dialect_name()));
   }
   if (const Code* other = block_codes_.place(*c)) {
     return error(core::Code::ModalGroupConflict, col,
                  fmt::format("{} and {} are in the same group; one per block",
                              code_name(other->entry->letter, other->entry->code),
-                             code_name(letter, tenths)));
+                             code_name(letter, static_cast<int>(tenths))));
   }
   return true;
 }
 
-bool Executor::import_word(char letter, double value, bool incremental, std::uint32_t col) {
-  if (words_.has(letter)) {
-    return error(core::Code::RepeatedWord, col,
-                 fmt::format("{} word appears twice in the block", letter));
+bool Executor::import_word(const EvaluatedWord& w) {
+  if (words_.has(w.letter)) {
+    return error(core::Code::RepeatedWord, w.col,
+                 fmt::format("{} word appears twice in the block", w.letter));
   }
-  words_.set(letter, value, incremental, col);
+  words_.set(w.letter, w.value, w.incremental, w.col);
   return true;
 }
 
@@ -111,7 +135,7 @@ bool Executor::execute() {
 }
 
 void Executor::end_block(bool ok) {
-  comments_ = nullptr;
+  comments_ = {};
   if (ok && !machine_.faulted()) {
     modal_ = work_;
   } else {

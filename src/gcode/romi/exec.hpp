@@ -1,11 +1,13 @@
 // Below the romi text: runs a block of evaluated words (steps 2-4 of
-// DESIGN.md's interpreter, grbl's order). The front end (romi_engine)
-// imports each word as it evaluates it: step 2 looks every G and M code up
-// in the dialect's table by index (romi/codes.hpp) and checks groups and
-// repeated letters as the words arrive; execute() then runs the handlers in
-// the order of their groups, the block's move, and the groups after it.
-// The block works on a copy of the modal state (romi/state.hpp), committed
-// by end_block() only when the block succeeded.
+// DESIGN.md's interpreter). The front end (romi/engine.cpp) hands it the
+// entry every dialect hands its runner below the text, an EvaluatedBlock
+// (interp/evaluated_block.hpp), with romi's lower-case words marked as
+// increments. Step 2 looks every G and M code up in the dialect's table by
+// index (romi/codes.hpp) and checks groups and repeated letters; step 4
+// runs the handlers in the order of their groups (table data: the groups'
+// numbers), the block's move, and the groups after it. The block works on
+// a copy of the modal state (romi/state.hpp), committed only when the
+// block succeeded.
 //
 // Geometry is worked in program coordinates (the programmed point, polar
 // centres, the direction of travel); every point then goes through the
@@ -15,6 +17,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +25,7 @@
 #include "canon/sink.hpp"
 #include "gcode/block.hpp"
 #include "gcode/interp/canon_machine.hpp"
+#include "gcode/interp/evaluated_block.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "gcode/romi/codes.hpp"
 #include "gcode/romi/services.hpp"
@@ -71,18 +75,13 @@ class Executor {
   // The program's start: the dialect's start codes, at `loc`.
   void start(const std::vector<CodeEntry>& start_codes, const core::SourceLoc& loc);
 
-  // A block at `loc` with its comments (kept for the block's handlers).
-  void begin_block(const core::SourceLoc& loc, const std::vector<CommentText>& comments);
-  // The block's comments go out, in order with the moves compensation holds.
-  void comments();
-  // Step 2, word by word: a G or M code (tenths), or another word.
-  bool import_code(char letter, int tenths, std::uint32_t col);
-  bool import_word(char letter, double value, bool incremental, std::uint32_t col);
-  // Steps 3-4.
-  bool execute();
-  // Commits the block's state when `ok` (and the machine sent every op),
-  // else puts the state back as it was before the block.
-  void end_block(bool ok);
+  // Steps 2-4 of one block: its comments go out (in order with the moves
+  // compensation holds), its words are sorted and checked, its codes and
+  // move run, then `after` (the front end's statements that end the block:
+  // romi's jumps). The block's state is committed when all of it succeeded
+  // (and the machine sent every op), else put back as it was before the
+  // block. False after an error (reported).
+  bool run_evaluated(const EvaluatedBlock& block, const std::function<bool()>& after = {});
 
   // The end of the file without M02/M30: a pending blend is an error, held
   // moves go out. False after an error.
@@ -118,6 +117,15 @@ class Executor {
   double mm(double v) const { return work_.mm(v); }
 
   bool incremental(char letter) const { return work_.incremental || words_.incremental(letter); }
+
+  // The block's steps (romi/exec.cpp).
+  void begin_block(const EvaluatedBlock& block);
+  void comments();
+  bool import(const EvaluatedWord& word);
+  bool import_code(char letter, double value, std::uint32_t col);
+  bool import_word(const EvaluatedWord& word);
+  bool execute();
+  void end_block(bool ok);
 
   std::optional<double> take_whole(char letter, int lo, int hi);
   bool values();
@@ -183,7 +191,7 @@ class Executor {
   // The block being run.
   Words words_;
   BlockCodes block_codes_;
-  const std::vector<CommentText>* comments_ = nullptr;
+  std::span<const CommentText> comments_;
   bool moved_by_handler_ = false;
   bool ended_ = false;
 };

@@ -123,8 +123,7 @@ bool Executor::h_rotate(int) {
 }
 
 std::optional<double> Executor::tool_diameter_from_comments() const {
-  if (comments_ == nullptr) return std::nullopt;
-  for (const CommentText& c : *comments_) {
+  for (const CommentText& c : comments_) {
     const std::string_view t = c.text;
     for (std::size_t i = 0; i + 1 < t.size(); ++i) {
       const bool start = i == 0 || t[i - 1] == ' ' || t[i - 1] == '\t';

@@ -50,5 +50,24 @@ TEST(RomiWords, AnErrorAboutALetterTheBlockLacksPointsAtTheBlock) {
   }
 }
 
+TEST(RomiWords, TheBlockIsEvaluatedWholeBeforeItsCodesAreChecked) {
+  // As the interpreter does (the entry below the text): X's value, out of
+  // range, is found in step 1, before the unknown G99 of step 2.
+  const std::string text = "(P1 = 1000000 * 1000000)#G99 X P1#M02#";
+  auto r = romi_test::run_romi(text);
+  ASSERT_EQ(r->first_error(), core::Code::ValueOutOfRange);
+  EXPECT_EQ(r->diags.all().front().loc.col, text.find("X P1") + 1);
+}
+
+TEST(RomiWords, ALowerCaseWordIsAnIncrementForItsBlockAlone) {
+  auto r = romi_test::run_romi("G00 X10#G00 x5 Y2#G00 X1#M02#");
+  ASSERT_TRUE(r->ok);
+  const auto t = r->all<canon::Traverse>();
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_DOUBLE_EQ(t[1].to.x, 15.0);
+  EXPECT_DOUBLE_EQ(t[1].to.y, 2.0);
+  EXPECT_DOUBLE_EQ(t[2].to.x, 1.0);
+}
+
 }  // namespace
 }  // namespace usina::gcode::romi
