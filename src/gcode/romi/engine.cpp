@@ -71,6 +71,10 @@ void Engine::end_of_program() {
 
 void Engine::step() {
   core::SourceFile* f = sources_.get(file_);
+  // The text behind the block's line is not needed again unless a jump
+  // goes back to it (then it is read again from the file): memory stays
+  // flat however long the program (issue 19).
+  f->release_before(cursor_.line_start);
   const BlockText bt = block_at(f->text(), cursor_.offset);
   const auto col = static_cast<std::uint32_t>(cursor_.offset - cursor_.line_start + 1);
   const LinePos where{file_, cursor_.line, cursor_.line_start};

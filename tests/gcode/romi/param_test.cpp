@@ -1,11 +1,30 @@
 // The romi dialect's Fagor-style parametric statements (spec/romi.md,
 // "Parametric programming").
+#include <string>
+
 #include "romi_test_support.hpp"
+#include "support/files.hpp"
 
 namespace usina::gcode::romi_test {
 namespace {
 
 using core::Code;
+
+// A romi program run from a file (mapped, its pages released behind the
+// reader), not from a string.
+std::unique_ptr<Run> run_romi_file(const std::string& path) {
+  auto r = std::make_unique<Run>();
+  std::string error;
+  auto file = core::SourceFile::open(path, error);
+  EXPECT_NE(file, nullptr) << error;
+  if (file == nullptr) return r;
+  const std::uint32_t id = r->sources.add(std::move(file));
+  const Dialect* d = find_dialect("romi");
+  auto runner = d->make_runner(
+      RunContext{r->sources, {}, resolve_options(*d, {}).value(), r->path, r->diags});
+  r->ok = runner->run(id);
+  return r;
+}
 
 TEST(RomiParam, AssignAndUseAsAWordValue) {
   auto r = run_romi("(P1 = 2 * 5)#(P3=-4)#G00 X P1 Y-P3#M02#");
@@ -103,6 +122,21 @@ TEST(RomiParam, ACommentIsNotAStatement) {
   auto r = run_romi("(roughing pass)#(P1 is the radius)#M02#");
   ASSERT_TRUE(r->ok) << r->first_error_text();
   EXPECT_EQ(r->all<canon::Comment>().size(), 2u);
+}
+
+TEST(RomiParam, AJumpBackToTextReleasedFromMemoryReadsItAgain) {
+  // Over 8 MiB between N10 and the jump: the text behind the reader has
+  // left memory (issue 19) when the jump goes back to it.
+  std::string text = "(P1 = 0)#N10 (P1 = P1 + 1)#\n";
+  constexpr int kLines = 120000;
+  for (int i = 0; i < kLines; ++i)
+    text += "G00 X1.25 Y2.5 ;a comment that makes the line longer, as a real program has\n";
+  text += "(IF P1 LT 2 GOTO N10)#M02#\n";
+  ASSERT_GT(text.size(), 8u << 20);
+  test::TempDir dir;
+  auto r = run_romi_file(dir.write("long.nc", text));
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(r->all<canon::Traverse>().size(), 2u * kLines);
 }
 
 }  // namespace
