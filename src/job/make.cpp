@@ -58,6 +58,13 @@ const Tool* hole_tool(Context& cx, const Operation& op, double diameter, std::st
   return c.tool;
 }
 
+std::vector<cam::Vec2> centres_of(const std::vector<HoleGroup>& groups) {
+  std::vector<cam::Vec2> centres;
+  for (const HoleGroup& g : groups)
+    centres.insert(centres.end(), g.centers.begin(), g.centers.end());
+  return centres;
+}
+
 bool run_drill(Context& cx, const Operation& op, const std::string& title) {
   const auto paths = layer_paths(cx.j, op, cx.diags);
   if (!paths) return false;
@@ -76,9 +83,7 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
     return false;
   }
   const Stock& stock = cx.j.job.stock;
-  for (const HoleGroup& g : groups) {
-    if (!check_hole_centres(stock, op, g.centers, cx.diags)) return false;
-  }
+  if (!check_hole_centres(stock, op, centres_of(groups), cx.diags)) return false;
   for (const HoleGroup& g : groups) {
     std::string chosen;
     const Tool* tool = hole_tool(cx, op, g.diameter, chosen);

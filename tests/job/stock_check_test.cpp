@@ -436,7 +436,7 @@ TEST(JobStockCheckMake, HolesOffTheStockStopTheJobAtTheLayersLine) {
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->loc.line, 13u);
   EXPECT_EQ(d->loc.col, 9u);  // the value: layer = "HOLES"
-  EXPECT_NE(d->message.find("2 of the 4 hole centres"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("2 of the 6 hole centres"), std::string::npos) << d->message;
 }
 
 TEST(JobStockCheckMake, TheWholePlateFitsACylinderOfD150) {
