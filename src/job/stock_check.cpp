@@ -1,6 +1,7 @@
 #include "job/stock_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -85,11 +86,11 @@ bool segment_meets_box(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
   // The segment a + t (b - a), t in [0, 1], clipped by each slab in turn.
   double t0 = 0;
   double t1 = 1;
-  const double from[2] = {a.x, a.y};
-  const double d[2] = {b.x - a.x, b.y - a.y};
-  const double low[2] = {lo.x - kOnEdge, lo.y - kOnEdge};
-  const double high[2] = {hi.x + kOnEdge, hi.y + kOnEdge};
-  for (int i = 0; i < 2; ++i) {
+  const std::array<double, 2> from{a.x, a.y};
+  const std::array<double, 2> d{b.x - a.x, b.y - a.y};
+  const std::array<double, 2> low{lo.x - kOnEdge, lo.y - kOnEdge};
+  const std::array<double, 2> high{hi.x + kOnEdge, hi.y + kOnEdge};
+  for (std::size_t i = 0; i < 2; ++i) {
     if (d[i] == 0) {
       if (from[i] < low[i] || from[i] > high[i]) return false;
       continue;
