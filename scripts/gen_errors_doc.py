@@ -821,10 +821,12 @@ EXPLAIN = {
         "Check the stock's `size` (or `diameter`) and `origin` against the drawing, the "
         "operation's layer, or its `center` / `at`."),
     "W_JOB_PARTLY_OUTSIDE_STOCK": (
-        "A profile's contour runs partly off the stock's top face: the tool cuts air there. "
-        "Usual when an oversize blank is trimmed to its outline; the program is written.",
-        "Nothing, if the blank is meant to be trimmed; else check the stock's size and "
-        "origin."),
+        "A profile's contour runs partly off the stock's top face: the tool cuts air there "
+        "(usual when an oversize blank is trimmed to its outline). Or a hole's circle "
+        "breaks out of the stock's side (its centre on the stock): the drill cuts partly in "
+        "air there and is pushed off its line. The program is written.",
+        "Nothing, if the blank is meant to be trimmed or the hole to break out; else check "
+        "the stock's size and origin."),
     "E_JOB_DEEPER_THAN_STOCK": (
         "A facing as deep as the stock or deeper (nothing would be left of the part), or a "
         "tapping deeper than the stock's height and the tap's lead (5.5 pitches, DIN 2197 "

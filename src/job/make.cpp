@@ -84,6 +84,7 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
   }
   const Stock& stock = cx.j.job.stock;
   if (!check_hole_centres(stock, op, centres_of(groups), cx.diags)) return false;
+  check_hole_edges(stock, op, groups, cx.diags);
   for (const HoleGroup& g : groups) {
     std::string chosen;
     const Tool* tool = hole_tool(cx, op, g.diameter, chosen);

@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -218,6 +220,29 @@ bool check_hole_centres(const Stock& s, const Operation& op, const std::vector<V
                      "{}: check the stock's size and origin, or the layer",
                      off, centres.size(), op.layer, reaches(top, f)));
   return false;
+}
+
+void check_hole_edges(const Stock& s, const Operation& op, const std::vector<HoleGroup>& groups,
+                      core::DiagnosticSink& diags) {
+  const StockTop top = stock_top(s);
+  std::size_t broken = 0;
+  Farthest first;
+  double diameter = 0;
+  for (const HoleGroup& g : groups) {
+    for (const Vec2& c : g.centers) {
+      const double by = outside_by(top, c) + g.diameter / 2;
+      if (by <= kOnEdge) continue;
+      if (broken++ == 0) std::tie(first, diameter) = std::pair{Farthest{by, c}, g.diameter};
+    }
+  }
+  if (broken == 0) return;
+  report(diags, core::Code::JobPartlyOutsideStock, core::Severity::Warning,
+         at_key(op.layer_loc, op),
+         fmt::format("{} of the holes of layer \"{}\" break out of the stock's side, the first "
+                     "D{} at X{} Y{} by {} mm ({}): the drill cuts partly in air there and is "
+                     "pushed off its line",
+                     broken, op.layer, mm(diameter), mm(first.at.x), mm(first.at.y), mm(first.by),
+                     describe(top)));
 }
 
 namespace {

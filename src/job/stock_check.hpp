@@ -11,6 +11,7 @@
 
 #include "cam/path.hpp"
 #include "core/diagnostic.hpp"
+#include "job/geometry.hpp"
 #include "job/job_file.hpp"
 #include "job/tools.hpp"
 
@@ -63,6 +64,10 @@ double point_length(double diameter, double point_angle_deg);
 // Every hole's centre on the top face.
 bool check_hole_centres(const Stock& s, const Operation& op, const std::vector<cam::Vec2>& centres,
                         core::DiagnosticSink& diags);
+// A warning for the holes whose circle leaves the top face: their drill
+// cuts partly in air at the stock's side and is pushed off its line.
+void check_hole_edges(const Stock& s, const Operation& op, const std::vector<HoleGroup>& groups,
+                      core::DiagnosticSink& diags);
 // A drilling, spot drilling or tapping's depth with `tool` against the height.
 bool check_hole_depth(const Stock& s, const Operation& op, const Tool& tool,
                       core::DiagnosticSink& diags);

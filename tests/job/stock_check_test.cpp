@@ -143,6 +143,24 @@ TEST(JobStockCheck, AHoleCentreOffACylinderIsAnError) {
   EXPECT_NE(d.all()[0].message.find("a circle D80 about X0 Y0"), std::string::npos);
 }
 
+TEST(JobStockCheck, AHoleBrokenOutOfTheStocksSideIsAWarning) {
+  core::DiagnosticList quiet;
+  // D6.8 holes 3.4 mm from the box's edge, and 36.6 from the cylinder's centre.
+  check_hole_edges(box(), op_of(OpType::Drill, 5), {{6.8, {{3.4, 30}, {50, 56.6}}}}, quiet);
+  check_hole_edges(cylinder(), op_of(OpType::Drill, 5), {{6.8, {{0, 36.6}}}}, quiet);
+  EXPECT_TRUE(quiet.all().empty());
+  core::DiagnosticList d;
+  check_hole_edges(box(), op_of(OpType::Drill, 5), {{5, {{50, 30}, {1, 30}}}, {6.8, {{50, 59}}}},
+                   d);
+  expect_one(d, Code::JobPartlyOutsideStock, 12);
+  EXPECT_NE(d.all()[0].message.find("2 of the holes"), std::string::npos) << d.all()[0].message;
+  EXPECT_NE(d.all()[0].message.find("D5 at X1 Y30 by 1.5 mm"), std::string::npos)
+      << d.all()[0].message;
+  core::DiagnosticList round;
+  check_hole_edges(cylinder(), op_of(OpType::Tap, 5), {{6.8, {{0, 37}}}}, round);
+  expect_one(round, Code::JobPartlyOutsideStock, 12);
+}
+
 TEST(JobStockCheck, ABlindHoleAndAThroughHoleAreQuiet) {
   const Tool d68 = tool_of(ToolType::Drill, 6.8);
   // Full diameter through at 12.043, 13.043 the deepest; at 12 (the plate
