@@ -811,6 +811,46 @@ EXPLAIN = {
         "allows (`[spindle] max_rpm`, the axes' `max_feed`), so the job uses the machine's "
         "limit; the feed per tooth is kept, so the feed drops with the speed.",
         "Nothing to do; a machine with a faster spindle would cut sooner."),
+    # job: the operations checked against the stock
+    "E_JOB_OUTSIDE_STOCK": (
+        "An operation's geometry is off the stock's top face (the box's rectangle or the "
+        "cylinder's circle, placed by `[stock] origin`): a hole's centre, a pocket's or an "
+        "ellipse pocket's outline, an engraving's letters, or a profile's contour that lies "
+        "wholly outside the stock or wholly around it (the part larger than the blank). "
+        "Nothing is written: the operation would cut air where the part should be.",
+        "Check the stock's `size` (or `diameter`) and `origin` against the drawing, the "
+        "operation's layer, or its `center` / `at`."),
+    "W_JOB_PARTLY_OUTSIDE_STOCK": (
+        "A profile's contour runs partly off the stock's top face: the tool cuts air there "
+        "(usual when an oversize blank is trimmed to its outline). Or a hole's circle "
+        "breaks out of the stock's side (its centre on the stock): the drill cuts partly in "
+        "air there and is pushed off its line. The program is written.",
+        "Nothing, if the blank is meant to be trimmed or the hole to break out; else check "
+        "the stock's size and origin."),
+    "E_JOB_DEEPER_THAN_STOCK": (
+        "A facing as deep as the stock or deeper (nothing would be left of the part), or a "
+        "tapping deeper than the stock's height and the tap's lead (5.5 pitches, DIN 2197 "
+        "form B's longest: a through thread is full once the lead has passed the bottom; deeper the tap cuts no thread "
+        "and meets the parallels or the fixture).",
+        "Give a smaller `depth` (the message gives the largest), or check the stock's height."),
+    "W_JOB_CUTS_THROUGH_STOCK": (
+        "A pocket, an ellipse pocket or an engraving as deep as the stock or deeper: it cuts "
+        "through, so what it surrounds comes loose (a cut-out, sometimes meant). The "
+        "program is written.",
+        "Nothing, if a cut-out is meant (hold the slug); else a smaller `depth`."),
+    "W_JOB_CUTS_BELOW_STOCK": (
+        "A drill (spot drill) whose tip goes more than its point and 1 mm below the stock's "
+        "bottom, or a profile more than 1 mm below it: past a breakthrough it cuts what the "
+        "stock stands on (parallels, the vice, the fixture, the table). The program is "
+        "written.",
+        "A smaller `depth` (the message gives the deepest), or a sacrificial plate under "
+        "the stock."),
+    "W_JOB_HOLE_NOT_THROUGH": (
+        "A drill's tip breaks through the stock's bottom but its full diameter does not: "
+        "the hole is narrower at the bottom (the message gives its diameter there) and "
+        "leaves a burr. Point length: a 118° drill's, 0.3 times its diameter.",
+        "A through hole: `depth` at least the stock's height and the point (the message "
+        "gives it); a blind one: at most the height."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

@@ -165,4 +165,11 @@
   X(JobNoCuttingData, E_JOB_NO_CUTTING_DATA)                     \
   X(BadToolLibrary, E_BAD_TOOL_LIBRARY)                          \
   X(BadMaterials, E_BAD_MATERIALS)                               \
-  X(JobCuttingLimited, N_JOB_CUTTING_LIMITED)
+  X(JobCuttingLimited, N_JOB_CUTTING_LIMITED)                    \
+  /* job: the operations checked against the stock */            \
+  X(JobOutsideStock, E_JOB_OUTSIDE_STOCK)                        \
+  X(JobPartlyOutsideStock, W_JOB_PARTLY_OUTSIDE_STOCK)           \
+  X(JobDeeperThanStock, E_JOB_DEEPER_THAN_STOCK)                 \
+  X(JobCutsThroughStock, W_JOB_CUTS_THROUGH_STOCK)               \
+  X(JobCutsBelowStock, W_JOB_CUTS_BELOW_STOCK)                   \
+  X(JobHoleNotThrough, W_JOB_HOLE_NOT_THROUGH)

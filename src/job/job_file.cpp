@@ -138,6 +138,7 @@ void read_engrave_keys(TomlReader& r, const toml::table& t, const std::string& w
   op.font = r.text(t, w, "font", false).value_or("rowmans");
   op.height = r.number(t, w, "height", kSmall, false).value_or(5.0);
   if (const auto a = r.numbers(t, w, "at", 2, kCoord, true)) op.at = {(*a)[0], (*a)[1]};
+  if (const toml::node* n = t.get("at")) op.place_loc = r.loc(n->source());
 }
 
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
@@ -161,6 +162,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
   if (op.type == OpType::EllipsePocket) {
     const auto c = r.numbers(t, w, "center", 2, kCoord, true);
     if (c) op.center = {(*c)[0], (*c)[1]};
+    if (const toml::node* n = t.get("center")) op.place_loc = r.loc(n->source());
     op.rx = r.number(t, w, "rx", kSize, true).value_or(0);
     op.ry = r.number(t, w, "ry", kSize, true).value_or(0);
   }
@@ -194,6 +196,7 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   r.known_keys(t, what, found->keys);
   read_tool(r, t, what, op);
   op.depth = r.number(t, what, "depth", kDepth, true).value_or(0);
+  if (const toml::node* n = t.get("depth")) op.depth_loc = r.loc(n->source());
   op.rpm = r.number(t, what, "rpm", kRpm, false);
   op.feed = r.number(t, what, "feed", kFeed, false);
   op.plunge_feed = r.number(t, what, "plunge_feed", kFeed, false);

@@ -26,7 +26,8 @@ struct Operation {
   core::SourceLoc layer_loc;
   std::optional<int> tool;  // nullopt: "auto", the job chooses
   core::SourceLoc tool_loc;
-  double depth = 0;                 // mm below the stock's top (Z0)
+  double depth = 0;  // mm below the stock's top (Z0)
+  core::SourceLoc depth_loc;
   std::optional<double> step_down;  // default: half the tool's diameter
   std::optional<double> stepover;   // pocket, ellipse: default half the tool's diameter; face: 70 %
   std::optional<double> diameter;   // drill: only the holes of this diameter
@@ -44,6 +45,7 @@ struct Operation {
   std::string font = "rowmans";    // engrave
   double height = 5.0;             // engrave: a capital letter's height, mm
   std::array<double, 2> at{0, 0};  // engrave: where the first letter's baseline starts
+  core::SourceLoc place_loc;       // the ellipse's `center`, the engraving's `at`
   std::optional<double> rpm;       // given: the cutting data are not used
   std::optional<double> feed;
   std::optional<double> plunge_feed;

@@ -11,6 +11,7 @@
 #include "cam/profile.hpp"
 #include "job/geometry.hpp"
 #include "job/make_support.hpp"
+#include "job/stock_check.hpp"
 
 namespace usina::job {
 namespace {
@@ -57,6 +58,13 @@ const Tool* hole_tool(Context& cx, const Operation& op, double diameter, std::st
   return c.tool;
 }
 
+std::vector<cam::Vec2> centres_of(const std::vector<HoleGroup>& groups) {
+  std::vector<cam::Vec2> centres;
+  for (const HoleGroup& g : groups)
+    centres.insert(centres.end(), g.centers.begin(), g.centers.end());
+  return centres;
+}
+
 bool run_drill(Context& cx, const Operation& op, const std::string& title) {
   const auto paths = layer_paths(cx.j, op, cx.diags);
   if (!paths) return false;
@@ -74,11 +82,14 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
                      op.layer, groups.size(), op.diameter ? " of that diameter" : "", others)});
     return false;
   }
+  const Stock& stock = cx.j.job.stock;
+  if (!check_hole_centres(stock, op, centres_of(groups), cx.diags)) return false;
+  check_hole_edges(stock, op, groups, cx.diags);
   for (const HoleGroup& g : groups) {
     std::string chosen;
     const Tool* tool = hole_tool(cx, op, g.diameter, chosen);
     cam::DrillOptions o;
-    if (tool == nullptr ||
+    if (tool == nullptr || !check_hole_depth(stock, op, *tool, cx.diags) ||
         !prepare(cx, op, *tool, false, chosen, o.cut,
                  fmt::format("{}: {} holes D{:g}", title, g.centers.size(), g.diameter))) {
       return false;
@@ -104,7 +115,7 @@ bool run_pocket(Context& cx, const Operation& op, const std::string& title) {
   if (!paths) return false;
   AtOperation at(cx.diags, op.loc, title);
   const auto shape = cam::pocket_shape(cam::chain(*paths), at);
-  if (!shape) return false;
+  if (!shape || !check_pocket(cx.j.job.stock, op, shape->outline, cx.diags)) return false;
   std::string chosen;
   const Tool* tool = mill_for(cx, op, smallest_inside_radius(shape->outline, true), chosen);
   if (tool == nullptr) return false;
@@ -136,6 +147,7 @@ bool run_profile(Context& cx, const Operation& op, const std::string& title) {
   const auto paths = layer_paths(cx.j, op, cx.diags);
   if (!paths) return false;
   const std::vector<cam::Path> contours = cam::chain(*paths);
+  if (!check_profile(cx.j.job.stock, op, contours, cx.diags)) return false;
   std::string chosen;
   const Tool* tool = mill_for(cx, op, profile_corner(contours, op), chosen);
   if (tool == nullptr) return false;

@@ -3,10 +3,12 @@
 #include "cam/ellipse_pocket.hpp"
 #include "job/geometry.hpp"
 #include "job/make_support.hpp"
+#include "job/stock_check.hpp"
 
 namespace usina::job {
 
 bool run_ellipse(Context& cx, const Operation& op, const std::string& title) {
+  if (!check_ellipse_pocket(cx.j.job.stock, op, cx.diags)) return false;
   std::string chosen;
   const Tool* tool = mill_for(cx, op, ellipse_smallest_radius(op.rx, op.ry), chosen);
   if (tool == nullptr) return false;

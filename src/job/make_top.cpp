@@ -1,6 +1,7 @@
 // The operations on the stock's top face that need no drawing: facing the
 // blank flat, and engraving text (docs/job.md, "Operations").
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -8,6 +9,7 @@
 #include "cam/face.hpp"
 #include "cam/hershey.hpp"
 #include "job/make_support.hpp"
+#include "job/stock_check.hpp"
 
 namespace usina::job {
 namespace {
@@ -39,6 +41,8 @@ const Tool* tool_for(Context& cx, const Operation& op, std::string& chosen, Choo
 }  // namespace
 
 bool run_face(Context& cx, const Operation& op, const std::string& title) {
+  // The whole top is faced: only the depth is checked.
+  if (!check_face(cx.j.job.stock, op, cx.diags)) return false;
   std::string chosen;
   const double pass = op.step_down.value_or(op.depth);
   const Tool* tool = tool_for(cx, op, chosen, [&] { return face_mill(cx.j.tools, pass); });
@@ -65,6 +69,13 @@ bool run_engrave(Context& cx, const Operation& op, const std::string& title) {
   o.height = op.height;
   o.at = {op.at[0], op.at[1]};
   o.depth = op.depth;
+  // The strokes laid out once here to be checked on the stock; the
+  // generator lays them out again as it cuts them.
+  std::vector<std::vector<cam::Vec2>> strokes;
+  if (!cam::layout_text(*font, o, strokes, at) ||
+      !check_engraving(cx.j.job.stock, op, strokes, cx.diags)) {
+    return false;
+  }
   // An engraver cuts its whole width: a slot.
   return prepare(cx, op, *tool, true, chosen, o.cut, title) &&
          cam::generate_engrave(*font, o, cx.sink, at);
