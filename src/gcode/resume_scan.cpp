@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <unordered_map>
 
 namespace usina::gcode {
 namespace {
@@ -151,14 +152,92 @@ bool ends_program(const ScanLine& l) {
   return false;
 }
 
+// The sequence number a line starts with ("N10 #1=#1+1" too, which the
+// word scan leaves alone as a macro line).
+std::optional<long> leading_n(std::string_view raw) {
+  std::size_t i = 0;
+  while (i < raw.size() && (raw[i] == ' ' || raw[i] == '\t' || raw[i] == '/'))
+    ++i;
+  if (i >= raw.size() || (raw[i] != 'N' && raw[i] != 'n')) return std::nullopt;
+  const std::string rest(raw.substr(i + 1, 12));
+  std::size_t j = 0;
+  const auto v = number_at(rest, j);
+  if (!v || j == 0) return std::nullopt;
+  return std::lround(*v);
+}
+
+// The jumps of a line: fanuc "GOTO 10", "IF [...] GOTO 10", "GOTO #1"
+// (outside comments; ';' ends a block, not the line); romi "(GOTO N10)",
+// "(IF P1 LT 3 GOTO N10)" (its statements are in parentheses; ';' starts a
+// comment). Each target, -1 for one computed as it runs.
+std::vector<long> goto_targets(std::string_view raw, bool romi) {
+  std::string up;
+  int paren = 0;
+  for (const char c : raw) {
+    if (romi && c == ';') break;
+    if (!romi && (c == '(' || paren > 0)) {
+      paren += c == '(' ? 1 : (c == ')' ? -1 : 0);
+      continue;
+    }
+    up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  std::vector<long> targets;
+  for (auto at = up.find("GOTO"); at != std::string::npos; at = up.find("GOTO", at + 4)) {
+    std::size_t i = at + 4;
+    while (i < up.size() && up[i] == ' ')
+      ++i;
+    if (i < up.size() && up[i] == 'N') ++i;
+    const bool literal = i < up.size() && std::isdigit(static_cast<unsigned char>(up[i]));
+    const auto v = literal ? number_at(up, i) : std::nullopt;
+    targets.push_back(v ? std::lround(*v) : -1L);
+  }
+  return targets;
+}
+
+// Marks runs of lines with the reason a start there is refused, each line
+// once (the first reason found stays): the next line not yet marked is
+// found by path-halving links, so any number of jumps over any span costs
+// little more than the lines (a hostile upload cannot make it quadratic).
+class Marker {
+ public:
+  explicit Marker(std::vector<ScanLine>& lines) : lines_(lines), next_(lines.size() + 1) {
+    for (std::size_t k = 0; k < next_.size(); ++k)
+      next_[k] = k < lines.size() && taken(lines[k]) ? k + 1 : k;
+  }
+
+  void mark(std::size_t from, std::size_t to, const std::string& why) {
+    for (std::size_t k = unmarked(from); k <= to && k < lines_.size(); k = unmarked(k + 1)) {
+      lines_[k].inside = why;
+      next_[k] = k + 1;
+    }
+  }
+
+ private:
+  static bool taken(const ScanLine& l) { return !l.inside.empty() || l.in_sub || l.past_end; }
+
+  std::size_t unmarked(std::size_t k) {
+    while (next_[k] != k) {
+      next_[k] = next_[next_[k]];
+      k = next_[k];
+    }
+    return k;
+  }
+
+  std::vector<ScanLine>& lines_;
+  std::vector<std::size_t> next_;  // k itself when line k is unmarked
+};
+
+// Where each block number stands: its first and last line.
+struct NumberedLines {
+  std::size_t first = 0;
+  std::size_t last = 0;
+};
+
+using LinesByNumber = std::unordered_map<long, NumberedLines>;
+
 // romi: "(RPT N10,N50,2)" runs N10 to N50 again; a start inside that
 // section would leave the repeat count behind.
-void mark_repeated_sections(std::vector<ScanLine>& lines) {
-  auto line_of = [&](long n) -> std::optional<std::size_t> {
-    for (std::size_t i = 0; i < lines.size(); ++i)
-      if (lines[i].n == n) return i;
-    return std::nullopt;
-  };
+void mark_repeats(const std::vector<ScanLine>& lines, const LinesByNumber& where, Marker& marker) {
   for (std::size_t i = 0; i < lines.size(); ++i) {
     std::string up;
     for (const char c : lines[i].raw)
@@ -172,13 +251,52 @@ void mark_repeated_sections(std::vector<ScanLine>& lines) {
       if (auto v = number_at(up, j)) ns.push_back(std::lround(*v));
     }
     if (ns.size() < 2) continue;
-    const auto a = line_of(ns[0]), b = line_of(ns[1]);
-    if (!a || !b) continue;
-    for (std::size_t k = *a; k <= *b && k < lines.size(); ++k) {
-      if (lines[k].inside.empty())
-        lines[k].inside = "the section repeated by the RPT at line " + std::to_string(i + 1);
+    const auto a = where.find(ns[0]), b = where.find(ns[1]);
+    if (a == where.end() || b == where.end()) continue;
+    marker.mark(a->second.first, b->second.first,
+                "the section repeated by the RPT at line " + std::to_string(i + 1));
+  }
+}
+
+// fanuc and romi GOTO: the blocks between a jump back and its target run
+// again (a loop whose count lives in a variable), the blocks a jump forward
+// passes over may not run at all; a jump to a computed block number may go
+// anywhere. A start there cannot be restored from the text.
+void mark_jumps(const std::vector<ScanLine>& lines, const LinesByNumber& where, bool romi,
+                Marker& marker) {
+  for (std::size_t j = 0; j < lines.size(); ++j) {
+    if (lines[j].in_sub || lines[j].past_end) continue;
+    const std::string at = std::to_string(j + 1);
+    for (const long target : goto_targets(lines[j].raw, romi)) {
+      if (target < 0) {
+        marker.mark(
+            0, lines.size() - 1,
+            "the reach of the GOTO at line " + at + ", to a block number computed as it runs");
+        continue;
+      }
+      const auto found = where.find(target);
+      if (found == where.end()) continue;  // the run stops there with an error
+      const NumberedLines& t = found->second;
+      if (t.first <= j) marker.mark(t.first, j, "the loop the GOTO at line " + at + " closes");
+      if (t.last > j + 1) {
+        marker.mark(j + 1, t.last - 1, "the blocks the GOTO at line " + at + " jumps over");
+      }
     }
   }
+}
+
+// The loops and jumps of fanuc's and romi's statements, after the scan.
+void mark_flow(std::vector<ScanLine>& lines, bool romi) {
+  LinesByNumber where;
+  for (std::size_t t = 0; t < lines.size(); ++t) {
+    const auto n = lines[t].n ? lines[t].n : leading_n(lines[t].raw);
+    if (!n) continue;
+    const auto [it, added] = where.try_emplace(*n, NumberedLines{t, t});
+    it->second.last = t;
+  }
+  Marker marker(lines);
+  if (romi) mark_repeats(lines, where, marker);
+  mark_jumps(lines, where, romi, marker);
 }
 
 }  // namespace
@@ -222,7 +340,7 @@ std::vector<ScanLine> scan_program(std::string_view text, std::string_view diale
     if (fanuc && t == "%" && seen_block) ended = true;
     lines.push_back(std::move(l));
   }
-  if (romi) mark_repeated_sections(lines);
+  if (romi || fanuc) mark_flow(lines, romi);
   return lines;
 }
 

@@ -132,6 +132,66 @@ TEST(ResumeRefused, InsideARomiSubOrRepeatedSection) {
   EXPECT_NE(in.error().find("RPT"), std::string::npos) << in.error();
 }
 
+TEST(ResumeRefused, InsideALoopAFanucGotoCloses) {
+  const std::string text =
+      "%\nO1000\nG21 G90 G54\nT1 M6\nS1000 M3\nG0 X0 Y0 Z5\n#1=0\nN10 G1 X#1 F100\n"
+      "G1 Y10\n#1=#1+5\nIF [#1 LT 20] GOTO 10\nG0 Z5\nM30\n%\n";
+  for (const long line : {8L, 9L, 11L}) {
+    auto in = resume_program(text, "fanuc", {K::Line, line});
+    ASSERT_FALSE(in) << "line " << line;
+    EXPECT_NE(in.error().find("the loop the GOTO at line 11 closes"), std::string::npos)
+        << in.error();
+  }
+  auto after = resume_program(text, "fanuc", {K::Line, 12});
+  EXPECT_TRUE(after) << after.error();
+}
+
+TEST(ResumeRefused, WhereAFanucGotoJumpsOverOrIsComputed) {
+  const std::string text =
+      "%\nO1000\nG21 G90 G54\nT1 M6\nS1000 M3\nG0 X0 Y0 Z5\nIF [#500 EQ 1] GOTO 20\n"
+      "G1 X10 F100 (GOTO is only a word in this comment)\nN20 G1 Y10 F100\nG0 Z5\nM30\n%\n";
+  auto over = resume_program(text, "fanuc", {K::Line, 8});
+  ASSERT_FALSE(over);
+  EXPECT_NE(over.error().find("the blocks the GOTO at line 7 jumps over"), std::string::npos)
+      << over.error();
+  auto target = resume_program(text, "fanuc", {K::Line, 9});
+  EXPECT_TRUE(target) << target.error();
+  const std::string computed =
+      "%\nO1000\nG21 G90 G54\nT1 M6\nS1000 M3\nG0 X0 Y0 Z5\nG1 X10 F100\nGOTO #500\n"
+      "N20 G1 Y10\nM30\n%\n";
+  auto anywhere = resume_program(computed, "fanuc", {K::Line, 7});
+  ASSERT_FALSE(anywhere);
+  EXPECT_NE(anywhere.error().find("computed"), std::string::npos) << anywhere.error();
+}
+
+TEST(ResumeRefused, InsideALoopARomiGotoCloses) {
+  const std::string text =
+      "N0010 G71#\nN0020 G00 X0 Y0 Z5#\nN0025 (P1 = 0)#\nN0030 G01 X10 F100#\n"
+      "N0040 (P1 = P1 + 1)#\nN0050 (IF P1 LT 3 GOTO N0030)#\nN0060 G00 Z5#\nN0070 M02#\n";
+  auto in = resume_program(text, "romi", {K::NWord, 30});
+  ASSERT_FALSE(in);
+  EXPECT_NE(in.error().find("the loop the GOTO at line 6 closes"), std::string::npos) << in.error();
+  auto after = resume_program(text, "romi", {K::NWord, 60});
+  EXPECT_TRUE(after) << after.error();
+}
+
+TEST(ResumeRefused, ManyJumpsOverOneSpanMarkEachLineOnce) {
+  // 50,000 jumps back over the whole program: each line is marked once, not
+  // once a jump (the scan of an upload stays linear).
+  std::string text = "%\nO1000\nN1 G0 X0 Y0 Z5\n";
+  for (int i = 0; i < 50000; ++i)
+    text += "IF [#1 GT 1] GOTO 1\n";
+  text += "M30\n%\n";
+  auto first = resume_program(text, "fanuc", {K::Line, 3});
+  ASSERT_FALSE(first);
+  EXPECT_NE(first.error().find("the loop the GOTO at line 4 closes"), std::string::npos)
+      << first.error();
+  auto last = resume_program(text, "fanuc", {K::Line, 50003});
+  ASSERT_FALSE(last);
+  EXPECT_NE(last.error().find("the loop the GOTO at line 50003 closes"), std::string::npos)
+      << last.error();
+}
+
 TEST(ResumeRefused, AfterAFrameChange) {
   const std::string text = "G0 X0 Y0 Z5\nG92 X10\nG1 X20 F100\nM2\n";
   auto out = resume_program(text, "rs274ngc", {K::Line, 3});
