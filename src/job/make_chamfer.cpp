@@ -29,9 +29,10 @@ core::SourceLoc refusal_at(const LoadedJob& j, const Operation& op) {
 const Tool* chamfer_tool(Context& cx, const Operation& op, std::string& chosen) {
   if (!op.tool) {
     const ToolChoice c = chamfer_mill(cx.j.tools, op.width, op.tip_offset);
-    if (c.tool == nullptr)
+    if (c.tool == nullptr) {
       cx.diags.report(
           {core::Code::JobNoToolFits, core::Severity::Error, refusal_at(cx.j, op), c.why});
+    }
     chosen = c.why;
     return c.tool;
   }
