@@ -240,9 +240,10 @@ int lead_side(ProfileSide side) {
 }
 
 std::vector<Path> profile_paths(const Path& contour, const ProfileOptions& o) {
-  const double r = o.cut.tool_diameter / 2.0;
-  if (o.side == ProfileSide::On) return {contour};
-  if (o.side == ProfileSide::Left || o.side == ProfileSide::Right) {
+  const double r = o.offset.value_or(o.cut.tool_diameter / 2.0);
+  const bool sided = o.side == ProfileSide::Left || o.side == ProfileSide::Right;
+  if (o.side == ProfileSide::On || (r <= 0.0 && (sided || !contour.closed))) return {contour};
+  if (sided) {
     std::vector<Path> out;
     core::DiagnosticList ignored;  // an empty result says the tool does not fit
     tool_paths({contour}, o.side == ProfileSide::Left ? Side::Left : Side::Right, r, o.tolerance,
@@ -252,7 +253,8 @@ std::vector<Path> profile_paths(const Path& contour, const ProfileOptions& o) {
   const bool ccw = signed_area2(linearize(contour, o.tolerance)) > 0.0;
   const bool outside = o.side != ProfileSide::Inside;  // Auto: one contour is an outline
   // The outside of a counter-clockwise contour is on its right.
-  std::vector<Path> out = offset_closed(contour, r, outside != ccw, o.tolerance);
+  std::vector<Path> out =
+      r > 0.0 ? offset_closed(contour, r, outside != ccw, o.tolerance) : std::vector<Path>{contour};
   for (Path& p : out) {
     const bool p_ccw = signed_area2(linearize(p, o.tolerance)) > 0.0;
     if (p_ccw == outside) p = reversed(p);  // outside clockwise, inside counter-clockwise

@@ -37,6 +37,11 @@ struct ProfileOptions {
   double lead_radius = 0.0;  // mm; 0 for no lead arcs
   Tabs tabs;
   double tolerance = 0.001;
+  // The tool centre's distance from the contour; unset: the tool's radius
+  // (a cylinder's side on the line). A chamfer mill's cone meets the edge
+  // nearer its axis than its diameter: the job gives it (job/tools.hpp,
+  // chamfer_cut). 0 runs the centre on the contour, in the side's direction.
+  std::optional<double> offset;
 };
 
 // The tool-centre paths for `contour`: offset a tool radius to the side and,

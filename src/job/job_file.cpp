@@ -40,6 +40,9 @@ constexpr std::string_view kEllipseKeys[] = {USINA_JOB_COMMON, "center",  "rx", 
                                              "step_down",      "stepover"};
 constexpr std::string_view kFaceKeys[] = {USINA_JOB_COMMON, "step_down", "stepover"};
 constexpr std::string_view kEngraveKeys[] = {USINA_JOB_COMMON, "text", "font", "height", "at"};
+// `depth` is read to be refused with the reason (read_chamfer_keys).
+constexpr std::string_view kChamferKeys[] = {USINA_JOB_COMMON, "layer", "side", "width",
+                                             "tip_offset"};
 #undef USINA_JOB_COMMON
 
 struct TypeName {
@@ -57,6 +60,7 @@ constexpr TypeName kTypes[] = {
     {OpType::EllipsePocket, "ellipse_pocket", kEllipseKeys},
     {OpType::Face, "face", kFaceKeys},
     {OpType::Engrave, "engrave", kEngraveKeys},
+    {OpType::Chamfer, "chamfer", kChamferKeys},
 };
 
 std::string relative_to(const std::string& folder, const std::string& path) {
@@ -141,10 +145,30 @@ void read_engrave_keys(TomlReader& r, const toml::table& t, const std::string& w
   if (const toml::node* n = t.get("at")) op.place_loc = r.loc(n->source());
 }
 
+// A chamfer's depth is not the author's: the tip goes where the width, the
+// tool's angle and the tip offset put it (job/tools.hpp, chamfer_cut). The
+// side "on" would cut a V-groove along the line, not a chamfer.
+void read_chamfer_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
+  op.width = r.number(t, w, "width", kSmall, true).value_or(0);
+  if (const toml::node* n = t.get("width")) op.width_loc = r.loc(n->source());
+  op.tip_offset = r.number(t, w, "tip_offset", kZeroUp, false).value_or(0.5);
+  if (const toml::node* n = t.get("depth")) {
+    r.fail(n->source(), fmt::format("{} gives depth: a chamfer's depth follows from its width, "
+                                    "the tool's angle and tip_offset; give width",
+                                    w));
+  }
+  if (op.side == "on") {
+    r.fail(t.get("side")->source(),
+           fmt::format("{} side = \"on\" would cut a groove along the line, not a chamfer: give "
+                       "outside, inside, left, right or auto",
+                       w));
+  }
+}
+
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
   const bool layered = op.type == OpType::Drill || op.type == OpType::Spot ||
                        op.type == OpType::Tap || op.type == OpType::Pocket ||
-                       op.type == OpType::Profile;
+                       op.type == OpType::Profile || op.type == OpType::Chamfer;
   if (layered) {
     op.layer = r.text(t, w, "layer", true).value_or("");
     if (const toml::node* l = t.get("layer")) op.layer_loc = r.loc(l->source());
@@ -167,6 +191,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
     op.ry = r.number(t, w, "ry", kSize, true).value_or(0);
   }
   if (op.type == OpType::Engrave) read_engrave_keys(r, t, w, op);
+  if (op.type == OpType::Chamfer) read_chamfer_keys(r, t, w, op);
   if (!cam::profile_side(op.side)) {
     r.fail(
         t.get("side")->source(),
@@ -187,7 +212,7 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   if (found == nullptr) {
     r.fail(core::Code::JobUnknownOperation, t.get("type")->source(),
            fmt::format("{}: type \"{}\" is not an operation usina makes: give drill, spot, "
-                       "tap, pocket, profile, ellipse_pocket, face or engrave",
+                       "tap, pocket, profile, ellipse_pocket, face, engrave or chamfer",
                        what, *type));
     return;
   }
@@ -195,7 +220,7 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   what = fmt::format("operation {} ({})", index + 1, found->name);
   r.known_keys(t, what, found->keys);
   read_tool(r, t, what, op);
-  op.depth = r.number(t, what, "depth", kDepth, true).value_or(0);
+  if (op.type != OpType::Chamfer) op.depth = r.number(t, what, "depth", kDepth, true).value_or(0);
   if (const toml::node* n = t.get("depth")) op.depth_loc = r.loc(n->source());
   op.rpm = r.number(t, what, "rpm", kRpm, false);
   op.feed = r.number(t, what, "feed", kFeed, false);

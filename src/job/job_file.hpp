@@ -15,7 +15,7 @@
 
 namespace usina::job {
 
-enum class OpType { Drill, Spot, Tap, Pocket, Profile, EllipsePocket, Face, Engrave };
+enum class OpType { Drill, Spot, Tap, Pocket, Profile, EllipsePocket, Face, Engrave, Chamfer };
 
 std::string_view op_type_name(OpType t);
 
@@ -26,16 +26,19 @@ struct Operation {
   core::SourceLoc layer_loc;
   std::optional<int> tool;  // nullopt: "auto", the job chooses
   core::SourceLoc tool_loc;
-  double depth = 0;  // mm below the stock's top (Z0)
+  double depth = 0;  // mm below the stock's top (Z0); a chamfer's follows from its width
   core::SourceLoc depth_loc;
   std::optional<double> step_down;  // default: half the tool's diameter
   std::optional<double> stepover;   // pocket, ellipse: default half the tool's diameter; face: 70 %
   std::optional<double> diameter;   // drill: only the holes of this diameter
   double peck = 0;                  // drill: G83 pecks, 0 for G81
   double retract = 1.0;             // drill: the R plane above Z0
-  std::string side = "outside";     // profile
-  double lead_radius = 0;           // profile
-  int tabs = 0;                     // profile
+  std::string side = "outside";     // profile, chamfer
+  double width = 0;                 // chamfer: its leg on the top face, mm
+  core::SourceLoc width_loc;
+  double tip_offset = 0.5;  // chamfer: how far the tip goes below the chamfer's foot
+  double lead_radius = 0;   // profile
+  int tabs = 0;             // profile
   double tab_width = 3.0;
   double tab_height = 1.0;
   std::array<double, 2> center{0, 0};  // ellipse

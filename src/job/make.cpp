@@ -198,6 +198,7 @@ bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags
     case OpType::EllipsePocket: ok = run_ellipse(cx, op, title); break;
     case OpType::Face: ok = run_face(cx, op, title); break;
     case OpType::Engrave: ok = run_engrave(cx, op, title); break;
+    case OpType::Chamfer: ok = run_chamfer(cx, op, title); break;
     }
     if (!ok) return false;
   }

@@ -71,6 +71,7 @@ bool takes_tool(OpType op, ToolType t) {
   case OpType::Face: return t == ToolType::Face || t == ToolType::Flat || t == ToolType::Bull;
   case OpType::Engrave:
     return t == ToolType::Engraver || t == ToolType::Flat || t == ToolType::Ball;
+  case OpType::Chamfer: return t == ToolType::Chamfer;
   default: return is_end_mill(t);
   }
 }
@@ -82,6 +83,7 @@ std::string_view tools_taken(OpType op) {
   case OpType::Tap: return "a tap";
   case OpType::Face: return "a face mill, or a flat or bull end mill";
   case OpType::Engrave: return "an engraver, or a flat or ball end mill";
+  case OpType::Chamfer: return "a chamfer mill";
   default: return "a flat, ball or bull end mill";
   }
 }
@@ -128,8 +130,23 @@ MachineLimits limits_of(const LoadedJob& j) {
   return m;
 }
 
+// The milling rows are end mills' charts, read at the cutter's diameter; a
+// chamfer mill cuts at every diameter from its tip to the chamfer's top at
+// once, and no cited table gives its speeds.
+bool no_chamfer_data(const LoadedJob& j, const Operation& op, const Tool& tool,
+                     core::DiagnosticSink& diags) {
+  diags.report({core::Code::JobNoCuttingData, core::Severity::Error, op.loc,
+                fmt::format("the cutting data have no rows for a chamfer mill (T{}; the end mill "
+                            "charts are read at a cutter's full diameter, and a chamfer mill "
+                            "cuts at every diameter of its cone): give rpm and feed in the "
+                            "operation, or add the row to {}",
+                            tool.number, j.job.materials)});
+  return false;
+}
+
 bool from_cutting_data(const LoadedJob& j, const Operation& op, const Tool& tool, bool slotting,
                        CuttingConditions& c, core::DiagnosticSink& diags) {
+  if (tool.type == ToolType::Chamfer) return no_chamfer_data(j, op, tool, diags);
   const Material& m = j.materials[j.material];
   // A spot drill drills: the tables' drilling rows (none for carbide).
   const bool drills = tool.type == ToolType::Drill || tool.type == ToolType::Spot;

@@ -86,4 +86,7 @@ bool run_ellipse(Context& cx, const Operation& op, const std::string& title);
 bool run_face(Context& cx, const Operation& op, const std::string& title);
 bool run_engrave(Context& cx, const Operation& op, const std::string& title);
 
+// A chamfer along the layer's contours (make_chamfer.cpp).
+bool run_chamfer(Context& cx, const Operation& op, const std::string& title);
+
 }  // namespace usina::job

@@ -150,11 +150,10 @@ bool check_contour(const StockTop& top, const Operation& op, const cam::Path& co
   }
   const bool around = contour.closed && encloses(line, top.centre);
   report(diags, core::Code::JobOutsideStock, core::Severity::Error, at_key(op.layer_loc, op),
-         fmt::format("{} lies wholly {} the stock's top ({}): {}", which,
+         fmt::format("{} lies wholly {} the stock's top ({}): {}the {} would cut air{}", which,
                      around ? "around" : "outside", describe(top),
-                     around ? "the part is larger than the blank, the profile would cut air"
-                            : "the profile would cut air; check the stock's size and origin, "
-                              "or the layer"));
+                     around ? "the part is larger than the blank, " : "", op_type_name(op.type),
+                     around ? "" : "; check the stock's size and origin, or the layer"));
   return false;
 }
 
@@ -346,10 +345,11 @@ bool check_profile(const Stock& s, const Operation& op, const std::vector<cam::P
   const double below = op.depth - top.height;
   if (below > kBreakthrough + kOnEdge) {
     report(diags, core::Code::JobCutsBelowStock, core::Severity::Warning, at_key(op.depth_loc, op),
-           fmt::format("depth {} mm in a stock {} mm high: the profile goes {} mm below its "
+           fmt::format("depth {} mm in a stock {} mm high: the {} goes {} mm below its "
                        "bottom, more than the {} mm a cut-out needs, into what the stock "
                        "stands on",
-                       mm(op.depth), mm(top.height), mm(below), mm(kBreakthrough)));
+                       mm(op.depth), mm(top.height), op_type_name(op.type), mm(below),
+                       mm(kBreakthrough)));
   }
   return true;
 }

@@ -1,7 +1,9 @@
 #include "job/tools.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <utility>
 
@@ -27,13 +29,17 @@ constexpr std::array kMaterials = {
 constexpr std::string_view kToolKeys[] = {
     "number",        "type",           "name",           "diameter",
     "flutes",        "cutting_length", "overall_length", "holder_diameter",
-    "holder_length", "material",       "pitch"};
+    "holder_length", "material",       "pitch",          "angle",
+    "tip_diameter"};
 
 constexpr Range kNumber{1, 9999, ""};
 constexpr Range kDiameter{0.01, 500, "mm"};
 constexpr Range kFlutes{1, 50, "flutes"};
 constexpr Range kLength{0.01, 1000, "mm"};
 constexpr Range kPitch{0.05, 10, "mm"};
+// 0 and 180 themselves are no cone: a needle and a flat end.
+constexpr Range kAngle{0.001, 179.999, "degrees"};
+constexpr Range kTip{0, 500, "mm"};
 
 template <typename E, std::size_t N>
 std::optional<E> by_name(const std::array<std::pair<E, const char*>, N>& names,
@@ -52,6 +58,38 @@ std::string list(const std::array<std::pair<E, const char*>, N>& names) {
   return out;
 }
 
+// A chamfer mill's or an engraver's cone: only they have an angle and a
+// tip flat, and a chamfer mill needs its angle. Chamfer mills are made at
+// 60, 82, 90, 100 and 120 degrees; an angle taken for granted would
+// silently put the tip at another depth and the path at another offset, a
+// chamfer of the wrong width and angle (the reason an unknown key is an
+// error too). An engraver's angle is only recorded: it cuts with its tip.
+bool check_cone(TomlReader& r, const toml::table& t, const std::string& what, const Tool& tool) {
+  const bool cone = tool.type == ToolType::Chamfer || tool.type == ToolType::Engraver;
+  for (const char* key : {"angle", "tip_diameter"}) {
+    if (!cone && t.get(key) != nullptr) {
+      r.fail(t.get(key)->source(),
+             fmt::format("{}: only a chamfer mill or an engraver has {}", what, key));
+      return false;
+    }
+  }
+  if (tool.type == ToolType::Chamfer && t.get("angle") == nullptr) {
+    r.fail(t.source(), fmt::format("{}: a chamfer mill needs its included angle (angle = 90 for "
+                                   "a 45-degree chamfer): the chamfer's depth and path follow "
+                                   "from it",
+                                   what));
+    return false;
+  }
+  if (tool.tip_diameter >= tool.diameter && t.get("tip_diameter") != nullptr) {
+    r.fail(t.get("tip_diameter")->source(),
+           fmt::format("{}: tip_diameter {:g} is not below the diameter {:g}: the tip's flat is "
+                       "the narrow end of the cone",
+                       what, tool.tip_diameter, tool.diameter));
+    return false;
+  }
+  return true;
+}
+
 // One [[tool]] entry; nullopt after an error.
 std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
   r.known_keys(t, "[[tool]]", kToolKeys);
@@ -68,6 +106,8 @@ std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
   tool.holder_length = r.number(t, what, "holder_length", kLength, false).value_or(0.0);
   tool.name = r.text(t, what, "name", false).value_or("");
   tool.pitch = r.number(t, what, "pitch", kPitch, false).value_or(0.0);
+  tool.angle = r.number(t, what, "angle", kAngle, false).value_or(0.0);
+  tool.tip_diameter = r.number(t, what, "tip_diameter", kTip, false).value_or(0.0);
   if (number && *number != std::floor(*number)) {
     r.fail(t.get("number")->source(), fmt::format("{}: the number must be whole", what));
     return std::nullopt;
@@ -94,6 +134,7 @@ std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
     r.fail(t.get("pitch")->source(), fmt::format("{}: only a tap has a pitch", what));
     return std::nullopt;
   }
+  if (!check_cone(r, t, what, tool)) return std::nullopt;
   return tool;
 }
 
@@ -248,6 +289,44 @@ ToolChoice tap_for(const std::vector<Tool>& tools, double diameter, double depth
         "no tap with its pitch in the library has D{:g} as its tap drill (nominal "
         "diameter less pitch, within 0.1 mm)",
         diameter);
+  return c;
+}
+
+ChamferCut chamfer_cut(const Tool& tool, double width, double tip_offset) {
+  const double tan_a = std::tan(tool.angle / 2 * std::numbers::pi / 180);
+  ChamferCut c;
+  c.depth = width / tan_a + tip_offset;
+  c.offset = tool.tip_diameter / 2 + tip_offset * tan_a;
+  return c;
+}
+
+double chamfer_reach(const Tool& tool, double tip_offset) {
+  const double tan_a = std::tan(tool.angle / 2 * std::numbers::pi / 180);
+  const double rt = tool.tip_diameter / 2;
+  const double top = std::min(tool.diameter / 2, rt + tool.cutting_length * tan_a);
+  return top - rt - tip_offset * tan_a;
+}
+
+ToolChoice chamfer_mill(const std::vector<Tool>& tools, double width, double tip_offset) {
+  ToolChoice c;
+  const Tool* widest = nullptr;  // the one that comes nearest, to say why none fits
+  for (const Tool& t : tools) {
+    if (t.type != ToolType::Chamfer) continue;
+    const double reach = chamfer_reach(t, tip_offset);
+    if (widest == nullptr || reach > chamfer_reach(*widest, tip_offset)) widest = &t;
+    if (reach >= width - 1e-9 && (c.tool == nullptr || t.diameter < c.tool->diameter)) c.tool = &t;
+  }
+  if (c.tool != nullptr) {
+    c.why = fmt::format("T{}: the smallest chamfer mill whose edge reaches a {:g} mm chamfer",
+                        c.tool->number, width);
+  } else if (widest == nullptr) {
+    c.why = "the library has no chamfer mill";
+  } else {
+    c.why = fmt::format(
+        "no chamfer mill's edge reaches a {:g} mm chamfer with a tip offset of {:g} mm: the "
+        "widest, T{}, makes {:.3g} mm",
+        width, tip_offset, widest->number, chamfer_reach(*widest, tip_offset));
+  }
   return c;
 }
 

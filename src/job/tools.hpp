@@ -29,6 +29,8 @@ struct Tool {
   double holder_diameter = 0;  // mm, 0: not given
   double holder_length = 0;    // mm, 0: not given
   double pitch = 0;            // a tap's thread pitch, mm; 0: not given
+  double angle = 0;            // a chamfer mill's or engraver's included angle, deg; 0: not given
+  double tip_diameter = 0;     // the flat at a chamfer mill's or engraver's tip, mm
   ToolMaterial material = ToolMaterial::Hss;
 };
 
@@ -65,6 +67,29 @@ ToolChoice spot_drill(const std::vector<Tool>& tools, double diameter, double de
 // diameter less its pitch is within 0.1 mm of it (ISO 2306's tap drills
 // for coarse metric threads: M8 x 1.25 in 6.8), reaching `depth`.
 ToolChoice tap_for(const std::vector<Tool>& tools, double diameter, double depth);
+
+// Where a chamfer mill of half-angle a = angle/2 and tip radius rt cuts a
+// chamfer `width` wide on the top edge (docs/job.md, "Chamfering"): its tip
+// goes to depth z = width/tan(a) + tip_offset, below the chamfer's foot on
+// the wall, so the tip's corner does not run on the edge; its radius at the
+// top face is then r(z) = rt + z tan(a), and its centre runs r(z) - width =
+// rt + tip_offset tan(a) off the edge (Autodesk Fusion's 2D chamfer: "chamfer
+// width" and "chamfer tip offset").
+struct ChamferCut {
+  double depth = 0;   // the tip's depth below Z0
+  double offset = 0;  // the tool centre's distance from the edge, to the waste side
+};
+
+ChamferCut chamfer_cut(const Tool& tool, double width, double tip_offset);
+
+// The widest chamfer the tool's cutting edge makes with that tip offset: the
+// edge runs from the tip out to the diameter, or to the cutting length up the
+// cone when that ends first; 0 or less when none.
+double chamfer_reach(const Tool& tool, double tip_offset);
+
+// The smallest chamfer mill whose cutting edge reaches `width` (the one
+// that reaches into the tightest places).
+ToolChoice chamfer_mill(const std::vector<Tool>& tools, double width, double tip_offset);
 
 // A drill of `diameter` (within 0.005 mm) whose cutting length reaches `depth`.
 ToolChoice drill_of(const std::vector<Tool>& tools, double diameter, double depth);

@@ -46,6 +46,38 @@ TEST(ProfilePaths, InsideIsCounterClockwiseAToolRadiusIn) {
     EXPECT_NEAR(core::norm(p), 7.0, 2e-3);
 }
 
+TEST(ProfilePaths, AGivenOffsetReplacesTheToolRadius) {
+  // A chamfer mill's cone meets the edge nearer its axis than its diameter.
+  ProfileOptions o = options();
+  o.offset = 0.5;
+  const auto outside = profile_paths(circle({0, 0}, 10), o);
+  ASSERT_EQ(outside.size(), 1u);
+  for (const Vec2& p : linearize(outside[0], 0.001))
+    EXPECT_NEAR(core::norm(p), 10.5, 2e-3);
+  o.side = ProfileSide::Inside;
+  const auto inside = profile_paths(circle({0, 0}, 10), o);
+  ASSERT_EQ(inside.size(), 1u);
+  for (const Vec2& p : linearize(inside[0], 0.001))
+    EXPECT_NEAR(core::norm(p), 9.5, 2e-3);
+}
+
+TEST(ProfilePaths, AZeroOffsetRunsOnTheContourInTheSidesDirection) {
+  ProfileOptions o = options();
+  o.offset = 0.0;
+  o.side = ProfileSide::Outside;
+  const auto paths = profile_paths(circle({0, 0}, 10), o);  // drawn counter-clockwise
+  ASSERT_EQ(paths.size(), 1u);
+  const auto pts = linearize(paths[0], 0.001);
+  EXPECT_LT(signed_area2(pts), 0.0);  // climb milling outside: clockwise still
+  for (const Vec2& p : pts)
+    EXPECT_NEAR(core::norm(p), 10.0, 2e-3);
+  o.side = ProfileSide::Left;
+  const Path open{{0, 0}, {{{10, 0}, std::nullopt, 1}}, false};
+  const auto left = profile_paths(open, o);
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(end_point(left[0]), (Vec2{10, 0}));
+}
+
 TEST(Profile, DepthPassesEqualAndEndingAtTheDepth) {
   canon::Toolpath tp;
   core::DiagnosticList d;
