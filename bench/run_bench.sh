@@ -2,7 +2,7 @@
 # Whole-command timing of the issue's speed and memory targets (a benchmark,
 # not a test: it reports, it never fails on a time).
 #
-#   bench/run_bench.sh [--blocks N] [--runs R] [--no-micro] [--no-draw]
+#   bench/run_bench.sh [--blocks N] [--runs R] [--no-micro] [--no-draw] [--no-dialects]
 #   BUILD_DIR=/tmp/build-bench bench/run_bench.sh
 #
 # 1. builds usina Release in $BUILD_DIR (default build-release/, not build/);
@@ -21,7 +21,13 @@
 #    on the surfacing program and on a spiral of as many blocks made by
 #    bench/gen_spiral.py, in which no two moves merge (the worst case: one
 #    drawing entity a block); --no-draw leaves this out;
-# 6. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
+# 6. times check, trace and stats in every dialect (rs274ngc, fanuc, grbl,
+#    romi) on the same raster written for each (bench/gen_surfacing*.py):
+#    CPU MB/s, peak MiB and the ratio to rs274ngc (issue 19: each within
+#    1.5x), and Debian's LinuxCNC interpreter `rs274` on the rs274ngc
+#    program when it is installed (its ratio to usina check); --no-dialects
+#    leaves this out;
+# 7. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -30,13 +36,15 @@ blocks=1000000
 runs=5
 micro=1
 draw=1
+dialects=1
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --blocks) blocks="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
     --no-micro) micro=0; shift ;;
     --no-draw) draw=0; shift ;;
-    -h | --help) sed -n "2,23p" "$0"; exit 0 ;;
+    --no-dialects) dialects=0; shift ;;
+    -h | --help) sed -n "2,29p" "$0"; exit 0 ;;
     *) echo "run_bench.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -153,6 +161,58 @@ if [[ "$draw" -eq 1 ]]; then
       report_draw "${input%%:*} -> $format" "'$usina' draw '${input#*:}' -o '$tmp/drawing.$format'"
     done
   done
+fi
+
+# The command line of a verb in a dialect (output and warnings discarded).
+dialect_line() {  # dialect, program, verb (check|trace|stats)
+  case "$3" in
+    check) echo "'$usina' check --dialect $1 '$2' > /dev/null 2>&1" ;;
+    trace) echo "'$usina' trace --dialect $1 --format jsonl '$2' > /dev/null 2>&1" ;;
+    stats) echo "'$usina' stats --dialect $1 '$2' > /dev/null 2>&1" ;;
+  esac
+}
+
+# One row of the dialects' table: CPU MB/s, the ratio to rs274ngc, peak MiB.
+dialect_row() {  # dialect, program, verb, rs274ngc's cpu seconds
+  local line cpu mib size
+  line="$(dialect_line "$1" "$2" "$3")"
+  read -r cpu mib < <(cpu_and_peak "$line")
+  size="$(stat -c %s "$2")"
+  python3 - "$1" "$3" "$size" "$cpu" "$mib" "$4" << 'PY'
+import sys
+dialect, verb, size, cpu, mib, base = sys.argv[1], sys.argv[2], int(sys.argv[3]), *map(float, sys.argv[4:])
+target = {"check": 250, "trace": 120, "stats": 100}[verb]
+ok = lambda good: "ok" if good else "MISSED"
+print(f"{dialect:9} {verb:6} cpu {cpu:6.3f} s = {size / 1e6 / cpu:6.1f} MB/s (>= {target}: {ok(size / 1e6 / cpu >= target)})"
+      f"   x{cpu / base:4.2f} of rs274ngc (<= 1.5: {ok(cpu / base <= 1.5)})   peak {mib:5.1f} MiB (< 32: {ok(mib < 32)})")
+PY
+}
+
+if [[ "$dialects" -eq 1 ]]; then
+  echo
+  echo "every dialect, $blocks blocks of the same raster (cpu = least user+sys of $runs runs)"
+  declare -A programs=([rs274ngc]="$program" [fanuc]="$program")
+  for d in grbl romi; do
+    programs[$d]="/tmp/usina-bench-surfacing-$blocks.$d"
+    if [[ ! -s "${programs[$d]}" || "$root/bench/gen_surfacing_$d.py" -nt "${programs[$d]}" ]]; then
+      python3 "$root/bench/gen_surfacing_$d.py" "$blocks" "${programs[$d]}"
+    fi
+  done
+  for verb in check trace stats; do
+    read -r base _ < <(cpu_and_peak "$(dialect_line rs274ngc "$program" "$verb")")
+    for d in rs274ngc fanuc grbl romi; do
+      dialect_row "$d" "${programs[$d]}" "$verb" "$base"
+    done
+  done
+  table="$root/../shared/conformance/rs274ngc/tools/generic.tbl"
+  if command -v rs274 > /dev/null && [[ -f "$table" ]]; then
+    # rs274 as lcnc-trace.sh runs it: canon calls printed, to /dev/null.
+    read -r lcnc _ < <(cpu_and_peak "rs274 -g -t '$table' '$program' < /dev/null > /dev/null 2>&1")
+    read -r mine _ < <(cpu_and_peak "$(dialect_line rs274ngc "$program" check)")
+    python3 -c 'import sys; l, u = map(float, sys.argv[1:]); print(f"rs274 (LinuxCNC) cpu {l:.3f} s; usina check {u:.3f} s: usina takes 1/{l / u:.0f} of its time")' "$lcnc" "$mine"
+  else
+    echo "rs274 or ../shared's tool table missing (apt-get install linuxcnc-uspace): no LinuxCNC ratio"
+  fi
 fi
 
 if [[ "$micro" -eq 1 ]]; then
