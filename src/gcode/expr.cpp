@@ -155,7 +155,12 @@ std::optional<double> Evaluator::function(const ExprNode& n, double a) {
                   fmt::format("LN[{}]: the argument must be positive", a));
     }
     return std::log(a);
-  case Func::Round: return std::round(a);  // halves away from zero, as LinuxCNC
+  case Func::Round: {
+    // Halves away from zero, as LinuxCNC, whose ROUND goes through an int:
+    // what rounds to zero is +0, never -0 (ATAN[ROUND[-0.3]]/[-1] is 180).
+    const double r = std::round(a);
+    return r == 0.0 ? 0.0 : r;
+  }
   case Func::Sin: return static_cast<double>(std::sin(radians(a)));
   case Func::Sqrt:
     if (a < 0.0) {

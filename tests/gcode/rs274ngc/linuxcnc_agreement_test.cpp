@@ -276,5 +276,16 @@ TEST(LinuxcncAgreement, ToolChangeAfterAProbeStartsFromTheProbesStop) {
   EXPECT_NEAR(r->ends().back().z, -10.0 + 0.254, kTol);
 }
 
+// interp_execute.cc: ROUND is (int)(x +- 0.5), so what rounds to zero is
+// +0; the two-argument ATAN tells the sign of a zero apart (atan2). MOD
+// keeps fmod's -0 (found by the differential fuzzer, seed 900576).
+TEST(LinuxcncAgreement, RoundToZeroIsPositiveZero) {
+  auto r = run("G21\nG0 X[ATAN[ROUND[-0.3]]/[-1]] Y0\nG0 X[ATAN[-1 MOD -1]/[-1]] Y1\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  ASSERT_EQ(r->ends().size(), 2u);
+  EXPECT_EQ(r->ends()[0].x, 180.0);
+  EXPECT_EQ(r->ends()[1].x, -180.0);
+}
+
 }  // namespace
 }  // namespace usina::gcode
