@@ -21,8 +21,7 @@ using testing::find;
 using testing::job_text;
 using testing::load_text;
 
-// job_text's own lines come first: the operations start on line 10.
-constexpr std::uint32_t kFirstOpLine = 10;
+using testing::kFirstOpLine;
 
 double tan_deg(double deg) {
   return std::tan(deg * std::numbers::pi / 180);

@@ -2,6 +2,7 @@
 // the repository's example tool library, materials and drawing, and loaded.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,9 @@ namespace usina::job::testing {
 inline std::string repo(const std::string& rel) {
   return std::string(USINA_TEST_DIR) + "/../" + rel;
 }
+
+// job_text's own lines come first: the operations start on line 10.
+constexpr std::uint32_t kFirstOpLine = 10;
 
 // A [job] and [stock] of the plate example, absolute paths, then `ops`
 // (the [[operation]] entries) and `extra_stock` lines in [stock].

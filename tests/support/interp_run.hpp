@@ -35,6 +35,19 @@ using core::Vec3;
 constexpr double kTol = 1e-9;
 constexpr double kInch = core::kMmPerInch;
 
+// End points of every motion op of `path`, in order.
+inline std::vector<Vec3> motion_ends(const canon::Toolpath& path) {
+  std::vector<Vec3> out;
+  for (const canon::Op& op : path.ops()) {
+    if (const auto* t = std::get_if<Traverse>(&op.kind)) out.push_back(t->to);
+    if (const auto* f = std::get_if<Feed>(&op.kind)) out.push_back(f->to);
+    if (const auto* a = std::get_if<Arc>(&op.kind)) out.push_back(a->to);
+    if (const auto* p = std::get_if<canon::Probe>(&op.kind)) out.push_back(p->to);
+    if (const auto* s = std::get_if<canon::Spline>(&op.kind)) out.push_back(s->to);
+  }
+  return out;
+}
+
 // One run of the interpreter over a program, with everything it wrote.
 struct Run {
   core::SourceManager sources;
@@ -65,17 +78,7 @@ struct Run {
   }
 
   // End points of every motion op, in order.
-  std::vector<Vec3> ends() const {
-    std::vector<Vec3> out;
-    for (const canon::Op& op : path.ops()) {
-      if (const auto* t = std::get_if<Traverse>(&op.kind)) out.push_back(t->to);
-      if (const auto* f = std::get_if<Feed>(&op.kind)) out.push_back(f->to);
-      if (const auto* a = std::get_if<Arc>(&op.kind)) out.push_back(a->to);
-      if (const auto* p = std::get_if<canon::Probe>(&op.kind)) out.push_back(p->to);
-      if (const auto* s = std::get_if<canon::Spline>(&op.kind)) out.push_back(s->to);
-    }
-    return out;
-  }
+  std::vector<Vec3> ends() const { return motion_ends(path); }
 
   // The names of the ops, in order ("traverse feed end").
   std::string kinds() const {

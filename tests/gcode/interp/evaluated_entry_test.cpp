@@ -26,15 +26,7 @@ struct Fed {
     return interp.run_evaluated({{0, line, 1, 0, 0}, words, {}, {}});
   }
 
-  std::vector<Vec3> ends() const {
-    std::vector<Vec3> out;
-    for (const canon::Op& op : path.ops()) {
-      if (const auto* t = std::get_if<Traverse>(&op.kind)) out.push_back(t->to);
-      if (const auto* f = std::get_if<Feed>(&op.kind)) out.push_back(f->to);
-      if (const auto* a = std::get_if<Arc>(&op.kind)) out.push_back(a->to);
-    }
-    return out;
-  }
+  std::vector<Vec3> ends() const { return motion_ends(path); }
 
   const core::Diagnostic* first() const {
     return diags.all().empty() ? nullptr : &diags.all().front();
