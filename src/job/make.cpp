@@ -94,12 +94,12 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
                  fmt::format("{}: {} holes D{:g}", title, g.centers.size(), g.diameter))) {
       return false;
     }
-    // Each hole's moves, as G81/G83 make them: the generator's canned-cycle
-    // form first feeds down to the R plane where its writer thinks the tool
-    // is (X0 Y0), and after another operation the tool is elsewhere.
-    // Seen from above a hole's moves are a point: the sheet draws its circle.
+    // Drilled holes as canned cycles where the control has them (G81/G83:
+    // shorter, editable at the machine, drawn as circles), as their moves
+    // where it has not (the post's choice, docs/post.md "Holes"); tapping
+    // is written as moves (no rigid tapping cycle is assumed).
     if (cx.sheet != nullptr) cx.sheet->steps.back().holes = g.centers;
-    o.form = cam::HoleForm::Moves;
+    o.form = op.type == OpType::Tap ? cam::HoleForm::Moves : cam::HoleForm::Features;
     o.depth = op.depth;
     o.retract = op.retract;
     o.peck = op.peck;

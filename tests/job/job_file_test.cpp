@@ -289,7 +289,9 @@ TEST(JobFile, SpotDrillingCentresEveryHoleWithOneSpotDrill) {
       EXPECT_EQ(t->tool, 8);  // the D10 spot drill, for the D5 and the D6.8 holes
       ++changes;
     }
-    if (const auto* f = std::get_if<canon::Feed>(&op.kind); f && std::abs(f->to.z + 2) < 1e-9)
+    // Each spot a drilling cycle's hole whose bottom is 2 mm down.
+    if (const auto* h = std::get_if<canon::Hole>(&op.kind);
+        h && std::abs(h->at.z - h->depth + 2) < 1e-9)
       ++spot_depths;
   }
   EXPECT_EQ(changes, 1);

@@ -387,6 +387,23 @@ bool Engine::fanuc_codes(const TapeBlock& b, Words& w) {
   return true;
 }
 
+namespace {
+
+// The block gives an axis word that is not another code's (G04, G10,
+// G28, G30, G52, G92 read theirs): in a canned cycle's mode, a hole there.
+bool positions_a_hole(const Words& w) {
+  for (const int g : {40, 100, 280, 300, 520, 920}) {
+    if (w.has_g(g)) return false;
+  }
+  for (const NcWord& word : w.list) {
+    if (!word.taken && !word.vacant && (Words::letter_bit(word.letter) & kAxisLetters) != 0)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 // Fanuc's meanings of words the interpreter reads otherwise.
 bool Engine::convert_codes(const TapeBlock&, Words& w) {
   if (w.has_g(40)) {
@@ -412,7 +429,10 @@ bool Engine::convert_codes(const TapeBlock&, Words& w) {
     cycle_r_ = cycle_z_ = cycle_p_ = std::nullopt;
     g76_.initial.reset();
   }
-  if (is_cycle(motion)) {
+  // A block of the cycle's mode drills only with positioning data of its
+  // own (an M05 or G04 block between holes does not): only then are its
+  // levels and dwell the cycle's.
+  if (is_cycle(motion) && (starts || positions_a_hole(w))) {
     if (motion != 760 && motion != 870)  // fine_boring keeps its levels itself
       cycle_levels(w, w.has_g(910) || (interp_.state().incremental && !w.has_g(900)));
     if (NcWord* p = w.find('P')) {

@@ -299,6 +299,21 @@ TEST(FanucEngine, CycleRAndZAreKeptAsPositions) {
   expect_end(*r, {30, 0, 2});
 }
 
+TEST(FanucEngine, ABlockWithoutPositionsInACycleDrillsNothing) {
+  // M05 and G04 between the holes of a G81 (a posted job ends its holes
+  // so): no hole at them, and G04's P is no dwell of the cycle's.
+  auto r = run_fanuc(
+      "G0 X0 Y0 Z10.\nS500 M3\nG98 G82 X5. Y5. Z-8. R2. P500 F60.\nG04 P2000\nX10.\nM05\n"
+      "G80\nM30\n");
+  EXPECT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_EQ(r->all<canon::Hole>().size(), 2u);
+  const auto dwells = r->all<canon::Dwell>();
+  ASSERT_EQ(dwells.size(), 3u);  // the two holes' 0.5 s, the G04's 2 s between them
+  EXPECT_NEAR(dwells[0].s, 0.5, 1e-9);
+  EXPECT_NEAR(dwells[1].s, 2.0, 1e-9);
+  EXPECT_NEAR(dwells[2].s, 0.5, 1e-9);
+}
+
 TEST(FanucEngine, G76FineBoringShiftsAwayFromTheWall) {
   auto r = run_fanuc("G0 X0 Y0 Z10.\nS500 M3\nG98 G76 X5. Y5. Z-8. R2. Q0.5 P200 F60.\nG80\nM30\n");
   EXPECT_TRUE(r->ok) << r->first_error_text();
