@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <fstream>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -42,7 +42,10 @@ void log_line(const std::string& text) {
 // Why the file of mqtt.`key` cannot be read, empty when it can.
 std::string unreadable(const char* key, const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return fmt::format("mqtt.{} {} cannot be read: {}", key, path, std::strerror(errno));
+  if (!in) {
+    return fmt::format("mqtt.{} {} cannot be read: {}", key, path,
+                       std::generic_category().message(errno));
+  }
   char c = 0;
   if (!in.get(c)) return fmt::format("mqtt.{} {} is empty or not a file", key, path);
   return {};
@@ -101,7 +104,10 @@ nlohmann::json mqtt_server_offline(const MqttConfig& config, bool stopped) {
 MqttPublisher::MqttPublisher(MqttConfig config) : config_(std::move(config)) {}
 
 MqttPublisher::~MqttPublisher() {
-  stop();
+  try {
+    stop();
+  } catch (...) {  // NOLINT(bugprone-empty-catch): out of memory while stopping; the thread is gone
+  }
   if (mosq_ != nullptr) mosquitto_destroy(mosq_);
 }
 
@@ -137,33 +143,44 @@ void MqttPublisher::on_log(mosquitto*, void* self, int level, const char* line) 
   me->tls_error_ = line;
 }
 
-// TLS, the broker's user and the will, before the first connect.
-std::string MqttPublisher::set_up_session() {
-  if (config_.tls) {
-    for (const auto& [key, path] :
-         {std::pair{"ca_file", &config_.ca_file}, std::pair{"cert_file", &config_.cert_file},
-          std::pair{"key_file", &config_.key_file}}) {
-      if (path->empty()) continue;
-      if (std::string why = unreadable(key, *path); !why.empty()) return why;
-    }
-    const auto optional = [](const std::string& s) { return s.empty() ? nullptr : s.c_str(); };
-    int rc = mosquitto_tls_set(mosq_, config_.ca_file.c_str(), nullptr, optional(config_.cert_file),
-                               optional(config_.key_file), &no_key_password);
-    // The broker's certificate verified, TLS 1.2 at the least, and its host
-    // name checked (insecure mode off, as it is by default).
-    if (rc == MOSQ_ERR_SUCCESS) rc = mosquitto_tls_opts_set(mosq_, 1, "tlsv1.2", nullptr);
-    if (rc == MOSQ_ERR_SUCCESS) rc = mosquitto_tls_insecure_set(mosq_, false);
-    if (rc != MOSQ_ERR_SUCCESS)
-      return fmt::format("mqtt: cannot set up TLS: {}", mosquitto_strerror(rc));
+// TLS: the files checked, the broker verified, a client certificate.
+std::string MqttPublisher::set_up_tls() {
+  for (const auto& [key, path] :
+       {std::pair{"ca_file", &config_.ca_file}, std::pair{"cert_file", &config_.cert_file},
+        std::pair{"key_file", &config_.key_file}}) {
+    if (path->empty()) continue;
+    if (std::string why = unreadable(key, *path); !why.empty()) return why;
   }
+  const auto optional = [](const std::string& s) { return s.empty() ? nullptr : s.c_str(); };
+  int rc = mosquitto_tls_set(mosq_, config_.ca_file.c_str(), nullptr, optional(config_.cert_file),
+                             optional(config_.key_file), &no_key_password);
+  // The broker's certificate verified, TLS 1.2 at the least, and its host
+  // name checked (insecure mode off, as it is by default).
+  if (rc == MOSQ_ERR_SUCCESS) rc = mosquitto_tls_opts_set(mosq_, 1, "tlsv1.2", nullptr);
+  if (rc == MOSQ_ERR_SUCCESS) rc = mosquitto_tls_insecure_set(mosq_, false);
+  if (rc != MOSQ_ERR_SUCCESS)
+    return fmt::format("mqtt: cannot set up TLS: {}", mosquitto_strerror(rc));
+  return {};
+}
+
+// The broker's user, its password read from password_file.
+std::string MqttPublisher::set_up_login() {
   if (!config_.password_file.empty()) {
     if (std::string why = read_password(config_.password_file, password_); !why.empty()) return why;
   }
-  if (!config_.username.empty()) {
-    const int rc = mosquitto_username_pw_set(mosq_, config_.username.c_str(),
-                                             password_.empty() ? nullptr : password_.c_str());
-    if (rc != MOSQ_ERR_SUCCESS) return fmt::format("mqtt.username: {}", mosquitto_strerror(rc));
+  if (config_.username.empty()) return {};
+  const int rc = mosquitto_username_pw_set(mosq_, config_.username.c_str(),
+                                           password_.empty() ? nullptr : password_.c_str());
+  if (rc != MOSQ_ERR_SUCCESS) return fmt::format("mqtt.username: {}", mosquitto_strerror(rc));
+  return {};
+}
+
+// TLS, the broker's user and the will, before the first connect.
+std::string MqttPublisher::set_up_session() {
+  if (config_.tls) {
+    if (std::string error = set_up_tls(); !error.empty()) return error;
   }
+  if (std::string error = set_up_login(); !error.empty()) return error;
   const std::string topic = config_.prefix + "/server/state";
   const std::string will = mqtt_server_offline(config_, false).dump();
   if (const int rc = mosquitto_will_set(mosq_, topic.c_str(), static_cast<int>(will.size()),
@@ -236,7 +253,7 @@ void MqttPublisher::note_failure(int rc, int error_number) {
     } else if (!tls_error_.empty()) {
       why = tls_error_;  // OpenSSL's reason: a certificate not verified, a bad key...
     } else if (rc == MOSQ_ERR_ERRNO) {
-      why = std::strerror(error_number);
+      why = std::generic_category().message(error_number);
     } else {
       why = mosquitto_strerror(rc);
     }

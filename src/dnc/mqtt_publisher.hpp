@@ -71,6 +71,8 @@ class MqttPublisher {
   static void on_published(mosquitto*, void* self, int);
   static void on_log(mosquitto*, void* self, int level, const char* line);
 
+  std::string set_up_tls();
+  std::string set_up_login();
   std::string set_up_session();
   void network_loop();
   void run_connection(bool first);
