@@ -12,7 +12,7 @@ pkgs=(
   clang-14 libclang-rt-14-dev clang-format
   libsqlite3-dev libpqxx-dev libssl-dev libsodium-dev postgresql
   libboost-dev libboost-system-dev socat
-  libmosquitto-dev mosquitto
+  libmosquitto-dev mosquitto openssl
   chromium
 )
 # Node.js and npm for the web page, from Debian when the machine has none

@@ -49,7 +49,10 @@ constexpr std::array<std::string_view, 5> kServerKeys{"listen", "max_upload", "s
                                                       "tls_cert", "tls_key"};
 constexpr std::array<std::string_view, 2> kWebKeys{"root", "max_file_bytes"};
 constexpr std::array<std::string_view, 2> kMtconnectKeys{"listen", "heartbeat_ms"};
-constexpr std::array<std::string_view, 3> kMqttKeys{"url", "prefix", "client_id"};
+// `password` is known so that it is refused with a pointer to password_file.
+constexpr std::array<std::string_view, 9> kMqttKeys{"url",      "prefix",    "client_id",
+                                                    "ca_file",  "cert_file", "key_file",
+                                                    "username", "password",  "password_file"};
 
 std::span<const std::string_view> table_keys(std::string_view table) {
   if (table == "server") return kServerKeys;

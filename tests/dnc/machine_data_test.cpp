@@ -135,5 +135,57 @@ part_count_pattern = "PIECE (\\d+)"
   }
 }
 
+TEST(MachineData, ConfigReadsTheMqttTlsAndLoginKeys) {
+  core::DiagnosticList diags;
+  const auto good = read_server_config(R"toml(
+[mqtt]
+url = "mqtts://broker.plant"
+ca_file = "/etc/usina/ca.pem"
+cert_file = "/etc/usina/client.pem"
+key_file = "/etc/usina/client.key"
+username = "usina"
+password_file = "/etc/usina/mqtt.pass"
+)toml",
+                                       0, diags);
+  ASSERT_TRUE(good);
+  EXPECT_TRUE(diags.all().empty());
+  EXPECT_TRUE(good->mqtt.tls);
+  EXPECT_EQ(good->mqtt.host, "broker.plant");
+  EXPECT_EQ(good->mqtt.port, 8883);
+  EXPECT_EQ(good->mqtt.ca_file, "/etc/usina/ca.pem");
+  EXPECT_EQ(good->mqtt.cert_file, "/etc/usina/client.pem");
+  EXPECT_EQ(good->mqtt.key_file, "/etc/usina/client.key");
+  EXPECT_EQ(good->mqtt.username, "usina");
+  EXPECT_EQ(good->mqtt.password_file, "/etc/usina/mqtt.pass");
+  const auto plain = read_server_config("[mqtt]\nurl = \"mqtt://b\"\nusername = \"u\"\n", 0, diags);
+  ASSERT_TRUE(plain);
+  EXPECT_FALSE(plain->mqtt.tls);
+  EXPECT_EQ(plain->mqtt.port, 1883);
+
+  // Each bad table and a word its message must hold.
+  const std::pair<const char*, const char*> bad[] = {
+      {"[mqtt]\nurl = \"mqtts://b\"\n", "needs mqtt.ca_file"},
+      {"[mqtt]\nurl = \"mqtts://b\"\nca_file = \"c\"\ncert_file = \"x\"\n", "go together"},
+      {"[mqtt]\nurl = \"mqtts://b\"\nca_file = \"c\"\nkey_file = \"x\"\n", "go together"},
+      {"[mqtt]\nurl = \"mqtt://b\"\nca_file = \"c\"\n", "mqtt.ca_file is for TLS"},
+      {"[mqtt]\nurl = \"mqtt://b\"\ncert_file = \"c\"\nkey_file = \"k\"\n", "is for TLS"},
+      {"[mqtt]\nurl = \"mqtts://b\"\nca_file = \"\"\n", "mqtt.ca_file must be a file's path"},
+      {"[mqtt]\nurl = \"mqtts://b\"\nca_file = 5\n", "mqtt.ca_file must be a string"},
+      {"[mqtt]\nusername = \"u\"\npassword = \"p\"\n", "mqtt.password_file"},
+      {"[mqtt]\npassword_file = \"p\"\n", "needs mqtt.username"},
+      {"[mqtt]\nusername = \"\"\n", "mqtt.username must not be empty"},
+      {"[mqtt]\nusername = 7\n", "mqtt.username must be a string"},
+      {"[mqtt]\nusername = \"u\"\npassword_file = \"\"\n", "mqtt.password_file must be"},
+      {"[mqtt]\nurl = \"mqtts://b:0\"\nca_file = \"c\"\n", "is not mqtt://"},
+  };
+  for (const auto& [text, says] : bad) {
+    core::DiagnosticList d;
+    EXPECT_FALSE(read_server_config(text, 0, d)) << text;
+    ASSERT_FALSE(d.all().empty()) << text;
+    EXPECT_EQ(d.all()[0].code, core::Code::DncConfig) << text;
+    EXPECT_NE(d.all()[0].message.find(says), std::string::npos) << d.all()[0].message;
+  }
+}
+
 }  // namespace
 }  // namespace usina::dnc

@@ -42,8 +42,9 @@ inline unsigned short free_port() {
 
 class MosquittoBroker {
  public:
-  // Starts the broker; false (and why) when it cannot.
-  bool start(std::string* why) {
+  // Starts the broker with the listener's `settings` (TLS, logins...);
+  // false (and why) when it cannot.
+  bool start(std::string* why, const std::string& settings = "allow_anonymous true\n") {
     const std::string bin = mosquitto_binary();
     if (bin.empty()) return *why = "the mosquitto binary is not installed", false;
     dir_ = std::filesystem::temp_directory_path() /
@@ -51,8 +52,8 @@ class MosquittoBroker {
     std::filesystem::create_directories(dir_);
     port_ = free_port();
     const std::string conf = (dir_ / "mosquitto.conf").string();
-    std::ofstream(conf) << "listener " << port_ << " 127.0.0.1\nallow_anonymous true\n"
-                        << "persistence false\nlog_dest none\n";
+    std::ofstream(conf) << "listener " << port_ << " 127.0.0.1\n"
+                        << settings << "persistence false\nlog_dest none\n";
     std::vector<std::string> args{bin, "-c", conf};
     std::vector<char*> argv;
     for (auto& a : args)
@@ -127,6 +128,16 @@ class MqttSubscriber {
     mosquitto_disconnect(mosq_);
     mosquitto_loop_stop(mosq_, false);
     mosquitto_destroy(mosq_);
+  }
+
+  // TLS to the broker, verified against `ca` (and our certificate when given).
+  void use_tls(const std::string& ca, const std::string& cert = {}, const std::string& key = {}) {
+    mosquitto_tls_set(mosq_, ca.c_str(), nullptr, cert.empty() ? nullptr : cert.c_str(),
+                      key.empty() ? nullptr : key.c_str(), nullptr);
+  }
+
+  void use_login(const std::string& user, const std::string& password) {
+    mosquitto_username_pw_set(mosq_, user.c_str(), password.c_str());
   }
 
   // Connects and subscribes to `filter`; true once the broker acknowledged.
