@@ -29,6 +29,13 @@ namespace usina::cli {
 namespace {
 
 constexpr int kBadInput = 2;
+// mm: the chordal tolerance the drawing gives arcs out of the XY plane; a
+// run of moves closer than this to one line is drawn as that line.
+constexpr double kDefaultTolerance = draw::DrawingBuilder::kArcTolerance;
+// mm: more would draw a shape other than the program's.
+constexpr double kMaxTolerance = 1.0;
+// A4's long side at 600 dpi: the dots a printed PDF has at the most.
+constexpr int kPdfDots = 7016;
 
 enum class Format { Dxf, Svg, Png, Pdf };
 
@@ -39,6 +46,7 @@ struct DrawOptions {
   std::string view = "part";
   std::string start;
   std::string size;
+  double tolerance = kDefaultTolerance;
 };
 
 int fail(std::string_view message) {
@@ -148,6 +156,9 @@ int draw_program(DrawOptions& o) {
                               o.size, draw::kMaxPngPixels));
     size = *s;
   }
+  if (!std::isfinite(o.tolerance) || o.tolerance < 0.0 || o.tolerance > kMaxTolerance)
+    return fail(
+        fmt::format("--tolerance {} is not a length from 0 to {} mm", o.tolerance, kMaxTolerance));
   const draw::View view = o.view == "toolpath" ? draw::View::Toolpath : draw::View::Part;
   // The part view shows the programmed contour, not the compensated tool centre.
   o.run.ignore_cutter_comp = view == draw::View::Part;
@@ -156,6 +167,11 @@ int draw_program(DrawOptions& o) {
   for (const std::string& input : inputs)
     if (auto ok = core::check_not_input(o.output, input); !ok) return fail(ok.error());
   draw::Drawing drawing;
+  drawing.set_tolerance(o.tolerance);
+  // A picture shows nothing finer than half its pixel: the memory and time of
+  // a long program grow with what the picture can show, not with its moves.
+  if (*format == Format::Png) drawing.set_picture(size.width, size.height);
+  if (*format == Format::Pdf) drawing.set_picture(kPdfDots, kPdfDots);
   draw::DrawingBuilder builder(drawing, view, o.run.start);
   const int status = run_program(o.run, builder);
   if (status == kBadInput) return status;
@@ -184,6 +200,10 @@ void add_draw(CLI::App& app) {
       ->check(CLI::IsMember({"part", "toolpath"}))
       ->capture_default_str();
   cmd->add_option("--start", opts->start, "where the tool starts, X,Y,Z in mm (default 0,0,0)");
+  cmd->add_option("--tolerance", opts->tolerance,
+                  "how far a drawn line may pass from the points of the moves it stands for, mm; "
+                  "0 keeps every bend (PNG and PDF: at least half a pixel)")
+      ->capture_default_str();
   cmd->add_option("--size", opts->size, "PNG size in pixels, WIDTHxHEIGHT (default 1600x1200)");
   cmd->callback([opts] { set_exit_status(draw_program(*opts)); });
 }

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <type_traits>
-#include <unordered_set>
 #include <vector>
 
 #include <fmt/format.h>
@@ -98,27 +97,68 @@ std::optional<DrawnKey> arc_key(const Layer& layer, const Arc& a) {
 
 }  // namespace
 
-// The last DrawLimits::retrace_window things drawn, first in first out: constant memory
-// whatever the program's length.
+// The things drawn lately, in constant memory and with no allocation after
+// the start: two open-addressed tables (generations) of half the window
+// each. A key is looked up in both and enters the newer; when the newer is
+// full it becomes the older and the older is emptied. So the last window/2
+// to window keys are remembered. The probes read only the keys' hashes (a
+// table small enough for the cache); a key itself is read when its hash
+// matches. (A node-based set with a ring of keys spent a quarter of `usina
+// draw`'s time in its allocations and cache misses.)
 class RetraceWindow {
  public:
-  explicit RetraceWindow(std::size_t size) : ring_(size) { set_.reserve(size); }
+  explicit RetraceWindow(std::size_t size) : half_(std::max<std::size_t>(size / 2, 1)) {
+    std::size_t slots = 4;
+    while (slots < 2 * half_)  // at most half full: short probes
+      slots <<= 1;
+    mask_ = slots - 1;
+    for (Generation& g : generations_) {
+      g.hashes.assign(slots, 0);
+      g.keys.assign(slots, DrawnKey{});
+    }
+  }
 
   // True when `key` is in the window; else it enters it.
   bool seen(const std::optional<DrawnKey>& key) {
     if (!key) return false;
-    if (set_.count(*key) > 0) return true;
-    if (set_.size() == ring_.size()) set_.erase(ring_[next_]);
-    ring_[next_] = *key;
-    next_ = (next_ + 1) % ring_.size();
-    set_.insert(*key);
+    const std::uint64_t hash = DrawnKeyHash{}(*key) | 1;  // 0 marks an empty slot
+    if (find(generations_[0], hash, *key) || find(generations_[1], hash, *key)) return true;
+    if (count_ == half_) {
+      std::swap(generations_[0], generations_[1]);
+      std::fill(generations_[0].hashes.begin(), generations_[0].hashes.end(), 0);
+      count_ = 0;
+    }
+    Generation& newer = generations_[0];
+    std::size_t i = slot_of(hash);
+    while (newer.hashes[i] != 0)
+      i = (i + 1) & mask_;
+    newer.hashes[i] = hash;
+    newer.keys[i] = *key;
+    ++count_;
     return false;
   }
 
  private:
-  std::vector<DrawnKey> ring_;
-  std::size_t next_ = 0;
-  std::unordered_set<DrawnKey, DrawnKeyHash> set_;
+  struct Generation {
+    std::vector<std::uint64_t> hashes;
+    std::vector<DrawnKey> keys;
+  };
+
+  std::size_t slot_of(std::uint64_t hash) const {
+    // Fibonacci hashing spreads the hash's bits over the table.
+    return static_cast<std::size_t>((hash * 0x9E3779B97F4A7C15ULL) >> 20) & mask_;
+  }
+
+  bool find(const Generation& g, std::uint64_t hash, const DrawnKey& key) const {
+    for (std::size_t i = slot_of(hash); g.hashes[i] != 0; i = (i + 1) & mask_)
+      if (g.hashes[i] == hash && g.keys[i] == key) return true;
+    return false;
+  }
+
+  std::size_t half_;
+  std::size_t mask_ = 0;
+  std::size_t count_ = 0;
+  std::array<Generation, 2> generations_;
 };
 
 DrawingBuilder::~DrawingBuilder() = default;

@@ -9,11 +9,10 @@
 // rapids on RAPID; features are not drawn (their moves are).
 //
 // Memory is bounded by what a picture can show: a move that retraces one of
-// the last DrawLimits::retrace_window segments, arcs or circles drawn on its
-// layer (at the SVG's 0.0001 mm) adds nothing, so a loop going over the same
-// path draws it once; past DrawLimits::max_entities entities (or
-// max_polyline_points points of polylines) the moves are counted and not
-// drawn, and limit_note() says so.
+// the last DrawLimits::retrace_window / 2 (up to retrace_window) segments,
+// arcs or circles drawn on its layer (at the SVG's 0.0001 mm) adds nothing, so a loop going over
+// the same path draws it once; past DrawLimits::max_entities entities (or max_polyline_points
+// points of polylines) the moves are counted and not drawn, and limit_note() says so.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +38,8 @@ struct DrawLimits {
   // program draws whole.
   std::size_t max_entities = 2'000'000;
   std::size_t max_polyline_points = 8'000'000;
-  // Segments, arcs and circles remembered for the retrace test (a few MB).
+  // Segments, arcs and circles remembered for the retrace test (the last
+  // half to all of them; 64 bytes each, twice: 4 MB).
   std::size_t retrace_window = 1u << 15;
 };
 

@@ -130,7 +130,7 @@ Box view_box(const Box& bounds) {
 Layer& Drawing::layer(std::string_view name) {
   for (auto& l : layers_)
     if (l->name == name) return *l;
-  layers_.push_back(std::make_unique<Layer>(Layer{std::string(name), style_of(name), {}, {}}));
+  layers_.push_back(std::make_unique<Layer>(Layer{std::string(name), style_of(name), {}, {}, {}}));
   return *layers_.back();
 }
 
@@ -148,14 +148,61 @@ void Drawing::add_line(Layer& layer, Vec2 from, Vec2 to) {
   if (core::distance(from, to) < kMinLength) return;
   bounds_.add(from);
   bounds_.add(to);
-  if (!layer.entities.empty()) {
-    if (auto* last = std::get_if<Line>(&layer.entities.back());
-        last != nullptr && core::distance(last->to, from) < kMinLength && continues(*last, to)) {
-      last->to = to;
-      return;
-    }
-  }
+  if (extend_run(layer, from, to)) return;
   layer.entities.emplace_back(Line{from, to});
+  start_run(layer, from, to);
+}
+
+double Drawing::line_tolerance() const {
+  double tol = std::max(tolerance_, kCollinear);
+  if (picture_width_ > 0 && picture_height_ > 0) {
+    const double pixel =
+        std::max(bounds_.width() / picture_width_, bounds_.height() / picture_height_);
+    tol = std::max(tol, 0.5 * pixel);
+  }
+  return tol;
+}
+
+namespace {
+
+// The half-width of the directions from a line's start that pass within
+// `tol` of a point `d` away (a point that close allows any forward one).
+double half_angle(double d, double tol) {
+  return d <= tol ? std::numbers::pi / 2.0 : std::asin(tol / d);
+}
+
+}  // namespace
+
+// The line's start A stays; its end moves to `to` when `to`'s direction
+// from A is within every earlier point's band and no nearer to A than
+// they came (so each lies beside the line, not past its end). This is the
+// cone test of the sleeve simplification: O(1) a move, whatever the run.
+bool Drawing::extend_run(Layer& layer, Vec2 from, Vec2 to) {
+  LineRun& run = layer.run;
+  if (layer.entities.empty() || run.entity != layer.entities.size() - 1) return false;
+  // A new tool's run starts with a line of its own (the pictures colour by tool).
+  if (!layer.tool_runs.empty() && layer.tool_runs.back().first == layer.entities.size())
+    return false;
+  auto* last = std::get_if<Line>(&layer.entities.back());
+  if (last == nullptr || core::distance(last->to, from) >= kMinLength) return false;
+  const Vec2 v = to - last->from;
+  const double d = core::norm(v);
+  if (d < run.reach) return false;
+  const double angle = std::atan2(core::cross(run.dir, v), core::dot(run.dir, v));
+  if (angle < run.lo || angle > run.hi) return false;
+  const double half = half_angle(d, line_tolerance());
+  run.lo = std::max(run.lo, angle - half);
+  run.hi = std::min(run.hi, angle + half);
+  run.reach = d;
+  last->to = to;
+  return true;
+}
+
+void Drawing::start_run(Layer& layer, Vec2 from, Vec2 to) {
+  const Vec2 v = to - from;
+  const double d = core::norm(v);
+  const double half = half_angle(d, line_tolerance());
+  layer.run = {layer.entities.size() - 1, v * (1.0 / d), -half, half, d};
 }
 
 void Drawing::add_arc(Layer& layer, const Arc& arc) {

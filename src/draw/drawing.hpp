@@ -85,6 +85,18 @@ struct LayerStyle {
   bool dashed = false;
 };
 
+// The run of moves the layer's last line stands for (drawing.cpp): the
+// directions its end may still take so that the line passes within the
+// drawing's tolerance of every point the moves went through, as angles from
+// `dir` (radians), and how far from the line's start they reached.
+struct LineRun {
+  std::size_t entity = static_cast<std::size_t>(-1);  // the line's index; none
+  Vec2 dir;
+  double lo = 0.0;
+  double hi = 0.0;
+  double reach = 0.0;
+};
+
 // Entities from `first` on were drawn with `tool` (until the next run).
 struct ToolRun {
   std::size_t first = 0;
@@ -98,6 +110,7 @@ struct Layer {
   // On CONTOUR: which tool cut which entities, so that the pictures colour
   // the contour by tool (the toolpath view has a layer per tool instead).
   std::vector<ToolRun> tool_runs;
+  LineRun run;
 };
 
 class Drawing {
@@ -110,9 +123,23 @@ class Drawing {
   // the tool layers by tool number, then any other by name.
   std::vector<const Layer*> layers() const;
 
+  // How far a drawn line may pass from the points of the moves it stands
+  // for (mm; 0: within 1 nm, every bend kept). A picture need not show more:
+  // usina draw gives 0.01 mm, the chordal tolerance of its arcs.
+  void set_tolerance(double mm) { tolerance_ = mm; }
+
+  // The drawing becomes a picture of `width` x `height` pixels (or dots):
+  // lines also merge within half a pixel, at the scale of the bounds so far.
+  // The bounds only grow, so that scale is never coarser than the picture's.
+  void set_picture(int width, int height) {
+    picture_width_ = width;
+    picture_height_ = height;
+  }
+
   // A straight segment; merged into the layer's last line when it goes on
-  // from that line's end in the same direction. Segments shorter than 1 nm
-  // (moves along Z only) add nothing.
+  // from that line's end, forward, and the merged line passes within the
+  // tolerance of every point (a collinear run, a dense curve seen from
+  // afar). Segments shorter than 1 nm (moves along Z only) add nothing.
   void add_line(Layer& layer, Vec2 from, Vec2 to);
   void add_arc(Layer& layer, const Arc& arc);
   void add_circle(Layer& layer, const Circle& circle);
@@ -125,8 +152,15 @@ class Drawing {
   std::size_t entity_count() const;
 
  private:
+  double line_tolerance() const;
+  bool extend_run(Layer& layer, Vec2 from, Vec2 to);
+  void start_run(Layer& layer, Vec2 from, Vec2 to);
+
   std::vector<std::unique_ptr<Layer>> layers_;
   Box bounds_;
+  double tolerance_ = 0.0;
+  int picture_width_ = 0;
+  int picture_height_ = 0;
 };
 
 }  // namespace usina::draw

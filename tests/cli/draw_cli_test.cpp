@@ -1,5 +1,6 @@
 // usina draw as a user runs it: formats from the extension, the part and
 // toolpath views, holes of G81, exit statuses, the golden SVG.
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -229,8 +230,48 @@ TEST(DrawCli, MissingOutputOrBadViewIsAUsageError) {
 TEST(DrawCli, HelpListsTheOptions) {
   const Result r = usina("draw --help");
   ASSERT_EQ(r.status, 0);
-  for (const char* opt : {"--output", "--view", "--start", "--size", "--dialect", "--tool-table"})
+  for (const char* opt :
+       {"--output", "--view", "--start", "--size", "--tolerance", "--dialect", "--tool-table"})
     EXPECT_TRUE(contains(r.out, opt)) << opt;
+}
+
+// A circle of radius 50 as 3,600 G1 moves of 0.087 mm: what CAM writes for
+// an engraved curve.
+std::string circle_of_moves() {
+  std::string prog = "G21 G90 G17\nG0 X50 Y0\nG1 Z-1 F300\n";
+  for (int i = 1; i <= 3600; ++i) {
+    const double a = i * 3.14159265358979323846 / 1800.0;
+    prog +=
+        "G1 X" + std::to_string(50 * std::cos(a)) + " Y" + std::to_string(50 * std::sin(a)) + "\n";
+  }
+  return prog + "M2\n";
+}
+
+TEST(DrawCli, MovesWithinTheToleranceAreDrawnAsOneLine) {
+  // A chord 0.01 mm from a circle of radius 50 is 2 mm long: 23 moves.
+  const TempDir s;
+  const std::string prog = s.write("circle.ngc", circle_of_moves());
+  ASSERT_EQ(usina("draw " + prog + " -o " + s.path("default.dxf")).status, 0);
+  ASSERT_EQ(usina("draw --tolerance 0 " + prog + " -o " + s.path("exact.dxf")).status, 0);
+  ASSERT_EQ(usina("draw --tolerance 0.1 " + prog + " -o " + s.path("coarse.dxf")).status, 0);
+  const std::size_t exact = count(s.read("exact.dxf"), "\nLINE\n");
+  const std::size_t fine = count(s.read("default.dxf"), "\nLINE\n");
+  const std::size_t coarse = count(s.read("coarse.dxf"), "\nLINE\n");
+  EXPECT_EQ(exact, 3601u) << "every move and the rapid to the start";
+  EXPECT_GE(fine, 3600u / 24);
+  EXPECT_LE(fine, 3600u / 12);
+  EXPECT_LT(coarse, fine / 2) << fine << " " << coarse;
+}
+
+TEST(DrawCli, AToleranceThatIsNoLengthIsAUsageError) {
+  const TempDir s;
+  for (const char* bad : {"-0.01", "1.5", "nan", "inf", "x", "1e400"}) {
+    const Result r = usina("draw --tolerance " + std::string(bad) + " " + quote(kBracket) + " -o " +
+                           s.path("x.svg"));
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_FALSE(r.err.empty()) << bad;
+    EXPECT_FALSE(exists(s.path("x.svg"))) << bad;
+  }
 }
 
 // tests/golden/draw_small.svg, checked by hand (see its "golden:" comment,

@@ -2,7 +2,10 @@
 // polylines and the order of layers.
 #include "draw/drawing.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -50,6 +53,117 @@ TEST(Drawing, LinesOnOtherLayersDoNotMerge) {
   EXPECT_EQ(d.layer(kContourLayer).entities.size(), 1u);
   EXPECT_EQ(d.layer(kRapidLayer).entities.size(), 1u);
   EXPECT_EQ(d.entity_count(), 2u);
+}
+
+// The distance from `p` to the segment a-b.
+double distance_to(Vec2 p, const Line& l) {
+  const Vec2 d = l.to - l.from;
+  const double t = std::clamp(core::dot(p - l.from, d) / core::dot(d, d), 0.0, 1.0);
+  return core::distance(p, l.from + d * t);
+}
+
+// An Archimedean spiral of 0.2 mm steps, as bench/gen_spiral.py writes it.
+std::vector<Vec2> spiral(int steps) {
+  std::vector<Vec2> pts{{0, 0}};
+  double theta = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    const double r0 = 0.5 * theta / (2 * kPi);
+    theta += 0.2 / std::max(r0, 0.2);
+    const double r = 0.5 * theta / (2 * kPi);
+    pts.push_back({r * std::cos(theta), r * std::sin(theta)});
+  }
+  return pts;
+}
+
+// Each point of `pts` lies within `tol` of the line drawn for it: the lines
+// run through the points in order, so walk both.
+void expect_within(const std::vector<Vec2>& pts, const Layer& l, double tol) {
+  std::size_t e = 0;
+  for (const Vec2& p : pts) {
+    ASSERT_LT(e, l.entities.size());
+    const Line* line = &std::get<Line>(l.entities[e]);
+    if (e + 1 < l.entities.size() && core::distance(p, line->to) > 1e-9 &&
+        distance_to(p, *line) > tol) {
+      line = &std::get<Line>(l.entities[++e]);
+    }
+    EXPECT_LE(distance_to(p, *line), tol + 1e-12) << p.x << "," << p.y;
+    if (core::distance(p, line->to) < 1e-12 && e + 1 < l.entities.size()) ++e;
+  }
+  EXPECT_EQ(e + 1, l.entities.size());
+}
+
+TEST(Drawing, WithoutToleranceEveryBendOfACurveIsKept) {
+  Drawing d;
+  Layer& l = d.layer(kContourLayer);
+  const auto pts = spiral(2000);
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    d.add_line(l, pts[i - 1], pts[i]);
+  EXPECT_EQ(l.entities.size(), 2000u);
+}
+
+TEST(Drawing, ARunOfMovesWithinTheToleranceIsOneLine) {
+  Drawing d;
+  d.set_tolerance(0.01);
+  Layer& l = d.layer(kContourLayer);
+  const auto pts = spiral(20'000);
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    d.add_line(l, pts[i - 1], pts[i]);
+  // The chord that strays 0.01 mm from a circle of radius r is sqrt(0.08 r)
+  // long: 14 steps of 0.2 mm at the spiral's outer radius (12.6 mm).
+  EXPECT_LT(l.entities.size(), 20'000u / 4);
+  EXPECT_GT(l.entities.size(), 20'000u / 40);
+  // Every line starts where the last ended, and passes within 0.01 mm of
+  // every point it stands for.
+  for (std::size_t i = 1; i < l.entities.size(); ++i)
+    EXPECT_EQ(std::get<Line>(l.entities[i]).from, std::get<Line>(l.entities[i - 1]).to);
+  expect_within(pts, l, 0.01);
+}
+
+TEST(Drawing, AToleranceNeverMergesACornerOrAReversal) {
+  Drawing d;
+  d.set_tolerance(0.01);
+  Layer& l = d.layer(kContourLayer);
+  d.add_line(l, {0, 0}, {10, 0});
+  d.add_line(l, {10, 0}, {10, 0.02});  // a step of twice the tolerance
+  d.add_line(l, {10, 0.02}, {20, 0.02});
+  d.add_line(l, {20, 0.02}, {15, 0.021});      // back along itself
+  d.add_line(l, {15, 0.021}, {15.005, 0.02});  // back again, within 0.01 of the last end
+  EXPECT_EQ(l.entities.size(), 5u);
+}
+
+TEST(Drawing, AToleranceDoesNotJoinLinesAcrossAnotherEntityOrATool) {
+  Drawing d;
+  d.set_tolerance(0.01);
+  Layer& l = d.layer(kContourLayer);
+  d.add_line(l, {0, 0}, {1, 0});
+  d.add_circle(l, {{1, 0}, 0.5});
+  d.add_line(l, {1, 0}, {2, 0});  // after the circle: a line of its own
+  l.tool_runs.push_back({l.entities.size(), 2});
+  d.add_line(l, {2, 0}, {3, 0});  // the next tool's: a line of its own
+  EXPECT_EQ(l.entities.size(), 4u);
+}
+
+TEST(Drawing, APictureMergesWhatIsFinerThanHalfAPixel) {
+  // A zigzag of 0.05 mm across 100 mm: in 1000 x 1000 pixels (0.1 mm each)
+  // it is one line; as a drawing with 0.01 mm it keeps every zig.
+  auto zigzag = [](Drawing& d) {
+    Layer& l = d.layer(kContourLayer);
+    d.add_line(l, {-50, -50}, {50, 50});  // the picture's bounds first
+    Vec2 at{0, 0};
+    for (int i = 1; i <= 1000; ++i) {
+      const Vec2 to{0.1 * i, i % 2 == 0 ? 0.0 : 0.02};
+      d.add_line(l, at, to);
+      at = to;
+    }
+    return l.entities.size();
+  };
+  Drawing picture;
+  picture.set_tolerance(0.01);
+  picture.set_picture(1000, 1000);
+  EXPECT_EQ(zigzag(picture), 2u);  // the diagonal, then the zigzag as one line
+  Drawing drawing;
+  drawing.set_tolerance(0.01);
+  EXPECT_EQ(zigzag(drawing), 1001u);
 }
 
 TEST(Drawing, ArcBoundsTakeTheQuadrantPointsItPasses) {
