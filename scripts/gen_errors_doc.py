@@ -753,6 +753,15 @@ EXPLAIN = {
         "ramp into stock that stands more than 0.01 mm above its tip under its axis.",
         "Ramp or helix into the material no steeper than the tool allows, drill a start hole "
         "first, or use a centre-cutting tool."),
+    "W_MATERIAL_ABOVE_TARGET": (
+        "`usina simulate`, given `--target-dxf FILE` and `--target LAYER=Z`: after the program, "
+        "stock stands more than the target tolerance (`--target-tolerance`, 0.01 mm unless "
+        "given) above the depth Z inside the closed contours of the drawing's layer: the "
+        "program did not cut what the drawing asks. One warning a layer, with the area left, "
+        "the most left and where. Corners narrower than the tool's radius count too: a round "
+        "tool cannot reach them.",
+        "Cut the area named (a pass more, a smaller tool for the corners, the last depth step "
+        "down to Z), or check that the layer's depth is the one the drawing means."),
     # job: job files, tool libraries, materials, cutting data
     "E_BAD_JOB": (
         "The job file given to `usina job` cannot be used: it is not valid TOML, a required "

@@ -7,6 +7,7 @@
 // Exit status: 0; 1 when the program has an error or a check failed (a
 // rapid cutting stock, a cut below the floor); 2 for bad input (an
 // unreadable program, a bad option, a grid too large, an unwritable output).
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -19,6 +20,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cam/chain.hpp"
+#include "cam/dxf_import.hpp"
 #include "cli/run.hpp"
 #include "cli/simulate_images.hpp"
 #include "cli/verbs.hpp"
@@ -28,6 +31,7 @@
 #include "gcode/tool_table.hpp"
 #include "sim/stock/simulator.hpp"
 #include "sim/stock/stock_files.hpp"
+#include "sim/stock/target.hpp"
 
 namespace usina::cli {
 namespace {
@@ -45,7 +49,15 @@ struct SimulateOptions {
   std::vector<std::string> outputs;
   std::string height_map;
   std::string view = "iso";
+  std::string target_dxf;
+  std::vector<std::string> targets;  // LAYER=Z
+  double target_tolerance = 0.01;
 };
+
+// mm: the chords of the target's arcs, finer than the grid can tell.
+constexpr double kTargetChord = 0.001;
+// mm: a target deeper or higher than this is no part's.
+constexpr double kMaxTargetZ = 1e5;
 
 constexpr int kBadInput = 2;
 
@@ -125,8 +137,109 @@ json operations_json(const stock::StockSimulator& sim) {
   return ops;
 }
 
+// DXF diagnostics as `usina: SEVERITY[CODE]: message` (they name the file).
+class DxfDiagnostics final : public core::DiagnosticSink {
+ public:
+  void report(core::Diagnostic d) override {
+    if (d.severity == core::Severity::Error) ++errors_;
+    fmt::print(stderr, "usina: {}[{}]: {}\n", core::severity_name(d.severity),
+               core::code_name(d.code), d.message);
+  }
+
+  int errors() const { return errors_; }
+
+ private:
+  int errors_ = 0;
+};
+
+// "LAYER=Z": the layer's closed contours of the target drawing, as polygons.
+tl::expected<stock::TargetLayer, std::string> read_target(const std::string& dxf,
+                                                          const std::string& spec) {
+  const std::size_t eq = spec.rfind('=');
+  stock::TargetLayer t;
+  if (eq == std::string::npos || eq == 0) {
+    return tl::unexpected(fmt::format("--target '{}' is not LAYER=Z", spec));
+  }
+  t.layer = spec.substr(0, eq);
+  const std::string z = spec.substr(eq + 1);
+  const auto [end, ec] = std::from_chars(z.data(), z.data() + z.size(), t.z);
+  if (z.empty() || ec != std::errc() || end != z.data() + z.size() || !std::isfinite(t.z) ||
+      std::fabs(t.z) > kMaxTargetZ) {
+    return tl::unexpected(
+        fmt::format("--target '{}': Z must be a number of mm within ±{:g}", spec, kMaxTargetZ));
+  }
+  cam::DxfOptions options;
+  options.layer = t.layer;
+  DxfDiagnostics diags;
+  auto entities = cam::read_dxf(dxf, options, diags);
+  if (!entities || diags.errors() > 0) {
+    return tl::unexpected(fmt::format("--target {}: {} cannot be read (above)", spec, dxf));
+  }
+  for (const cam::Path& p : cam::chain(std::move(*entities))) {
+    if (!p.closed) continue;
+    auto ring = cam::linearize(p, kTargetChord);
+    if (ring.size() > 1 && core::distance(ring.front(), ring.back()) < 1e-9) ring.pop_back();
+    if (ring.size() >= 3) t.rings.push_back(std::move(ring));
+  }
+  if (t.rings.empty()) {
+    return tl::unexpected(
+        fmt::format("--target {}: layer {} of {} has no closed contour", spec, t.layer, dxf));
+  }
+  return t;
+}
+
+tl::expected<std::vector<stock::TargetLayer>, std::string> read_targets(const SimulateOptions& o) {
+  std::vector<stock::TargetLayer> out;
+  if (o.target_dxf.empty() != o.targets.empty()) {
+    return tl::unexpected(
+        std::string("--target-dxf FILE and --target LAYER=Z go together: the drawing, and the "
+                    "depth of each of its layers to check"));
+  }
+  if (!std::isfinite(o.target_tolerance) || o.target_tolerance < 0.0 || o.target_tolerance > 10.0) {
+    return tl::unexpected(std::string("--target-tolerance must be from 0 to 10 mm"));
+  }
+  for (const std::string& spec : o.targets) {
+    auto t = read_target(o.target_dxf, spec);
+    if (!t) return tl::unexpected(t.error());
+    out.push_back(std::move(*t));
+  }
+  return out;
+}
+
+// Each layer's area against its depth; a warning for each that is not down to it.
+std::vector<stock::TargetResult> check_targets(const stock::HeightMap& map,
+                                               const std::vector<stock::TargetLayer>& targets,
+                                               double tolerance) {
+  std::vector<stock::TargetResult> results;
+  for (const stock::TargetLayer& t : targets) {
+    results.push_back(stock::check_target(map, t, tolerance));
+    if (results.back().above_mm2 > 0.0) {
+      fmt::print(stderr, "usina: warning[{}]: {}\n",
+                 core::code_name(core::Code::MaterialAboveTarget),
+                 stock::material_above_message(results.back(), tolerance));
+    }
+  }
+  return results;
+}
+
+json targets_json(const std::vector<stock::TargetResult>& results) {
+  json out = json::array();
+  for (const stock::TargetResult& r : results) {
+    json j = {{"layer", r.layer},       {"z", r.z},
+              {"area_mm2", r.area_mm2}, {"above_mm2", r.above_mm2},
+              {"left_mm3", r.left_mm3}, {"most_above_mm", r.most_above_mm}};
+    if (r.above_mm2 > 0.0) {
+      j["most_at"] = {r.most_at.x, r.most_at.y};
+      j["code"] = core::code_name(core::Code::MaterialAboveTarget);
+    }
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
 json report_json(const SimulateOptions& o, const stock::HeightMap& map,
-                 const stock::StockSimulator& sim, bool complete) {
+                 const stock::StockSimulator& sim, bool complete,
+                 const std::vector<stock::TargetResult>& targets) {
   json per_tool = json::object();
   json tools = json::array();
   for (const stock::ToolVolume& t : sim.tools()) {
@@ -152,7 +265,8 @@ json report_json(const SimulateOptions& o, const stock::HeightMap& map,
           {"per_tool", std::move(per_tool)},
           {"per_operation", operations_json(sim)},
           {"tools", std::move(tools)},
-          {"checks", std::move(checks)}};
+          {"checks", std::move(checks)},
+          {"targets", targets_json(targets)}};
 }
 
 bool ends_with(const std::string& s, std::string_view tail) {
@@ -170,14 +284,16 @@ int write_output(const std::string& path, const std::vector<std::string>& inputs
 }
 
 int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
-                  const stock::StockSimulator& sim, bool complete) {
-  const std::vector<std::string> inputs = input_paths(o.run);
+                  const stock::StockSimulator& sim, bool complete,
+                  const std::vector<stock::TargetResult>& targets) {
+  std::vector<std::string> inputs = input_paths(o.run);
+  if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);  // never written over
   const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
   for (const std::string& path : o.outputs) {
     int status = 0;
     if (ends_with(path, ".json")) {
       status = write_output(path, inputs, [&](std::FILE* f) -> tl::expected<void, std::string> {
-        const std::string text = report_json(o, map, sim, complete).dump(2) + "\n";
+        const std::string text = report_json(o, map, sim, complete, targets).dump(2) + "\n";
         std::fwrite(text.data(), 1, text.size(), f);
         return {};
       });
@@ -227,6 +343,13 @@ void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim
     fmt::print("checks           {} (on standard error)\n", sim.checks().size());
 }
 
+void print_targets(const std::vector<stock::TargetResult>& results) {
+  for (const stock::TargetResult& r : results) {
+    fmt::print("target {} Z{:g}  {:.2f} mm², {:.2f} mm² above it (up to {:.3f} mm)\n", r.layer, r.z,
+               r.area_mm2, r.above_mm2, r.most_above_mm);
+  }
+}
+
 int simulate(const SimulateOptions& o) {
   auto box = stock::parse_stock(o.stock);
   if (!box) return fail(box.error());
@@ -246,6 +369,8 @@ int simulate(const SimulateOptions& o) {
           "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
     }
   }
+  auto targets = read_targets(o);
+  if (!targets) return fail(targets.error());
   stock::SimulateOptions so;
   so.tools = std::move(*tools);
   so.floor = o.floor;
@@ -255,7 +380,10 @@ int simulate(const SimulateOptions& o) {
       run_program(o.run, sim, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
   if (status == kBadInput) return status;
   print_summary(*map, sim);
-  if (const int written = write_outputs(o, *map, sim, status == 0); written != 0) return written;
+  const auto results = check_targets(*map, *targets, o.target_tolerance);
+  print_targets(results);
+  if (const int written = write_outputs(o, *map, sim, status == 0, results); written != 0)
+    return written;
   return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
 }
 
@@ -280,6 +408,14 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--floor", opts->floor, "Z mm the tool may not cut below");
   cmd->add_option("-o,--output", opts->outputs,
                   "OUT.png (picture), OUT.stl (the stock), OUT.json (the report); repeatable");
+  cmd->add_option("--target-dxf", opts->target_dxf,
+                  "a drawing whose layers' closed contours must be cut down to a depth");
+  cmd->add_option("--target", opts->targets,
+                  "LAYER=Z: the depth of a layer of --target-dxf; stock left above it is "
+                  "W_MATERIAL_ABOVE_TARGET; repeatable");
+  cmd->add_option("--target-tolerance", opts->target_tolerance,
+                  "mm the stock may stand above a target's depth")
+      ->capture_default_str();
   cmd->add_option("--height-map", opts->height_map, "the heights as a 16-bit greyscale PNG");
   cmd->add_option("--view", opts->view, "the picture: iso or top")
       ->check(CLI::IsMember({"iso", "top"}))

@@ -154,6 +154,7 @@
   X(ShankRubsStock, E_SHANK_RUBS_STOCK)                          \
   X(HolderHitsStock, E_HOLDER_HITS_STOCK)                        \
   X(PlungeNotCentreCutting, W_PLUNGE_NOT_CENTRE_CUTTING)         \
+  X(MaterialAboveTarget, W_MATERIAL_ABOVE_TARGET)                \
   /* job: job files, tool libraries, materials, cutting data */  \
   X(BadJob, E_BAD_JOB)                                           \
   X(UnknownJobKey, E_UNKNOWN_JOB_KEY)                            \
