@@ -36,7 +36,8 @@ std::string zigzag(double last_y) {
   return p + "G0 Z5\nM30\n";
 }
 
-usina::test::Run simulate(const TempDir& dir, const std::string& program, const std::string& extra) {
+usina::test::Run simulate(const TempDir& dir, const std::string& program,
+                          const std::string& extra) {
   return usina("simulate " + quote(program) +
                " --stock box:40x30x10 --resolution 0.1 --tool-shape 1=flat/6 -o " +
                quote(dir.path("r.json")) + " " + extra);
@@ -46,7 +47,7 @@ TEST(SimulateTargetCli, APocketCutToItsDepthMeetsItsTarget) {
   TempDir dir;
   const std::string dxf = dir.write("part.dxf", square_dxf("POCKET", 10, 10));
   const usina::test::Run r = simulate(dir, dir.write("p.ngc", zigzag(20)),
-                         "--target-dxf " + quote(dxf) + " --target POCKET=-2");
+                                      "--target-dxf " + quote(dxf) + " --target POCKET=-2");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("W_MATERIAL_ABOVE_TARGET"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(dir.read("r.json"));
@@ -62,7 +63,7 @@ TEST(SimulateTargetCli, WhatThePocketLeftIsAWarningWithItsPlace) {
   TempDir dir;
   const std::string dxf = dir.write("part.dxf", square_dxf("POCKET", 10, 10));
   const usina::test::Run r = simulate(dir, dir.write("p.ngc", zigzag(14)),
-                         "--target-dxf " + quote(dxf) + " --target POCKET=-2");
+                                      "--target-dxf " + quote(dxf) + " --target POCKET=-2");
   EXPECT_EQ(r.status, 0) << r.err;  // a warning
   EXPECT_NE(r.err.find("warning[W_MATERIAL_ABOVE_TARGET]: layer POCKET (Z-2)"), std::string::npos)
       << r.err;
@@ -74,7 +75,7 @@ TEST(SimulateTargetCli, WhatThePocketLeftIsAWarningWithItsPlace) {
   EXPECT_EQ(t["code"], "W_MATERIAL_ABOVE_TARGET");
   // A deeper target is not met by the full pocket either.
   const usina::test::Run deeper = simulate(dir, dir.write("q.ngc", zigzag(20)),
-                              "--target-dxf " + quote(dxf) + " --target POCKET=-2.5");
+                                           "--target-dxf " + quote(dxf) + " --target POCKET=-2.5");
   EXPECT_NE(deeper.err.find("up to 0.500 mm"), std::string::npos) << deeper.err;
 }
 
