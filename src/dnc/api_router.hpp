@@ -108,6 +108,7 @@ HttpResponse api_list_machines(ApiCall& c);
 HttpResponse api_machine(ApiCall& c);
 HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
 HttpResponse api_tool_life(ApiCall& c);
+HttpResponse api_reset_tool(ApiCall& c);
 HttpResponse api_start_job(ApiCall& c);
 HttpResponse api_job(ApiCall& c);
 HttpResponse api_stop_job(ApiCall& c);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
 #include "dnc/store_utilisation.hpp"
 
@@ -138,25 +139,56 @@ HttpResponse api_utilisation(ApiCall& c) {
        {"days", std::move(list)}});
 }
 
+namespace {
+
+nlohmann::json tool_json(const ToolUse& t, std::int64_t range_from_us) {
+  nlohmann::json out = {{"tool", t.tool},
+                        {"parts", t.parts},
+                        {"cutting_seconds", t.cutting_seconds},
+                        {"cutting_minutes", t.cutting_seconds / 60.0},
+                        {"seconds", t.seconds},
+                        {"since_us", t.from_reset ? t.reset->at_us : range_from_us},
+                        {"counted_from", t.from_reset ? "reset" : "range"},
+                        {"reset_at_us", nullptr},
+                        {"reset_by", nullptr},
+                        {"reset_reason", nullptr}};
+  if (t.reset) {
+    out["reset_at_us"] = t.reset->at_us;
+    out["reset_by"] = t.reset->by;
+    out["reset_reason"] = t.reset->reason;
+  }
+  return out;
+}
+
+// "T5" or "5" of the route: the tool number, 0 to kMaxToolNumber.
+std::optional<std::int64_t> tool_number(std::string_view text) {
+  if (!text.empty() && (text.front() == 'T' || text.front() == 't')) text.remove_prefix(1);
+  std::int64_t n = -1;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || n < 0 ||
+      n > kMaxToolNumber)
+    return std::nullopt;
+  return n;
+}
+
+}  // namespace
+
 HttpResponse api_tool_life(ApiCall& c) {
   if (c.ctx.machines.find(c.params[0]) == nullptr)
     return error_response(c.req, http::status::not_found,
                           fmt::format("no machine {}", c.params[0]));
-  // Without a range: every part the store knows of, up to today.
+  // Without a range: every part the store knows of, up to today, each tool
+  // counted from its last reset; with `from`, every tool from that day.
   auto range = read_range(c, 0, today(c));
   if (!range) return bad(c, range.error());
+  const bool from_resets = !c.target.query.contains("from");
   const std::int64_t day_us = 86'400'000'000;
-  auto life =
-      tool_life(c.ctx.store, c.params[0], range->first * day_us, (range->last + 1) * day_us);
+  const std::int64_t from_us = range->first * day_us;
+  auto life = tool_life(c.ctx.store, c.params[0], from_us, (range->last + 1) * day_us, from_resets);
   if (!life) return error_response(c.req, status_of(life.error()), life.error().message);
   nlohmann::json tools = nlohmann::json::array();
-  for (const ToolUse& t : life->tools) {
-    tools.push_back({{"tool", t.tool},
-                     {"parts", t.parts},
-                     {"cutting_seconds", t.cutting_seconds},
-                     {"cutting_minutes", t.cutting_seconds / 60.0},
-                     {"seconds", t.seconds}});
-  }
+  for (const ToolUse& t : life->tools)
+    tools.push_back(tool_json(t, from_us));
   return json_response(c.req, http::status::ok,
                        {{"machine", c.params[0]},
                         {"from", date_text(range->first)},
@@ -165,6 +197,33 @@ HttpResponse api_tool_life(ApiCall& c) {
                         {"parts_without_program", life->parts_without_program},
                         {"parts_without_tool_list", life->parts_without_tools},
                         {"tools", std::move(tools)}});
+}
+
+HttpResponse api_reset_tool(ApiCall& c) {
+  if (c.ctx.machines.find(c.params[0]) == nullptr)
+    return error_response(c.req, http::status::not_found,
+                          fmt::format("no machine {}", c.params[0]));
+  const auto tool = tool_number(c.params[1]);
+  if (!tool) {
+    return bad(c, fmt::format("the tool must be a whole number from 0 to {} (T5 or 5), not \"{}\"",
+                              kMaxToolNumber, c.params[1]));
+  }
+  std::string reason;
+  if (!c.req.body().empty()) {  // the body, and its reason, are optional
+    auto body = json_body(c.req);
+    if (!body) return bad(c, body.error());
+    auto given = string_field(*body, "reason", false);
+    if (!given) return bad(c, given.error());
+    reason = given->value_or("");
+  }
+  auto reset = reset_tool(c.ctx.store, c.actor(), c.params[0], *tool, reason);
+  if (!reset) return error_response(c.req, status_of(reset.error()), reset.error().message);
+  return json_response(c.req, http::status::ok,
+                       {{"machine", c.params[0]},
+                        {"tool", reset->tool},
+                        {"reset_at_us", reset->at_us},
+                        {"reset_by", reset->by},
+                        {"reset_reason", reset->reason}});
 }
 
 }  // namespace usina::dnc

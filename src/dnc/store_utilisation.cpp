@@ -162,39 +162,79 @@ StoreResult<std::optional<std::vector<CheckTool>>> tools_of(Store& store,
 
 }  // namespace
 
-StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
-                                std::int64_t to_us) {
-  std::vector<std::pair<std::string, std::string>> made;  // (program, revision) per part
+namespace {
+
+struct MadePart {
+  std::int64_t at_us;
+  std::string program;
+  std::string revision;
+};
+
+// The parts made in [from, to): drip feeds done, then the control's part lines.
+StoreResult<std::vector<MadePart>> parts_made(Store& store, std::string_view machine,
+                                              std::int64_t from_us, std::int64_t to_us) {
+  std::vector<MadePart> made;
   auto drips = drip_parts(store, machine, from_us, to_us);
   if (!drips) return tl::unexpected(drips.error());
   for (const SqlRow& r : *drips)
-    made.emplace_back(r.text(1), r.text(2));
+    made.push_back({r.integer(0), r.text(1), r.text(2)});
   auto control = control_parts(store, machine, from_us, to_us);
   if (!control) return tl::unexpected(control.error());
   for (const ControlPart& p : *control)
-    made.emplace_back(p.program, p.revision);
+    made.push_back({p.at_us, p.program, p.revision});
+  return made;
+}
+
+using ToolLists =
+    std::map<std::pair<std::string, std::string>, std::optional<std::vector<CheckTool>>>;
+
+// The tool list of a part's revision, read once per revision.
+StoreResult<const std::optional<std::vector<CheckTool>>*> tool_list(Store& store, ToolLists& known,
+                                                                    const MadePart& part) {
+  const auto key = std::pair{part.program, part.revision};
+  auto it = known.find(key);
+  if (it == known.end()) {
+    auto tools = tools_of(store, part.program, part.revision);
+    if (!tools) return tl::unexpected(tools.error());
+    it = known.emplace(key, std::move(*tools)).first;
+  }
+  return &it->second;
+}
+
+}  // namespace
+
+StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
+                                std::int64_t to_us, bool from_resets) {
+  auto made = parts_made(store, machine, from_us, to_us);
+  if (!made) return tl::unexpected(made.error());
+  auto resets = last_tool_resets(store, machine, to_us - 1);
+  if (!resets) return tl::unexpected(resets.error());
   ToolLife life;
-  std::map<std::pair<std::string, std::string>, std::optional<std::vector<CheckTool>>> known;
+  ToolLists known;
   std::map<int, ToolUse> by_tool;
-  for (const auto& part : made) {
+  for (const auto& [tool, reset] : *resets) {
+    ToolUse& use = by_tool[static_cast<int>(tool)];
+    use.tool = static_cast<int>(tool);
+    use.reset = reset;
+    use.from_reset = from_resets && reset.at_us >= from_us;
+  }
+  for (const MadePart& part : *made) {
     ++life.parts;
-    if (part.first.empty()) {
+    if (part.program.empty()) {
       ++life.parts_without_program;
       continue;
     }
-    auto it = known.find(part);
-    if (it == known.end()) {
-      auto tools = tools_of(store, part.first, part.second);
-      if (!tools) return tl::unexpected(tools.error());
-      it = known.emplace(part, std::move(*tools)).first;
-    }
-    if (!it->second) {
+    auto tools = tool_list(store, known, part);
+    if (!tools) return tl::unexpected(tools.error());
+    if (!**tools) {
       ++life.parts_without_tools;
       continue;
     }
-    for (const CheckTool& t : *it->second) {
+    for (const CheckTool& t : ***tools) {
       ToolUse& use = by_tool[t.tool];
       use.tool = t.tool;
+      // A part made before the tool's reset was cut by the insert it replaced.
+      if (use.from_reset && part.at_us < use.reset->at_us) continue;
       ++use.parts;
       use.cutting_seconds += t.cutting_s;
       use.seconds += t.total_s;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dnc/store.hpp"
+#include "dnc/store_tool_resets.hpp"
 
 namespace usina::dnc {
 
@@ -59,7 +60,9 @@ struct ToolUse {
   int tool = 0;
   std::int64_t parts = 0;
   double cutting_seconds = 0.0;
-  double seconds = 0.0;  // cutting, rapid and the rest while the tool is in the spindle
+  double seconds = 0.0;            // cutting, rapid and the rest while the tool is in the spindle
+  std::optional<ToolReset> reset;  // its last reset up to the range's end (store_tool_resets.hpp)
+  bool from_reset = false;         // its parts are counted from that reset, not the range's start
 };
 
 struct ToolLife {
@@ -69,7 +72,10 @@ struct ToolLife {
   std::int64_t parts_without_tools = 0;    // revisions checked before tool lists were kept
 };
 
+// The parts made in [from_us, to_us). With `from_resets`, a tool reset in
+// that range counts only the parts made at or after its last reset (a tool
+// reset but not used since is listed with no parts).
 StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
-                                std::int64_t to_us);
+                                std::int64_t to_us, bool from_resets = false);
 
 }  // namespace usina::dnc
