@@ -8,6 +8,7 @@
 
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/shift_calendar.hpp"
 #include "dnc/store_utilisation.hpp"
 
 namespace usina::dnc {
@@ -96,6 +97,25 @@ nlohmann::json day_json(const MachineDay& d, double elapsed) {
   return out;
 }
 
+// The shift figures of a day, for a machine with a calendar.
+void add_shift_figures(nlohmann::json& out, const MachineDay& d) {
+  const double running = out["running_seconds"].get<double>();
+  const double in_shift = std::min({d.running_in_shift_seconds, running, d.scheduled_seconds});
+  out["scheduled_seconds"] = d.scheduled_seconds;
+  out["running_in_shift_seconds"] = in_shift;
+  out["running_outside_shift_seconds"] = std::max(0.0, running - in_shift);
+  out["shift_utilisation"] = d.scheduled_seconds > 0
+                                 ? nlohmann::json(in_shift / d.scheduled_seconds)
+                                 : nlohmann::json(nullptr);
+}
+
+nlohmann::json calendar_json(const ShiftCalendar& c) {
+  return {{"timezone", c.timezone},
+          {"shifts", c.shifts.size()},
+          {"holidays", c.holidays.size()},
+          {"source", c.source}};
+}
+
 // The seconds of `day` that have passed at `now_us`.
 double elapsed_of(std::int64_t day, std::int64_t now_us) {
   const double since = static_cast<double>(now_us) / 1e6 - static_cast<double>(day) * kDaySeconds;
@@ -112,7 +132,8 @@ std::int64_t today(const ApiCall& c) {
 }  // namespace
 
 HttpResponse api_utilisation(ApiCall& c) {
-  if (c.ctx.machines.find(c.params[0]) == nullptr)
+  const MachineRuntime* machine = c.ctx.machines.find(c.params[0]);
+  if (machine == nullptr)
     return error_response(c.req, http::status::not_found,
                           fmt::format("no machine {}", c.params[0]));
   const std::int64_t now_day = today(c);
@@ -120,23 +141,42 @@ HttpResponse api_utilisation(ApiCall& c) {
   if (!range) return bad(c, range.error());
   if (range->last - range->first + 1 > kMaxDays)
     return bad(c, fmt::format("at most {} days at a time", kMaxDays));
-  auto days = machine_days(c.ctx.store, c.params[0], range->first, range->last);
+  const std::optional<ShiftCalendar>& calendar = machine->config.calendar;
+  const std::int64_t day_us = 86'400'000'000;
+  const TimeSpans shifts =
+      calendar ? shift_times(*calendar, range->first * day_us, (range->last + 1) * day_us)
+               : TimeSpans{};
+  auto days = machine_days(c.ctx.store, c.params[0], range->first, range->last,
+                           calendar ? &shifts : nullptr);
   if (!days) return error_response(c.req, status_of(days.error()), days.error().message);
   nlohmann::json list = nlohmann::json::array();
   double running = 0.0;
+  double scheduled = 0.0;
+  double in_shift = 0.0;
   for (const MachineDay& d : *days) {
     list.push_back(day_json(d, elapsed_of(d.day, c.ctx.store.now_us())));
     running += list.back()["running_seconds"].get<double>();
+    if (!calendar) continue;
+    add_shift_figures(list.back(), d);
+    scheduled += d.scheduled_seconds;
+    in_shift += list.back()["running_in_shift_seconds"].get<double>();
   }
-  return json_response(
-      c.req, http::status::ok,
-      {{"machine", c.params[0]},
-       {"from", date_text(range->first)},
-       {"to", date_text(range->last)},
-       {"day_seconds", kDaySeconds},
-       {"utilisation_basis", "running_seconds / 86400: a 24 h UTC calendar day, not a shift"},
-       {"utilisation", running / (kDaySeconds * static_cast<double>(days->size()))},
-       {"days", std::move(list)}});
+  nlohmann::json out = {
+      {"machine", c.params[0]},
+      {"from", date_text(range->first)},
+      {"to", date_text(range->last)},
+      {"day_seconds", kDaySeconds},
+      {"utilisation_basis", "running_seconds / 86400: a 24 h UTC calendar day, not a shift"},
+      {"utilisation", running / (kDaySeconds * static_cast<double>(days->size()))},
+      {"calendar", calendar ? calendar_json(*calendar) : nlohmann::json(nullptr)},
+      {"days", std::move(list)}};
+  if (calendar) {
+    out["shift_utilisation"] =
+        scheduled > 0 ? nlohmann::json(in_shift / scheduled) : nlohmann::json(nullptr);
+    out["shift_utilisation_basis"] =
+        "running seconds inside the shifts / the shifts' planned seconds, per UTC calendar day";
+  }
+  return json_response(c.req, http::status::ok, out);
 }
 
 namespace {

@@ -48,11 +48,22 @@ struct MachineDay {
   double control_cycle_seconds = 0.0;     // cycles the control printed (ran from its memory)
   std::int64_t parts = 0;                 // drip feeds done + the control's part lines
   double known_seconds = 0.0;             // the day's seconds with a record, up to now
+  // With shifts (machine_days' `shifts`): their planned seconds in the day,
+  // and the running seconds (feeding, the control's cycles) inside them.
+  double scheduled_seconds = 0.0;
+  double running_in_shift_seconds = 0.0;
 };
 
-// Days `first_day` to `last_day` (inclusive) of `machine`.
+// [start, end) in microseconds since 1970 (UTC), in order, not overlapping.
+using TimeSpans = std::vector<std::pair<std::int64_t, std::int64_t>>;
+
+// Days `first_day` to `last_day` (inclusive) of `machine`. With `shifts`
+// (shift_calendar.hpp's shift_times), each day's scheduled and in-shift
+// running seconds too; a control's cycle runs from its part line back by
+// the cycle's seconds (within the day).
 StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
-                                                  std::int64_t first_day, std::int64_t last_day);
+                                                  std::int64_t first_day, std::int64_t last_day,
+                                                  const TimeSpans* shifts = nullptr);
 
 // A tool's use on a machine: each part made counts once for each tool its
 // program uses, with that tool's cutting time from the revision's check.
