@@ -258,12 +258,13 @@ HttpResponse api_reset_tool(ApiCall& c) {
   }
   auto reset = reset_tool(c.ctx.store, c.actor(), c.params[0], *tool, reason);
   if (!reset) return error_response(c.req, status_of(reset.error()), reset.error().message);
-  return json_response(c.req, http::status::ok,
-                       {{"machine", c.params[0]},
-                        {"tool", reset->tool},
-                        {"reset_at_us", reset->at_us},
-                        {"reset_by", reset->by},
-                        {"reset_reason", reset->reason}});
+  const nlohmann::json answer = {{"machine", c.params[0]},
+                                 {"tool", reset->tool},
+                                 {"reset_at_us", reset->at_us},
+                                 {"reset_by", reset->by},
+                                 {"reset_reason", reset->reason}};
+  c.ctx.events.publish("machine.tool_reset", answer);
+  return json_response(c.req, http::status::ok, answer);
 }
 
 }  // namespace usina::dnc

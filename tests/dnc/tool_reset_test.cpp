@@ -160,6 +160,35 @@ TEST(ApiToolReset, TheCountStartsAgainAtTheResetAndARangeCountsEverything) {
   EXPECT_EQ(resets, 2);
 }
 
+TEST(ApiToolReset, AResetIsAnEventOnTheWebSocket) {
+  RunningServer s;
+  Control control = start_with_control(s);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", usina::test::kPassword);
+  namespace websocket = boost::beast::websocket;
+  boost::asio::io_context io;
+  websocket::stream<boost::beast::tcp_stream> ws(io);
+  ws.next_layer().connect(
+      boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), c.port()));
+  ws.set_option(websocket::stream_base::decorator([&](websocket::request_type& req) {
+    req.set(boost::beast::http::field::authorization, "Bearer " + oper);
+  }));
+  ws.handshake("127.0.0.1", "/api/events");
+  ASSERT_EQ(c.post("/api/machines/mill-1/tools/T4/reset", {{"reason", "cutter"}}, oper).status,
+            200);
+  nlohmann::json event = nlohmann::json::object();
+  for (int i = 0; i < 100 && event.value("type", "") != "machine.tool_reset"; ++i) {
+    boost::beast::flat_buffer b;
+    ws.read(b);
+    event = nlohmann::json::parse(boost::beast::buffers_to_string(b.data()));
+  }
+  EXPECT_EQ(event["type"], "machine.tool_reset");
+  EXPECT_EQ(event["machine"], "mill-1");
+  EXPECT_EQ(event["tool"], 4);
+  EXPECT_EQ(event["reset_by"], "oper");
+  EXPECT_EQ(event["reset_reason"], "cutter");
+}
+
 TEST(ApiToolReset, BadToolsAndBodiesAre400AnUnknownMachine404AndTheRouteIsWalked) {
   RunningServer s;
   Control control = start_with_control(s);
