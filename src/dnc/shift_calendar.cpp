@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <mutex>
 #include <span>
 
@@ -248,8 +250,9 @@ void read_holidays(Reader& r, const toml::node& node, ShiftCalendar& c) {
   }
 }
 
-// The process's time zone is the C library's global state: conversions in
-// another zone set TZ, convert, and put it back, one thread at a time.
+// The process's time zone is the C library's global state: reading another
+// zone sets TZ and puts it back, one thread at a time. Only zone_offsets
+// does it, while the configuration is read.
 class ZoneScope {
  public:
   explicit ZoneScope(const std::string& zone) : lock_(mutex()) {
@@ -271,37 +274,87 @@ class ZoneScope {
   ZoneScope& operator=(const ZoneScope&) = delete;
 
   // The zone's offset from UTC, in seconds, at `utc_s`.
-  static std::int64_t offset_at(std::int64_t utc_s) {
+  static std::int32_t offset_at(std::int64_t utc_s) {
     const auto t = static_cast<std::time_t>(utc_s);
     std::tm tm{};
     ::localtime_r(&t, &tm);
-    return tm.tm_gmtoff;
+    return static_cast<std::int32_t>(tm.tm_gmtoff);
   }
 
-  // The UTC instant of the wall-clock time `local_s` (seconds since 1970 as
-  // if the wall clock were UTC): the first of two when the clocks go back;
-  // on the old offset when the clocks skip it.
-  static std::int64_t utc_of(std::int64_t local_s) {
-    const std::int64_t before = offset_at(local_s - kDaySeconds);
-    const std::int64_t after = offset_at(local_s + kDaySeconds);
-    const std::int64_t early = local_s - std::max(before, after);
-    const std::int64_t late = local_s - std::min(before, after);
-    for (const std::int64_t t : {early, late})
-      if (t + offset_at(t) == local_s) return t;
-    return local_s - before;
-  }
-
- private:
   static std::mutex& mutex() {
     static std::mutex m;
     return m;
   }
 
+ private:
   std::unique_lock<std::mutex> lock_;
   std::optional<std::string> saved_;
 };
 
+constexpr std::int64_t kProbeFrom = 0;            // 1970-01-01 UTC
+constexpr std::int64_t kProbeTo = 4'133'980'800;  // 2101-01-01 UTC
+constexpr std::int64_t kProbeStep = 3600;         // no zone changes twice within an hour
+
+// The zone's offsets by asking glibc every hour of 1970 to 2100, and to the
+// second (bisecting) in each hour the offset changes. Asking glibc rather
+// than reading the TZif file ourselves keeps its reading of the file's POSIX
+// rule for the years past the file's last transition, and its answers to
+// the second.
+ZoneOffsets probe_offsets(const std::string& name) {
+  const ZoneScope zone(name);
+  ZoneOffsets z;
+  z.initial_s = ZoneScope::offset_at(kProbeFrom);
+  std::int32_t current = z.initial_s;
+  for (std::int64_t t = kProbeFrom + kProbeStep; t < kProbeTo; t += kProbeStep) {
+    const std::int32_t now = ZoneScope::offset_at(t);
+    if (now == current) continue;
+    std::int64_t lo = t - kProbeStep;  // still `current`
+    std::int64_t hi = t;               // already changed
+    while (hi - lo > 1) {
+      const std::int64_t mid = lo + (hi - lo) / 2;
+      (ZoneScope::offset_at(mid) == current ? lo : hi) = mid;
+    }
+    z.changes.push_back({hi, ZoneScope::offset_at(hi)});
+    current = z.changes.back().offset_s;
+    if (current != now) t = hi;  // a second change within the hour: go on from this one
+  }
+  return z;
+}
+
+// The UTC instant of the wall-clock time `local_s` (seconds since 1970 as
+// if the wall clock were UTC): the first of two when the clocks go back;
+// on the old offset when the clocks skip it.
+std::int64_t utc_of(const ZoneOffsets* zone, std::int64_t local_s) {
+  const auto offset = [zone](std::int64_t t) -> std::int64_t {
+    return zone != nullptr ? zone->offset_at(t) : 0;
+  };
+  const std::int64_t before = offset(local_s - kDaySeconds);
+  const std::int64_t after = offset(local_s + kDaySeconds);
+  const std::int64_t early = local_s - std::max(before, after);
+  const std::int64_t late = local_s - std::min(before, after);
+  for (const std::int64_t t : {early, late})
+    if (t + offset(t) == local_s) return t;
+  return local_s - before;
+}
+
 }  // namespace
+
+std::int64_t ZoneOffsets::offset_at(std::int64_t utc_s) const {
+  const auto after = std::upper_bound(changes.begin(), changes.end(), utc_s,
+                                      [](std::int64_t t, const Change& c) { return t < c.at_s; });
+  return after == changes.begin() ? initial_s : std::prev(after)->offset_s;
+}
+
+std::shared_ptr<const ZoneOffsets> zone_offsets(const std::string& name) {
+  static std::map<std::string, std::shared_ptr<const ZoneOffsets>> read;
+  {
+    const std::lock_guard lock(ZoneScope::mutex());
+    if (auto it = read.find(name); it != read.end()) return it->second;
+  }
+  auto zone = std::make_shared<const ZoneOffsets>(probe_offsets(name));
+  const std::lock_guard lock(ZoneScope::mutex());
+  return read.emplace(name, std::move(zone)).first->second;
+}
 
 int Shift::minutes() const {
   return end_minute > start_minute ? end_minute - start_minute
@@ -344,6 +397,7 @@ std::optional<ShiftCalendar> read_calendar(const toml::table& table, std::string
     r.fail(zone->source(), fmt::format("{}.timezone: {}", where, why));
   } else {
     c.timezone = *name;
+    c.offsets = zone_offsets(c.timezone);
   }
   if (const toml::node* shifts = table.get("shifts")) {
     read_shifts(r, *shifts, c);
@@ -367,7 +421,9 @@ std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalend
   // local dates from two days before to a day after cover every shift.
   const std::int64_t first = floor_day(from_us) - 2;
   const std::int64_t last = floor_day(to_us - 1) + 1;
-  const ZoneScope zone(calendar.timezone);
+  // The table built when the calendar was read: no TZ, no libc zone call
+  // here, so a server's threads never see the environment change.
+  const ZoneOffsets* zone = calendar.offsets.get();
   for (std::int64_t date = first; date <= last; ++date) {
     if (calendar.holidays.contains(date)) continue;
     // 1970-01-01 was a Thursday (3 counting from Monday).
@@ -375,8 +431,8 @@ std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalend
     for (const Shift& s : calendar.shifts) {
       if ((s.days & (1u << weekday)) == 0) continue;
       const std::int64_t local = date * kDaySeconds + s.start_minute * 60;
-      const std::int64_t start = ZoneScope::utc_of(local) * 1'000'000;
-      const std::int64_t end = ZoneScope::utc_of(local + s.minutes() * 60) * 1'000'000;
+      const std::int64_t start = utc_of(zone, local) * 1'000'000;
+      const std::int64_t end = utc_of(zone, local + s.minutes() * 60) * 1'000'000;
       if (end > from_us && start < to_us) out.emplace_back(start, end);
     }
   }

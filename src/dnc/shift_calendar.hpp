@@ -14,9 +14,15 @@
 // 2026-03-29, 9 h on 2026-10-25). A start or end that the change skips
 // (02:30 on the spring-forward night) is the instant it would have been on
 // the old offset (03:30 summer time); one that happens twice is the first.
+//
+// The zone is read once, when the calendar is read (before the server starts
+// a thread): glibc gives its offsets through TZ, and changing the
+// environment while other threads may call getenv is undefined behaviour.
+// Every later conversion uses the table of offset changes built then.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -36,11 +42,32 @@ struct Shift {
   int minutes() const;    // its length on the clock, 1 to 1440
 };
 
+// A zone's offsets from UTC from 1970 to 2100, as glibc gives them: the
+// offset before the first change, then each change to the second. Before
+// 1970 the first offset holds, after 2100 the last.
+struct ZoneOffsets {
+  struct Change {
+    std::int64_t at_s = 0;  // UTC seconds since 1970 from which `offset_s` holds
+    std::int32_t offset_s = 0;
+  };
+
+  std::int32_t initial_s = 0;   // before the first change
+  std::vector<Change> changes;  // in order of time
+  std::int64_t offset_at(std::int64_t utc_s) const;
+};
+
+// The offsets of the zone `name` (a name timezone_error accepts). It sets TZ
+// for a moment, one call at a time, and puts it back: call it only while no
+// other thread runs (the configuration is read before the server starts).
+// A zone read before is not read again.
+std::shared_ptr<const ZoneOffsets> zone_offsets(const std::string& name);
+
 struct ShiftCalendar {
-  std::string timezone;             // a name under /usr/share/zoneinfo ("UTC", "Europe/Berlin")
-  std::vector<Shift> shifts;        // none overlap (read_calendar refuses it)
-  std::set<std::int64_t> holidays;  // local dates, days since 1970-01-01
-  std::string source;               // "server" ([calendar]) or "machine" (its own)
+  std::string timezone;  // a name under /usr/share/zoneinfo ("UTC", "Europe/Berlin")
+  std::shared_ptr<const ZoneOffsets> offsets;  // its offsets (none: UTC)
+  std::vector<Shift> shifts;                   // none overlap (read_calendar refuses it)
+  std::set<std::int64_t> holidays;             // local dates, days since 1970-01-01
+  std::string source;                          // "server" ([calendar]) or "machine" (its own)
 };
 
 // The calendar of `table` (its keys `timezone`, `shifts`, `holidays`), or

@@ -6,7 +6,10 @@
 #include "dnc/shift_calendar.hpp"
 
 #include <chrono>
+#include <cstdlib>
+#include <ctime>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "api_control.hpp"
@@ -224,6 +227,62 @@ TEST(ShiftTimes, TheClockChangesOfEuropeBerlinMakeShiftsShorterAndLonger) {
   ASSERT_EQ(k.size(), 1u);
   EXPECT_EQ(k[0].first, spring * kDayUs + kHourUs + kHourUs / 2);
   EXPECT_EQ(k[0].second, spring * kDayUs + 3 * kHourUs);
+}
+
+TEST(ZoneOffsets, EuropeBerlinChangesToTheSecondFrom1970To2100) {
+  const auto start = std::chrono::steady_clock::now();
+  const ZoneOffsets z = *zone_offsets("Europe/Berlin");
+  // The cost is the first call's (later ones share the table); a figure, not a test.
+  fmt::print("zone table Europe/Berlin: {} changes in {} ms\n", z.changes.size(),
+             std::chrono::duration_cast<std::chrono::milliseconds>(
+                 std::chrono::steady_clock::now() - start)
+                 .count());
+  const std::int64_t spring = date_of(2026, 3, 29) * 86'400 + 3600;  // 01:00 UTC
+  const std::int64_t autumn = date_of(2026, 10, 25) * 86'400 + 3600;
+  EXPECT_EQ(z.offset_at(spring - 1), 3600);
+  EXPECT_EQ(z.offset_at(spring), 7200);
+  EXPECT_EQ(z.offset_at(autumn - 1), 7200);
+  EXPECT_EQ(z.offset_at(autumn), 3600);
+  EXPECT_EQ(z.initial_s, 3600);
+  // DST every year from 1980: two changes a year to 2100 (the zone's rule past its file).
+  EXPECT_GE(z.changes.size(), 2u * (2100 - 1980 + 1));
+  EXPECT_EQ(z.offset_at(date_of(2100, 7, 1) * 86'400), 7200);
+  EXPECT_EQ(z.offset_at(date_of(2200, 7, 1) * 86'400), 3600);  // past 2100: the last offset
+  EXPECT_EQ(zone_offsets("Europe/Berlin").get(), zone_offsets("Europe/Berlin").get());
+}
+
+// The conversion must not read TZ once the calendar is read: the server
+// never changes the environment while its threads run (setenv beside a
+// getenv in libpq or OpenSSL is undefined behaviour). With TZ set to another
+// zone, Berlin's clock changes still come out of the calendar's own table.
+TEST(ShiftTimes, TheEnvironmentsTimeZoneIsNotReadAfterTheCalendarIsRead) {
+  const ShiftCalendar night = good(
+      "timezone = \"Europe/Berlin\"\nshifts = [{days = \"sat\", start = \"22:00\", end = "
+      "\"06:00\"}]\n");
+  const char* was = std::getenv("TZ");
+  const std::optional<std::string> saved =
+      was != nullptr ? std::optional(std::string(was)) : std::nullopt;
+  ::setenv("TZ", ":America/Sao_Paulo", 1);
+  ::tzset();
+  // glibc now answers for Sao Paulo (-03:00, no DST since 2019)...
+  const std::time_t t = date_of(2026, 3, 28) * 86'400;
+  std::tm tm{};
+  ::localtime_r(&t, &tm);
+  EXPECT_EQ(tm.tm_gmtoff, -3 * 3600);
+  // ...and the calendar still for Berlin: 22:00 CET is 21:00 UTC, the night 7 h and 9 h.
+  const std::int64_t spring = date_of(2026, 3, 29);
+  const std::int64_t autumn = date_of(2026, 10, 25);
+  const auto s = shift_times(night, (spring - 1) * kDayUs, spring * kDayUs);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_EQ(s[0].first, (spring - 1) * kDayUs + 21 * kHourUs);
+  EXPECT_DOUBLE_EQ(hours(night, (spring - 2) * kDayUs, (spring + 2) * kDayUs), 7.0);
+  EXPECT_DOUBLE_EQ(hours(night, (autumn - 2) * kDayUs, (autumn + 2) * kDayUs), 9.0);
+  if (saved) {
+    ::setenv("TZ", saved->c_str(), 1);
+  } else {
+    ::unsetenv("TZ");
+  }
+  ::tzset();
 }
 
 TEST(ShiftTimes, NoShiftStartsOnAHolidayButTheNightBeforeRunsIntoIt) {
