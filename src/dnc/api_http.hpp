@@ -4,6 +4,7 @@
 // the query string into its parameters.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -20,6 +21,15 @@ namespace usina::dnc {
 namespace http = boost::beast::http;
 using HttpRequest = http::request<http::string_body>;
 using HttpResponse = http::response<http::string_body>;
+
+// A body written after its head, piece by piece, so that an answer of any
+// size holds one piece in memory (GET /api/export). The head carries the
+// Content-Length of the whole body. `next` gives the following piece: empty
+// at the end, nothing when the body cannot go on (the connection is then
+// closed short of its length, which the client sees as a cut transfer).
+struct StreamedBody {
+  std::function<std::optional<std::string>()> next;
+};
 
 HttpResponse json_response(const HttpRequest& req, http::status status, const nlohmann::json& body);
 HttpResponse error_response(const HttpRequest& req, http::status status, std::string_view message);

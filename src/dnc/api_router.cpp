@@ -42,6 +42,9 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/machines/{}/utilisation", A::Permission, P::ReadMachines,
              api_utilisation},
     ApiRoute{V::get, "/api/machines/{}/tools", A::Permission, P::ReadMachines, api_tool_life},
+    // A tool's count starts again: its insert or cutter was changed (docs/dnc.md).
+    ApiRoute{V::post, "/api/machines/{}/tools/{}/reset", A::Permission, P::ResetToolLife,
+             api_reset_tool},
     ApiRoute{V::post, "/api/machines/{}/jobs", A::Permission, P::StartJob, api_start_job},
     ApiRoute{V::get, "/api/jobs/{}", A::Permission, P::ReadMachines, api_job},
     ApiRoute{V::post, "/api/jobs/{}/stop", A::Permission, P::StartJob, api_stop_job},
@@ -106,6 +109,7 @@ std::span<const ApiRoute> api_routes() {
 }
 
 HttpResponse Api::handle(const HttpRequest& req, const std::string& origin) {
+  stream_.reset();
   auto target = parse_target(std::string_view(req.target().data(), req.target().size()));
   if (!target) {
     return error_response(req, http::status::bad_request,
@@ -118,7 +122,7 @@ HttpResponse Api::handle(const HttpRequest& req, const std::string& origin) {
     if (!params) continue;
     path_known = true;
     if (route.method != req.method()) continue;
-    ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_};
+    ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_, &stream_};
     if (auto refused = authorise(call, route)) return with_www_authenticate(std::move(*refused));
     return with_www_authenticate(route.handler(call));
   }
@@ -152,7 +156,7 @@ bool Api::handle_later(const HttpRequest& req, const std::string& origin, HttpAn
     if (route.later == nullptr || route.method != req.method()) continue;
     auto params = match(route.pattern, target->segments);
     if (!params) continue;
-    ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_};
+    ApiCall call{req, *target, std::move(*params), std::nullopt, origin, ctx_, nullptr};
     if (auto refused = authorise(call, route)) {
       answer(with_www_authenticate(std::move(*refused)));
       return true;

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dnc/api_events.hpp"
@@ -38,6 +39,9 @@ struct ApiCall {
   std::optional<Session> session;   // the caller (every route but login)
   std::string origin;
   ApiContext& ctx;
+  // Where a handler puts a body that streams after its answer's head (the
+  // answer then has none of its own); null when the caller cannot stream.
+  std::optional<StreamedBody>* stream = nullptr;
 
   Actor actor() const { return Actor{session ? session->user.name : "", origin}; }
 
@@ -70,11 +74,16 @@ class Api {
   // figures): true when `req` is one, and `answer` is called later (HttpHandlers::later).
   bool handle_later(const HttpRequest& req, const std::string& origin, HttpAnswer& answer);
   HttpResponse handle(const HttpRequest& req, const std::string& origin);
+
+  // The streamed body of the answer handle() just gave (HttpHandlers::take_stream).
+  std::optional<StreamedBody> take_stream() { return std::exchange(stream_, std::nullopt); }
+
   // `GET /api/events`: takes the stream (WS or WSS) for the events, or refuses.
   std::optional<HttpResponse> upgrade(HttpStream& stream, const HttpRequest& req);
 
  private:
   ApiContext ctx_;
+  std::optional<StreamedBody> stream_;
 };
 
 // The handlers, by topic (api_auth.cpp, api_programs.cpp, api_machines.cpp, api_audit.cpp).
@@ -99,6 +108,7 @@ HttpResponse api_list_machines(ApiCall& c);
 HttpResponse api_machine(ApiCall& c);
 HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
 HttpResponse api_tool_life(ApiCall& c);
+HttpResponse api_reset_tool(ApiCall& c);
 HttpResponse api_start_job(ApiCall& c);
 HttpResponse api_job(ApiCall& c);
 HttpResponse api_stop_job(ApiCall& c);

@@ -9,6 +9,7 @@
 // bytes that are not UTF-8) and `tar x && sha256sum -c released.sha256`
 // checks the copy.
 #include <filesystem>
+#include <memory>
 #include <set>
 
 #include <fmt/format.h>
@@ -16,15 +17,14 @@
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
 #include "dnc/base64.hpp"
+#include "dnc/export_stream.hpp"
 #include "dnc/store_import.hpp"
 #include "dnc/store_names.hpp"
-#include "dnc/tar_writer.hpp"
 
 namespace usina::dnc {
 namespace {
 
 constexpr std::size_t kMaxImportFiles = 1000;
-constexpr std::size_t kMaxExportBytes = 512u << 20;  // the archive is built in memory
 
 HttpResponse bad(const ApiCall& c, const std::string& message) {
   return error_response(c.req, http::status::bad_request, message);
@@ -150,28 +150,30 @@ HttpResponse api_export(ApiCall& c) {
     return bad(c, "extension: 1 to 8 letters or digits (without the dot)");
   auto set = released_set(c.ctx.store, extension);
   if (!set) return error_response(c.req, status_of(set.error()), set.error().message);
-  TarWriter tar;
-  std::string manifest;
-  const std::int64_t now_s = c.ctx.store.now_us() / 1'000'000;
-  for (const ExportedFile& f : *set) {
-    auto bytes = revision_bytes(c.ctx.store, f.program, f.hash);  // verified against its hash
-    if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
-    if (tar.size() + bytes->size() > kMaxExportBytes) {
-      return error_response(c.req, http::status::insufficient_storage,
-                            fmt::format("the released set is past the export limit of {} MiB",
-                                        kMaxExportBytes >> 20));
-    }
-    tar.add(f.file, *bytes, now_s);
-    manifest += fmt::format("{}  {}\n", f.hash, f.file);
-  }
-  tar.add("released.sha256", manifest, now_s);
-  if (auto a = audit_export(c.ctx.store, c.actor(), set->size(), "http"); !a)
+  const std::size_t programs = set->size();
+  auto tar =
+      std::make_shared<ReleasedTar>(c.ctx.store, std::move(*set), c.ctx.store.now_us() / 1'000'000);
+  // The entry records the export as it starts: a client that stops reading
+  // half-way has still been handed the set.
+  if (auto a = audit_export(c.ctx.store, c.actor(), programs, "http"); !a)
     return error_response(c.req, status_of(a.error()), a.error().message);
   HttpResponse res{http::status::ok, c.req.version()};
   res.set(http::field::content_type, "application/x-tar");
   res.set(http::field::content_disposition, "attachment; filename=\"released.tar\"");
   res.keep_alive(c.req.keep_alive());
-  res.body() = tar.finish();
+  StreamedBody body{[tar] { return tar->next(); }};
+  if (c.stream != nullptr) {
+    res.content_length(tar->size());
+    *c.stream = std::move(body);
+    return res;
+  }
+  // A caller that cannot stream (a test calling Api::handle) gets it whole.
+  while (auto piece = body.next()) {
+    if (piece->empty()) break;
+    res.body() += *piece;
+  }
+  if (!tar->error().empty())
+    return error_response(c.req, http::status::internal_server_error, tar->error());
   res.prepare_payload();
   return res;
 }

@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/shift_calendar.hpp"
 #include "dnc/store_utilisation.hpp"
 
 namespace usina::dnc {
@@ -95,6 +97,25 @@ nlohmann::json day_json(const MachineDay& d, double elapsed) {
   return out;
 }
 
+// The shift figures of a day, for a machine with a calendar.
+void add_shift_figures(nlohmann::json& out, const MachineDay& d) {
+  const double running = out["running_seconds"].get<double>();
+  const double in_shift = std::min({d.running_in_shift_seconds, running, d.scheduled_seconds});
+  out["scheduled_seconds"] = d.scheduled_seconds;
+  out["running_in_shift_seconds"] = in_shift;
+  out["running_outside_shift_seconds"] = std::max(0.0, running - in_shift);
+  out["shift_utilisation"] = d.scheduled_seconds > 0
+                                 ? nlohmann::json(in_shift / d.scheduled_seconds)
+                                 : nlohmann::json(nullptr);
+}
+
+nlohmann::json calendar_json(const ShiftCalendar& c) {
+  return {{"timezone", c.timezone},
+          {"shifts", c.shifts.size()},
+          {"holidays", c.holidays.size()},
+          {"source", c.source}};
+}
+
 // The seconds of `day` that have passed at `now_us`.
 double elapsed_of(std::int64_t day, std::int64_t now_us) {
   const double since = static_cast<double>(now_us) / 1e6 - static_cast<double>(day) * kDaySeconds;
@@ -111,7 +132,8 @@ std::int64_t today(const ApiCall& c) {
 }  // namespace
 
 HttpResponse api_utilisation(ApiCall& c) {
-  if (c.ctx.machines.find(c.params[0]) == nullptr)
+  const MachineRuntime* machine = c.ctx.machines.find(c.params[0]);
+  if (machine == nullptr)
     return error_response(c.req, http::status::not_found,
                           fmt::format("no machine {}", c.params[0]));
   const std::int64_t now_day = today(c);
@@ -119,44 +141,94 @@ HttpResponse api_utilisation(ApiCall& c) {
   if (!range) return bad(c, range.error());
   if (range->last - range->first + 1 > kMaxDays)
     return bad(c, fmt::format("at most {} days at a time", kMaxDays));
-  auto days = machine_days(c.ctx.store, c.params[0], range->first, range->last);
+  const std::optional<ShiftCalendar>& calendar = machine->config.calendar;
+  const std::int64_t day_us = 86'400'000'000;
+  const TimeSpans shifts =
+      calendar ? shift_times(*calendar, range->first * day_us, (range->last + 1) * day_us)
+               : TimeSpans{};
+  auto days = machine_days(c.ctx.store, c.params[0], range->first, range->last,
+                           calendar ? &shifts : nullptr);
   if (!days) return error_response(c.req, status_of(days.error()), days.error().message);
   nlohmann::json list = nlohmann::json::array();
   double running = 0.0;
+  double scheduled = 0.0;
+  double in_shift = 0.0;
   for (const MachineDay& d : *days) {
     list.push_back(day_json(d, elapsed_of(d.day, c.ctx.store.now_us())));
     running += list.back()["running_seconds"].get<double>();
+    if (!calendar) continue;
+    add_shift_figures(list.back(), d);
+    scheduled += d.scheduled_seconds;
+    in_shift += list.back()["running_in_shift_seconds"].get<double>();
   }
-  return json_response(
-      c.req, http::status::ok,
-      {{"machine", c.params[0]},
-       {"from", date_text(range->first)},
-       {"to", date_text(range->last)},
-       {"day_seconds", kDaySeconds},
-       {"utilisation_basis", "running_seconds / 86400: a 24 h UTC calendar day, not a shift"},
-       {"utilisation", running / (kDaySeconds * static_cast<double>(days->size()))},
-       {"days", std::move(list)}});
+  nlohmann::json out = {
+      {"machine", c.params[0]},
+      {"from", date_text(range->first)},
+      {"to", date_text(range->last)},
+      {"day_seconds", kDaySeconds},
+      {"utilisation_basis", "running_seconds / 86400: a 24 h UTC calendar day, not a shift"},
+      {"utilisation", running / (kDaySeconds * static_cast<double>(days->size()))},
+      {"calendar", calendar ? calendar_json(*calendar) : nlohmann::json(nullptr)},
+      {"days", std::move(list)}};
+  if (calendar) {
+    out["shift_utilisation"] =
+        scheduled > 0 ? nlohmann::json(in_shift / scheduled) : nlohmann::json(nullptr);
+    out["shift_utilisation_basis"] =
+        "running seconds inside the shifts / the shifts' planned seconds, per UTC calendar day";
+  }
+  return json_response(c.req, http::status::ok, out);
 }
+
+namespace {
+
+nlohmann::json tool_json(const ToolUse& t, std::int64_t range_from_us) {
+  nlohmann::json out = {{"tool", t.tool},
+                        {"parts", t.parts},
+                        {"cutting_seconds", t.cutting_seconds},
+                        {"cutting_minutes", t.cutting_seconds / 60.0},
+                        {"seconds", t.seconds},
+                        {"since_us", t.from_reset ? t.reset->at_us : range_from_us},
+                        {"counted_from", t.from_reset ? "reset" : "range"},
+                        {"reset_at_us", nullptr},
+                        {"reset_by", nullptr},
+                        {"reset_reason", nullptr}};
+  if (t.reset) {
+    out["reset_at_us"] = t.reset->at_us;
+    out["reset_by"] = t.reset->by;
+    out["reset_reason"] = t.reset->reason;
+  }
+  return out;
+}
+
+// "T5" or "5" of the route: the tool number, 0 to kMaxToolNumber.
+std::optional<std::int64_t> tool_number(std::string_view text) {
+  if (!text.empty() && (text.front() == 'T' || text.front() == 't')) text.remove_prefix(1);
+  std::int64_t n = -1;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || n < 0 ||
+      n > kMaxToolNumber)
+    return std::nullopt;
+  return n;
+}
+
+}  // namespace
 
 HttpResponse api_tool_life(ApiCall& c) {
   if (c.ctx.machines.find(c.params[0]) == nullptr)
     return error_response(c.req, http::status::not_found,
                           fmt::format("no machine {}", c.params[0]));
-  // Without a range: every part the store knows of, up to today.
+  // Without a range: every part the store knows of, up to today, each tool
+  // counted from its last reset; with `from`, every tool from that day.
   auto range = read_range(c, 0, today(c));
   if (!range) return bad(c, range.error());
+  const bool from_resets = !c.target.query.contains("from");
   const std::int64_t day_us = 86'400'000'000;
-  auto life =
-      tool_life(c.ctx.store, c.params[0], range->first * day_us, (range->last + 1) * day_us);
+  const std::int64_t from_us = range->first * day_us;
+  auto life = tool_life(c.ctx.store, c.params[0], from_us, (range->last + 1) * day_us, from_resets);
   if (!life) return error_response(c.req, status_of(life.error()), life.error().message);
   nlohmann::json tools = nlohmann::json::array();
-  for (const ToolUse& t : life->tools) {
-    tools.push_back({{"tool", t.tool},
-                     {"parts", t.parts},
-                     {"cutting_seconds", t.cutting_seconds},
-                     {"cutting_minutes", t.cutting_seconds / 60.0},
-                     {"seconds", t.seconds}});
-  }
+  for (const ToolUse& t : life->tools)
+    tools.push_back(tool_json(t, from_us));
   return json_response(c.req, http::status::ok,
                        {{"machine", c.params[0]},
                         {"from", date_text(range->first)},
@@ -165,6 +237,34 @@ HttpResponse api_tool_life(ApiCall& c) {
                         {"parts_without_program", life->parts_without_program},
                         {"parts_without_tool_list", life->parts_without_tools},
                         {"tools", std::move(tools)}});
+}
+
+HttpResponse api_reset_tool(ApiCall& c) {
+  if (c.ctx.machines.find(c.params[0]) == nullptr)
+    return error_response(c.req, http::status::not_found,
+                          fmt::format("no machine {}", c.params[0]));
+  const auto tool = tool_number(c.params[1]);
+  if (!tool) {
+    return bad(c, fmt::format("the tool must be a whole number from 0 to {} (T5 or 5), not \"{}\"",
+                              kMaxToolNumber, c.params[1]));
+  }
+  std::string reason;
+  if (!c.req.body().empty()) {  // the body, and its reason, are optional
+    auto body = json_body(c.req);
+    if (!body) return bad(c, body.error());
+    auto given = string_field(*body, "reason", false);
+    if (!given) return bad(c, given.error());
+    reason = given->value_or("");
+  }
+  auto reset = reset_tool(c.ctx.store, c.actor(), c.params[0], *tool, reason);
+  if (!reset) return error_response(c.req, status_of(reset.error()), reset.error().message);
+  const nlohmann::json answer = {{"machine", c.params[0]},
+                                 {"tool", reset->tool},
+                                 {"reset_at_us", reset->at_us},
+                                 {"reset_by", reset->by},
+                                 {"reset_reason", reset->reason}};
+  c.ctx.events.publish("machine.tool_reset", answer);
+  return json_response(c.req, http::status::ok, answer);
 }
 
 }  // namespace usina::dnc

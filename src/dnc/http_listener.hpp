@@ -33,6 +33,9 @@ struct HttpHandlers {
   std::function<bool(const HttpRequest&, const std::string& origin, Answer& answer)> later;
   // The answer to a request from `origin` (the client's address, "127.0.0.1").
   std::function<HttpResponse(const HttpRequest&, const std::string& origin)> request;
+  // The streamed body of the answer `request` just gave, if it has one
+  // (called right after it, on the loop); empty: no answer streams.
+  std::function<std::optional<StreamedBody>()> take_stream;
   // A WebSocket upgrade: takes the stream (plain or TLS), or answers with an error.
   std::function<std::optional<HttpResponse>(HttpStream&, const HttpRequest&)> upgrade;
 };

@@ -106,7 +106,11 @@ void HttpSession::on_read(const beast::error_code& ec) {
     };
     if (later(req, origin_, reply)) return;  // the session waits, reading nothing
   }
-  answer(listener_->handlers().request(req, origin_), false);
+  HttpResponse res = listener_->handlers().request(req, origin_);
+  if (const auto& take = listener_->handlers().take_stream) {
+    if (auto body = take()) return answer_streamed(std::move(res), std::move(*body));
+  }
+  answer(std::move(res), false);
 }
 
 // `drain`: the request was not read to its end; answer, stop sending, and
@@ -124,6 +128,44 @@ void HttpSession::answer(HttpResponse res, bool drain_after) {
                             if (drain_after) return self->drain();
                             if (!shared->keep_alive()) return self->close();
                             self->read();
+                          });
+      },
+      stream_.v);
+}
+
+// The head (with the whole body's Content-Length), then the body a piece at
+// a time: the next piece is asked for only when the one before is written,
+// so a slow client holds one piece of the server's memory.
+void HttpSession::answer_streamed(HttpResponse res, StreamedBody body) {
+  auto head = std::make_shared<http::response<http::empty_body>>(std::move(res.base()));
+  auto writer = std::make_shared<http::response_serializer<http::empty_body>>(*head);
+  auto source = std::make_shared<StreamedBody>(std::move(body));
+  tcp_of(stream_).expires_after(listener_->limits().read_timeout);
+  std::visit(
+      [&](auto& stream) {
+        http::async_write_header(stream, *writer,
+                                 [self = shared_from_this(), head, writer, source](
+                                     const beast::error_code& ec, std::size_t) {
+                                   if (ec) return self->close();
+                                   self->write_piece(source, head->keep_alive());
+                                 });
+      },
+      stream_.v);
+}
+
+void HttpSession::write_piece(std::shared_ptr<StreamedBody> body, bool keep_alive) {
+  auto piece = body->next();
+  if (!piece) return close();  // short of the announced length: the client sees it cut
+  if (piece->empty()) return keep_alive ? read() : close();
+  auto bytes = std::make_shared<std::string>(std::move(*piece));
+  tcp_of(stream_).expires_after(listener_->limits().read_timeout);
+  std::visit(
+      [&](auto& stream) {
+        asio::async_write(stream, asio::buffer(*bytes),
+                          [self = shared_from_this(), bytes, body, keep_alive](
+                              const beast::error_code& ec, std::size_t) {
+                            if (ec) return self->close();
+                            self->write_piece(body, keep_alive);
                           });
       },
       stream_.v);

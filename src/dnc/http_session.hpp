@@ -31,6 +31,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void read();
   void on_read(const boost::beast::error_code& ec);
   void answer(HttpResponse res, bool drain);
+  void answer_streamed(HttpResponse head, StreamedBody body);
+  void write_piece(std::shared_ptr<StreamedBody> body, bool keep_alive);
   void drain();
   void drain_more();
   void close();

@@ -15,8 +15,8 @@
 namespace usina::dnc {
 namespace {
 
-// machine_class, profile and the data patterns are the server's (server_config.cpp).
-constexpr std::array<std::string_view, 25> kKeys{"name",
+// machine_class, profile, the data patterns and calendar are the server's (server_config.cpp).
+constexpr std::array<std::string_view, 26> kKeys{"name",
                                                  "dialect",
                                                  "port",
                                                  "baud",
@@ -40,7 +40,8 @@ constexpr std::array<std::string_view, 25> kKeys{"name",
                                                  "machine_class",
                                                  "profile",
                                                  "part_count_pattern",
-                                                 "cycle_time_pattern"};
+                                                 "cycle_time_pattern",
+                                                 "calendar"};
 
 class Reader {
  public:

@@ -70,6 +70,7 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
     if (req.method() == http::verb::get && is_page_target(target)) return web_->serve(req);
     return api_->handle(req, origin);
   };
+  handlers.take_stream = [this] { return api_->take_stream(); };
   handlers.upgrade = [this](HttpStream& stream, const HttpRequest& req) {
     return api_->upgrade(stream, req);
   };

@@ -44,7 +44,8 @@ void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source
 }
 
 // The tables of the file and their keys ([[machine]]'s are machine_config's).
-constexpr std::array<std::string_view, 5> kTables{"machine", "server", "web", "mtconnect", "mqtt"};
+constexpr std::array<std::string_view, 6> kTables{"machine",   "server", "web",
+                                                  "mtconnect", "mqtt",   "calendar"};
 constexpr std::array<std::string_view, 5> kServerKeys{"listen", "max_upload", "session_hours",
                                                       "tls_cert", "tls_key"};
 constexpr std::array<std::string_view, 2> kWebKeys{"root", "max_file_bytes"};
@@ -88,7 +89,8 @@ bool check_tables(const toml::table& root, std::uint32_t file_id, core::Diagnost
       unknown_key(diags, file_id, key, "at the top of the configuration", kTables);
       continue;
     }
-    if (name == "machine") continue;  // read_machine_links checks it
+    if (name == "machine") continue;   // read_machine_links checks it
+    if (name == "calendar") continue;  // read_calendars checks it
     const toml::table* t = node.as_table();
     if (t == nullptr) {
       fail(diags, file_id, node.source(),
@@ -241,6 +243,47 @@ bool read_machine_classes(const toml::table& root, ServerConfig& c, std::uint32_
   return ok;
 }
 
+// [calendar], and each machine's own `calendar` table; a machine without
+// one takes the server's.
+bool read_calendars(const toml::table& root, ServerConfig& c, std::uint32_t file_id,
+                    core::DiagnosticSink& diags) {
+  bool ok = true;
+  if (const toml::node* n = root.get("calendar")) {
+    if (const toml::table* t = n->as_table()) {
+      c.calendar = read_calendar(*t, "calendar", file_id, diags);
+      if (c.calendar) c.calendar->source = "server";
+      ok = c.calendar.has_value();
+    } else {
+      fail(diags, file_id, n->source(), "calendar must be a table: write [calendar]");
+      ok = false;
+    }
+  }
+  const toml::array* list = root["machine"].as_array();
+  for (std::size_t i = 0; i < c.machines.size(); ++i) {
+    ServerMachine& m = c.machines[i];
+    const toml::table* t = list != nullptr ? list->get(i)->as_table() : nullptr;
+    const toml::node* own = t != nullptr ? t->get("calendar") : nullptr;
+    if (own == nullptr) {
+      m.calendar = c.calendar;
+      continue;
+    }
+    const toml::table* table = own->as_table();
+    if (table == nullptr) {
+      fail(diags, file_id, own->source(),
+           fmt::format("machine `{}`: calendar must be a table: write [machine.calendar] "
+                       "under its [[machine]]",
+                       m.link.name));
+      ok = false;
+      continue;
+    }
+    m.calendar =
+        read_calendar(*table, fmt::format("machine `{}` calendar", m.link.name), file_id, diags);
+    if (m.calendar) m.calendar->source = "machine";
+    ok = m.calendar.has_value() && ok;
+  }
+  return ok;
+}
+
 std::optional<std::string> read_file(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) return std::nullopt;
@@ -295,8 +338,11 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   auto links = read_machine_links(toml_text, file_id, diags);
   if (!links) return std::nullopt;
   ServerConfig c;
-  for (LinkConfig& l : *links)
-    c.machines.push_back(ServerMachine{std::move(l), {}, {}});
+  for (LinkConfig& l : *links) {
+    ServerMachine m;
+    m.link = std::move(l);
+    c.machines.push_back(std::move(m));
+  }
   toml::table root;
   try {
     root = toml::parse(toml_text);
@@ -307,6 +353,7 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   ok = read_server_table(root, c, file_id, diags) && ok;
   ok = read_web_table(root, c, file_id, diags) && ok;
   ok = read_data_tables(root, c.mtconnect, c.mqtt, file_id, diags) && ok;
+  ok = read_calendars(root, c, file_id, diags) && ok;
   if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;
   return c;
 }

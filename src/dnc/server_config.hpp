@@ -12,6 +12,10 @@
 //   [web]
 //   root = "web"                # the built page's folder (relative to the configuration's)
 //   max_file_bytes = 33554432   # a larger file of it is not served
+//
+//   [calendar]                  # shifts for utilisation (shift_calendar.hpp); a
+//   timezone = "UTC"            # machine's own table [machine.calendar] replaces it
+//   shifts = [{days = "mon-fri", start = "06:00", end = "14:00"}]
 #pragma once
 
 #include <cstdint>
@@ -24,6 +28,7 @@
 #include "core/diagnostic.hpp"
 #include "dnc/data_config.hpp"
 #include "dnc/link_config.hpp"
+#include "dnc/shift_calendar.hpp"
 #include "sim/machine_profile.hpp"
 
 namespace usina::dnc {
@@ -37,6 +42,9 @@ struct ServerMachine {
   // count, or the cycle's seconds. Empty: not looked for.
   std::string part_count_pattern = R"(PART\s*COUNT\s*[:=]?\s*([0-9]+)?)";
   std::string cycle_time_pattern = R"(CYCLE\s*TIME\s*[:=]?\s*([0-9]+(\.[0-9]*)?))";
+  // Its shifts (shift_calendar.hpp): its own `calendar` table, else the
+  // server's [calendar]; none: utilisation per 24 h day only.
+  std::optional<ShiftCalendar> calendar = std::nullopt;
 };
 
 struct ServerConfig {
@@ -50,6 +58,8 @@ struct ServerConfig {
   std::string tls_key;
   MtconnectConfig mtconnect;  // [mtconnect]: the SHDR adapter (data_config.hpp)
   MqttConfig mqtt;            // [mqtt]: events to a broker
+  // [calendar]: every machine's shifts, unless it has its own (shift_calendar.hpp).
+  std::optional<ShiftCalendar> calendar = std::nullopt;
   // [web] (docs/web.md): the page's folder, as written (serve.cpp makes it
   // relative to the configuration's folder); empty: web_static's default.
   std::string web_root;

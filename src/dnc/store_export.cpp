@@ -38,7 +38,7 @@ StoreResult<std::vector<ExportedFile>> released_set(Store& store, const std::str
   for (const Program& p : *programs) {
     auto r = released_revision(store, p.name);
     if (!r) return tl::unexpected(r.error());
-    if (*r) out.push_back({p.name, (*r)->hash, p.name + extension});
+    if (*r) out.push_back({p.name, (*r)->hash, p.name + extension, (*r)->size});
   }
   return out;
 }

@@ -52,7 +52,8 @@ void tally(ImportReport& report, ImportedFile f);
 struct ExportedFile {
   std::string program;
   std::string hash;
-  std::string file;  // name in the folder
+  std::string file;       // name in the folder
+  std::int64_t size = 0;  // the revision's bytes, as recorded
 };
 
 // Writes the last released revision of every program as NAME + extension

@@ -25,7 +25,7 @@ struct Grant {
   std::uint8_t roles;
 };
 
-constexpr std::array<Grant, 9> kGrants{{
+constexpr std::array<Grant, 10> kGrants{{
     {Permission::ReadPrograms, kEveryone},
     {Permission::UploadRevision, kProgrammer | kAdmin},
     {Permission::ImportPrograms, kAdmin},
@@ -33,6 +33,8 @@ constexpr std::array<Grant, 9> kGrants{{
     {Permission::StartJob, kOperator | kProgrammer | kAdmin},
     {Permission::ReadMachines, kEveryone},
     {Permission::RecordQuality, kOperator | kApprover | kAdmin},
+    // Those who run the machines change the inserts: as StartJob.
+    {Permission::ResetToolLife, kOperator | kProgrammer | kAdmin},
     {Permission::ReadAudit, kApprover | kAdmin},
     {Permission::ManageUsers, kAdmin},
 }};

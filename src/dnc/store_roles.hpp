@@ -2,9 +2,10 @@
 // (store_states.hpp); the API layer checks a user's role against this table
 // before it asks the store, so both read one table.
 //
-//   operator    reads programs and machines, starts jobs, enters quality data
+//   operator    reads programs and machines, starts jobs, enters quality data,
+//               resets tool-life counts
 //   programmer  + uploads revisions, moves drafts (checked, check-failed,
-//               rejected), exports the released set
+//               rejected), exports the released set (and resets tool counts)
 //   approver    reads, approves or rejects checked revisions, releases
 //               approved ones, moves drafts; reads the audit log
 //   admin       everything, users and imports included
@@ -37,6 +38,7 @@ enum class Permission {
   StartJob,        // send or drip-feed to a machine
   ReadMachines,    // machine states, counts, jobs
   RecordQuality,   // quality records through the API
+  ResetToolLife,   // a tool's count starts again (its insert was changed)
   ReadAudit,       // the audit log and its verification
   ManageUsers,     // accounts, roles, passwords
 };

@@ -211,6 +211,20 @@ CREATE INDEX revision_tools_by_tool ON revision_tools (tool, revision);
 CREATE INDEX programs_by_class ON programs (machine_class);
 )SQL";
 
+// Version 7: tool-life count resets (store_tool_resets.hpp): the tools'
+// answer counts each tool's parts from its last reset.
+constexpr std::string_view kV7 = R"SQL(
+CREATE TABLE tool_resets (
+  id @ID@,
+  machine TEXT NOT NULL,
+  tool BIGINT NOT NULL,
+  at BIGINT NOT NULL,
+  by_user TEXT NOT NULL,
+  reason TEXT NOT NULL
+);
+CREATE INDEX tool_resets_by_machine ON tool_resets (machine, at, id);
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres, nullptr},
     {2, kV2, "SELECT 1", "SELECT 1", nullptr},
@@ -218,6 +232,7 @@ constexpr Migration kMigrations[] = {
     {4, kV4, "SELECT 1", "SELECT 1", nullptr},
     {5, kV5, "SELECT 1", "SELECT 1", nullptr},
     {6, kV6, "SELECT 1", "SELECT 1", &record_missing_facts},
+    {7, kV7, "SELECT 1", "SELECT 1", nullptr},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

@@ -39,9 +39,18 @@ StoreResult<std::vector<Change>> changes(Store& store, std::string_view machine,
   return out;
 }
 
+// The microseconds of [a, b) inside `spans`.
+std::int64_t inside(const TimeSpans* spans, std::int64_t a, std::int64_t b) {
+  if (spans == nullptr) return 0;
+  std::int64_t total = 0;
+  for (const auto& [lo, hi] : *spans)
+    total += std::max<std::int64_t>(0, std::min(b, hi) - std::max(a, lo));
+  return total;
+}
+
 // Adds [a, b) spent in `activity` to the days it covers.
 void spread(std::vector<MachineDay>& days, std::int64_t a, std::int64_t b,
-            const std::string& activity) {
+            const std::string& activity, const TimeSpans* shifts) {
   if (days.empty() || b <= a) return;
   const std::int64_t first = days.front().day;
   for (std::int64_t d = day_of(a); d <= day_of(b - 1); ++d) {
@@ -52,6 +61,8 @@ void spread(std::vector<MachineDay>& days, std::int64_t a, std::int64_t b,
     const double s = static_cast<double>(hi - lo) / 1e6;
     if (activity != "off") days[i].known_seconds += s;
     days[i].seconds[activity] += s;
+    if (activity == "feeding")
+      days[i].running_in_shift_seconds += static_cast<double>(inside(shifts, lo, hi)) / 1e6;
   }
 }
 
@@ -117,10 +128,13 @@ StoreResult<std::int64_t> close_activity_of_dead_server(Store& store) {
 }
 
 StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
-                                                  std::int64_t first_day, std::int64_t last_day) {
+                                                  std::int64_t first_day, std::int64_t last_day,
+                                                  const TimeSpans* shifts) {
   std::vector<MachineDay> days;
-  for (std::int64_t d = first_day; d <= last_day; ++d)
-    days.push_back(MachineDay{d, {}, 0.0, 0, 0.0});
+  for (std::int64_t d = first_day; d <= last_day; ++d) {
+    const double planned = static_cast<double>(inside(shifts, d * kDayUs, (d + 1) * kDayUs));
+    days.push_back(MachineDay{d, {}, 0.0, 0, 0.0, planned / 1e6, 0.0});
+  }
   const std::int64_t from = first_day * kDayUs;
   const std::int64_t to = std::min((last_day + 1) * kDayUs, store.now_us());
   if (to <= from) return days;
@@ -128,7 +142,7 @@ StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view
   if (!list) return tl::unexpected(list.error());
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::int64_t end = i + 1 < list->size() ? (*list)[i + 1].at_us : to;
-    spread(days, (*list)[i].at_us, end, (*list)[i].activity);
+    spread(days, (*list)[i].at_us, end, (*list)[i].activity, shifts);
   }
   auto drips = drip_parts(store, machine, from, to);
   if (!drips) return tl::unexpected(drips.error());
@@ -139,7 +153,10 @@ StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view
   for (const ControlPart& p : *control) {
     MachineDay& day = days[static_cast<std::size_t>(day_of(p.at_us) - first_day)];
     ++day.parts;
-    if (p.cycle_us) day.control_cycle_seconds += static_cast<double>(*p.cycle_us) / 1e6;
+    if (!p.cycle_us) continue;
+    day.control_cycle_seconds += static_cast<double>(*p.cycle_us) / 1e6;
+    const std::int64_t began = std::max(p.at_us - *p.cycle_us, day.day * kDayUs);
+    day.running_in_shift_seconds += static_cast<double>(inside(shifts, began, p.at_us)) / 1e6;
   }
   return days;
 }
@@ -162,39 +179,79 @@ StoreResult<std::optional<std::vector<CheckTool>>> tools_of(Store& store,
 
 }  // namespace
 
-StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
-                                std::int64_t to_us) {
-  std::vector<std::pair<std::string, std::string>> made;  // (program, revision) per part
+namespace {
+
+struct MadePart {
+  std::int64_t at_us;
+  std::string program;
+  std::string revision;
+};
+
+// The parts made in [from, to): drip feeds done, then the control's part lines.
+StoreResult<std::vector<MadePart>> parts_made(Store& store, std::string_view machine,
+                                              std::int64_t from_us, std::int64_t to_us) {
+  std::vector<MadePart> made;
   auto drips = drip_parts(store, machine, from_us, to_us);
   if (!drips) return tl::unexpected(drips.error());
   for (const SqlRow& r : *drips)
-    made.emplace_back(r.text(1), r.text(2));
+    made.push_back({r.integer(0), r.text(1), r.text(2)});
   auto control = control_parts(store, machine, from_us, to_us);
   if (!control) return tl::unexpected(control.error());
   for (const ControlPart& p : *control)
-    made.emplace_back(p.program, p.revision);
+    made.push_back({p.at_us, p.program, p.revision});
+  return made;
+}
+
+using ToolLists =
+    std::map<std::pair<std::string, std::string>, std::optional<std::vector<CheckTool>>>;
+
+// The tool list of a part's revision, read once per revision.
+StoreResult<const std::optional<std::vector<CheckTool>>*> tool_list(Store& store, ToolLists& known,
+                                                                    const MadePart& part) {
+  const auto key = std::pair{part.program, part.revision};
+  auto it = known.find(key);
+  if (it == known.end()) {
+    auto tools = tools_of(store, part.program, part.revision);
+    if (!tools) return tl::unexpected(tools.error());
+    it = known.emplace(key, std::move(*tools)).first;
+  }
+  return &it->second;
+}
+
+}  // namespace
+
+StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
+                                std::int64_t to_us, bool from_resets) {
+  auto made = parts_made(store, machine, from_us, to_us);
+  if (!made) return tl::unexpected(made.error());
+  auto resets = last_tool_resets(store, machine, to_us - 1);
+  if (!resets) return tl::unexpected(resets.error());
   ToolLife life;
-  std::map<std::pair<std::string, std::string>, std::optional<std::vector<CheckTool>>> known;
+  ToolLists known;
   std::map<int, ToolUse> by_tool;
-  for (const auto& part : made) {
+  for (const auto& [tool, reset] : *resets) {
+    ToolUse& use = by_tool[static_cast<int>(tool)];
+    use.tool = static_cast<int>(tool);
+    use.reset = reset;
+    use.from_reset = from_resets && reset.at_us >= from_us;
+  }
+  for (const MadePart& part : *made) {
     ++life.parts;
-    if (part.first.empty()) {
+    if (part.program.empty()) {
       ++life.parts_without_program;
       continue;
     }
-    auto it = known.find(part);
-    if (it == known.end()) {
-      auto tools = tools_of(store, part.first, part.second);
-      if (!tools) return tl::unexpected(tools.error());
-      it = known.emplace(part, std::move(*tools)).first;
-    }
-    if (!it->second) {
+    auto tools = tool_list(store, known, part);
+    if (!tools) return tl::unexpected(tools.error());
+    if (!**tools) {
       ++life.parts_without_tools;
       continue;
     }
-    for (const CheckTool& t : *it->second) {
+    for (const CheckTool& t : ***tools) {
       ToolUse& use = by_tool[t.tool];
       use.tool = t.tool;
+      // A part made before the tool's reset was cut by the insert it replaced.
+      if (use.from_reset && part.at_us < use.reset->at_us) continue;
       ++use.parts;
       use.cutting_seconds += t.cutting_s;
       use.seconds += t.total_s;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dnc/store.hpp"
+#include "dnc/store_tool_resets.hpp"
 
 namespace usina::dnc {
 
@@ -47,11 +48,22 @@ struct MachineDay {
   double control_cycle_seconds = 0.0;     // cycles the control printed (ran from its memory)
   std::int64_t parts = 0;                 // drip feeds done + the control's part lines
   double known_seconds = 0.0;             // the day's seconds with a record, up to now
+  // With shifts (machine_days' `shifts`): their planned seconds in the day,
+  // and the running seconds (feeding, the control's cycles) inside them.
+  double scheduled_seconds = 0.0;
+  double running_in_shift_seconds = 0.0;
 };
 
-// Days `first_day` to `last_day` (inclusive) of `machine`.
+// [start, end) in microseconds since 1970 (UTC), in order, not overlapping.
+using TimeSpans = std::vector<std::pair<std::int64_t, std::int64_t>>;
+
+// Days `first_day` to `last_day` (inclusive) of `machine`. With `shifts`
+// (shift_calendar.hpp's shift_times), each day's scheduled and in-shift
+// running seconds too; a control's cycle runs from its part line back by
+// the cycle's seconds (within the day).
 StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
-                                                  std::int64_t first_day, std::int64_t last_day);
+                                                  std::int64_t first_day, std::int64_t last_day,
+                                                  const TimeSpans* shifts = nullptr);
 
 // A tool's use on a machine: each part made counts once for each tool its
 // program uses, with that tool's cutting time from the revision's check.
@@ -59,7 +71,9 @@ struct ToolUse {
   int tool = 0;
   std::int64_t parts = 0;
   double cutting_seconds = 0.0;
-  double seconds = 0.0;  // cutting, rapid and the rest while the tool is in the spindle
+  double seconds = 0.0;            // cutting, rapid and the rest while the tool is in the spindle
+  std::optional<ToolReset> reset;  // its last reset up to the range's end (store_tool_resets.hpp)
+  bool from_reset = false;         // its parts are counted from that reset, not the range's start
 };
 
 struct ToolLife {
@@ -69,7 +83,10 @@ struct ToolLife {
   std::int64_t parts_without_tools = 0;    // revisions checked before tool lists were kept
 };
 
+// The parts made in [from_us, to_us). With `from_resets`, a tool reset in
+// that range counts only the parts made at or after its last reset (a tool
+// reset but not used since is listed with no parts).
 StoreResult<ToolLife> tool_life(Store& store, std::string_view machine, std::int64_t from_us,
-                                std::int64_t to_us);
+                                std::int64_t to_us, bool from_resets = false);
 
 }  // namespace usina::dnc

@@ -8,7 +8,7 @@
 namespace usina::dnc {
 namespace {
 
-constexpr std::size_t kBlock = 512;
+constexpr std::size_t kBlock = kTarBlock;
 
 // `value` in octal, zero-padded to `width - 1` digits and a NUL, at `at`.
 void octal(std::array<char, kBlock>& h, std::size_t at, std::size_t width, std::uint64_t value) {
@@ -22,14 +22,14 @@ void text(std::array<char, kBlock>& h, std::size_t at, std::string_view s) {
 
 }  // namespace
 
-bool TarWriter::add(std::string_view name, std::string_view bytes, std::int64_t mtime_s) {
-  if (name.empty() || name.size() > 100) return false;
+std::string tar_header(std::string_view name, std::uint64_t size, std::int64_t mtime_s) {
+  if (name.empty() || name.size() > 100) return {};
   std::array<char, kBlock> h{};
   text(h, 0, name);
   octal(h, 100, 8, 0644);  // mode
   octal(h, 108, 8, 0);     // uid
   octal(h, 116, 8, 0);     // gid
-  octal(h, 124, 12, bytes.size());
+  octal(h, 124, 12, size);
   octal(h, 136, 12, static_cast<std::uint64_t>(std::max<std::int64_t>(mtime_s, 0)));
   h[156] = '0';  // a regular file
   text(h, 257,
@@ -42,9 +42,23 @@ bool TarWriter::add(std::string_view name, std::string_view bytes, std::int64_t 
   for (const char c : h)
     sum += static_cast<unsigned char>(c);
   octal(h, 148, 7, sum);  // six digits and a NUL, then the space left in place
-  out_.append(h.data(), h.size());
+  return std::string(h.data(), h.size());
+}
+
+std::size_t tar_padding(std::uint64_t size) {
+  return static_cast<std::size_t>((kBlock - size % kBlock) % kBlock);
+}
+
+std::uint64_t tar_member_bytes(std::uint64_t size) {
+  return kBlock + size + tar_padding(size);
+}
+
+bool TarWriter::add(std::string_view name, std::string_view bytes, std::int64_t mtime_s) {
+  const std::string header = tar_header(name, bytes.size(), mtime_s);
+  if (header.empty()) return false;
+  out_.append(header);
   out_.append(bytes);
-  out_.append((kBlock - bytes.size() % kBlock) % kBlock, '\0');
+  out_.append(tar_padding(bytes.size()), '\0');
   return true;
 }
 

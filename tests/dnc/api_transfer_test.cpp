@@ -2,10 +2,18 @@
 // revision, as the folder import makes them; names never paths; bytes that
 // are not UTF-8 as base64), the released set out as a tar that `tar x` and
 // `sha256sum -c` accept; roles, limits and malformed requests.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "api_control.hpp"
+#include "dnc/export_stream.hpp"
 #include "dnc/sha256.hpp"
+#include "dnc/store_db.hpp"
 #include "support/files.hpp"
 #include "support/usina_process.hpp"
 
@@ -130,6 +138,80 @@ TEST(ApiExport, TheReleasedSetIsATarThatSha256sumChecks) {
   EXPECT_EQ(audit.back()["action"], "export.released");
 }
 
+// A program several times the export's piece (64 KiB), with 5-digit N words.
+std::string big_program() {
+  std::string text = "G21 G90\n";
+  for (int i = 1; i <= 20'000; ++i)
+    text += fmt::format("N{} G1 X{}.{} F500\n", i, i % 97, i % 10);
+  return text + "M2\n";
+}
+
+// `curl` of the export: its exit status, the head it read into `head`.
+test::Run curl_export(RunningServer& s, const std::string& token, const test::TempDir& out) {
+  return test::shell(
+      fmt::format("curl -sS -D {} -o {} -H 'Authorization: Bearer {}' "
+                  "http://127.0.0.1:{}/api/export?state=released 2>{}",
+                  test::quote(out.path("head")), test::quote(out.path("released.tar")), token,
+                  s.server().endpoint().port(), test::quote(out.path("err"))),
+      out.path("err"));
+}
+
+TEST(ApiExport, ASetLargerThanAPieceStreamsWithItsLengthKnownAndUnpacks) {
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  const std::string big = big_program();
+  ASSERT_GT(big.size(), 4 * kExportPieceBytes);
+  released(c, "BIG", big);
+  released(c, "O500", "G0 X1\nG1 X2 F100\nM2\n");
+  const std::string prog = c.log_in("prog", test::kPassword);
+  const test::TempDir out;
+  const auto got = curl_export(s, prog, out);
+  ASSERT_EQ(got.status, 0) << got.err;
+  const std::string head = out.read("head");
+  const std::string tar = out.read("released.tar");
+  // 3 headers, BIG padded, O500 in one block, the manifest in one, the end.
+  const std::size_t padded = (big.size() + 511) / 512 * 512;
+  EXPECT_EQ(tar.size(), 3 * 512 + padded + 512 + 512 + 1024);
+  EXPECT_NE(head.find(fmt::format("Content-Length: {}\r\n", tar.size())), std::string::npos)
+      << head;
+  EXPECT_EQ(head.find("Transfer-Encoding"), std::string::npos) << head;
+  const auto unpacked = test::shell("cd " + test::quote(out.path()) +
+                                        " && tar -xf released.tar && sha256sum -c "
+                                        "released.sha256 2>" +
+                                        test::quote(out.path("err")),
+                                    out.path("err"));
+  EXPECT_EQ(unpacked.status, 0) << unpacked.out << unpacked.err;
+  EXPECT_EQ(out.read("BIG.nc"), big);
+  // The same bytes through Beast's client, on a connection kept alive for a next request.
+  const auto again = c.get("/api/export?state=released", prog);
+  ASSERT_EQ(again.status, 200);
+  EXPECT_EQ(again.body.size(), tar.size());
+  EXPECT_EQ(again.body.substr(512, big.size()), big);
+}
+
+TEST(ApiExport, ADamagedRevisionCutsTheStreamShortOfItsLength) {
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  released(c, "BIG", big_program());
+  const std::string rev = released(c, "O500", "G0 X1\nG1 X2 F100\nM2\n");
+  // Someone edits the second file's blob in the database (its trigger dropped first).
+  const bool tampered = s.on_loop([&] {
+    Database& db = s.server().store().db();
+    return db.script("DROP TRIGGER blobs_no_update").has_value() &&
+           db.query("UPDATE blobs SET bytes = $1 WHERE hash = $2",
+                    {SqlBlob{std::string_view("G0 X9\nM2\n")}, std::string_view(rev)})
+               .has_value();
+  });
+  ASSERT_TRUE(tampered);
+  const test::TempDir out;
+  const auto got = curl_export(s, c.log_in("prog", test::kPassword), out);
+  EXPECT_EQ(got.status, 18) << got.err;  // curl: partial file
+  EXPECT_LT(out.read("released.tar").size(), big_program().size() + 3 * 512 + 1024);
+  EXPECT_GT(out.read("released.tar").size(), big_program().size());  // BIG went out whole
+}
+
 TEST(ApiExport, OnlyTheReleasedStateAndPlainExtensions) {
   RunningServer s;
   s.start();
@@ -142,6 +224,53 @@ TEST(ApiExport, OnlyTheReleasedStateAndPlainExtensions) {
   ASSERT_EQ(empty.status, 200);
   EXPECT_EQ(empty.body.size(), 3u * 512u);  // the manifest's header and two end blocks
   EXPECT_EQ(c.get("/api/export", c.log_in("oper", test::kPassword)).status, 403);
+}
+
+}  // namespace
+}  // namespace usina::dnc
+
+namespace usina::dnc {
+namespace {
+
+// Kilobytes of a /proc/self/status field ("VmHWM", "VmRSS").
+long status_kib(const std::string& field) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.starts_with(field + ":")) return std::stol(line.substr(field.size() + 1));
+  return -1;
+}
+
+// The figure of docs/dnc.md: the peak memory of the server's process while
+// it exports a large set (USINA_EXPORT_RSS_MIB of programs of 4 MiB each):
+//   USINA_EXPORT_RSS_MIB=512 build/tests/dnc_tests --gtest_filter='ApiExportMemory.*'
+TEST(ApiExportMemory, ThePeakGrowsByAboutOneRevisionNotTheSet) {
+  const char* mib = std::getenv("USINA_EXPORT_RSS_MIB");
+  if (mib == nullptr) GTEST_SKIP() << "a measurement: set USINA_EXPORT_RSS_MIB (e.g. 512)";
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  std::string text = "G21 G90\n";
+  while (text.size() < (4u << 20))
+    text += "G1 X10.5 Y20.25 F500\nG1 X0 Y0\n";
+  const int programs = std::atoi(mib) / 4;
+  for (int i = 0; i < programs; ++i)
+    released(c, fmt::format("P{:04}", i), text + fmt::format("(PROGRAM {})\nM2\n", i));
+  const std::string prog = c.log_in("prog", test::kPassword);
+  const long before = status_kib("VmRSS");
+  {
+    std::ofstream reset("/proc/self/clear_refs");
+    reset << "5";  // the peak (VmHWM) starts again from now
+  }
+  const test::TempDir out;
+  const auto got = curl_export(s, prog, out);
+  ASSERT_EQ(got.status, 0) << got.err;
+  const long peak = status_kib("VmHWM");
+  const auto size = std::filesystem::file_size(out.path("released.tar"));
+  std::printf("export of %d programs, %.0f MiB: RSS before %.1f MiB, peak during %.1f MiB\n",
+              programs, static_cast<double>(size) / (1 << 20), static_cast<double>(before) / 1024,
+              static_cast<double>(peak) / 1024);
+  EXPECT_LT(peak - before, 64L * 1024);  // KiB: a few copies of one 4 MiB revision
 }
 
 }  // namespace

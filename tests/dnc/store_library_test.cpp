@@ -213,8 +213,8 @@ TEST_P(StoreLibrary, AStoreOfAnOlderSchemaGetsItsRevisionsFactsWhenOpened) {
     // The store as version 5 left it: no facts, no tools.
     ASSERT_TRUE(
         db->script("DROP TABLE revision_tools; DROP TABLE revision_facts; "
-                   "DROP INDEX programs_by_class; "
-                   "DELETE FROM schema_version WHERE version = 6"));
+                   "DROP INDEX programs_by_class; DROP TABLE tool_resets; "
+                   "DELETE FROM schema_version WHERE version >= 6"));
   }
   auto s = open();
   ASSERT_TRUE(s);

@@ -123,10 +123,14 @@ TEST(Roles, PermissionsOfTheTable) {
   EXPECT_FALSE(role_may(Role::Approver, Permission::UploadRevision));
   EXPECT_TRUE(role_may(Role::Approver, Permission::ReadAudit));
   EXPECT_FALSE(role_may(Role::Approver, Permission::ImportPrograms));
+  EXPECT_TRUE(role_may(Role::Operator, Permission::ResetToolLife));
+  EXPECT_TRUE(role_may(Role::Programmer, Permission::ResetToolLife));
+  EXPECT_FALSE(role_may(Role::Approver, Permission::ResetToolLife));
   for (const Permission p :
        {Permission::ReadPrograms, Permission::UploadRevision, Permission::ImportPrograms,
         Permission::ExportReleased, Permission::StartJob, Permission::ReadMachines,
-        Permission::RecordQuality, Permission::ReadAudit, Permission::ManageUsers})
+        Permission::RecordQuality, Permission::ResetToolLife, Permission::ReadAudit,
+        Permission::ManageUsers})
     EXPECT_TRUE(role_may(Role::Admin, p));
 }
 
