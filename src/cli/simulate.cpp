@@ -19,8 +19,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/raster_module.hpp"
 #include "cli/run.hpp"
-#include "cli/simulate_images.hpp"
 #include "cli/verbs.hpp"
 #include "core/file_ostream.hpp"
 #include "core/output_file.hpp"
@@ -169,8 +169,9 @@ int write_output(const std::string& path, const std::vector<std::string>& inputs
   return 0;
 }
 
+// `raster`: the module that writes the PNG pictures, when one is asked for.
 int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
-                  const stock::StockSimulator& sim, bool complete) {
+                  const stock::StockSimulator& sim, bool complete, const RasterWriters* raster) {
   const std::vector<std::string> inputs = input_paths(o.run);
   const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
   for (const std::string& path : o.outputs) {
@@ -189,8 +190,8 @@ int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
         return {};
       });
     } else {
-      status =
-          write_output(path, inputs, [&](std::FILE* f) { return write_stock_png(map, view, f); });
+      status = write_output(path, inputs,
+                            [&](std::FILE* f) { return raster->write_stock_png(map, view, f); });
     }
     if (status != 0) return status;
   }
@@ -240,10 +241,17 @@ int simulate(const SimulateOptions& o) {
   if (o.floor && !std::isfinite(*o.floor)) return fail("--floor must be a finite Z in mm");
   auto tools = tool_shapes(o);
   if (!tools) return fail(tools.error());
+  const RasterWriters* raster = nullptr;
   for (const std::string& path : o.outputs) {
     if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
       return fail(fmt::format(
           "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
+    }
+    // A picture needs the raster module: a missing one is said before the run.
+    if (ends_with(path, ".png") && raster == nullptr) {
+      const auto writers = raster_writers();
+      if (!writers) return fail(fmt::format("simulate: {}", writers.error()));
+      raster = *writers;
     }
   }
   stock::SimulateOptions so;
@@ -255,7 +263,8 @@ int simulate(const SimulateOptions& o) {
       run_program(o.run, sim, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
   if (status == kBadInput) return status;
   print_summary(*map, sim);
-  if (const int written = write_outputs(o, *map, sim, status == 0); written != 0) return written;
+  if (const int written = write_outputs(o, *map, sim, status == 0, raster); written != 0)
+    return written;
   return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
 }
 
