@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/raster_module.hpp"
 #include "cli/run.hpp"
 #include "cli/verbs.hpp"
 #include "core/file_ostream.hpp"
@@ -106,8 +107,10 @@ std::optional<draw::PixelSize> parse_size(const std::string& text) {
   return draw::PixelSize{static_cast<int>(w), static_cast<int>(h)};
 }
 
+// PNG and PDF come from the raster module (cli/raster_module.hpp), loaded
+// only when such a picture is asked for; nullptr for DXF and SVG.
 draw::WriteResult write_stream(const draw::Drawing& drawing, Format format, std::FILE* file,
-                               draw::PixelSize size) {
+                               draw::PixelSize size, const RasterWriters* raster) {
   switch (format) {
   case Format::Dxf: return draw::write_dxf(drawing, file);
   case Format::Svg: {
@@ -116,21 +119,25 @@ draw::WriteResult write_stream(const draw::Drawing& drawing, Format format, std:
     out.flush();
     return {};
   }
-  case Format::Png: return draw::write_png(drawing, file, size);
-  case Format::Pdf: return draw::write_pdf(drawing, file);
+  case Format::Png: return raster->write_png(drawing, file, size);
+  case Format::Pdf: return raster->write_pdf(drawing, file);
   }
   return tl::unexpected(std::string("unknown format"));
 }
 
 // `-o -` is standard output (main checks that it was written).
 draw::WriteResult write(const draw::Drawing& drawing, Format format, const std::string& path,
-                        draw::PixelSize size, const std::vector<std::string>& inputs) {
-  if (path == "-") return write_stream(drawing, format, stdout, size);
+                        draw::PixelSize size, const std::vector<std::string>& inputs,
+                        const RasterWriters* raster) {
+  if (path == "-") return write_stream(drawing, format, stdout, size, raster);
   switch (format) {
   case Format::Dxf: return draw::write_dxf_file(drawing, path, inputs);
   case Format::Svg: return draw::write_svg_file(drawing, path, inputs);
-  case Format::Png: return draw::write_png_file(drawing, path, size, inputs);
-  case Format::Pdf: return draw::write_pdf_file(drawing, path, inputs);
+  case Format::Png:
+  case Format::Pdf:
+    return draw::write_to_file(path, inputs, [&](std::FILE* file) {
+      return write_stream(drawing, format, file, size, raster);
+    });
   }
   return tl::unexpected(std::string("unknown format"));
 }
@@ -166,6 +173,13 @@ int draw_program(DrawOptions& o) {
   const std::vector<std::string> inputs = input_paths(o.run);
   for (const std::string& input : inputs)
     if (auto ok = core::check_not_input(o.output, input); !ok) return fail(ok.error());
+  // Loaded before the program runs: a missing module is said at once.
+  const RasterWriters* raster = nullptr;
+  if (*format == Format::Png || *format == Format::Pdf) {
+    const auto writers = raster_writers();
+    if (!writers) return fail(writers.error());
+    raster = *writers;
+  }
   draw::Drawing drawing;
   drawing.set_tolerance(o.tolerance);
   // A picture shows nothing finer than half its pixel: the memory and time of
@@ -178,7 +192,7 @@ int draw_program(DrawOptions& o) {
   builder.finish();
   if (auto note = builder.limit_note()) fmt::print(stderr, "usina: warning: {}\n", *note);
   // What was drawn before an error is written all the same.
-  if (auto written = write(drawing, *format, o.output, size, inputs); !written)
+  if (auto written = write(drawing, *format, o.output, size, inputs, raster); !written)
     return fail(written.error());
   return status;
 }

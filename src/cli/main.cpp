@@ -3,22 +3,19 @@
 // Exit status, for every verb (docs/cli.md): 0 done; 1 the program or
 // drawing read has errors; 2 a usage error, an input that cannot be read or
 // an output that cannot be written (a full disk included).
-#include <cstdio>
-#include <exception>
-#include <new>
 #include <string>
 #include <string_view>
-#include <system_error>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/entry.hpp"
 #include "cli/verbs.hpp"
-#include "core/output_file.hpp"
 
 namespace {
 
-constexpr int kUsage = 2;
+constexpr int kUsage = usina::cli::kUsageStatus;
 
 std::string verb_list(const CLI::App& app) {
   std::string out;
@@ -64,14 +61,36 @@ int usage_error(const CLI::App& app, const CLI::ParseError& e, int argc, char** 
   return kUsage;
 }
 
-// Everything written to standard output reached it, or the run failed: a
-// full disk must never look like success.
-int close_stdout(usina::core::OutputFile& out, int status) {
-  if (auto done = out.commit(); !done) {
-    fmt::print(stderr, "usina: error: {}\n", done.error());
-    return kUsage;
+struct Verb {
+  std::string_view name;
+  void (*add)(CLI::App&);
+};
+
+// In the order `usina --help` lists them.
+constexpr Verb kVerbs[] = {
+    {"trace", usina::cli::add_trace},       {"check", usina::cli::add_check},
+    {"calc", usina::cli::add_calc},         {"stats", usina::cli::add_stats},
+    {"draw", usina::cli::add_draw},         {"convert", usina::cli::add_convert},
+    {"gen", usina::cli::add_gen},           {"serve", usina::cli::add_serve},
+    {"resume", usina::cli::add_resume},     {"apt", usina::cli::add_apt},
+    {"simulate", usina::cli::add_simulate}, {"job", usina::cli::add_job},
+};
+
+// Every verb's options cost CLI11 thousands of allocations to set up (most
+// of a small `check`'s start-up once the libraries were split off): a
+// command line that names its verb first gets that verb alone, `--version`
+// none; anything else (help, a mistake) all of them, to list them.
+void add_verbs(CLI::App& app, int argc, char** argv) {
+  const std::string_view first = argc > 1 ? argv[1] : "";
+  if (first == "--version") return;
+  for (const Verb& verb : kVerbs) {
+    if (verb.name == first) {
+      verb.add(app);
+      return;
+    }
   }
-  return status;
+  for (const Verb& verb : kVerbs)
+    verb.add(app);
 }
 
 int run(int argc, char** argv) {
@@ -79,18 +98,7 @@ int run(int argc, char** argv) {
   app.set_version_flag("--version", std::string("usina ") + USINA_VERSION);
   app.require_subcommand(0, 1);
   app.footer("Exit status: 0 done, 1 the input has errors, 2 usage or I/O error.");
-  usina::cli::add_trace(app);
-  usina::cli::add_check(app);
-  usina::cli::add_calc(app);
-  usina::cli::add_stats(app);
-  usina::cli::add_draw(app);
-  usina::cli::add_convert(app);
-  usina::cli::add_gen(app);
-  usina::cli::add_serve(app);
-  usina::cli::add_resume(app);
-  usina::cli::add_apt(app);
-  usina::cli::add_simulate(app);
-  usina::cli::add_job(app);
+  add_verbs(app, argc, argv);
   if (argc > 1 && std::string_view(argv[1]) == "help") return help(app, argc, argv);
   try {
     app.parse(argc, argv);
@@ -114,22 +122,14 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  auto out = usina::core::OutputFile::standard_output();
-  if (!out) {
-    fmt::print(stderr, "usina: error: {}\n", out.error());
-    return kUsage;
+  // The server is its own executable (usina-serve): its libraries (Boost,
+  // OpenSSL, libpq, SQLite, ...) stay off every other verb's start-up.
+  if (argc > 1 && std::string_view(argv[1]) == "serve") {
+    return usina::cli::exec_serve(std::vector<char*>(argv + 2, argv + argc));
   }
-  stdout = out->stream();  // glibc's stdout is a variable: every print goes through `out`
-  int status = kUsage;
-  try {
-    status = run(argc, argv);
-  } catch (const std::bad_alloc&) {
-    std::fputs("usina: error: out of memory\n", stderr);
-  } catch (const std::system_error& e) {
-    // fmt::print throws when standard output fails; commit says why.
-    if (std::ferror(stdout) == 0) fmt::print(stderr, "usina: error: {}\n", e.what());
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "usina: error: {}\n", e.what());
+  if (argc > 2 && std::string_view(argv[1]) == "help" && std::string_view(argv[2]) == "serve") {
+    static char help_flag[] = "--help";
+    return usina::cli::exec_serve({help_flag});
   }
-  return close_stdout(*out, status);
+  return usina::cli::run_guarded(argc, argv, run);
 }

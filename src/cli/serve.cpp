@@ -1,5 +1,7 @@
 // usina serve: the DNC server of issue 13 (docs/dnc-server.md; the flags
-// are the contract of spec/dnc-api.md).
+// are the contract of spec/dnc-api.md). This file is the executable
+// usina-serve, which `usina serve` runs with the same arguments: the
+// server's libraries load only for it (docs/performance.md, "Start-up").
 //   usina serve --init --data DIR --admin NAME --password-file F
 //   usina serve --data DIR --config usina-serve.toml [--listen HOST:PORT]
 //               [--tls-cert FILE --tls-key FILE]   (HTTPS and WSS)
@@ -13,10 +15,11 @@
 #include <sstream>
 #include <string>
 
+#include <CLI/CLI.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <fmt/format.h>
 
-#include "cli/verbs.hpp"
+#include "cli/entry.hpp"
 #include "core/diagnostic.hpp"
 #include "dnc/server.hpp"
 #include "dnc/store_audit.hpp"
@@ -175,34 +178,53 @@ int run_server(const ServeOptions& o) {
   return 0;
 }
 
-}  // namespace
-
-void add_serve(CLI::App& app) {
-  auto o = std::make_shared<ServeOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "serve", "the DNC server: program store, machines' links, HTTP API (docs/dnc-server.md)");
-  cmd->add_flag("--init", o->init, "create the store and its first admin, then exit");
-  cmd->add_flag("--verify-audit", o->verify_audit,
-                "check the audit log's hash chain, then exit (1 when broken)");
-  cmd->add_option("--data", o->data, "the store's folder (SQLite)")->capture_default_str();
-  cmd->add_option("--store", o->store, "a postgresql:// URL: the store in PostgreSQL");
-  cmd->add_option("--admin", o->admin, "--init: the first admin's name");
-  cmd->add_option("--password-file", o->password_file,
-                  "--init: a file whose first line is the admin's password");
-  cmd->add_option("--config", o->config,
-                  "the machines and [server] settings (default ./usina-serve.toml)");
-  cmd->add_option("--listen", o->listen, "HOST:PORT to serve HTTP on (default 127.0.0.1:8080)");
-  cmd->add_option("--tls-cert", o->tls_cert,
-                  "a PEM certificate (chain): serve HTTPS and WSS (with --tls-key)");
-  cmd->add_option("--tls-key", o->tls_key, "the PEM private key of --tls-cert");
-  cmd->callback([o] {
-    if (!o->store.empty() && !dnc::is_postgres_url(o->store)) {
-      fmt::print(stderr, "usina: error: --store takes a postgresql:// URL; a folder is --data\n");
-      set_exit_status(kUsage);
-      return;
-    }
-    set_exit_status(o->init ? init(*o) : o->verify_audit ? verify(*o) : run_server(*o));
-  });
+// The flags of spec/dnc-api.md on `cmd`; `o` gets their values.
+void add_serve_options(CLI::App& cmd, ServeOptions& o) {
+  cmd.add_flag("--init", o.init, "create the store and its first admin, then exit");
+  cmd.add_flag("--verify-audit", o.verify_audit,
+               "check the audit log's hash chain, then exit (1 when broken)");
+  cmd.add_option("--data", o.data, "the store's folder (SQLite)")->capture_default_str();
+  cmd.add_option("--store", o.store, "a postgresql:// URL: the store in PostgreSQL");
+  cmd.add_option("--admin", o.admin, "--init: the first admin's name");
+  cmd.add_option("--password-file", o.password_file,
+                 "--init: a file whose first line is the admin's password");
+  cmd.add_option("--config", o.config,
+                 "the machines and [server] settings (default ./usina-serve.toml)");
+  cmd.add_option("--listen", o.listen, "HOST:PORT to serve HTTP on (default 127.0.0.1:8080)");
+  cmd.add_option("--tls-cert", o.tls_cert,
+                 "a PEM certificate (chain): serve HTTPS and WSS (with --tls-key)");
+  cmd.add_option("--tls-key", o.tls_key, "the PEM private key of --tls-cert");
 }
 
+int serve(const ServeOptions& o) {
+  if (!o.store.empty() && !dnc::is_postgres_url(o.store)) {
+    fmt::print(stderr, "usina: error: --store takes a postgresql:// URL; a folder is --data\n");
+    return kUsage;
+  }
+  return o.init ? init(o) : o.verify_audit ? verify(o) : run_server(o);
+}
+
+// argv: what followed `usina serve`. Help and usage errors are said as
+// `usina serve` always said them.
+int serve_command(int argc, char** argv) {
+  ServeOptions o;
+  CLI::App cmd{"the DNC server: program store, machines' links, HTTP API (docs/dnc-server.md)",
+               "usina serve"};
+  add_serve_options(cmd, o);
+  try {
+    cmd.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cmd.exit(e);
+  } catch (const CLI::ParseError& e) {
+    fmt::print(stderr, "usina: error: serve: {} (usina serve --help)\n", e.what());
+    return kUsage;
+  }
+  return serve(o);
+}
+
+}  // namespace
 }  // namespace usina::cli
+
+int main(int argc, char** argv) {
+  return usina::cli::run_guarded(argc, argv, usina::cli::serve_command);
+}

@@ -22,8 +22,8 @@
 
 #include "cam/chain.hpp"
 #include "cam/dxf_import.hpp"
+#include "cli/raster_module.hpp"
 #include "cli/run.hpp"
-#include "cli/simulate_images.hpp"
 #include "cli/verbs.hpp"
 #include "core/file_ostream.hpp"
 #include "core/output_file.hpp"
@@ -283,9 +283,10 @@ int write_output(const std::string& path, const std::vector<std::string>& inputs
   return 0;
 }
 
+// `raster`: the module that writes the PNG pictures, when one is asked for.
 int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
                   const stock::StockSimulator& sim, bool complete,
-                  const std::vector<stock::TargetResult>& targets) {
+                  const std::vector<stock::TargetResult>& targets, const RasterWriters* raster) {
   std::vector<std::string> inputs = input_paths(o.run);
   if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);  // never written over
   const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
@@ -305,8 +306,8 @@ int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
         return {};
       });
     } else {
-      status =
-          write_output(path, inputs, [&](std::FILE* f) { return write_stock_png(map, view, f); });
+      status = write_output(path, inputs,
+                            [&](std::FILE* f) { return raster->write_stock_png(map, view, f); });
     }
     if (status != 0) return status;
   }
@@ -363,10 +364,17 @@ int simulate(const SimulateOptions& o) {
   if (o.floor && !std::isfinite(*o.floor)) return fail("--floor must be a finite Z in mm");
   auto tools = tool_shapes(o);
   if (!tools) return fail(tools.error());
+  const RasterWriters* raster = nullptr;
   for (const std::string& path : o.outputs) {
     if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
       return fail(fmt::format(
           "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
+    }
+    // A picture needs the raster module: a missing one is said before the run.
+    if (ends_with(path, ".png") && raster == nullptr) {
+      const auto writers = raster_writers();
+      if (!writers) return fail(fmt::format("simulate: {}", writers.error()));
+      raster = *writers;
     }
   }
   auto targets = read_targets(o);
@@ -382,7 +390,7 @@ int simulate(const SimulateOptions& o) {
   print_summary(*map, sim);
   const auto results = check_targets(*map, *targets, o.target_tolerance);
   print_targets(results);
-  if (const int written = write_outputs(o, *map, sim, status == 0, results); written != 0)
+  if (const int written = write_outputs(o, *map, sim, status == 0, results, raster); written != 0)
     return written;
   return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
 }

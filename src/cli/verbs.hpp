@@ -1,6 +1,8 @@
 // The verbs of the usina command; each registers itself on the app.
 #pragma once
 
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 namespace usina::cli {
@@ -17,6 +19,11 @@ void add_resume(CLI::App& app);
 void add_apt(CLI::App& app);
 void add_simulate(CLI::App& app);
 void add_job(CLI::App& app);
+
+// Runs the server executable usina-serve, found beside usina, in this
+// process's place with `args` (what followed "serve"); returns only when it
+// could not, with the status of that error (said on standard error).
+int exec_serve(std::vector<char*> args);
 
 // The status the chosen verb left.
 int exit_status();
