@@ -19,22 +19,6 @@ namespace chr = std::chrono;
 constexpr double kDaySeconds = 86'400.0;
 constexpr std::int64_t kMaxDays = 366;
 
-// Days since 1970-01-01 of "YYYY-MM-DD"; nothing when it is not a date.
-std::optional<std::int64_t> day_number(std::string_view text) {
-  if (text.size() != 10 || text[4] != '-' || text[7] != '-') return std::nullopt;
-  int y = 0;
-  unsigned m = 0, d = 0;
-  const auto read = [](std::string_view s, auto& v) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    return ec == std::errc() && end == s.data() + s.size();
-  };
-  if (!read(text.substr(0, 4), y) || !read(text.substr(5, 2), m) || !read(text.substr(8, 2), d))
-    return std::nullopt;
-  const chr::year_month_day date{chr::year{y}, chr::month{m}, chr::day{d}};
-  if (!date.ok()) return std::nullopt;
-  return chr::sys_days(date).time_since_epoch().count();
-}
-
 std::string date_text(std::int64_t day) {
   const chr::year_month_day date{chr::sys_days(chr::days(day))};
   return fmt::format("{:04}-{:02}-{:02}", static_cast<int>(date.year()),

@@ -114,22 +114,6 @@ std::optional<int> parse_clock(std::string_view text, bool end) {
   return std::nullopt;
 }
 
-std::optional<std::int64_t> parse_date(std::string_view text) {
-  if (text.size() != 10 || text[4] != '-' || text[7] != '-') return std::nullopt;
-  int y = 0;
-  unsigned m = 0;
-  unsigned d = 0;
-  const auto read = [](std::string_view s, auto& v) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    return ec == std::errc() && end == s.data() + s.size();
-  };
-  if (!read(text.substr(0, 4), y) || !read(text.substr(5, 2), m) || !read(text.substr(8, 2), d))
-    return std::nullopt;
-  const chr::year_month_day date{chr::year{y}, chr::month{m}, chr::day{d}};
-  if (!date.ok()) return std::nullopt;
-  return chr::sys_days(date).time_since_epoch().count();
-}
-
 std::string clock_text(int minute) {
   return fmt::format("{:02}:{:02}", minute / 60, minute % 60);
 }
@@ -240,7 +224,7 @@ void read_holidays(Reader& r, const toml::node& node, ShiftCalendar& c) {
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::node& n = *list->get(i);
     const auto text = n.value<std::string>();
-    const auto day = text ? parse_date(*text) : std::nullopt;
+    const auto day = text ? day_number(*text) : std::nullopt;
     if (!day) {
       r.fail(n.source(),
              fmt::format("{}.holidays[{}] must be a date \"YYYY-MM-DD\"", r.where(), i + 1));
@@ -438,6 +422,22 @@ std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalend
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::optional<std::int64_t> day_number(std::string_view text) {
+  if (text.size() != 10 || text[4] != '-' || text[7] != '-') return std::nullopt;
+  int y = 0;
+  unsigned m = 0;
+  unsigned d = 0;
+  const auto read = [](std::string_view s, auto& v) {
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && end == s.data() + s.size();
+  };
+  if (!read(text.substr(0, 4), y) || !read(text.substr(5, 2), m) || !read(text.substr(8, 2), d))
+    return std::nullopt;
+  const chr::year_month_day date{chr::year{y}, chr::month{m}, chr::day{d}};
+  if (!date.ok()) return std::nullopt;
+  return chr::sys_days(date).time_since_epoch().count();
 }
 
 }  // namespace usina::dnc

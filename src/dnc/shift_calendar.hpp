@@ -26,6 +26,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -87,5 +88,8 @@ std::string timezone_error(std::string_view name);
 std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalendar& calendar,
                                                                std::int64_t from_us,
                                                                std::int64_t to_us);
+
+// Days since 1970-01-01 of "YYYY-MM-DD"; nothing when it is not a date.
+std::optional<std::int64_t> day_number(std::string_view text);
 
 }  // namespace usina::dnc
