@@ -22,6 +22,7 @@
 
 #include "cam/chain.hpp"
 #include "cam/dxf_import.hpp"
+#include "cli/machine_option.hpp"
 #include "cli/raster_module.hpp"
 #include "cli/run.hpp"
 #include "cli/verbs.hpp"
@@ -29,6 +30,8 @@
 #include "core/output_file.hpp"
 #include "core/units.hpp"
 #include "gcode/tool_table.hpp"
+#include "sim/stats.hpp"
+#include "sim/stock/removal_rate.hpp"
 #include "sim/stock/simulator.hpp"
 #include "sim/stock/stock_files.hpp"
 #include "sim/stock/target.hpp"
@@ -52,6 +55,7 @@ struct SimulateOptions {
   std::string target_dxf;
   std::vector<std::string> targets;  // LAYER=Z
   double target_tolerance = 0.01;
+  std::string machine;  // profile for the times (docs/stats.md); empty: the generic mill
 };
 
 // mm: the chords of the target's arcs, finer than the grid can tell.
@@ -127,14 +131,38 @@ json tool_json(const stock::ToolVolume& t) {
   return j;
 }
 
-json operations_json(const stock::StockSimulator& sim) {
+// mm³ a minute; null when nothing ran for a time.
+json rate_json(double mm3, double seconds) {
+  return seconds > 0.0 ? json(mm3 / seconds * 60.0) : json(nullptr);
+}
+
+json operations_json(const stock::StockSimulator& sim, const stock::RemovalTimeline& timeline) {
   json ops = json::array();
-  for (const stock::Operation& op : sim.operations()) {
+  for (std::size_t i = 0; i < sim.operations().size(); ++i) {
+    const stock::Operation& op = sim.operations()[i];
+    const double s = i < timeline.operation_s().size() ? timeline.operation_s()[i] : 0.0;
     ops.push_back({{"tool", op.tool},
                    {"lines", {op.first_line, op.last_line}},
-                   {"removed_mm3", op.removed_mm3}});
+                   {"removed_mm3", op.removed_mm3},
+                   {"time_s", s},
+                   {"mm3_per_min", rate_json(op.removed_mm3, s)}});
   }
   return ops;
+}
+
+// The removal rate over time (docs/simulate.md, "Removal rate").
+json removal_rate_json(const stock::RemovalTimeline& t, double removed_mm3) {
+  json bins = json::array();
+  for (const double v : t.bins())
+    bins.push_back(v / t.bin_s() * 60.0);
+  const std::size_t peak = t.peak_bin();
+  const bool cut = !t.bins().empty() && t.bins()[peak] > 0.0;
+  return {{"bin_s", t.bin_s()},
+          {"mm3_per_min", std::move(bins)},
+          {"peak_mm3_per_min", cut ? json(t.bins()[peak] / t.bin_s() * 60.0) : json(nullptr)},
+          {"peak_at_s", cut ? json(static_cast<double>(peak) * t.bin_s()) : json(nullptr)},
+          {"cutting_s", t.cutting_s()},
+          {"mean_cutting_mm3_per_min", rate_json(removed_mm3, t.cutting_s())}};
 }
 
 // DXF diagnostics as `usina: SEVERITY[CODE]: message` (they name the file).
@@ -237,9 +265,19 @@ json targets_json(const std::vector<stock::TargetResult>& results) {
   return out;
 }
 
-json report_json(const SimulateOptions& o, const stock::HeightMap& map,
-                 const stock::StockSimulator& sim, bool complete,
+// What the run made: the stock, the simulator's figures, the times.
+struct SimulateRun {
+  const stock::HeightMap& map;
+  const stock::StockSimulator& sim;
+  const stock::RemovalTimeline& timeline;
+  const sim::MachineProfile& machine;
+  bool complete = false;
+};
+
+json report_json(const SimulateOptions& o, const SimulateRun& run,
                  const std::vector<stock::TargetResult>& targets) {
+  const stock::HeightMap& map = run.map;
+  const stock::StockSimulator& sim = run.sim;
   json per_tool = json::object();
   json tools = json::array();
   for (const stock::ToolVolume& t : sim.tools()) {
@@ -253,7 +291,7 @@ json report_json(const SimulateOptions& o, const stock::HeightMap& map,
   }
   const stock::StockBox& b = map.box();
   return {{"program", o.run.file},
-          {"complete", complete},
+          {"complete", run.complete},
           {"stock",
            {{"box", {b.width, b.length, b.height}},
             {"origin", {b.origin.x, b.origin.y, b.origin.z}},
@@ -263,7 +301,12 @@ json report_json(const SimulateOptions& o, const stock::HeightMap& map,
           {"removed_mm3", sim.removed_mm3()},
           {"rapid_removed_mm3", sim.rapid_removed_mm3()},
           {"per_tool", std::move(per_tool)},
-          {"per_operation", operations_json(sim)},
+          {"per_operation", operations_json(sim, run.timeline)},
+          {"machine",
+           {{"name", run.machine.name},
+            {"profile", o.machine.empty() ? json(nullptr) : json(o.machine)}}},
+          {"time_s", run.timeline.total_s()},
+          {"removal_rate", removal_rate_json(run.timeline, sim.removed_mm3())},
           {"tools", std::move(tools)},
           {"checks", std::move(checks)},
           {"targets", targets_json(targets)}};
@@ -284,9 +327,9 @@ int write_output(const std::string& path, const std::vector<std::string>& inputs
 }
 
 // `raster`: the module that writes the PNG pictures, when one is asked for.
-int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
-                  const stock::StockSimulator& sim, bool complete,
+int write_outputs(const SimulateOptions& o, const SimulateRun& run,
                   const std::vector<stock::TargetResult>& targets, const RasterWriters* raster) {
+  const stock::HeightMap& map = run.map;
   std::vector<std::string> inputs = input_paths(o.run);
   if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);  // never written over
   const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
@@ -294,7 +337,7 @@ int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
     int status = 0;
     if (ends_with(path, ".json")) {
       status = write_output(path, inputs, [&](std::FILE* f) -> tl::expected<void, std::string> {
-        const std::string text = report_json(o, map, sim, complete, targets).dump(2) + "\n";
+        const std::string text = report_json(o, run, targets).dump(2) + "\n";
         std::fwrite(text.data(), 1, text.size(), f);
         return {};
       });
@@ -322,7 +365,22 @@ int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
   return 0;
 }
 
-void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim) {
+void print_rate(const SimulateRun& run) {
+  const stock::RemovalTimeline& t = run.timeline;
+  fmt::print("time             {:.1f} s on {} (the planner's, with look-ahead)\n", t.total_s(),
+             run.machine.name);
+  const std::size_t peak = t.peak_bin();
+  if (t.bins().empty() || !(t.bins()[peak] > 0.0) || !(t.cutting_s() > 0.0)) return;
+  fmt::print(
+      "removal rate     peak {:.1f} mm³/min at {:.1f} s (bins of {:g} s), {:.1f} mm³/min "
+      "over {:.1f} s of cutting\n",
+      t.bins()[peak] / t.bin_s() * 60.0, static_cast<double>(peak) * t.bin_s(), t.bin_s(),
+      run.sim.removed_mm3() / t.cutting_s() * 60.0, t.cutting_s());
+}
+
+void print_summary(const SimulateRun& run) {
+  const stock::HeightMap& map = run.map;
+  const stock::StockSimulator& sim = run.sim;
   const stock::StockBox& b = map.box();
   fmt::print("stock            {:g} x {:g} x {:g} mm, {} x {} cells of {:g} x {:g} mm\n", b.width,
              b.length, b.height, map.nx(), map.ny(), map.dx(), map.dy());
@@ -332,14 +390,17 @@ void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim
     fmt::print("  T{:<5} {:>14.3f} mm³  {}\n", t.tool, t.removed_mm3, stock::shape_name(t.shape));
   }
   if (sim.operations().size() > 1) {
-    for (const stock::Operation& op : sim.operations()) {
-      fmt::print("  lines {}-{} T{:<5} {:>10.3f} mm³\n", op.first_line, op.last_line, op.tool,
-                 op.removed_mm3);
+    const std::vector<double>& seconds = run.timeline.operation_s();
+    for (std::size_t i = 0; i < sim.operations().size(); ++i) {
+      const stock::Operation& op = sim.operations()[i];
+      fmt::print("  lines {}-{} T{:<5} {:>10.3f} mm³ {:>9.1f} s\n", op.first_line, op.last_line,
+                 op.tool, op.removed_mm3, i < seconds.size() ? seconds[i] : 0.0);
     }
   }
   if (sim.rapid_removed_mm3() > 0.0) {
     fmt::print("  by rapids {:>11.3f} mm³\n", sim.rapid_removed_mm3());
   }
+  print_rate(run);
   if (!sim.checks().empty())
     fmt::print("checks           {} (on standard error)\n", sim.checks().size());
 }
@@ -379,19 +440,30 @@ int simulate(const SimulateOptions& o) {
   }
   auto targets = read_targets(o);
   if (!targets) return fail(targets.error());
+  const auto machine = load_machine_profile(o.machine);
+  if (!machine) return kBadInput;
   stock::SimulateOptions so;
   so.tools = std::move(*tools);
   so.floor = o.floor;
   Errors errors;
   stock::StockSimulator sim(*map, so, errors);
+  // The times: stats' planner on the same stream; its checks are stats' business.
+  stock::RemovalTimeline timeline;
+  core::DiagnosticList timing_checks;
+  sim::StatsSink timer(*machine, {}, timing_checks);
+  sim.set_timeline(&timeline);
+  timer.observe([&timeline](std::uint64_t op, double s) { timeline.timed(op, s); });
+  canon::TeeSink both({&sim, &timer});
   const int status =
-      run_program(o.run, sim, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
+      run_program(o.run, both, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
   if (status == kBadInput) return status;
-  print_summary(*map, sim);
+  timer.finish();
+  timeline.finish();
+  const SimulateRun run{*map, sim, timeline, *machine, status == 0};
+  print_summary(run);
   const auto results = check_targets(*map, *targets, o.target_tolerance);
   print_targets(results);
-  if (const int written = write_outputs(o, *map, sim, status == 0, results, raster); written != 0)
-    return written;
+  if (const int written = write_outputs(o, run, results, raster); written != 0) return written;
   return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
 }
 
@@ -424,6 +496,9 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--target-tolerance", opts->target_tolerance,
                   "mm the stock may stand above a target's depth")
       ->capture_default_str();
+  cmd->add_option("--machine", opts->machine,
+                  "machine profile for the times and the removal rate (TOML, as stats reads it); "
+                  "without it a generic mill");
   cmd->add_option("--height-map", opts->height_map, "the heights as a 16-bit greyscale PNG");
   cmd->add_option("--view", opts->view, "the picture: iso or top")
       ->check(CLI::IsMember({"iso", "top"}))
