@@ -117,6 +117,41 @@ TEST(SimulateRateCli, TheTimeIsStatsTimeOnTheSameMachine) {
   EXPECT_EQ(j["machine"]["profile"], nullptr);
 }
 
+TEST(SimulateRateCli, EveryPlannerModelTimesEveryOpAndKeepsTheVolume) {
+  // LinuxCNC's model merges and blends moves, Grbl's cuts arcs in chords:
+  // the time is still stats' and the bins still hold every mm³.
+  TempDir dir;
+  const std::string machines = std::string(USINA_TEST_DIR) + "/../examples/machines/";
+  const std::string grbl = dir.write(
+      "grbl.toml", slurp(machines + "hobby_router.toml") + "\n[planner]\nmodel = \"grbl\"\n");
+  const std::string arcs = dir.write("arcs.ngc",
+                                     "T1 M6\nG0 X20 Y10 Z1\nG1 Z-1 F100\nG64 P0.05 Q0.05\nF400\n"
+                                     "G2 X20 Y30 I0 J10\nG2 X20 Y10 I0 J-10\nG1 X30\nY12\nX40\n"
+                                     "Y14\nG0 Z5\nM30\n");
+  for (const std::string& profile : {machines + "linuxcnc_sim.toml", grbl}) {
+    const usina::test::Run r =
+        usina("simulate " + quote(arcs) + " --stock box:50x40x10 --tool-shape 1=flat/6 --machine " +
+              quote(profile) + " -o " + quote(dir.path("r.json")));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json j = json::parse(dir.read("r.json"));
+    const usina::test::Run stats =
+        usina("stats --format json --machine " + quote(profile) + " " + quote(arcs));
+    ASSERT_EQ(stats.status, 0) << stats.err;
+    EXPECT_NEAR(j["time_s"].get<double>(), json::parse(stats.out)["time"]["total_s"].get<double>(),
+                1e-9)
+        << profile;
+    const json& rate = j["removal_rate"];
+    double mm3 = 0.0;
+    for (const json& b : rate["mm3_per_min"])
+      mm3 += b.get<double>() * rate["bin_s"].get<double>() / 60.0;
+    EXPECT_GT(j["removed_mm3"].get<double>(), 100.0);
+    EXPECT_NEAR(mm3, j["removed_mm3"].get<double>(), 1e-6 * mm3) << profile;
+    // The plunge takes 28.27 mm² × 100 mm/min, the slots 6 × 1 × 400 mm³/min at most.
+    EXPECT_LE(rate["peak_mm3_per_min"].get<double>(), 2827.4 * 1.01) << profile;
+    EXPECT_GE(rate["peak_mm3_per_min"].get<double>(), 2400.0 * 0.9) << profile;
+  }
+}
+
 TEST(SimulateRateCli, AFasterMachineTakesLessTimeForTheSameVolume) {
   TempDir dir;
   // A router with a 60 s manual tool change and low accelerations.
