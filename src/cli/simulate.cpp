@@ -20,16 +20,16 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cam/chain.hpp"
-#include "cam/dxf_import.hpp"
 #include "cli/machine_option.hpp"
 #include "cli/raster_module.hpp"
 #include "cli/run.hpp"
+#include "cli/simulate_job.hpp"
 #include "cli/verbs.hpp"
 #include "core/file_ostream.hpp"
 #include "core/output_file.hpp"
 #include "core/units.hpp"
 #include "gcode/tool_table.hpp"
+#include "job/make.hpp"
 #include "sim/stats.hpp"
 #include "sim/stock/removal_rate.hpp"
 #include "sim/stock/simulator.hpp"
@@ -93,8 +93,8 @@ class Errors final : public core::DiagnosticSink {
 
 // The tool table's tools with their shapes (a word of the comment), then
 // --tool-shape T=SHAPE[/D] over them.
-tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(const SimulateOptions& o) {
-  std::map<int, stock::ToolShape> tools;
+tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(
+    const SimulateOptions& o, std::map<int, stock::ToolShape> tools) {
   if (!o.run.tool_table.empty()) {
     std::string err;
     auto file = core::SourceFile::open(o.run.tool_table, err);
@@ -165,21 +165,6 @@ json removal_rate_json(const stock::RemovalTimeline& t, double removed_mm3) {
           {"mean_cutting_mm3_per_min", rate_json(removed_mm3, t.cutting_s())}};
 }
 
-// DXF diagnostics as `usina: SEVERITY[CODE]: message` (they name the file).
-class DxfDiagnostics final : public core::DiagnosticSink {
- public:
-  void report(core::Diagnostic d) override {
-    if (d.severity == core::Severity::Error) ++errors_;
-    fmt::print(stderr, "usina: {}[{}]: {}\n", core::severity_name(d.severity),
-               core::code_name(d.code), d.message);
-  }
-
-  int errors() const { return errors_; }
-
- private:
-  int errors_ = 0;
-};
-
 // "LAYER=Z": the layer's closed contours of the target drawing, as polygons.
 tl::expected<stock::TargetLayer, std::string> read_target(const std::string& dxf,
                                                           const std::string& spec) {
@@ -196,23 +181,9 @@ tl::expected<stock::TargetLayer, std::string> read_target(const std::string& dxf
     return tl::unexpected(
         fmt::format("--target '{}': Z must be a number of mm within ±{:g}", spec, kMaxTargetZ));
   }
-  cam::DxfOptions options;
-  options.layer = t.layer;
-  DxfDiagnostics diags;
-  auto entities = cam::read_dxf(dxf, options, diags);
-  if (!entities || diags.errors() > 0) {
-    return tl::unexpected(fmt::format("--target {}: {} cannot be read (above)", spec, dxf));
-  }
-  for (const cam::Path& p : cam::chain(std::move(*entities))) {
-    if (!p.closed) continue;
-    auto ring = cam::linearize(p, kTargetChord);
-    if (ring.size() > 1 && core::distance(ring.front(), ring.back()) < 1e-9) ring.pop_back();
-    if (ring.size() >= 3) t.rings.push_back(std::move(ring));
-  }
-  if (t.rings.empty()) {
-    return tl::unexpected(
-        fmt::format("--target {}: layer {} of {} has no closed contour", spec, t.layer, dxf));
-  }
+  auto rings = closed_rings(dxf, t.layer, kTargetChord);
+  if (!rings) return tl::unexpected(fmt::format("--target {}: {}", spec, rings.error()));
+  t.rings = std::move(*rings);
   return t;
 }
 
@@ -253,9 +224,14 @@ std::vector<stock::TargetResult> check_targets(const stock::HeightMap& map,
 json targets_json(const std::vector<stock::TargetResult>& results) {
   json out = json::array();
   for (const stock::TargetResult& r : results) {
-    json j = {{"layer", r.layer},       {"z", r.z},
-              {"area_mm2", r.area_mm2}, {"above_mm2", r.above_mm2},
-              {"left_mm3", r.left_mm3}, {"most_above_mm", r.most_above_mm}};
+    json j = {{"layer", r.layer},
+              {"z", r.z},
+              {"title", r.title},
+              {"area_mm2", r.area_mm2},
+              {"above_mm2", r.above_mm2},
+              {"left_mm3", r.left_mm3},
+              {"most_above_mm", r.most_above_mm}};
+    if (r.operation > 0) j["operation"] = r.operation;
     if (r.above_mm2 > 0.0) {
       j["most_at"] = {r.most_at.x, r.most_at.y};
       j["code"] = core::code_name(core::Code::MaterialAboveTarget);
@@ -328,10 +304,9 @@ int write_output(const std::string& path, const std::vector<std::string>& inputs
 
 // `raster`: the module that writes the PNG pictures, when one is asked for.
 int write_outputs(const SimulateOptions& o, const SimulateRun& run,
-                  const std::vector<stock::TargetResult>& targets, const RasterWriters* raster) {
+                  const std::vector<stock::TargetResult>& targets, const RasterWriters* raster,
+                  const std::vector<std::string>& inputs) {
   const stock::HeightMap& map = run.map;
-  std::vector<std::string> inputs = input_paths(o.run);
-  if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);  // never written over
   const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
   for (const std::string& path : o.outputs) {
     int status = 0;
@@ -393,8 +368,11 @@ void print_summary(const SimulateRun& run) {
     const std::vector<double>& seconds = run.timeline.operation_s();
     for (std::size_t i = 0; i < sim.operations().size(); ++i) {
       const stock::Operation& op = sim.operations()[i];
-      fmt::print("  lines {}-{} T{:<5} {:>10.3f} mm³ {:>9.1f} s\n", op.first_line, op.last_line,
-                 op.tool, op.removed_mm3, i < seconds.size() ? seconds[i] : 0.0);
+      // A job's ops come from no program line.
+      const std::string lines =
+          op.first_line > 0 ? fmt::format("lines {}-{}", op.first_line, op.last_line) : "";
+      fmt::print("  {} T{:<5} {:>10.3f} mm³ {:>9.1f} s\n", lines, op.tool, op.removed_mm3,
+                 i < seconds.size() ? seconds[i] : 0.0);
     }
   }
   if (sim.rapid_removed_mm3() > 0.0) {
@@ -407,15 +385,101 @@ void print_summary(const SimulateRun& run) {
 
 void print_targets(const std::vector<stock::TargetResult>& results) {
   for (const stock::TargetResult& r : results) {
-    fmt::print("target {} Z{:g}  {:.2f} mm², {:.2f} mm² above it (up to {:.3f} mm)\n", r.layer, r.z,
+    fmt::print("target {} Z{:g}  {:.2f} mm², {:.2f} mm² above it (up to {:.3f} mm)\n", r.title, r.z,
                r.area_mm2, r.above_mm2, r.most_above_mm);
   }
 }
 
+// A job file given as the program: the job, and the steps its run took.
+struct JobInput {
+  core::SourceManager sources;
+  std::optional<job::LoadedJob> loaded;
+  job::SheetLog log;
+};
+
+// Reads the job when the program is one: 0, or the exit status of its errors.
+int load_job_input(const SimulateOptions& o, Errors& errors, JobInput& in) {
+  if (!is_job_file(o.run.file)) return 0;
+  errors.set_sources(&in.sources);
+  std::string io_error;
+  in.loaded = job::load_job(o.run.file, in.sources, errors, io_error);
+  if (!io_error.empty()) return fail(io_error);
+  return in.loaded ? 0 : 1;
+}
+
+// The stock: --stock (and --origin), else the job's.
+tl::expected<stock::StockBox, std::string> stock_box(const SimulateOptions& o, const JobInput& in) {
+  tl::expected<stock::StockBox, std::string> box =
+      tl::unexpected(std::string("--stock box:WxLxH is required (a job file gives its own)"));
+  if (!o.stock.empty()) {
+    box = stock::parse_stock(o.stock);
+  } else if (in.loaded) {
+    box = job_stock(in.loaded->job);
+  }
+  if (box && !o.origin.empty()) box->origin = {o.origin[0], o.origin[1], o.origin[2]};
+  return box;
+}
+
+// The tools: the job library's, then the tool table's and --tool-shape over them.
+tl::expected<std::map<int, stock::ToolShape>, std::string> all_tool_shapes(const SimulateOptions& o,
+                                                                           const JobInput& in) {
+  std::map<int, stock::ToolShape> tools;
+  if (in.loaded) {
+    auto shapes = job_tool_shapes(in.loaded->tools);
+    if (!shapes) return tl::unexpected(fmt::format("{}: {}", in.loaded->job.tools, shapes.error()));
+    tools = std::move(*shapes);
+  }
+  return tool_shapes(o, std::move(tools));
+}
+
+// Runs the program (or makes the job) into `sink`: the run's exit status.
+int run_input(const SimulateOptions& o, JobInput& in, canon::Sink& sink, Errors& errors) {
+  if (!in.loaded)
+    return run_program(o.run, sink,
+                       [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
+  const bool made = job::make_job(*in.loaded, sink, errors, &in.log);
+  sink.finish();
+  return made && errors.errors() == 0 ? 0 : 1;
+}
+
+// Every output checked before the run: what each is, and the raster module
+// a picture needs (nullptr when none is asked for), or why not.
+tl::expected<const RasterWriters*, std::string> output_writers(const SimulateOptions& o) {
+  const RasterWriters* raster = nullptr;
+  for (const std::string& path : o.outputs) {
+    if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
+      return tl::unexpected(fmt::format(
+          "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
+    }
+    if (ends_with(path, ".png") && raster == nullptr) {
+      const auto writers = raster_writers();
+      if (!writers) return tl::unexpected(fmt::format("simulate: {}", writers.error()));
+      raster = *writers;
+    }
+  }
+  return raster;
+}
+
+// The files the run read: no output may be written over them.
+std::vector<std::string> never_written(const SimulateOptions& o, const JobInput& in) {
+  std::vector<std::string> inputs = input_paths(o.run);
+  if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);
+  if (!o.machine.empty()) inputs.push_back(o.machine);
+  if (in.loaded) {
+    const job::Job& j = in.loaded->job;
+    for (const std::string& f : {j.tools, j.materials, j.drawing, j.machine}) {
+      if (!f.empty()) inputs.push_back(f);
+    }
+  }
+  return inputs;
+}
+
 int simulate(const SimulateOptions& o) {
-  auto box = stock::parse_stock(o.stock);
+  Errors errors;
+  JobInput in;
+  if (const int loaded = load_job_input(o, errors, in); loaded != 0) return loaded;
+  auto box = stock_box(o, in);
   if (!box) return fail(box.error());
-  if (!o.origin.empty()) box->origin = {o.origin[0], o.origin[1], o.origin[2]};
   auto map = stock::HeightMap::make(*box, o.resolution);
   if (!map) {
     fmt::print(stderr, "usina: error[{}]: {}\n", core::code_name(core::Code::StockGridTooLarge),
@@ -423,29 +487,21 @@ int simulate(const SimulateOptions& o) {
     return kBadInput;
   }
   if (o.floor && !std::isfinite(*o.floor)) return fail("--floor must be a finite Z in mm");
-  auto tools = tool_shapes(o);
+  auto tools = all_tool_shapes(o, in);
   if (!tools) return fail(tools.error());
-  const RasterWriters* raster = nullptr;
-  for (const std::string& path : o.outputs) {
-    if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
-      return fail(fmt::format(
-          "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
-    }
-    // A picture needs the raster module: a missing one is said before the run.
-    if (ends_with(path, ".png") && raster == nullptr) {
-      const auto writers = raster_writers();
-      if (!writers) return fail(fmt::format("simulate: {}", writers.error()));
-      raster = *writers;
-    }
-  }
+  // A picture needs the raster module: a missing one is said before the run.
+  const auto raster = output_writers(o);
+  if (!raster) return fail(raster.error());
   auto targets = read_targets(o);
   if (!targets) return fail(targets.error());
-  const auto machine = load_machine_profile(o.machine);
+  // --machine, else the job's machine, else the generic mill.
+  const auto machine = o.machine.empty() && in.loaded && in.loaded->machine
+                           ? in.loaded->machine
+                           : load_machine_profile(o.machine);
   if (!machine) return kBadInput;
   stock::SimulateOptions so;
   so.tools = std::move(*tools);
   so.floor = o.floor;
-  Errors errors;
   stock::StockSimulator sim(*map, so, errors);
   // The times: stats' planner on the same stream; its checks are stats' business.
   stock::RemovalTimeline timeline;
@@ -454,16 +510,22 @@ int simulate(const SimulateOptions& o) {
   sim.set_timeline(&timeline);
   timer.observe([&timeline](std::uint64_t op, double s) { timeline.timed(op, s); });
   canon::TeeSink both({&sim, &timer});
-  const int status =
-      run_program(o.run, both, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
+  const int status = run_input(o, in, both, errors);
   if (status == kBadInput) return status;
   timer.finish();
   timeline.finish();
+  if (in.loaded) {
+    auto job_targets_found = job_targets(*in.loaded, in.log);
+    if (!job_targets_found) return fail(job_targets_found.error());
+    targets->insert(targets->end(), job_targets_found->begin(), job_targets_found->end());
+  }
   const SimulateRun run{*map, sim, timeline, *machine, status == 0};
   print_summary(run);
   const auto results = check_targets(*map, *targets, o.target_tolerance);
   print_targets(results);
-  if (const int written = write_outputs(o, run, results, raster); written != 0) return written;
+  if (const int written = write_outputs(o, run, results, *raster, never_written(o, in));
+      written != 0)
+    return written;
   return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
 }
 
@@ -474,8 +536,9 @@ void add_simulate(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "cut a stock with the program: volumes, checks, STL and pictures");
   add_run_options(*cmd, opts->run);
-  cmd->add_option("--stock", opts->stock, "the stock: box:WxLxH in mm, e.g. box:200x150x30")
-      ->required();
+  cmd->add_option("--stock", opts->stock,
+                  "the stock: box:WxLxH in mm, e.g. box:200x150x30 (required, unless the program "
+                  "is a job file: then its stock)");
   cmd->add_option("--origin", opts->origin,
                   "X,Y,Z of the stock's corner at least X and Y on its top face (default 0,0,0)")
       ->delimiter(',')

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "canon/bare_hole.hpp"
 #include "canon/limits.hpp"
 #include "sim/planner_models.hpp"
 
@@ -121,6 +122,7 @@ void StatsSink::on(const canon::Op& op) {
         if constexpr (std::is_same_v<T, canon::Traverse>) {
           traverse(op, k);
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          feed_in_force_ = k;
           feed(op, k.to, k.abc, k.f, k.programmed);
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           arc(op, k);
@@ -137,6 +139,9 @@ void StatsSink::on(const canon::Op& op) {
           spindle(k);
         } else if constexpr (std::is_same_v<T, canon::Hole>) {
           ++tool().counts.holes;
+          const canon::Abc abc{pos_[3], pos_[4], pos_[5]};
+          for (const canon::Op& m : canon::bare_hole_moves(op, k, xyz(pos_), abc, feed_in_force_))
+            on(m);
         } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
           planner_->stop();
         } else if constexpr (std::is_same_v<T, canon::PathMode>) {

@@ -162,6 +162,7 @@ class StatsSink final : public canon::Sink {
   canon::SpindleDir spindle_dir_ = canon::SpindleDir::Off;
   double spindle_rpm_ = 0.0;
   std::optional<double> last_feed_;  // mm/min, for probe moves
+  canon::Feed feed_in_force_;        // the last feed move: a bare hole drills at its rate
   std::uint64_t op_ = 0;             // ops taken so far: the number of the one being taken
 };
 

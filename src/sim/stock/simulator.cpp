@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "canon/bare_hole.hpp"
 #include "canon/limits.hpp"
 #include "sim/planner_geometry.hpp"
 
@@ -43,6 +44,7 @@ void StockSimulator::on(const canon::Op& op) {
         if constexpr (std::is_same_v<T, canon::Traverse>) {
           move(op, k.to, k.abc, true);
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          feed_in_force_ = k;
           move(op, k.to, k.abc, false);
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           arc(op, k);
@@ -54,6 +56,9 @@ void StockSimulator::on(const canon::Op& op) {
           abc_ = k.abc;
         } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
           tool_change(op, k);
+        } else if constexpr (std::is_same_v<T, canon::Hole>) {
+          for (const canon::Op& m : canon::bare_hole_moves(op, k, pos_, abc_, feed_in_force_))
+            on(m);
         }
       },
       op.kind);

@@ -109,8 +109,9 @@ class StockSimulator final : public canon::Sink {
   std::vector<Check> checks_;
   std::map<core::Code, std::size_t> reported_;
   bool warned_abc_ = false;
-  bool started_ = false;  // a move has placed the tool
-  std::uint64_t op_ = 0;  // ops taken: the number of the one being taken
+  bool started_ = false;       // a move has placed the tool
+  std::uint64_t op_ = 0;       // ops taken: the number of the one being taken
+  canon::Feed feed_in_force_;  // the last feed move: a bare hole drills at its rate
   RemovalTimeline* timeline_ = nullptr;
 };
 

@@ -184,3 +184,98 @@ TEST(SimulateRateCli, AMachineProfileThatCannotBeReadIsBadInput) {
 
 }  // namespace
 }  // namespace usina::test
+
+namespace usina::test {
+namespace {
+
+const std::string kExamples = std::string(USINA_TEST_DIR) + "/../examples/";
+
+// usina simulate JOB.toml: the job's stock, tools, machine and targets.
+TEST(SimulateJobCli, AJobIsSimulatedOnItsStockWithItsToolsAndMachine) {
+  TempDir dir;
+  const std::string job = kExamples + "jobs/plate.toml";
+  const usina::test::Run r = usina("simulate " + quote(job) + " -o " + quote(dir.path("r.json")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(dir.read("r.json"));
+  EXPECT_EQ(j["stock"]["box"], nlohmann::json::parse("[130.0, 90.0, 10.0]"));
+  EXPECT_EQ(j["stock"]["origin"], nlohmann::json::parse("[-5.0, -5.0, 0.0]"));
+  EXPECT_EQ(j["machine"]["name"], "small VMC");
+  // The two D5 holes through the 10 mm plate: 2 × π 2.5² × 10 and a little
+  // of the point's cone beyond the stock's bottom (none: it is below).
+  EXPECT_NEAR(j["per_tool"]["6"]["removed_mm3"].get<double>(), 2 * M_PI * 6.25 * 10, 0.01 * 393);
+  // The pocket down to Z-4 wherever its 6 mm end mill reaches.
+  ASSERT_EQ(j["targets"].size(), 1u);
+  EXPECT_EQ(j["targets"][0]["operation"], 2);
+  EXPECT_EQ(j["targets"][0]["above_mm2"].get<double>(), 0.0);
+  EXPECT_GT(j["targets"][0]["area_mm2"].get<double>(), 1400.0);
+  // The same time as the posted program's on the same machine.
+  const usina::test::Run posted =
+      usina("job " + quote(job) + " --post rs274ngc -o " + quote(dir.path("plate.ngc")));
+  ASSERT_EQ(posted.status, 0) << posted.err;
+  const usina::test::Run stats =
+      usina("stats --format json --machine " + quote(kExamples + "machines/small_vmc.toml") + " " +
+            quote(dir.path("plate.ngc")));
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  EXPECT_NEAR(j["time_s"].get<double>(),
+              nlohmann::json::parse(stats.out)["time"]["total_s"].get<double>(), 0.05);
+}
+
+TEST(SimulateJobCli, APocketCutWithTooSmallATool) {
+  // The pocket's path is for its 6 mm end mill; cut with a 3 mm one it
+  // leaves ridges between the passes: material above the operation's target.
+  TempDir dir;
+  const usina::test::Run r = usina("simulate " + quote(kExamples + "jobs/plate.toml") +
+                                   " --tool-shape 2=flat/3 -o " + quote(dir.path("r.json")));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(
+      r.err.find("warning[W_MATERIAL_ABOVE_TARGET]: operation 2 (pocket, layer POCKET) (Z-4)"),
+      std::string::npos)
+      << r.err;
+  const nlohmann::json j = nlohmann::json::parse(dir.read("r.json"));
+  EXPECT_GT(j["targets"][0]["above_mm2"].get<double>(), 100.0);
+}
+
+TEST(SimulateJobCli, ACylinderStockNeedsABoxGiven) {
+  TempDir dir;
+  std::string job = slurp(kExamples + "jobs/plate.toml");
+  const std::string box = "shape = \"box\"\nsize = [130.0, 90.0, 10.0]";
+  ASSERT_NE(job.find(box), std::string::npos);
+  job.replace(job.find(box), box.size(), "shape = \"cylinder\"\ndiameter = 180.0\nheight = 10.0");
+  const std::string corner = "origin = [-5.0, -5.0]";
+  ASSERT_NE(job.find(corner), std::string::npos);
+  job.replace(job.find(corner), corner.size(), "origin = [60.0, 40.0]");
+  for (const char* f : {"machine = \"", "tools = \"", "materials = \"", "drawing = \""}) {
+    const std::size_t at = job.find(f);
+    ASSERT_NE(at, std::string::npos) << f;
+    job.insert(at + std::string(f).size(), kExamples + "jobs/");
+  }
+  const std::string path = dir.write("round.toml", job);
+  const usina::test::Run r = usina("simulate " + quote(path) + " -o " + quote(dir.path("r.json")));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("the job's stock is a cylinder"), std::string::npos) << r.err;
+  EXPECT_FALSE(exists(dir.path("r.json")));
+  const usina::test::Run boxed =
+      usina("simulate " + quote(path) + " --stock box:180x180x10 --origin -30,-50,0 -o " +
+            quote(dir.path("r.json")));
+  EXPECT_EQ(boxed.status, 0) << boxed.err;
+}
+
+TEST(SimulateJobCli, AJobWithAnErrorIsReportedAtItsLine) {
+  TempDir dir;
+  std::string job = slurp(kExamples + "jobs/plate.toml");
+  job.replace(job.find("depth = 4.0"), 11, "dept = 4.0");
+  for (const char* f : {"machine = \"", "tools = \"", "materials = \"", "drawing = \""})
+    job.insert(job.find(f) + std::string(f).size(), kExamples + "jobs/");
+  const usina::test::Run r =
+      usina("simulate " + quote(dir.write("bad.toml", job)) + " -o " + quote(dir.path("r.json")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("bad.toml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("E_UNKNOWN_JOB_KEY"), std::string::npos) << r.err;
+  EXPECT_FALSE(exists(dir.path("r.json")));
+  const usina::test::Run missing =
+      usina("simulate " + quote(dir.path("none.toml")) + " -o " + quote(dir.path("r.json")));
+  EXPECT_EQ(missing.status, 2) << missing.err;
+}
+
+}  // namespace
+}  // namespace usina::test
