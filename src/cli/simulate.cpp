@@ -20,15 +20,18 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cam/chain.hpp"
-#include "cam/dxf_import.hpp"
+#include "cli/machine_option.hpp"
 #include "cli/raster_module.hpp"
 #include "cli/run.hpp"
+#include "cli/simulate_job.hpp"
 #include "cli/verbs.hpp"
 #include "core/file_ostream.hpp"
 #include "core/output_file.hpp"
 #include "core/units.hpp"
 #include "gcode/tool_table.hpp"
+#include "job/make.hpp"
+#include "sim/stats.hpp"
+#include "sim/stock/removal_rate.hpp"
 #include "sim/stock/simulator.hpp"
 #include "sim/stock/stock_files.hpp"
 #include "sim/stock/target.hpp"
@@ -52,6 +55,7 @@ struct SimulateOptions {
   std::string target_dxf;
   std::vector<std::string> targets;  // LAYER=Z
   double target_tolerance = 0.01;
+  std::string machine;  // profile for the times (docs/stats.md); empty: the generic mill
 };
 
 // mm: the chords of the target's arcs, finer than the grid can tell.
@@ -89,8 +93,8 @@ class Errors final : public core::DiagnosticSink {
 
 // The tool table's tools with their shapes (a word of the comment), then
 // --tool-shape T=SHAPE[/D] over them.
-tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(const SimulateOptions& o) {
-  std::map<int, stock::ToolShape> tools;
+tl::expected<std::map<int, stock::ToolShape>, std::string> tool_shapes(
+    const SimulateOptions& o, std::map<int, stock::ToolShape> tools) {
   if (!o.run.tool_table.empty()) {
     std::string err;
     auto file = core::SourceFile::open(o.run.tool_table, err);
@@ -127,30 +131,39 @@ json tool_json(const stock::ToolVolume& t) {
   return j;
 }
 
-json operations_json(const stock::StockSimulator& sim) {
+// mm³ a minute; null when nothing ran for a time.
+json rate_json(double mm3, double seconds) {
+  return seconds > 0.0 ? json(mm3 / seconds * 60.0) : json(nullptr);
+}
+
+json operations_json(const stock::StockSimulator& sim, const stock::RemovalTimeline& timeline) {
   json ops = json::array();
-  for (const stock::Operation& op : sim.operations()) {
+  for (std::size_t i = 0; i < sim.operations().size(); ++i) {
+    const stock::Operation& op = sim.operations()[i];
+    const double s = i < timeline.operation_s().size() ? timeline.operation_s()[i] : 0.0;
     ops.push_back({{"tool", op.tool},
                    {"lines", {op.first_line, op.last_line}},
-                   {"removed_mm3", op.removed_mm3}});
+                   {"removed_mm3", op.removed_mm3},
+                   {"time_s", s},
+                   {"mm3_per_min", rate_json(op.removed_mm3, s)}});
   }
   return ops;
 }
 
-// DXF diagnostics as `usina: SEVERITY[CODE]: message` (they name the file).
-class DxfDiagnostics final : public core::DiagnosticSink {
- public:
-  void report(core::Diagnostic d) override {
-    if (d.severity == core::Severity::Error) ++errors_;
-    fmt::print(stderr, "usina: {}[{}]: {}\n", core::severity_name(d.severity),
-               core::code_name(d.code), d.message);
-  }
-
-  int errors() const { return errors_; }
-
- private:
-  int errors_ = 0;
-};
+// The removal rate over time (docs/simulate.md, "Removal rate").
+json removal_rate_json(const stock::RemovalTimeline& t, double removed_mm3) {
+  json bins = json::array();
+  for (const double v : t.bins())
+    bins.push_back(v / t.bin_s() * 60.0);
+  const std::size_t peak = t.peak_bin();
+  const bool cut = !t.bins().empty() && t.bins()[peak] > 0.0;
+  return {{"bin_s", t.bin_s()},
+          {"mm3_per_min", std::move(bins)},
+          {"peak_mm3_per_min", cut ? json(t.bins()[peak] / t.bin_s() * 60.0) : json(nullptr)},
+          {"peak_at_s", cut ? json(static_cast<double>(peak) * t.bin_s()) : json(nullptr)},
+          {"cutting_s", t.cutting_s()},
+          {"mean_cutting_mm3_per_min", rate_json(removed_mm3, t.cutting_s())}};
+}
 
 // "LAYER=Z": the layer's closed contours of the target drawing, as polygons.
 tl::expected<stock::TargetLayer, std::string> read_target(const std::string& dxf,
@@ -168,23 +181,9 @@ tl::expected<stock::TargetLayer, std::string> read_target(const std::string& dxf
     return tl::unexpected(
         fmt::format("--target '{}': Z must be a number of mm within ±{:g}", spec, kMaxTargetZ));
   }
-  cam::DxfOptions options;
-  options.layer = t.layer;
-  DxfDiagnostics diags;
-  auto entities = cam::read_dxf(dxf, options, diags);
-  if (!entities || diags.errors() > 0) {
-    return tl::unexpected(fmt::format("--target {}: {} cannot be read (above)", spec, dxf));
-  }
-  for (const cam::Path& p : cam::chain(std::move(*entities))) {
-    if (!p.closed) continue;
-    auto ring = cam::linearize(p, kTargetChord);
-    if (ring.size() > 1 && core::distance(ring.front(), ring.back()) < 1e-9) ring.pop_back();
-    if (ring.size() >= 3) t.rings.push_back(std::move(ring));
-  }
-  if (t.rings.empty()) {
-    return tl::unexpected(
-        fmt::format("--target {}: layer {} of {} has no closed contour", spec, t.layer, dxf));
-  }
+  auto rings = closed_rings(dxf, t.layer, kTargetChord);
+  if (!rings) return tl::unexpected(fmt::format("--target {}: {}", spec, rings.error()));
+  t.rings = std::move(*rings);
   return t;
 }
 
@@ -225,9 +224,14 @@ std::vector<stock::TargetResult> check_targets(const stock::HeightMap& map,
 json targets_json(const std::vector<stock::TargetResult>& results) {
   json out = json::array();
   for (const stock::TargetResult& r : results) {
-    json j = {{"layer", r.layer},       {"z", r.z},
-              {"area_mm2", r.area_mm2}, {"above_mm2", r.above_mm2},
-              {"left_mm3", r.left_mm3}, {"most_above_mm", r.most_above_mm}};
+    json j = {{"layer", r.layer},
+              {"z", r.z},
+              {"title", r.title},
+              {"area_mm2", r.area_mm2},
+              {"above_mm2", r.above_mm2},
+              {"left_mm3", r.left_mm3},
+              {"most_above_mm", r.most_above_mm}};
+    if (r.operation > 0) j["operation"] = r.operation;
     if (r.above_mm2 > 0.0) {
       j["most_at"] = {r.most_at.x, r.most_at.y};
       j["code"] = core::code_name(core::Code::MaterialAboveTarget);
@@ -237,9 +241,19 @@ json targets_json(const std::vector<stock::TargetResult>& results) {
   return out;
 }
 
-json report_json(const SimulateOptions& o, const stock::HeightMap& map,
-                 const stock::StockSimulator& sim, bool complete,
+// What the run made: the stock, the simulator's figures, the times.
+struct SimulateRun {
+  const stock::HeightMap& map;
+  const stock::StockSimulator& sim;
+  const stock::RemovalTimeline& timeline;
+  const sim::MachineProfile& machine;
+  bool complete = false;
+};
+
+json report_json(const SimulateOptions& o, const SimulateRun& run,
                  const std::vector<stock::TargetResult>& targets) {
+  const stock::HeightMap& map = run.map;
+  const stock::StockSimulator& sim = run.sim;
   json per_tool = json::object();
   json tools = json::array();
   for (const stock::ToolVolume& t : sim.tools()) {
@@ -253,7 +267,7 @@ json report_json(const SimulateOptions& o, const stock::HeightMap& map,
   }
   const stock::StockBox& b = map.box();
   return {{"program", o.run.file},
-          {"complete", complete},
+          {"complete", run.complete},
           {"stock",
            {{"box", {b.width, b.length, b.height}},
             {"origin", {b.origin.x, b.origin.y, b.origin.z}},
@@ -263,7 +277,12 @@ json report_json(const SimulateOptions& o, const stock::HeightMap& map,
           {"removed_mm3", sim.removed_mm3()},
           {"rapid_removed_mm3", sim.rapid_removed_mm3()},
           {"per_tool", std::move(per_tool)},
-          {"per_operation", operations_json(sim)},
+          {"per_operation", operations_json(sim, run.timeline)},
+          {"machine",
+           {{"name", run.machine.name},
+            {"profile", o.machine.empty() ? json(nullptr) : json(o.machine)}}},
+          {"time_s", run.timeline.total_s()},
+          {"removal_rate", removal_rate_json(run.timeline, sim.removed_mm3())},
           {"tools", std::move(tools)},
           {"checks", std::move(checks)},
           {"targets", targets_json(targets)}};
@@ -284,17 +303,16 @@ int write_output(const std::string& path, const std::vector<std::string>& inputs
 }
 
 // `raster`: the module that writes the PNG pictures, when one is asked for.
-int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
-                  const stock::StockSimulator& sim, bool complete,
-                  const std::vector<stock::TargetResult>& targets, const RasterWriters* raster) {
-  std::vector<std::string> inputs = input_paths(o.run);
-  if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);  // never written over
+int write_outputs(const SimulateOptions& o, const SimulateRun& run,
+                  const std::vector<stock::TargetResult>& targets, const RasterWriters* raster,
+                  const std::vector<std::string>& inputs) {
+  const stock::HeightMap& map = run.map;
   const StockView view = o.view == "top" ? StockView::Top : StockView::Iso;
   for (const std::string& path : o.outputs) {
     int status = 0;
     if (ends_with(path, ".json")) {
       status = write_output(path, inputs, [&](std::FILE* f) -> tl::expected<void, std::string> {
-        const std::string text = report_json(o, map, sim, complete, targets).dump(2) + "\n";
+        const std::string text = report_json(o, run, targets).dump(2) + "\n";
         std::fwrite(text.data(), 1, text.size(), f);
         return {};
       });
@@ -322,7 +340,22 @@ int write_outputs(const SimulateOptions& o, const stock::HeightMap& map,
   return 0;
 }
 
-void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim) {
+void print_rate(const SimulateRun& run) {
+  const stock::RemovalTimeline& t = run.timeline;
+  fmt::print("time             {:.1f} s on {} (the planner's, with look-ahead)\n", t.total_s(),
+             run.machine.name);
+  const std::size_t peak = t.peak_bin();
+  if (t.bins().empty() || !(t.bins()[peak] > 0.0) || !(t.cutting_s() > 0.0)) return;
+  fmt::print(
+      "removal rate     peak {:.1f} mm³/min at {:.1f} s (bins of {:g} s), {:.1f} mm³/min "
+      "over {:.1f} s of cutting\n",
+      t.bins()[peak] / t.bin_s() * 60.0, static_cast<double>(peak) * t.bin_s(), t.bin_s(),
+      run.sim.removed_mm3() / t.cutting_s() * 60.0, t.cutting_s());
+}
+
+void print_summary(const SimulateRun& run) {
+  const stock::HeightMap& map = run.map;
+  const stock::StockSimulator& sim = run.sim;
   const stock::StockBox& b = map.box();
   fmt::print("stock            {:g} x {:g} x {:g} mm, {} x {} cells of {:g} x {:g} mm\n", b.width,
              b.length, b.height, map.nx(), map.ny(), map.dx(), map.dy());
@@ -332,29 +365,121 @@ void print_summary(const stock::HeightMap& map, const stock::StockSimulator& sim
     fmt::print("  T{:<5} {:>14.3f} mm³  {}\n", t.tool, t.removed_mm3, stock::shape_name(t.shape));
   }
   if (sim.operations().size() > 1) {
-    for (const stock::Operation& op : sim.operations()) {
-      fmt::print("  lines {}-{} T{:<5} {:>10.3f} mm³\n", op.first_line, op.last_line, op.tool,
-                 op.removed_mm3);
+    const std::vector<double>& seconds = run.timeline.operation_s();
+    for (std::size_t i = 0; i < sim.operations().size(); ++i) {
+      const stock::Operation& op = sim.operations()[i];
+      // A job's ops come from no program line.
+      const std::string lines =
+          op.first_line > 0 ? fmt::format("lines {}-{}", op.first_line, op.last_line) : "";
+      fmt::print("  {} T{:<5} {:>10.3f} mm³ {:>9.1f} s\n", lines, op.tool, op.removed_mm3,
+                 i < seconds.size() ? seconds[i] : 0.0);
     }
   }
   if (sim.rapid_removed_mm3() > 0.0) {
     fmt::print("  by rapids {:>11.3f} mm³\n", sim.rapid_removed_mm3());
   }
+  print_rate(run);
   if (!sim.checks().empty())
     fmt::print("checks           {} (on standard error)\n", sim.checks().size());
 }
 
 void print_targets(const std::vector<stock::TargetResult>& results) {
   for (const stock::TargetResult& r : results) {
-    fmt::print("target {} Z{:g}  {:.2f} mm², {:.2f} mm² above it (up to {:.3f} mm)\n", r.layer, r.z,
+    fmt::print("target {} Z{:g}  {:.2f} mm², {:.2f} mm² above it (up to {:.3f} mm)\n", r.title, r.z,
                r.area_mm2, r.above_mm2, r.most_above_mm);
   }
 }
 
+// A job file given as the program: the job, and the steps its run took.
+struct JobInput {
+  core::SourceManager sources;
+  std::optional<job::LoadedJob> loaded;
+  job::SheetLog log;
+};
+
+// Reads the job when the program is one: 0, or the exit status of its errors.
+int load_job_input(const SimulateOptions& o, Errors& errors, JobInput& in) {
+  if (!is_job_file(o.run.file)) return 0;
+  errors.set_sources(&in.sources);
+  std::string io_error;
+  in.loaded = job::load_job(o.run.file, in.sources, errors, io_error);
+  if (!io_error.empty()) return fail(io_error);
+  return in.loaded ? 0 : 1;
+}
+
+// The stock: --stock (and --origin), else the job's.
+tl::expected<stock::StockBox, std::string> stock_box(const SimulateOptions& o, const JobInput& in) {
+  tl::expected<stock::StockBox, std::string> box =
+      tl::unexpected(std::string("--stock box:WxLxH is required (a job file gives its own)"));
+  if (!o.stock.empty()) {
+    box = stock::parse_stock(o.stock);
+  } else if (in.loaded) {
+    box = job_stock(in.loaded->job);
+  }
+  if (box && !o.origin.empty()) box->origin = {o.origin[0], o.origin[1], o.origin[2]};
+  return box;
+}
+
+// The tools: the job library's, then the tool table's and --tool-shape over them.
+tl::expected<std::map<int, stock::ToolShape>, std::string> all_tool_shapes(const SimulateOptions& o,
+                                                                           const JobInput& in) {
+  std::map<int, stock::ToolShape> tools;
+  if (in.loaded) {
+    auto shapes = job_tool_shapes(in.loaded->tools);
+    if (!shapes) return tl::unexpected(fmt::format("{}: {}", in.loaded->job.tools, shapes.error()));
+    tools = std::move(*shapes);
+  }
+  return tool_shapes(o, std::move(tools));
+}
+
+// Runs the program (or makes the job) into `sink`: the run's exit status.
+int run_input(const SimulateOptions& o, JobInput& in, canon::Sink& sink, Errors& errors) {
+  if (!in.loaded)
+    return run_program(o.run, sink,
+                       [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
+  const bool made = job::make_job(*in.loaded, sink, errors, &in.log);
+  sink.finish();
+  return made && errors.errors() == 0 ? 0 : 1;
+}
+
+// Every output checked before the run: what each is, and the raster module
+// a picture needs (nullptr when none is asked for), or why not.
+tl::expected<const RasterWriters*, std::string> output_writers(const SimulateOptions& o) {
+  const RasterWriters* raster = nullptr;
+  for (const std::string& path : o.outputs) {
+    if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
+      return tl::unexpected(fmt::format(
+          "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
+    }
+    if (ends_with(path, ".png") && raster == nullptr) {
+      const auto writers = raster_writers();
+      if (!writers) return tl::unexpected(fmt::format("simulate: {}", writers.error()));
+      raster = *writers;
+    }
+  }
+  return raster;
+}
+
+// The files the run read: no output may be written over them.
+std::vector<std::string> never_written(const SimulateOptions& o, const JobInput& in) {
+  std::vector<std::string> inputs = input_paths(o.run);
+  if (!o.target_dxf.empty()) inputs.push_back(o.target_dxf);
+  if (!o.machine.empty()) inputs.push_back(o.machine);
+  if (in.loaded) {
+    const job::Job& j = in.loaded->job;
+    for (const std::string& f : {j.tools, j.materials, j.drawing, j.machine}) {
+      if (!f.empty()) inputs.push_back(f);
+    }
+  }
+  return inputs;
+}
+
 int simulate(const SimulateOptions& o) {
-  auto box = stock::parse_stock(o.stock);
+  Errors errors;
+  JobInput in;
+  if (const int loaded = load_job_input(o, errors, in); loaded != 0) return loaded;
+  auto box = stock_box(o, in);
   if (!box) return fail(box.error());
-  if (!o.origin.empty()) box->origin = {o.origin[0], o.origin[1], o.origin[2]};
   auto map = stock::HeightMap::make(*box, o.resolution);
   if (!map) {
     fmt::print(stderr, "usina: error[{}]: {}\n", core::code_name(core::Code::StockGridTooLarge),
@@ -362,35 +487,44 @@ int simulate(const SimulateOptions& o) {
     return kBadInput;
   }
   if (o.floor && !std::isfinite(*o.floor)) return fail("--floor must be a finite Z in mm");
-  auto tools = tool_shapes(o);
+  auto tools = all_tool_shapes(o, in);
   if (!tools) return fail(tools.error());
-  const RasterWriters* raster = nullptr;
-  for (const std::string& path : o.outputs) {
-    if (!ends_with(path, ".json") && !ends_with(path, ".stl") && !ends_with(path, ".png")) {
-      return fail(fmt::format(
-          "cannot tell what to write to '{}': give OUT.png, OUT.stl or OUT.json", path));
-    }
-    // A picture needs the raster module: a missing one is said before the run.
-    if (ends_with(path, ".png") && raster == nullptr) {
-      const auto writers = raster_writers();
-      if (!writers) return fail(fmt::format("simulate: {}", writers.error()));
-      raster = *writers;
-    }
-  }
+  // A picture needs the raster module: a missing one is said before the run.
+  const auto raster = output_writers(o);
+  if (!raster) return fail(raster.error());
   auto targets = read_targets(o);
   if (!targets) return fail(targets.error());
+  // --machine, else the job's machine, else the generic mill.
+  const auto machine = o.machine.empty() && in.loaded && in.loaded->machine
+                           ? in.loaded->machine
+                           : load_machine_profile(o.machine);
+  if (!machine) return kBadInput;
   stock::SimulateOptions so;
   so.tools = std::move(*tools);
   so.floor = o.floor;
-  Errors errors;
   stock::StockSimulator sim(*map, so, errors);
-  const int status =
-      run_program(o.run, sim, [&errors](const core::SourceManager& s) { errors.set_sources(&s); });
+  // The times: stats' planner on the same stream; its checks are stats' business.
+  stock::RemovalTimeline timeline;
+  core::DiagnosticList timing_checks;
+  sim::StatsSink timer(*machine, {}, timing_checks);
+  sim.set_timeline(&timeline);
+  timer.observe([&timeline](std::uint64_t op, double s) { timeline.timed(op, s); });
+  canon::TeeSink both({&sim, &timer});
+  const int status = run_input(o, in, both, errors);
   if (status == kBadInput) return status;
-  print_summary(*map, sim);
+  timer.finish();
+  timeline.finish();
+  if (in.loaded) {
+    auto job_targets_found = job_targets(*in.loaded, in.log);
+    if (!job_targets_found) return fail(job_targets_found.error());
+    targets->insert(targets->end(), job_targets_found->begin(), job_targets_found->end());
+  }
+  const SimulateRun run{*map, sim, timeline, *machine, status == 0};
+  print_summary(run);
   const auto results = check_targets(*map, *targets, o.target_tolerance);
   print_targets(results);
-  if (const int written = write_outputs(o, *map, sim, status == 0, results, raster); written != 0)
+  if (const int written = write_outputs(o, run, results, *raster, never_written(o, in));
+      written != 0)
     return written;
   return status != 0 ? status : (errors.errors() > 0 ? 1 : 0);
 }
@@ -402,8 +536,9 @@ void add_simulate(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "cut a stock with the program: volumes, checks, STL and pictures");
   add_run_options(*cmd, opts->run);
-  cmd->add_option("--stock", opts->stock, "the stock: box:WxLxH in mm, e.g. box:200x150x30")
-      ->required();
+  cmd->add_option("--stock", opts->stock,
+                  "the stock: box:WxLxH in mm, e.g. box:200x150x30 (required, unless the program "
+                  "is a job file: then its stock)");
   cmd->add_option("--origin", opts->origin,
                   "X,Y,Z of the stock's corner at least X and Y on its top face (default 0,0,0)")
       ->delimiter(',')
@@ -424,6 +559,9 @@ void add_simulate(CLI::App& app) {
   cmd->add_option("--target-tolerance", opts->target_tolerance,
                   "mm the stock may stand above a target's depth")
       ->capture_default_str();
+  cmd->add_option("--machine", opts->machine,
+                  "machine profile for the times and the removal rate (TOML, as stats reads it); "
+                  "without it a generic mill");
   cmd->add_option("--height-map", opts->height_map, "the heights as a 16-bit greyscale PNG");
   cmd->add_option("--view", opts->view, "the picture: iso or top")
       ->check(CLI::IsMember({"iso", "top"}))

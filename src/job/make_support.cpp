@@ -222,8 +222,17 @@ bool prepare(Context& cx, const Operation& op, const Tool& tool, bool slotting,
   std::vector<std::string> why;
   if (!cutting_values(cx.j, op, tool, slotting, cut, why, cx.diags)) return false;
   if (cx.sheet != nullptr)
-    cx.sheet->begin(
-        {title, tool, op.depth, cut.rpm, cut.feed, cut.plunge_feed, chosen, why, {}, {}});
+    cx.sheet->begin({title,
+                     tool,
+                     op.depth,
+                     cut.rpm,
+                     cut.feed,
+                     cut.plunge_feed,
+                     chosen,
+                     why,
+                     {},
+                     {},
+                     static_cast<std::size_t>(&op - cx.j.job.operations.data())});
   cx.sink.comment(title);
   cx.sink.comment(fmt::format("T{} {} D{:g} {} z{}, cutting length {:g}", tool.number,
                               tool_type_name(tool.type), tool.diameter,

@@ -32,6 +32,7 @@ struct SheetStep {
   std::vector<std::string> why;   // why each speed and feed
   std::vector<core::Vec2> holes;  // a drill step's hole centres (the picture's circles)
   sim::ToolStats time;            // its share of the program's time (SheetTimer)
+  std::size_t operation = 0;      // its operation's index in the job's operations
 };
 
 // What make_job tells the sheet: each step as it begins.

@@ -26,12 +26,13 @@ AccountTime& Planner::account(std::uint32_t id) {
   return accounts_[id];
 }
 
-void Planner::add_time(double& into, double seconds) {
+bool Planner::add_time(double& into, double seconds) {
   if (seconds >= 0.0 && std::isfinite(seconds) && std::isfinite(into + seconds)) {
     into += seconds;
-  } else {
-    ++untimed_;
+    return true;
   }
+  ++untimed_;
+  return false;
 }
 
 void Planner::add(const PlannedMove& move) {
@@ -114,18 +115,17 @@ void Planner::plan_backward_forward() {
 void Planner::run_oldest() {
   const Block& b = at(0);
   const double exit = count_ > 1 ? at(1).entry : 0.0;
-  const double t = move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin);
-  add_time(account(b.move.account).lookahead_s, t);
+  double t = move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin);
   if (settings_.quantum > 0.0 && std::isfinite(t)) {
     stretch_s_ += t;
     if (exit == 0.0) {
       // At rest: the stretch ends on a whole tick.
       const double ticks = std::ceil(stretch_s_ / settings_.quantum - 1e-6);
-      add_time(account(b.move.account).lookahead_s,
-               std::max(0.0, ticks * settings_.quantum - stretch_s_));
+      t += std::max(0.0, ticks * settings_.quantum - stretch_s_);
       stretch_s_ = 0.0;
     }
   }
+  if (add_time(account(b.move.account).lookahead_s, t) && observer_) observer_(b.move.op, t);
   head_ = (head_ + 1) % ring_.size();
   --count_;
 }
@@ -140,7 +140,7 @@ void Planner::wait(double seconds, std::uint32_t id) {
   stop();
   if (seconds == 0.0) return;
   AccountTime& a = account(id);
-  add_time(a.lookahead_s, seconds);
+  if (add_time(a.lookahead_s, seconds) && observer_) observer_(kWaitOp, seconds);
   add_time(a.exact_stop_s, seconds);
 }
 

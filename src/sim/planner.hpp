@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "canon/op.hpp"
@@ -54,7 +55,16 @@ struct PlannedMove {
   double uncapped = 0.0;
   double max_speed = 0.0;
   bool rapid = false;
+  // The canon op the move ends (a number its caller gives, in the order of
+  // the ops): a move made of several ops (a merged chain, a blend arc) carries
+  // the last whose end it reaches, so its time can be told back per op.
+  std::uint64_t op = 0;
 };
+
+// Told each stretch of time as the planner runs it, in order: the move's op
+// and its seconds with look-ahead; a wait (dwell, tool change) as kWaitOp.
+using TimeObserver = std::function<void(std::uint64_t op, double seconds)>;
+inline constexpr std::uint64_t kWaitOp = ~std::uint64_t{0};
 
 struct AccountTime {
   double lookahead_s = 0.0;   // with look-ahead
@@ -90,6 +100,9 @@ class MotionPlanner {
   // Moves whose time came out negative, infinite or NaN (a machine profile
   // out of range): left out of every account, so a total is never one.
   virtual std::uint64_t untimed() const = 0;
+
+  // Tells `observer` every move's and wait's time as it is run (none: nothing).
+  virtual void observe(TimeObserver observer) = 0;
 };
 
 class Planner final : public MotionPlanner {
@@ -103,6 +116,8 @@ class Planner final : public MotionPlanner {
   const std::vector<AccountTime>& accounts() const override { return accounts_; }
 
   std::uint64_t untimed() const override { return untimed_; }
+
+  void observe(TimeObserver observer) override { observer_ = std::move(observer); }
 
   // For a model that decides its corners itself: the move enters at most at
   // `max_entry` (0: from rest); no exact-stop time is counted for it.
@@ -131,8 +146,9 @@ class Planner final : public MotionPlanner {
   Block& at(std::size_t k) { return ring_[(head_ + k) % ring_.size()]; }
 
   void run_oldest();
-  // Adds `seconds` to `into` when it is a time (finite, not negative).
-  void add_time(double& into, double seconds);
+  // Adds `seconds` to `into` when it is a time (finite, not negative): true;
+  // else counts the move untimed.
+  bool add_time(double& into, double seconds);
   void plan_backward_forward();
   AccountTime& account(std::uint32_t id);
 
@@ -145,6 +161,7 @@ class Planner final : public MotionPlanner {
   std::vector<AccountTime> accounts_;
   std::uint64_t untimed_ = 0;
   double stretch_s_ = 0.0;  // since the last rest, for the quantum
+  TimeObserver observer_;
 };
 
 }  // namespace usina::sim

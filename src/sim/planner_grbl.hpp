@@ -33,6 +33,8 @@ class GrblPlanner final : public MotionPlanner {
 
   std::uint64_t untimed() const override { return look_.untimed(); }
 
+  void observe(TimeObserver observer) override { look_.observe(std::move(observer)); }
+
   // The most of `limits` (one per axis X Y Z) along unit vector `u`: each
   // axis that moves caps it at limit_i / |u_i| (planner.c
   // limit_value_by_axis_maximum).

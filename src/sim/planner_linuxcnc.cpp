@@ -123,6 +123,7 @@ void LinuxcncPlanner::naive_cam(const Segment& s) {
       chain_.requested = std::min(chain_.requested, s.requested);
       chain_.base_accel = std::min(chain_.base_accel, s.base_accel);
       chain_.move.max_speed = std::min(chain_.move.max_speed, s.move.max_speed);
+      chain_.move.op = s.move.op;  // the merged line ends where this move ends
       return;
     }
     flush_chain();
@@ -312,6 +313,7 @@ LinuxcncPlanner::Arc LinuxcncPlanner::blend_arc(const Segment& next) const {
   // its path (BLEND_ACC_RATIO_TANGENTIAL), however slow it is.
   out.move.kin.accel = a_max * kTangentialRatio;
   out.move.account = prev.move.account;
+  out.move.op = prev.move.op;  // the corner ends prev's op
   out.v_plan = v_plan;
   return out;
 }

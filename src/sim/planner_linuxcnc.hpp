@@ -51,6 +51,8 @@ class LinuxcncPlanner final : public MotionPlanner {
 
   std::uint64_t untimed() const override { return look_.untimed(); }
 
+  void observe(TimeObserver observer) override { look_.observe(std::move(observer)); }
+
   // A move as LinuxCNC's planner queues it (its TC_STRUCT, what matters of it).
   struct Segment {
     PlannedMove move;         // length left after blends, cruise, acceleration in force

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "canon/bare_hole.hpp"
 #include "canon/limits.hpp"
 #include "sim/planner_models.hpp"
 
@@ -92,7 +93,19 @@ StatsSink::StatsSink(const MachineProfile& machine, StatsOptions options,
   slot_of_tool_[0] = 0;
 }
 
+void StatsSink::observe(TimeObserver observer) {
+  if (!observer) {
+    planner_->observe({});
+    return;
+  }
+  // A wait belongs to the op that asked for it: the one being taken.
+  planner_->observe([this, observer = std::move(observer)](std::uint64_t op, double s) {
+    observer(op == kWaitOp ? op_ : op, s);
+  });
+}
+
 void StatsSink::on(const canon::Op& op) {
+  ++op_;
   // Every front end keeps canon's range (canon/limits.hpp); a back end that
   // sums times checks it again, so no NaN or infinity enters a total.
   if (auto in_range = canon::check_range(op.kind); !in_range) {
@@ -109,6 +122,7 @@ void StatsSink::on(const canon::Op& op) {
         if constexpr (std::is_same_v<T, canon::Traverse>) {
           traverse(op, k);
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          feed_in_force_ = k;
           feed(op, k.to, k.abc, k.f, k.programmed);
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           arc(op, k);
@@ -125,6 +139,9 @@ void StatsSink::on(const canon::Op& op) {
           spindle(k);
         } else if constexpr (std::is_same_v<T, canon::Hole>) {
           ++tool().counts.holes;
+          const canon::Abc abc{pos_[3], pos_[4], pos_[5]};
+          for (const canon::Op& m : canon::bare_hole_moves(op, k, xyz(pos_), abc, feed_in_force_))
+            on(m);
         } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
           planner_->stop();
         } else if constexpr (std::is_same_v<T, canon::PathMode>) {
@@ -169,6 +186,7 @@ PlannedMove StatsSink::straight_move(const Axes6& to, double cruise, Kind kind) 
   m.kin = {along_path(machine_, share, AxisRate::Accel),
            along_path(machine_, share, AxisRate::Jerk)};
   m.account = account(kind);
+  m.op = op_;
   m.max_speed = along_path(machine_, share, AxisRate::Rapid);
   m.rapid = kind == Rapid;
   return m;
@@ -283,6 +301,7 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
   m.kin = {along_path(machine_, share, AxisRate::Accel),
            along_path(machine_, share, AxisRate::Jerk)};
   m.account = account(Cutting);
+  m.op = op_;
   m.radius = path->radius;
   m.sweep = path->sweep;
   m.normal = path->normal;
@@ -328,6 +347,7 @@ void StatsSink::spline(const canon::Op& op, const canon::Spline& s) {
     m.kin = {along_path(machine_, share, AxisRate::Accel),
              along_path(machine_, share, AxisRate::Jerk)};
     m.account = account(Cutting);
+    m.op = op_;
     m.max_speed = along_path(machine_, share, AxisRate::Rapid);
     planner_->add(m);
     pos_ = next;

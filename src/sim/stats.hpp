@@ -117,6 +117,11 @@ class StatsSink final : public canon::Sink {
   // The figures; call finish() first.
   StatsReport report() const;
 
+  // Tells `observer` the time of each op as the planner runs it (ops are
+  // numbered from 1 in the order on() gets them; a dwell's or a tool
+  // change's wait is told as its op's), in the order of the ops.
+  void observe(TimeObserver observer);
+
  private:
   enum Kind : std::uint32_t { Cutting = 0, Rapid = 1, Other = 2 };
 
@@ -157,6 +162,8 @@ class StatsSink final : public canon::Sink {
   canon::SpindleDir spindle_dir_ = canon::SpindleDir::Off;
   double spindle_rpm_ = 0.0;
   std::optional<double> last_feed_;  // mm/min, for probe moves
+  canon::Feed feed_in_force_;        // the last feed move: a bare hole drills at its rate
+  std::uint64_t op_ = 0;             // ops taken so far: the number of the one being taken
 };
 
 }  // namespace usina::sim

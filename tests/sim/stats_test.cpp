@@ -87,7 +87,8 @@ TEST(Stats, TotalsAndPerTool) {
   run(canon::Spindle{10000, canon::SpindleDir::Cw});
   run(canon::Dwell{1.5});
   run(half_circle({10, 10, 0}, 5, 1, 600));
-  run(canon::Hole{{0, 0, 0}, 6, 5});
+  // The interpreter's hole comes with its cycle's moves: counted, not drilled again.
+  run.sink.on(canon::Op{canon::Hole{{0, 0, 0}, 6, 5}, {0, 1, 1, 1, 0}, canon::Origin::Cycle});
   run(canon::ProgramEnd{});
   const StatsReport r = run.done();
   ASSERT_EQ(r.tools.size(), 2u);
@@ -119,6 +120,25 @@ TEST(Stats, TotalsAndPerTool) {
 
 // The half circle from (10,2) to (20,2) counter-clockwise dips to Y-3; the
 // tool started at the origin.
+// A generator's bare hole (canon/bare_hole.hpp) is drilled as G81 would:
+// over it at 5 mm, down to R = 1, 11 mm at F600 (10 mm/s: 1.1 + 0.01 s),
+// back up to 5. The 11 mm are cutting, the rest rapid.
+TEST(Stats, ABareHoleIsTimedAsItsCycle) {
+  Machine run;
+  spindle_on(run);
+  run(canon::Traverse{{0, 0, 5}, {}});
+  run(feed_to({0, 0, 5}, 600));  // the feed the hole drills at
+  run(canon::Hole{{10, 0, 1}, 6, 11});
+  const StatsReport r = run.done();
+  EXPECT_EQ(r.total.counts.holes, 1u);
+  EXPECT_NEAR(r.total.cutting_mm, 11.0, 1e-12);
+  EXPECT_NEAR(r.total.rapid_mm, 5.0 + 10.0 + 4.0 + 15.0, 1e-12);
+  // Down at 10 mm/s: L/v, and at most v/a more from rest to rest (it enters
+  // from the rapid down to R without stopping: the same direction).
+  EXPECT_GT(r.total.cutting_s, 1.1);
+  EXPECT_LE(r.total.cutting_s, 1.1 + 0.01 + 1e-9);
+}
+
 TEST(Stats, BoundsHoldTheArcsTrueExtent) {
   Machine run;
   spindle_on(run);

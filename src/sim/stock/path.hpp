@@ -18,6 +18,7 @@ struct Path {
   double length = 0.0;        // mm of XY
   double k = 0.0;             // dz per mm of XY (0 for a plunge, z0 the lower end)
   bool rises = false;         // the tip ends higher than it starts
+  double drop = 0.0;          // a plunge's Z travel, mm (0 for any other move)
 
   double tip(double s) const { return z0 + k * s; }
 
@@ -37,6 +38,7 @@ inline Path path_of(const core::Vec3& a, const core::Vec3& b, double top) {
   if (p.length < 1e-9) {
     p.length = 0.0;
     p.z0 = std::min(a.z, b.z) - top;
+    p.drop = std::fabs(a.z - b.z);
     return p;
   }
   p.ux = dx / p.length;

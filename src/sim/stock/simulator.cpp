@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "canon/bare_hole.hpp"
 #include "canon/limits.hpp"
 #include "sim/planner_geometry.hpp"
 
@@ -35,6 +36,7 @@ StockSimulator::StockSimulator(HeightMap& map, SimulateOptions options, core::Di
 }
 
 void StockSimulator::on(const canon::Op& op) {
+  ++op_;  // every op counts, as the stats sink counts them (RemovalTimeline)
   if (auto in_range = canon::check_range(op.kind); !in_range) return;  // the front end said why
   std::visit(
       [&](const auto& k) {
@@ -42,6 +44,7 @@ void StockSimulator::on(const canon::Op& op) {
         if constexpr (std::is_same_v<T, canon::Traverse>) {
           move(op, k.to, k.abc, true);
         } else if constexpr (std::is_same_v<T, canon::Feed>) {
+          feed_in_force_ = k;
           move(op, k.to, k.abc, false);
         } else if constexpr (std::is_same_v<T, canon::Arc>) {
           arc(op, k);
@@ -53,6 +56,9 @@ void StockSimulator::on(const canon::Op& op) {
           abc_ = k.abc;
         } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
           tool_change(op, k);
+        } else if constexpr (std::is_same_v<T, canon::Hole>) {
+          for (const canon::Op& m : canon::bare_hole_moves(op, k, pos_, abc_, feed_in_force_))
+            on(m);
         }
       },
       op.kind);
@@ -73,6 +79,7 @@ void StockSimulator::ensure_tool(const canon::Op& op) {
 
 void StockSimulator::begin_operation(const canon::Op& op, int tool) {
   operations_.push_back({tool, op.src.line, op.src.line, 0.0});
+  if (timeline_ != nullptr) timeline_->operation_begins(op_);
 }
 
 void StockSimulator::tool_change(const canon::Op& op, const canon::ToolChange& t) {
@@ -185,7 +192,20 @@ void StockSimulator::move(const canon::Op& op, const core::Vec3& to, const canon
     return;
   }
   ensure_tool(op);
-  checked(op, cut_to(to, rapid), rapid);
+  const Cut cut = cut_to(to, rapid);
+  tell(cut, 0.0, 1.0);
+  checked(op, cut, rapid);
+}
+
+// The timeline gets a piece's volume by the stretch of the op it cut in:
+// the piece is [f0, f1] of the op, each of its parts an equal share of that.
+void StockSimulator::tell(const Cut& piece, double f0, double f1) {
+  if (timeline_ == nullptr || !(piece.removed_mm3 > 0.0)) return;
+  const double step = (f1 - f0) / static_cast<double>(kCutParts);
+  for (std::size_t k = 0; k < kCutParts; ++k) {
+    const double from = f0 + step * static_cast<double>(k);
+    timeline_->cut(op_, piece.parts_mm3[k], from, from + step);
+  }
 }
 
 void StockSimulator::arc(const canon::Op& op, const canon::Arc& a) {
@@ -196,26 +216,35 @@ void StockSimulator::arc(const canon::Op& op, const canon::Arc& a) {
   }
   ensure_tool(op);
   const auto path = arc_path(pos_, a);
-  if (!path) return checked(op, cut_to(a.to, false), false);
+  if (!path) {
+    const Cut cut = cut_to(a.to, false);
+    tell(cut, 0.0, 1.0);
+    return checked(op, cut, false);
+  }
   // The sagitta of a chord of angle t on radius R is R (1 − cos(t/2)).
   const double half = std::acos(std::max(-1.0, 1.0 - chord_tol_ / path->radius));
   const double chords =
       std::clamp(std::ceil(std::abs(path->sweep) / (2.0 * half)), 1.0, kMaxChords);
   const auto n = static_cast<std::uint64_t>(chords);
   Cut total;
-  for (std::uint64_t i = 1; i < n; ++i) {
-    total.add(cut_to(path->at(path->sweep * static_cast<double>(i) / chords), false));
+  for (std::uint64_t i = 1; i <= n; ++i) {
+    const double f = static_cast<double>(i) / chords;
+    const Cut chord = cut_to(i < n ? path->at(path->sweep * f) : a.to, false);
+    tell(chord, static_cast<double>(i - 1) / chords, f);
+    total.add(chord);
   }
-  total.add(cut_to(a.to, false));
   checked(op, total, false);
 }
 
 void StockSimulator::spline(const canon::Op& op, const canon::Spline& s) {
   ensure_tool(op);
   Cut total;
-  for (const core::Vec3& p : s.points)
-    total.add(cut_to(p, false));
-  total.add(cut_to(s.to, false));
+  const double pieces = static_cast<double>(s.points.size() + 1);
+  for (std::size_t i = 0; i <= s.points.size(); ++i) {
+    const Cut piece = cut_to(i < s.points.size() ? s.points[i] : s.to, false);
+    tell(piece, static_cast<double>(i) / pieces, static_cast<double>(i + 1) / pieces);
+    total.add(piece);
+  }
   checked(op, total, false);
 }
 

@@ -14,6 +14,7 @@
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
 #include "sim/stock/height_map.hpp"
+#include "sim/stock/removal_rate.hpp"
 #include "sim/stock/sweep.hpp"
 #include "sim/stock/tool_shape.hpp"
 
@@ -74,6 +75,10 @@ class StockSimulator final : public canon::Sink {
   // The largest chord error an arc is cut with, mm (docs/simulate.md).
   double chord_tolerance() const { return chord_tol_; }
 
+  // Tells `timeline` (kept by the caller, or nullptr) each op's volume and
+  // each operation's first op; ops are numbered from 1 as on() takes them.
+  void set_timeline(RemovalTimeline* timeline) { timeline_ = timeline; }
+
  private:
   void move(const canon::Op& op, const core::Vec3& to, const canon::Abc& abc, bool rapid);
   void arc(const canon::Op& op, const canon::Arc& a);
@@ -81,6 +86,7 @@ class StockSimulator final : public canon::Sink {
   void tool_change(const canon::Op& op, const canon::ToolChange& t);
   Cut cut_to(const core::Vec3& to, bool rapid);
   void checked(const canon::Op& op, const Cut& cut, bool rapid);
+  void tell(const Cut& piece, double f0, double f1);
   void check_reach(const canon::Op& op, const Cut& cut);
   void begin_operation(const canon::Op& op, int tool);
   void report(const canon::Op& op, core::Code code, core::Severity severity, std::string message);
@@ -103,7 +109,10 @@ class StockSimulator final : public canon::Sink {
   std::vector<Check> checks_;
   std::map<core::Code, std::size_t> reported_;
   bool warned_abc_ = false;
-  bool started_ = false;  // a move has placed the tool
+  bool started_ = false;       // a move has placed the tool
+  std::uint64_t op_ = 0;       // ops taken: the number of the one being taken
+  canon::Feed feed_in_force_;  // the last feed move: a bare hole drills at its rate
+  RemovalTimeline* timeline_ = nullptr;
 };
 
 }  // namespace usina::sim::stock

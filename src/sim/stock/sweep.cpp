@@ -134,12 +134,15 @@ struct BullLowest {
 
 // The tool's lowest over the cell centre at (qx, qy) from the path's start,
 // relative to the top; +inf when the tool does not pass over it.
+// `enter`: where along the path the tool first covers the cell.
 template <class Lowest>
-inline double lowest_at(const Path& p, double r2, double along, double e, const Lowest& lowest) {
+inline double lowest_at(const Path& p, double r2, double along, double e, const Lowest& lowest,
+                        double& enter) {
   const double e2 = e * e;
   if (e2 > r2) return kInf;
   const double w = std::sqrt(r2 - e2);
   const double lo = std::max(0.0, along - w);
+  enter = lo;
   const double hi = std::min(p.length, along + w);
   if (lo > hi) return kInf;
   return p.z0 + p.k * along + lowest(p.k, e2, w, lo - along, hi - along);
@@ -163,7 +166,39 @@ struct Tally {
   float deepest = 0.0f;
   double shank = 0.0;   // mm, the most stock stood above the flutes where the tool entered it
   double plunge = 0.0;  // mm, the most stock stood above the tip under the axis
+  std::array<double, kCutParts> parts{};  // removed, by part of the move (Cut::parts_mm3)
 };
+
+// The part of the move during which the tool first covers a cell: `enter`
+// mm along the path (`per_mm`: parts per mm of the path).
+inline std::size_t part_of(double enter, double per_mm) {
+  const double f = enter * per_mm;
+  return f <= 0.0 ? 0 : std::min(static_cast<std::size_t>(f), kCutParts - 1);
+}
+
+// A plunge (no XY) takes a cell's stock from `from` down to `to` while its
+// tip goes down through those heights less the tool's lower surface above
+// the tip there (`lift`): `lost` spread over the parts of the plunge's drop.
+inline void plunge_parts(const Path& p, double lift, double from, double to, double lost,
+                         std::array<double, kCutParts>& parts) {
+  if (p.rises || !(p.drop > 0.0)) {
+    parts[0] += lost;
+    return;
+  }
+  const double n = static_cast<double>(kCutParts);
+  const double top = p.z0 + p.drop;  // the tip where the plunge starts
+  const double f0 = std::clamp((top - (from - lift)) / p.drop, 0.0, 1.0) * n;
+  const double f1 = std::clamp((top - (to - lift)) / p.drop, 0.0, 1.0) * n;
+  if (!(f1 - f0 > 1e-9)) {
+    parts[std::min(static_cast<std::size_t>(f0), kCutParts - 1)] += lost;
+    return;
+  }
+  for (auto k = static_cast<std::size_t>(f0); k < kCutParts && static_cast<double>(k) < f1; ++k) {
+    const double lo = std::max(f0, static_cast<double>(k));
+    const double hi = std::min(f1, static_cast<double>(k + 1));
+    if (hi > lo) parts[k] += lost * (hi - lo) / (f1 - f0);
+  }
+}
 
 // The shank (above the flutes, as wide as the tool) meets the stock of a
 // column only where the tool enters it: the flutes cut the column's side
@@ -189,6 +224,7 @@ bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::
                  const Watch& watch, Tally& t) {
   const float floor = static_cast<float>(-map.box().height);
   const double dalong = map.dx() * p.ux, de = map.dx() * p.uy;
+  const double per_mm = p.length > 0.0 ? static_cast<double>(kCutParts) / p.length : 0.0;
   bool lowered = false;
   for (std::size_t j = j0; j < j1; ++j) {
     float* h = map.row(j);
@@ -201,7 +237,8 @@ bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::
       if (d2 > r2) continue;
       const auto hi = static_cast<double>(h[i]);
       if (lowest.cannot_cut(d2, along, hi)) continue;
-      const double z = lowest_at(p, r2, along, e, lowest);
+      double enter = 0.0;
+      const double z = lowest_at(p, r2, along, e, lowest, enter);
       if (!(z < hi)) continue;
       if (watch.any()) watch_cell(p, r2, along, e, d2, hi, watch, t);
       t.lowest = std::min(t.lowest, z);
@@ -209,6 +246,11 @@ bool sweep_cells(HeightMap& map, const Path& p, double r2, std::size_t i0, std::
       if (now >= h[i]) continue;
       const float lost = h[i] - now;
       t.removed += static_cast<double>(lost);
+      if (per_mm > 0.0) {
+        t.parts[part_of(enter, per_mm)] += static_cast<double>(lost);
+      } else {
+        plunge_parts(p, z - p.z0, hi, static_cast<double>(now), static_cast<double>(lost), t.parts);
+      }
       t.deepest = std::max(t.deepest, lost);
       h[i] = now;
       m[i] = mark;
@@ -252,6 +294,8 @@ Cut sweep_with(HeightMap& map, double radius, const Path& p, std::uint8_t mark,
   }
   Cut cut;
   cut.removed_mm3 = t.removed * map.cell_area();
+  for (std::size_t k = 0; k < kCutParts; ++k)
+    cut.parts_mm3[k] = t.parts[k] * map.cell_area();
   cut.deepest = static_cast<double>(t.deepest);
   cut.lowest = t.lowest + map.top();
   cut.shank_rub = t.shank > kShankContact ? t.shank : 0.0;
@@ -294,6 +338,8 @@ auto with_lowest(const ToolShape& tool, const Path& p, F&& f) {
 
 void Cut::add(const Cut& c) {
   removed_mm3 += c.removed_mm3;
+  for (std::size_t k = 0; k < kCutParts; ++k)
+    parts_mm3[k] += c.parts_mm3[k];
   deepest = std::max(deepest, c.deepest);
   lowest = std::min(lowest, c.lowest);
   shank_rub = std::max(shank_rub, c.shank_rub);
@@ -326,8 +372,10 @@ double envelope(const ToolShape& tool, const core::Vec3& a, const core::Vec3& b,
   const double qx = cx - p.ax, qy = cy - p.ay;
   const double along = qx * p.ux + qy * p.uy;
   const double e = qx * p.uy - qy * p.ux;
-  return with_lowest(tool, p,
-                     [&](const auto& lowest) { return lowest_at(p, r2, along, e, lowest); });
+  return with_lowest(tool, p, [&](const auto& lowest) {
+    double enter = 0.0;
+    return lowest_at(p, r2, along, e, lowest, enter);
+  });
 }
 
 }  // namespace usina::sim::stock

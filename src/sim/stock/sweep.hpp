@@ -5,6 +5,7 @@
 // the tool at sample points (docs/simulate.md, "Sweeping").
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 
@@ -20,8 +21,16 @@ inline constexpr double kShankContact = 0.001;
 // not taken for a plunge into it (mm).
 inline constexpr double kPlungeStock = 0.01;
 
+// A move's volume is also told by the stretch of the move that cut it, in
+// this many equal parts of its length (the removal rate over time).
+inline constexpr std::size_t kCutParts = 16;
+
 struct Cut {
   double removed_mm3 = 0.0;
+  // removed_mm3 by where along the move the tool's leading edge reached the
+  // cell (part k: from k/kCutParts to (k+1)/kCutParts of the XY length; a
+  // plunge's all in part 0). Summed part by part by add().
+  std::array<double, kCutParts> parts_mm3{};
   double deepest = 0.0;  // mm: the most one cell lost
   // The lowest the tool's lower surface came over a cell of the stock
   // (cut or not), Z mm; +inf when it passed over none.

@@ -31,7 +31,12 @@ void crossings(const std::vector<std::vector<Vec2>>& rings, double y, std::vecto
 // Row by row, the cells whose centres fall between a pair of crossings.
 // The cost is the target's cells plus its edges once a row.
 TargetResult check_target(const HeightMap& map, const TargetLayer& target, double tolerance) {
-  TargetResult r{target.layer, target.z, 0.0, 0.0, 0.0, {}, 0.0};
+  TargetResult r;
+  r.layer = target.layer;
+  r.title = target.title.empty() ? "layer " + target.layer : target.title;
+  r.reachable = target.reachable;
+  r.operation = target.operation;
+  r.z = target.z;
   std::vector<double> xs;
   std::size_t inside = 0, above = 0;
   double left = 0.0;
@@ -62,11 +67,12 @@ TargetResult check_target(const HeightMap& map, const TargetLayer& target, doubl
 
 std::string material_above_message(const TargetResult& r, double tolerance) {
   return fmt::format(
-      "layer {} (Z{:g}): {:.2f} mm² of its {:.2f} mm² stand more than {:g} mm above the target, "
-      "up to {:.3f} mm (the most at X{:.3f} Y{:.3f}); {:.3f} mm³ left there. Corners narrower "
-      "than the tool count too",
-      r.layer, r.z, r.above_mm2, r.area_mm2, tolerance, r.most_above_mm, r.most_at.x, r.most_at.y,
-      r.left_mm3);
+      "{} (Z{:g}): {:.2f} mm² of its {:.2f} mm² stand more than {:g} mm above the target, "
+      "up to {:.3f} mm (the most at X{:.3f} Y{:.3f}); {:.3f} mm³ left there. {}",
+      r.title, r.z, r.above_mm2, r.area_mm2, tolerance, r.most_above_mm, r.most_at.x, r.most_at.y,
+      r.left_mm3,
+      r.reachable ? "The area is what the operation's tool can reach: its corners are left out"
+                  : "Corners narrower than the tool count too");
 }
 
 }  // namespace usina::sim::stock

@@ -21,10 +21,19 @@ struct TargetLayer {
   std::string layer;
   double z = 0.0;
   std::vector<std::vector<Vec2>> rings;
+  // What the messages call it: "layer POCKET" when empty.
+  std::string title;
+  // The rings are the area the tool can reach (a job's operation), not the
+  // drawing's: its corners are not left to the tool's radius.
+  bool reachable = false;
+  int operation = 0;  // the job's operation it comes from, from 1; 0: none
 };
 
 struct TargetResult {
   std::string layer;
+  std::string title;
+  bool reachable = false;
+  int operation = 0;
   double z = 0.0;
   double area_mm2 = 0.0;       // of the cells whose centres are inside
   double above_mm2 = 0.0;      // of those standing above z + tolerance

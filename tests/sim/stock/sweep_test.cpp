@@ -105,3 +105,44 @@ TEST(StockSweep, CuttingThroughStopsAtTheBottom) {
 
 }  // namespace
 }  // namespace usina::sim::stock
+
+namespace usina::sim::stock {
+namespace {
+
+double part_sum(const Cut& c, std::size_t from, std::size_t to) {
+  double s = 0.0;
+  for (std::size_t k = from; k < to; ++k)
+    s += c.parts_mm3[k];
+  return s;
+}
+
+TEST(StockSweepParts, ALineTellsItsVolumeWhereItsLeadingEdgeTookIt) {
+  // A 2 mm end mill from X-10 to X10 at Z-1 through a stock that starts at
+  // X0: the first 9 mm of the 20 (parts 0-6, to 8.75 mm) cut air; the rest,
+  // 1.25 mm a part, takes 2 × 1 × 1.25 mm³ each.
+  auto map = HeightMap::make({20, 20, 5, {}}, 0.05);
+  ASSERT_TRUE(map);
+  const Cut c = sweep(*map, *parse_shape("flat", 2.0), {-10, 10, -1}, {10, 10, -1}, 1);
+  EXPECT_NEAR(part_sum(c, 0, kCutParts), c.removed_mm3, 1e-9);
+  EXPECT_EQ(part_sum(c, 0, 7), 0.0);
+  for (std::size_t k = 8; k < kCutParts; ++k)
+    EXPECT_NEAR(c.parts_mm3[k], 2.5, 0.1) << k;
+}
+
+TEST(StockSweepParts, APlungeTellsItsVolumeByTheDepthItTookIt) {
+  // From Z4 to Z-4 into a stock whose top is Z0: the first half of the drop
+  // cuts air, the second takes the same each part.
+  auto map = HeightMap::make({20, 20, 10, {}}, 0.05);
+  ASSERT_TRUE(map);
+  const Cut c = sweep(*map, *parse_shape("flat", 4.0), {10, 10, 4}, {10, 10, -4}, 1);
+  EXPECT_NEAR(part_sum(c, 0, kCutParts), c.removed_mm3, 1e-9);
+  EXPECT_EQ(part_sum(c, 0, kCutParts / 2), 0.0);
+  for (std::size_t k = kCutParts / 2; k < kCutParts; ++k)
+    EXPECT_NEAR(c.parts_mm3[k], c.removed_mm3 / (kCutParts / 2), 1e-6) << k;
+  // Going up again takes nothing.
+  const Cut up = sweep(*map, *parse_shape("flat", 4.0), {10, 10, -4}, {10, 10, 4}, 1);
+  EXPECT_EQ(up.removed_mm3, 0.0);
+}
+
+}  // namespace
+}  // namespace usina::sim::stock

@@ -25,9 +25,17 @@ void cut(HeightMap& map, double x0, double x1, double y0, double y1, float z) {
       if (map.x(i) >= x0 && map.x(i) <= x1 && map.y(j) >= y0 && map.y(j) <= y1) map.row(j)[i] = z;
 }
 
+TargetLayer layer(std::string name, double z, std::vector<std::vector<Vec2>> rings) {
+  TargetLayer t;
+  t.layer = std::move(name);
+  t.z = z;
+  t.rings = std::move(rings);
+  return t;
+}
+
 TEST(Target, UncutStockStandsAboveTheWholeArea) {
   const HeightMap map = box();
-  const TargetResult r = check_target(map, {"POCKET", -2.0, {square(10, 10, 10)}}, 0.01);
+  const TargetResult r = check_target(map, layer("POCKET", -2.0, {square(10, 10, 10)}), 0.01);
   EXPECT_DOUBLE_EQ(r.area_mm2, 100.0);  // 20 x 20 cell centres inside
   EXPECT_DOUBLE_EQ(r.above_mm2, 100.0);
   EXPECT_NEAR(r.most_above_mm, 2.0, 1e-6);
@@ -39,7 +47,7 @@ TEST(Target, UncutStockStandsAboveTheWholeArea) {
 TEST(Target, AnAreaCutToItsDepthHasNothingAbove) {
   HeightMap map = box();
   cut(map, 10, 20, 10, 20, -2.0F);
-  const TargetResult r = check_target(map, {"POCKET", -2.0, {square(10, 10, 10)}}, 0.01);
+  const TargetResult r = check_target(map, layer("POCKET", -2.0, {square(10, 10, 10)}), 0.01);
   EXPECT_DOUBLE_EQ(r.above_mm2, 0.0);
   EXPECT_DOUBLE_EQ(r.most_above_mm, 0.0);
   EXPECT_DOUBLE_EQ(r.left_mm3, 0.0);
@@ -49,7 +57,7 @@ TEST(Target, WhatIsLeftIsFoundWhereItIs) {
   HeightMap map = box();
   cut(map, 10, 20, 10, 17, -2.0F);  // the top three mm of the square not cut
   cut(map, 10, 20, 17, 20, -1.5F);
-  const TargetResult r = check_target(map, {"POCKET", -2.0, {square(10, 10, 10)}}, 0.01);
+  const TargetResult r = check_target(map, layer("POCKET", -2.0, {square(10, 10, 10)}), 0.01);
   EXPECT_DOUBLE_EQ(r.above_mm2, 30.0);
   EXPECT_NEAR(r.most_above_mm, 0.5, 1e-6);
   EXPECT_GT(r.most_at.y, 17.0);
@@ -59,8 +67,8 @@ TEST(Target, WhatIsLeftIsFoundWhereItIs) {
 TEST(Target, WithinTheToleranceIsNotAbove) {
   HeightMap map = box();
   cut(map, 10, 20, 10, 20, -1.995F);
-  const TargetResult tight = check_target(map, {"POCKET", -2.0, {square(10, 10, 10)}}, 0.001);
-  const TargetResult loose = check_target(map, {"POCKET", -2.0, {square(10, 10, 10)}}, 0.01);
+  const TargetResult tight = check_target(map, layer("POCKET", -2.0, {square(10, 10, 10)}), 0.001);
+  const TargetResult loose = check_target(map, layer("POCKET", -2.0, {square(10, 10, 10)}), 0.01);
   EXPECT_DOUBLE_EQ(tight.above_mm2, 100.0);
   EXPECT_DOUBLE_EQ(loose.above_mm2, 0.0);
   EXPECT_NEAR(loose.left_mm3, 0.5, 1e-3);  // 100 mm² x 0.005 mm, counted all the same
@@ -69,7 +77,7 @@ TEST(Target, WithinTheToleranceIsNotAbove) {
 TEST(Target, AContourInsideAContourIsAnIsland) {
   const HeightMap map = box();
   const TargetResult r =
-      check_target(map, {"POCKET", -2.0, {square(10, 10, 10), square(13, 13, 4)}}, 0.01);
+      check_target(map, layer("POCKET", -2.0, {square(10, 10, 10), square(13, 13, 4)}), 0.01);
   EXPECT_DOUBLE_EQ(r.area_mm2, 100.0 - 16.0);
 }
 
@@ -78,13 +86,13 @@ TEST(Target, AVertexOnACellRowIsCrossedOnce) {
   // counted twice, a vertex would open a span to the box's edge.
   const HeightMap map = box();
   const std::vector<Vec2> diamond{{20, 10.25}, {25, 15.25}, {20, 20.25}, {15, 15.25}};
-  const TargetResult r = check_target(map, {"D", -1.0, {diamond}}, 0.01);
+  const TargetResult r = check_target(map, layer("D", -1.0, {diamond}), 0.01);
   EXPECT_NEAR(r.area_mm2, 50.0, 5.0);  // the diamond's 50 mm², to the grid
 }
 
 TEST(Target, OutsideTheStockThereAreNoCells) {
   const HeightMap map = box();
-  const TargetResult r = check_target(map, {"FAR", -1.0, {square(100, 100, 10)}}, 0.01);
+  const TargetResult r = check_target(map, layer("FAR", -1.0, {square(100, 100, 10)}), 0.01);
   EXPECT_DOUBLE_EQ(r.area_mm2, 0.0);
   EXPECT_DOUBLE_EQ(r.above_mm2, 0.0);
 }
@@ -92,7 +100,7 @@ TEST(Target, OutsideTheStockThereAreNoCells) {
 TEST(Target, TheMessageNamesTheLayerTheAreaAndWhere) {
   HeightMap map = box();
   cut(map, 10, 20, 10, 17, -2.0F);
-  const TargetResult r = check_target(map, {"POCKET", -2.0, {square(10, 10, 10)}}, 0.01);
+  const TargetResult r = check_target(map, layer("POCKET", -2.0, {square(10, 10, 10)}), 0.01);
   const std::string m = material_above_message(r, 0.01);
   EXPECT_NE(m.find("layer POCKET (Z-2)"), std::string::npos) << m;
   EXPECT_NE(m.find("30.00 mm² of its 100.00 mm²"), std::string::npos) << m;
