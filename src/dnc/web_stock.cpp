@@ -184,7 +184,9 @@ class Frames final : public canon::Sink {
       for (std::size_t i = 0; i < map_.nx(); ++i) {
         const std::size_t k = j * map_.nx() + i;
         const std::uint16_t d = depth_at(i, j);
-        const std::uint8_t m = map_.mark(i, j);
+        // A cell cut by less than half a unit is shown uncut: its mark
+        // would cost bytes for nothing (a profile run at the top's Z).
+        const std::uint8_t m = d == 0 ? stock::kUncut : map_.mark(i, j);
         if (d == depth_[k] && m == mark_[k]) continue;
         depth_[k] = d;
         mark_[k] = m;

@@ -260,5 +260,17 @@ TEST(WebStock, AProgramThatCutsNothingHasASmallBlockAtItsZero) {
   EXPECT_EQ(d.header["frames"].size(), 1u);
 }
 
+TEST(WebStock, ACutShallowerThanHalfADepthUnitChangesNoCell) {
+  StockSettings s;
+  s.box = sim::stock::StockBox{30.0, 30.0, 5.0, {-5.0, -5.0, 0.0}};
+  s.resolution = 0.5;
+  s.frames = 1;
+  // 10 nm deep: a profile at the top's Z, lowered by rounding; the unit is 76 µm.
+  const Decoded d =
+      decode(encode_stock("G21 G90\nG0 X0 Y0 Z1\nG1 Z-0.00001 F100\nG1 X20\nM2\n", s));
+  EXPECT_GT(d.header["removed_mm3"].get<double>(), 0.0);
+  EXPECT_EQ(d.header["frames"][0]["cells"], 0);
+}
+
 }  // namespace
 }  // namespace usina::dnc
