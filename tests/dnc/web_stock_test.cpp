@@ -232,6 +232,19 @@ TEST_F(WebStockRoute, ComputedOnceThenFromTheCache) {
       404);
 }
 
+TEST_F(WebStockRoute, AProgramTooWideForItsOwnStockIs422WithTheReason) {
+  const test::Reply up = client().post(
+      "/api/programs",
+      {{"name", "O10"}, {"text", "G21 G90\nG0 X0 Y0 Z1\nG1 Z-1 F100\nG1 X20000\nM2\n"}}, token);
+  ASSERT_EQ(up.status, 201) << up.body;
+  const std::string wide =
+      "/api/programs/O10/revisions/" + up.json()["revision"].get<std::string>() + "/stock";
+  const test::Reply r = client().get(wide, token);
+  EXPECT_EQ(r.status, 422) << r.body;
+  EXPECT_NE(r.json().value("error", "").find("give stock=box"), std::string::npos) << r.body;
+  EXPECT_EQ(client().get(wide + "?stock=box:100x20x5&origin=-10,-10,0", token).status, 200);
+}
+
 TEST(WebStock, AResolutionWithoutAStockIsMadeCoarserToFit) {
   StockSettings s;
   s.resolution = 0.001;  // 46 x 16 mm: 736 million cells
