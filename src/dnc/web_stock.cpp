@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "canon/sink.hpp"
@@ -138,8 +139,9 @@ struct FrameRecord {
 class Frames final : public canon::Sink {
  public:
   Frames(stock::StockSimulator& sim, stock::HeightMap& map, std::uint64_t moves,
-         std::uint32_t frames)
-      : sim_(sim),
+         std::uint32_t frames, std::uint64_t max_bytes)
+      : max_bytes_(max_bytes),
+        sim_(sim),
         map_(map),
         moves_total_(std::max<std::uint64_t>(moves, 1)),
         frames_(static_cast<std::uint32_t>(std::min<std::uint64_t>(frames, moves_total_))),
@@ -152,11 +154,16 @@ class Frames final : public canon::Sink {
     if (!canon::is_motion(op.kind)) return;
     ++moves_;
     line_ = op.src.line;
-    if (records.size() + 1 < frames_ && moves_ >= due()) take();
+    if (!too_large() && records.size() + 1 < frames_ && moves_ >= due()) take();
   }
 
+  // The frames so far are past the answer's bound: no more are taken.
+  bool too_large() const { return data.size() > max_bytes_; }
+
   // The last frame: the map as the run left it, however far it went.
-  void last() { take(); }
+  void last() {
+    if (!too_large()) take();
+  }
 
   double depth_unit() const { return unit_; }
 
@@ -216,6 +223,7 @@ class Frames final : public canon::Sink {
     data.append((4 - data.size() % 4) % 4, '\0');  // the next frame's runs aligned
   }
 
+  std::uint64_t max_bytes_;
   stock::StockSimulator& sim_;
   stock::HeightMap& map_;
   std::uint64_t moves_total_;
@@ -246,8 +254,8 @@ Run run_program(std::string_view text, const gcode::Dialect& dialect, std::uint6
   return {ok && diags.errors == 0};
 }
 
-std::string refusal(const std::string& why) {
-  return json{{"error", why}}.dump();
+std::string refusal(unsigned status, const std::string& why) {
+  return json{{"error", why}, {"status", status}}.dump();
 }
 
 json tools_json(const stock::StockSimulator& sim) {
@@ -333,7 +341,7 @@ bool is_stock_answer(std::string_view bytes) {
 std::string encode_stock(std::string_view text, const StockSettings& settings) {
   const gcode::Dialect* dialect = gcode::find_dialect(settings.dialect);
   if (dialect == nullptr)
-    return refusal("the program's dialect '" + settings.dialect + "' is unknown");
+    return refusal(422, "the program's dialect '" + settings.dialect + "' is unknown");
   Survey survey(settings);
   run_program(text, *dialect, settings.max_ops, survey);
   // A program that cuts nothing gets a small block at its zero.
@@ -345,15 +353,21 @@ std::string encode_stock(std::string_view text, const StockSettings& settings) {
                    : fitting_resolution(box, settings.frames, settings.limits, settings.resolution);
   auto map = stock::HeightMap::make(box, resolution);
   if (!map)
-    return refusal("the program's own stock cannot be simulated: " + map.error() +
-                   "; give stock=box:WxLxH and origin=X,Y,Z");
+    return refusal(422, "the program's own stock cannot be simulated: " + map.error() +
+                            "; give stock=box:WxLxH and origin=X,Y,Z");
   stock::SimulateOptions options;
   options.tools = settings.tools;
   ErrorCount checks;  // the simulator's checks are in its list
   stock::StockSimulator sim(*map, options, checks);
-  Frames frames(sim, *map, survey.moves, settings.frames);
+  Frames frames(sim, *map, survey.moves, settings.frames, settings.limits.max_answer_bytes);
   const Run run = run_program(text, *dialect, settings.max_ops, frames);
   frames.last();
+  if (frames.too_large()) {
+    return refusal(413, fmt::format("the frames passed the {} bytes an answer may have at {} of {} "
+                                    "moves: ask for fewer frames or a coarser resolution",
+                                    settings.limits.max_answer_bytes, frames.records.back().moves,
+                                    survey.moves));
+  }
   return assemble(header_json(*map, sim, frames, survey.moves, !settings.box.has_value(), run.ok),
                   frames.data);
 }

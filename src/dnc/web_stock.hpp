@@ -29,8 +29,11 @@ namespace usina::dnc {
 struct StockLimits {
   std::uint64_t max_cells = 4'000'000;         // 20 MB of map, 12 MB more for the frames
   std::uint32_t max_frames = 64;               // the slider's steps
-  std::uint64_t max_cell_frames = 32'000'000;  // cells × frames: at most ~100 MB of answer
-  std::uint64_t default_cells = 250'000;       // the grid when no resolution is asked
+  std::uint64_t max_cell_frames = 32'000'000;  // cells × frames: the frames' work
+  // The answer's bytes: a program that changes most cells in most frames
+  // (3 bytes a cell, 8 a run) is refused past this, 413, when it is reached.
+  std::uint64_t max_answer_bytes = 64u << 20;
+  std::uint64_t default_cells = 250'000;  // the grid when no resolution is asked
 };
 
 inline constexpr std::uint32_t kDefaultStockFrames = 16;
@@ -74,8 +77,9 @@ std::string stock_settings_key(const StockSettings& s);
 // The answer's bytes (little-endian): "USSK", version, the header's length,
 // the JSON header (padded with spaces to 4 bytes), then each frame's runs,
 // depths and marks at the offsets the header gives. When the program's own
-// box cannot be a stock (a side beyond 10 m), the bytes are a JSON object
-// {"error": reason} instead (is_stock_answer tells them apart).
+// box cannot be a stock (a side beyond 10 m, 422) or the frames grow past
+// max_answer_bytes (413), the bytes are a JSON object {"error": reason,
+// "status": code} instead (is_stock_answer tells them apart).
 std::string encode_stock(std::string_view text, const StockSettings& settings);
 
 bool is_stock_answer(std::string_view bytes);

@@ -42,15 +42,17 @@ RevisionWork stock_work(StockSettings settings) {
   };
 }
 
-// The stock, or the reason the program's own box cannot be one (422).
+// The stock, or the run's refusal: the program's own box is no stock
+// (422), the frames passed the answer's bound (413).
 HttpResponse respond(const ToolpathReply& r, const std::string& bytes, ToolpathFrom from) {
   if (is_stock_answer(bytes)) return computed_response(r, kStockType, bytes, from);
   HttpRequest req;
   req.version(r.version);
   req.keep_alive(r.keep_alive);
   const auto why = nlohmann::json::parse(bytes, nullptr, false);
-  return error_response(req, http::status::unprocessable_entity,
-                        why.is_object() ? why.value("error", bytes) : bytes);
+  if (!why.is_object()) return error_response(req, http::status::unprocessable_entity, bytes);
+  return error_response(req, static_cast<http::status>(why.value("status", 422u)),
+                        why.value("error", bytes));
 }
 
 }  // namespace

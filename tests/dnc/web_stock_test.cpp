@@ -242,6 +242,7 @@ TEST_F(WebStockRoute, AProgramTooWideForItsOwnStockIs422WithTheReason) {
   const test::Reply r = client().get(wide, token);
   EXPECT_EQ(r.status, 422) << r.body;
   EXPECT_NE(r.json().value("error", "").find("give stock=box"), std::string::npos) << r.body;
+  EXPECT_EQ(client().get(wide, token).status, 422);  // the refusal kept, as answers are
   EXPECT_EQ(client().get(wide + "?stock=box:100x20x5&origin=-10,-10,0", token).status, 200);
 }
 
@@ -271,6 +272,21 @@ TEST(WebStock, AProgramThatCutsNothingHasASmallBlockAtItsZero) {
   EXPECT_EQ(d.header["stock"]["box"], nlohmann::json({10.0, 10.0, 1.0}));
   EXPECT_EQ(d.header["removed_mm3"], 0.0);
   EXPECT_EQ(d.header["frames"].size(), 1u);
+}
+
+TEST(WebStock, FramesPastTheAnswersBoundAreRefusedWith413) {
+  StockSettings s;
+  s.box = sim::stock::StockBox{60.0, 40.0, 10.0, {}};
+  s.resolution = 0.5;
+  s.frames = 6;
+  s.limits.max_answer_bytes = 2000;  // the slot's first frames are more
+  const std::string bytes = encode_stock(kSlot, s);
+  ASSERT_FALSE(is_stock_answer(bytes));
+  const auto why = nlohmann::json::parse(bytes);
+  EXPECT_EQ(why["status"], 413);
+  EXPECT_NE(why["error"].get<std::string>().find("2000 bytes"), std::string::npos) << bytes;
+  s.limits.max_answer_bytes = 1u << 20;
+  EXPECT_TRUE(is_stock_answer(encode_stock(kSlot, s)));
 }
 
 TEST(WebStock, ACutShallowerThanHalfADepthUnitChangesNoCell) {
