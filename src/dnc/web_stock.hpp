@@ -8,7 +8,8 @@
 // cut them), so the stock uncut plus every frame's changes is the final map.
 //
 // What a request may ask is bounded before anything is allocated: the
-// cells of the grid, the frames, and cells × frames (the answer's bytes).
+// cells of the grid, the frames and cells × frames (the frames' work); the
+// answer's bytes are bounded as the frames are taken.
 #pragma once
 
 #include <cstdint>
