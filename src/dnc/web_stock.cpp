@@ -348,9 +348,11 @@ std::string encode_stock(std::string_view text, const StockSettings& settings) {
   const stock::StockBox box =
       settings.box ? *settings.box
                    : survey.box().value_or(stock::StockBox{10.0, 10.0, 1.0, {-5.0, -5.0, 0.0}});
+  // An explicit box's resolution was checked against the bounds with it.
   const double resolution =
-      settings.box ? *settings.resolution
-                   : fitting_resolution(box, settings.frames, settings.limits, settings.resolution);
+      settings.box && settings.resolution
+          ? *settings.resolution
+          : fitting_resolution(box, settings.frames, settings.limits, settings.resolution);
   auto map = stock::HeightMap::make(box, resolution);
   if (!map)
     return refusal(422, "the program's own stock cannot be simulated: " + map.error() +
