@@ -30,6 +30,9 @@ constexpr std::array kRoutes{
     // The figures of each tool, for the page (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/tools", A::Permission, P::ReadPrograms,
              api_tool_figures, api_tool_figures_later},
+    // The stock the revision leaves, frame by frame, for the viewer (docs/web.md).
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/stock", A::Permission, P::ReadPrograms,
+             api_stock, api_stock_later},
     // A cycle's form made into a program, previewed (docs/dnc-server.md, "Forms for cycles").
     ApiRoute{V::post, "/api/forms/{}/preview", A::Permission, P::UploadRevision, api_form_preview,
              api_form_preview_later},

@@ -70,26 +70,46 @@ tl::expected<NamedRevision, HttpResponse> named_revision(ApiCall& c) {
   return NamedRevision{std::move(*program), std::move(*revision)};
 }
 
+namespace {
+
+Respond plain(std::string_view content_type) {
+  return [type = std::string(content_type)](const ToolpathReply& r, const std::string& bytes,
+                                            ToolpathFrom from) {
+    return computed_response(r, type, bytes, from);
+  };
+}
+
+}  // namespace
+
 HttpResponse answer_now(ApiCall& c, std::string_view content_type, const RevisionWork& work) {
+  return answer_now(c, plain(content_type), work);
+}
+
+HttpResponse answer_now(ApiCall& c, const Respond& respond, const RevisionWork& work) {
   auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
   if (!bytes) return error_response(c.req, status_of(bytes.error()), bytes.error().message);
   const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
-  return computed_response(reply, content_type, work(*bytes), ToolpathFrom::Computed);
+  return respond(reply, work(*bytes), ToolpathFrom::Computed);
 }
 
 void answer_later(ApiCall& c, HttpAnswer answer, const std::string& key,
                   std::string_view content_type, RevisionWork work) {
+  answer_later(c, std::move(answer), key, plain(content_type), std::move(work));
+}
+
+void answer_later(ApiCall& c, HttpAnswer answer, const std::string& key, Respond respond,
+                  RevisionWork work) {
   const ToolpathReply reply{c.req.version(), c.req.keep_alive()};
   ToolpathService& service = *c.ctx.toolpaths;
   if (ToolpathStream kept = service.cached(key))
-    return answer(computed_response(reply, content_type, *kept, ToolpathFrom::Cache));
+    return answer(respond(reply, *kept, ToolpathFrom::Cache));
   auto bytes = revision_bytes(c.ctx.store, c.params[0], c.params[1]);
   if (!bytes) return answer(error_response(c.req, status_of(bytes.error()), bytes.error().message));
   service.run(
       key, [text = std::move(*bytes), work = std::move(work)] { return work(text); },
-      [reply, type = std::string(content_type), answer = std::move(answer)](
+      [reply, respond = std::move(respond), answer = std::move(answer)](
           ToolpathStream s, ToolpathFrom from, const std::string& error) {
-        answer(s ? computed_response(reply, type, *s, from) : run_failed(reply, error));
+        answer(s ? respond(reply, *s, from) : run_failed(reply, error));
       });
 }
 

@@ -33,13 +33,21 @@ tl::expected<NamedRevision, HttpResponse> named_revision(ApiCall& c);
 // The answer's bytes, from the revision's text.
 using RevisionWork = std::function<std::string(const std::string& text)>;
 
+// How computed bytes become the answer: computed_response's, or the
+// route's own (the stock route answers a refusal its run wrote as a 422).
+using Respond =
+    std::function<HttpResponse(const ToolpathReply& r, const std::string& bytes, ToolpathFrom)>;
+
 // Computed here, on the loop (an Api made without the service).
 HttpResponse answer_now(ApiCall& c, std::string_view content_type, const RevisionWork& work);
+HttpResponse answer_now(ApiCall& c, const Respond& respond, const RevisionWork& work);
 
 // From the cache under `key`, or the revision's bytes read (and verified
 // against its hash) here, since the store is the loop's, and `work` run on
 // the service's pool; `answer` is called on the loop either way.
 void answer_later(ApiCall& c, HttpAnswer answer, const std::string& key,
                   std::string_view content_type, RevisionWork work);
+void answer_later(ApiCall& c, HttpAnswer answer, const std::string& key, Respond respond,
+                  RevisionWork work);
 
 }  // namespace usina::dnc

@@ -1,7 +1,8 @@
 // The page's end-to-end test: a real `usina serve` with a fresh store, the
 // page built into a scratch folder, Debian's chromium driven headless by
 // playwright-core. Logs in, uploads the seed 000 program, checks its
-// diagnostics and its 3D view, a click on a move, the machines page, a
+// diagnostics and its 3D view, a click on a move, its stock replayed
+// (stock.mjs), the machines page, a
 // program made from the elliptical pocket's form (forms.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
@@ -12,6 +13,7 @@ import { join, resolve } from 'node:path';
 import { libraryFlow, listed, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
+import { stockFlow } from './stock.mjs';
 import { arg, canvasPixels, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
 
 skipUnlessReady();
@@ -117,6 +119,7 @@ async function run() {
   check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+\d+ min \d+ s(\s+\S+( min \d+)? s){3}\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[\d.]+( min \d+)? s/.test(figures), `the figures: cycle time, bounds, the time and distances of T1 and T2 (${JSON.stringify(figures)})`);
   await page.evaluate(() => document.getElementById('stats').scrollIntoView({ block: 'start' }));
   await shot(page, 'web-figures.png', false);
+  await stockFlow(page, { check, shot }); // the stock and its replay (stock.mjs)
 
   // The library lists and finds it.
   await page.getByRole('link', { name: 'Library' }).click();

@@ -5,6 +5,7 @@ import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, ty
 import { field, h, show, status } from './dom';
 import { reviewPanel, revisionsPanel } from './program_review';
 import { statsPanel, type Figures } from './program_stats';
+import { stockPanel } from './program_stock';
 import { sessionUser } from './roles';
 import { decodeToolpath, Kind } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
@@ -52,7 +53,7 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   };
   const feedTools: number[] = [];
   for (let i = 1; i < path.count; i++) if (path.kinds[i] !== Kind.Rapid) feedTools.push(path.tools[i]);
-  viewerHost.before(viewControls(viewer, feedTools, select, picked));
+  viewerHost.before(viewControls(viewer, feedTools, select, picked), stockPanel(viewer, base, viewerHost));
   viewer.onPick = select;
   code.onSelect = select;
   viewerHost.dataset.vertices = String(path.count);

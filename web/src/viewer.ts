@@ -24,6 +24,7 @@ export class Viewer {
   private pickables: THREE.LineSegments[] = [];
   private segmentVertex = new Map<THREE.Object3D, Uint32Array>();
   private highlight: THREE.LineSegments | null = null;
+  private stock: THREE.Object3D | null = null;
   private centre = new THREE.Vector3();
   private size = 1;
   onPick: (line: number) => void = () => {};
@@ -78,7 +79,22 @@ export class Viewer {
     this.size = Math.max(max.clone().sub(min).length(), 1);
     dashed.dashSize = dashed.gapSize = this.size / 150;
     this.scene.add(new THREE.AxesHelper(this.size / 8));
+    if (this.stock) this.scene.add(this.stock);
     this.setView('iso');
+  }
+
+  // The stock's mesh (stock.ts) shown with the path, or none.
+  setStock(object: THREE.Object3D | null): void {
+    if (this.stock) this.scene.remove(this.stock);
+    this.stock = object;
+    if (object) this.scene.add(object);
+    this.render();
+  }
+
+  // The tool path shown or hidden (the stock alone).
+  showPath(visible: boolean): void {
+    for (const o of this.pickables) o.visible = visible;
+    this.render();
   }
 
   // The segments i-1 → i of every vertex, split into rapids and the rest,
@@ -167,7 +183,7 @@ export class Viewer {
     const ray = new THREE.Raycaster();
     ray.params.Line = { threshold: this.camera.position.distanceTo(this.controls.target) / 150 };
     ray.setFromCamera(ndc, this.camera);
-    const hit = ray.intersectObjects(this.pickables, false)[0];
+    const hit = ray.intersectObjects(this.pickables.filter((o) => o.visible), false)[0];
     if (!hit || hit.index === undefined) return;
     const vertex = this.segmentVertex.get(hit.object)?.[Math.floor(hit.index / 2)];
     if (vertex !== undefined) this.onPick(p.lines[vertex]);

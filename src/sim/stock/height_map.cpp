@@ -77,10 +77,13 @@ tl::expected<void, std::string> check_stock(const StockBox& b, double resolution
   return {};
 }
 
+GridSize grid_size(const StockBox& box, double resolution) {
+  return {cells_across(box.width, resolution), cells_across(box.length, resolution)};
+}
+
 tl::expected<HeightMap, std::string> HeightMap::make(const StockBox& box, double resolution) {
   if (auto ok = check_stock(box, resolution); !ok) return tl::unexpected(ok.error());
-  const std::uint64_t nx = cells_across(box.width, resolution);
-  const std::uint64_t ny = cells_across(box.length, resolution);
+  const auto [nx, ny] = grid_size(box, resolution);
   if (nx * ny > kMaxCells) {
     return tl::unexpected(fmt::format(
         "a {:g} x {:g} mm stock at {:g} mm is {} x {} = {} cells, more than the {} a height map "

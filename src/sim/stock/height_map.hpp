@@ -40,6 +40,18 @@ tl::expected<StockBox, std::string> parse_stock(std::string_view spec);
 // Checks a box's numbers and a resolution (finite, within the bounds).
 tl::expected<void, std::string> check_stock(const StockBox& box, double resolution);
 
+// The grid a box is divided into at `resolution`: whole cells along X and
+// along Y, at least one each (HeightMap::make's, for a caller that bounds
+// the cells before asking for a map).
+struct GridSize {
+  std::uint64_t nx = 0;
+  std::uint64_t ny = 0;
+
+  std::uint64_t cells() const { return nx * ny; }
+};
+
+GridSize grid_size(const StockBox& box, double resolution);
+
 // Marks of the last cut in a cell: 0 uncut, 1..254 a tool's slot, 255 a rapid.
 inline constexpr std::uint8_t kUncut = 0;
 inline constexpr std::uint8_t kRapidMark = 255;

@@ -1,0 +1,104 @@
+// The program page's stock (issue 17): a "Stock" toggle asks the server to
+// simulate the revision on its stock (the program's own box), shows it as a
+// shaded mesh with or instead of the tool path, coloured by depth or by the
+// tool that cut last, and replays the removal frame by frame with a slider
+// and a play button (every control a labelled form control: the keyboard
+// drives them all).
+import { getBytes } from './api';
+import { field, h, status } from './dom';
+import { StockMesh, StockReplay, type StockColour } from './stock';
+import type { Viewer } from './viewer';
+
+const PLAY_STEP_MS = 400;
+
+export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement): HTMLElement {
+  const show = h('input', { type: 'checkbox' });
+  const path = h('input', { type: 'checkbox', checked: true });
+  const colour = h('select', {}, h('option', { value: 'depth', text: 'depth' }), h('option', { value: 'tool', text: 'the tool that cut last' }));
+  const slider = h('input', { type: 'range', min: 0, max: 0, step: 1, value: 0, disabled: true });
+  const play = h('button', { type: 'button', text: 'Play', 'aria-pressed': 'false', disabled: true });
+  const said = status('stock-status');
+  const controls = h('div', { class: 'stock-replay', hidden: true }, field('Colour the stock by', colour, 'stock-colour'), field('Removal, frame', slider, 'stock-frame'), play);
+  const panel = h(
+    'div',
+    { class: 'stock-controls', role: 'group', 'aria-label': 'Stock' },
+    h('div', { class: 'field check' }, show, h('label', { for: 'stock-show', text: 'Stock' })),
+    h('div', { class: 'field check' }, path, h('label', { for: 'stock-path', text: 'Tool path' })),
+    controls,
+    said,
+  );
+  show.id = 'stock-show';
+  path.id = 'stock-path';
+  let replay: StockReplay | null = null;
+  let mesh: StockMesh | null = null;
+  let timer: number | undefined;
+
+  const frameTo = (n: number) => {
+    if (!replay || !mesh) return;
+    replay.seek(n);
+    mesh.update();
+    viewer.render();
+    slider.value = String(n);
+    viewerHost.dataset.stockFrame = String(n);
+    said.textContent = describe(replay, n);
+  };
+  const stop = () => {
+    window.clearInterval(timer);
+    timer = undefined;
+    play.textContent = 'Play';
+    play.setAttribute('aria-pressed', 'false');
+  };
+  const load = async () => {
+    said.textContent = 'Simulating the stock…';
+    replay = new StockReplay(await getBytes(`${base}/stock`));
+    mesh = new StockMesh(replay);
+    slider.max = String(replay.frames);
+    slider.disabled = play.disabled = false;
+    controls.hidden = false;
+    viewerHost.dataset.stockFrames = String(replay.frames);
+  };
+  show.addEventListener('change', () => {
+    void (async () => {
+      if (!show.checked) {
+        stop();
+        viewer.setStock(null);
+        controls.hidden = true;
+        said.textContent = '';
+        return;
+      }
+      if (!replay) await load();
+      controls.hidden = false;
+      viewer.setStock(mesh!.object);
+      frameTo(replay!.frames);
+    })().catch((e: Error) => {
+      show.checked = false;
+      said.textContent = `The stock could not be simulated: ${e.message}`;
+    });
+  });
+  path.addEventListener('change', () => viewer.showPath(path.checked));
+  colour.addEventListener('change', () => {
+    if (!mesh) return;
+    mesh.colour = colour.value as StockColour;
+    frameTo(Number(slider.value));
+  });
+  slider.addEventListener('input', () => frameTo(Number(slider.value)));
+  play.addEventListener('click', () => {
+    if (timer !== undefined || !replay) return stop();
+    if (Number(slider.value) >= replay.frames) frameTo(0);
+    play.textContent = 'Pause';
+    play.setAttribute('aria-pressed', 'true');
+    timer = window.setInterval(() => {
+      const next = Number(slider.value) + 1;
+      if (!replay || next > replay.frames) return stop();
+      frameTo(next);
+    }, PLAY_STEP_MS);
+  });
+  return panel;
+}
+
+function describe(r: StockReplay, n: number): string {
+  const h = r.header;
+  if (n === 0) return `Frame 0 of ${r.frames}: the stock uncut (${h.stock.box.join(' × ')} mm).`;
+  const f = h.frames[n - 1];
+  return `Frame ${n} of ${r.frames}: ${f.moves} of ${h.moves} moves, line ${f.line}, ${f.removed_mm3.toFixed(1)} mm³ removed.`;
+}
