@@ -17,6 +17,8 @@
 #include "canon/sink.hpp"
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
+#include "sim/stats.hpp"
+#include "sim/stock/removal_rate.hpp"
 #include "sim/stock/simulator.hpp"
 
 namespace usina::dnc {
@@ -132,16 +134,19 @@ struct FrameRecord {
   std::uint64_t runs = 0;
   std::uint64_t cells = 0;
   std::uint64_t offset = 0;  // of its runs, from the data's start
+  std::uint64_t op = 0;      // the canon ops taken when it was, numbered as stats numbers them
+  double time_s = 0.0;       // when the planner has run those ops
 };
 
 // The second run: the simulator cuts, and at each share of the moves the
 // cells whose depth or mark changed since the frame before are written.
 class Frames final : public canon::Sink {
  public:
-  Frames(stock::StockSimulator& sim, stock::HeightMap& map, std::uint64_t moves,
-         std::uint32_t frames, std::uint64_t max_bytes)
+  Frames(stock::StockSimulator& sim, sim::StatsSink& timer, stock::HeightMap& map,
+         std::uint64_t moves, std::uint32_t frames, std::uint64_t max_bytes)
       : max_bytes_(max_bytes),
         sim_(sim),
+        timer_(timer),
         map_(map),
         moves_total_(std::max<std::uint64_t>(moves, 1)),
         frames_(static_cast<std::uint32_t>(std::min<std::uint64_t>(frames, moves_total_))),
@@ -150,7 +155,9 @@ class Frames final : public canon::Sink {
         mark_(map.nx() * map.ny(), stock::kUncut) {}
 
   void on(const canon::Op& op) override {
+    ++ops_;
     sim_.on(op);
+    timer_.on(op);
     if (!canon::is_motion(op.kind)) return;
     ++moves_;
     line_ = op.src.line;
@@ -166,6 +173,21 @@ class Frames final : public canon::Sink {
   }
 
   double depth_unit() const { return unit_; }
+
+  // From the planner (StatsSink::observe): `seconds` of op `op` ran. The
+  // planner runs behind the cut (its look-ahead): a frame's time is known
+  // once an op after its last has been timed.
+  void timed(std::uint64_t op, double seconds) {
+    while (timed_ < records.size() && records[timed_].op < op)
+      records[timed_++].time_s = clock_;
+    clock_ += seconds;
+  }
+
+  // The end of the run: the frames not yet timed end with it.
+  void finish_times() {
+    while (timed_ < records.size())
+      records[timed_++].time_s = clock_;
+  }
 
   std::vector<FrameRecord> records;
   std::string data;
@@ -183,7 +205,7 @@ class Frames final : public canon::Sink {
   }
 
   void take() {
-    FrameRecord f{moves_, line_, sim_.removed_mm3(), 0, 0, data.size()};
+    FrameRecord f{moves_, line_, sim_.removed_mm3(), 0, 0, data.size(), ops_, 0.0};
     std::vector<std::uint32_t> runs;
     std::vector<std::uint16_t> depths;
     std::vector<std::uint8_t> marks;
@@ -225,6 +247,7 @@ class Frames final : public canon::Sink {
 
   std::uint64_t max_bytes_;
   stock::StockSimulator& sim_;
+  sim::StatsSink& timer_;
   stock::HeightMap& map_;
   std::uint64_t moves_total_;
   std::uint32_t frames_;
@@ -233,6 +256,9 @@ class Frames final : public canon::Sink {
   std::vector<std::uint8_t> mark_;
   std::uint64_t moves_ = 0;
   std::uint32_t line_ = 0;
+  std::uint64_t ops_ = 0;
+  std::size_t timed_ = 0;  // the frames before it have their time
+  double clock_ = 0.0;     // s the planner has run
 };
 
 // One run of the revision's text through its dialect into `sink`.
@@ -288,13 +314,24 @@ json frames_json(const std::vector<FrameRecord>& records) {
                    {"removed_mm3", f.removed_mm3},
                    {"runs", f.runs},
                    {"cells", f.cells},
-                   {"offset", f.offset}});
+                   {"offset", f.offset},
+                   {"time_s", f.time_s}});
   }
   return out;
 }
 
+// The removal rate's peak over the program's time (docs/simulate.md, "Removal rate").
+json peak_json(const stock::RemovalTimeline& t) {
+  const std::size_t peak = t.peak_bin();
+  if (t.bins().empty() || !(t.bins()[peak] > 0.0)) return nullptr;
+  return {{"mm3_per_min", t.bins()[peak] / t.bin_s() * 60.0},
+          {"at_s", static_cast<double>(peak) * t.bin_s()},
+          {"bin_s", t.bin_s()}};
+}
+
 json header_json(const stock::HeightMap& map, const stock::StockSimulator& sim,
-                 const Frames& frames, std::uint64_t moves, bool from_program, bool complete) {
+                 const Frames& frames, const stock::RemovalTimeline& timeline, std::uint64_t moves,
+                 bool from_program, bool complete) {
   const stock::StockBox& b = map.box();
   return {{"version", kStockVersion},
           {"stock",
@@ -307,6 +344,8 @@ json header_json(const stock::HeightMap& map, const stock::StockSimulator& sim,
           {"bottom_mm", map.bottom()},
           {"depth_unit_mm", frames.depth_unit()},
           {"moves", moves},
+          {"time_s", timeline.total_s()},
+          {"peak_removal", peak_json(timeline)},
           {"complete", complete},
           {"removed_mm3", sim.removed_mm3()},
           {"rapid_removed_mm3", sim.rapid_removed_mm3()},
@@ -361,17 +400,30 @@ std::string encode_stock(std::string_view text, const StockSettings& settings) {
   options.tools = settings.tools;
   ErrorCount checks;  // the simulator's checks are in its list
   stock::StockSimulator sim(*map, options, checks);
-  Frames frames(sim, *map, survey.moves, settings.frames, settings.limits.max_answer_bytes);
+  // The times: stats' planner on the generic mill (a revision has no machine).
+  core::DiagnosticList timing_checks;
+  sim::StatsSink timer(sim::default_machine_profile(), {}, timing_checks);
+  stock::RemovalTimeline timeline;
+  sim.set_timeline(&timeline);
+  Frames frames(sim, timer, *map, survey.moves, settings.frames, settings.limits.max_answer_bytes);
+  timer.observe([&](std::uint64_t op, double seconds) {
+    timeline.timed(op, seconds);
+    frames.timed(op, seconds);
+  });
   const Run run = run_program(text, *dialect, settings.max_ops, frames);
+  timer.finish();
+  timeline.finish();
   frames.last();
+  frames.finish_times();
   if (frames.too_large()) {
     return refusal(413, fmt::format("the frames passed the {} bytes an answer may have at {} of {} "
                                     "moves: ask for fewer frames or a coarser resolution",
                                     settings.limits.max_answer_bytes, frames.records.back().moves,
                                     survey.moves));
   }
-  return assemble(header_json(*map, sim, frames, survey.moves, !settings.box.has_value(), run.ok),
-                  frames.data);
+  return assemble(
+      header_json(*map, sim, frames, timeline, survey.moves, !settings.box.has_value(), run.ok),
+      frames.data);
 }
 
 }  // namespace usina::dnc

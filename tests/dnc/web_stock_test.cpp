@@ -158,6 +158,34 @@ TEST_F(WebStockRoute, FramesAreEqualSharesOfTheMovesAndTheirStockShrinks) {
   }
 }
 
+// Each frame is stamped with the time the planner of `usina stats` (the
+// generic mill) has run its moves: the last is the program's whole time.
+TEST_F(WebStockRoute, FramesCarryThePlannersTime) {
+  const test::Reply r = get("?stock=box:60x40x10&resolution=0.5&frames=3");
+  ASSERT_EQ(r.status, 200) << r.body;
+  const Decoded d = decode(r.body);
+  const auto& frames = d.header["frames"];
+  ASSERT_EQ(frames.size(), 3u);
+  const fs::path dir = fs::temp_directory_path() / ("usina-web-time-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "slot.ngc") << kSlot;
+  const std::string cmd = std::string(USINA_BINARY) + " stats --format json " +
+                          (dir / "slot.ngc").string() + " > " + (dir / "stats.json").string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(dir / "stats.json");
+  const auto stats = nlohmann::json::parse(in, nullptr, false);
+  fs::remove_all(dir);
+  const double total = stats["time"]["total_s"].get<double>();
+  EXPECT_NEAR(d.header["time_s"].get<double>(), total, 1e-9);
+  EXPECT_NEAR(frames[2]["time_s"].get<double>(), total, 1e-9);
+  // Later frames, later times: the first two slots' moves take seconds.
+  EXPECT_GT(frames[0]["time_s"].get<double>(), 0.0);
+  EXPECT_GT(frames[1]["time_s"].get<double>(), frames[0]["time_s"].get<double>() + 1.0);
+  EXPECT_GT(frames[2]["time_s"].get<double>(), frames[1]["time_s"].get<double>());
+  ASSERT_TRUE(d.header["peak_removal"].is_object());
+  EXPECT_GT(d.header["peak_removal"]["mm3_per_min"].get<double>(), 0.0);
+}
+
 TEST_F(WebStockRoute, WithoutAStockTheProgramsOwnBoxIsCut) {
   const test::Reply r = get("");
   ASSERT_EQ(r.status, 200) << r.body;

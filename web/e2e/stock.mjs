@@ -38,7 +38,7 @@ export async function stockFlow(page, { check, shot }) {
   });
   const frames = await page.evaluate(() => Number(document.getElementById('viewer').dataset.stockFrames));
   const said = await page.locator('#stock-status').innerText();
-  check(new RegExp(`^Frame ${frames} of ${frames}: \\d+ of \\d+ moves, line \\d+, [1-9][\\d.]* mm³ removed`).test(said), `the stock is shown at its last frame of ${frames} ("${said}")`);
+  check(new RegExp(`^Frame ${frames} of ${frames}: \\d+ of \\d+ moves, line \\d+, at \\d+:\\d\\d\\.\\d of \\d+:\\d\\d\\.\\d, [1-9][\\d.]* mm³ removed`).test(said), `the stock is shown at its last frame of ${frames} ("${said}")`);
   const withStock = await canvasPixels(page);
   check(withStock.drawn > before.drawn + 2000, `the stock's mesh is drawn (${withStock.drawn} pixels not background, ${before.drawn} with the path alone)`);
   await page.getByRole('checkbox', { name: 'Tool path' }).uncheck();

@@ -9,7 +9,10 @@ import { field, h, status } from './dom';
 import { StockMesh, StockReplay, type StockColour } from './stock';
 import type { Viewer } from './viewer';
 
+// A replay lasts about this long a frame on average; each frame is shown
+// for its share of the program's time (at least MIN_STEP_MS).
 const PLAY_STEP_MS = 400;
+const MIN_STEP_MS = 60;
 
 export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement): HTMLElement {
   const show = h('input', { type: 'checkbox' });
@@ -43,7 +46,7 @@ export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement
     said.textContent = describe(replay, n);
   };
   const stop = () => {
-    window.clearInterval(timer);
+    window.clearTimeout(timer);
     timer = undefined;
     play.textContent = 'Play';
     play.setAttribute('aria-pressed', 'false');
@@ -87,18 +90,38 @@ export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement
     if (Number(slider.value) >= replay.frames) frameTo(0);
     play.textContent = 'Pause';
     play.setAttribute('aria-pressed', 'true');
-    timer = window.setInterval(() => {
+    const step = () => {
       const next = Number(slider.value) + 1;
       if (!replay || next > replay.frames) return stop();
-      frameTo(next);
-    }, PLAY_STEP_MS);
+      timer = window.setTimeout(() => {
+        frameTo(next);
+        step();
+      }, stepMs(replay, next));
+    };
+    step();
   });
   return panel;
+}
+
+// How long frame n stays before the next: its share of the program's time.
+function stepMs(r: StockReplay, n: number): number {
+  const h = r.header;
+  const total = h.time_s;
+  if (!(total > 0) || n < 1) return PLAY_STEP_MS;
+  const before = n >= 2 ? h.frames[n - 2].time_s : 0;
+  const share = (h.frames[n - 1].time_s - before) / total;
+  return Math.max(MIN_STEP_MS, Math.round(share * PLAY_STEP_MS * r.frames));
+}
+
+// 754.5 s → "12:34.5".
+function clock(s: number): string {
+  const m = Math.floor(s / 60);
+  return `${m}:${(s - m * 60).toFixed(1).padStart(4, '0')}`;
 }
 
 function describe(r: StockReplay, n: number): string {
   const h = r.header;
   if (n === 0) return `Frame 0 of ${r.frames}: the stock uncut (${h.stock.box.join(' × ')} mm).`;
   const f = h.frames[n - 1];
-  return `Frame ${n} of ${r.frames}: ${f.moves} of ${h.moves} moves, line ${f.line}, ${f.removed_mm3.toFixed(1)} mm³ removed.`;
+  return `Frame ${n} of ${r.frames}: ${f.moves} of ${h.moves} moves, line ${f.line}, at ${clock(f.time_s)} of ${clock(h.time_s)}, ${f.removed_mm3.toFixed(1)} mm³ removed.`;
 }

@@ -10,6 +10,7 @@ export interface StockFrame {
   moves: number;
   line: number;
   removed_mm3: number;
+  time_s: number; // when the planner (usina stats' on the generic mill) has run its moves
   runs: number;
   cells: number;
   offset: number;
@@ -23,6 +24,8 @@ export interface StockHeader {
   bottom_mm: number;
   depth_unit_mm: number;
   moves: number;
+  time_s: number;
+  peak_removal: { mm3_per_min: number; at_s: number; bin_s: number } | null;
   complete: boolean;
   removed_mm3: number;
   tools: { tool: number; shape: string; diameter_mm: number; removed_mm3: number }[];
