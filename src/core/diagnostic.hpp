@@ -66,4 +66,18 @@ class DiagnosticList final : public DiagnosticSink {
   int errors_ = 0;
 };
 
+// Counts the errors and keeps nothing: for a run whose diagnostics are
+// another's to show (the web viewer shows what ran; the check says why).
+class ErrorCount final : public DiagnosticSink {
+ public:
+  void report(Diagnostic d) override {
+    if (d.severity == Severity::Error) ++errors_;
+  }
+
+  std::uint64_t errors() const { return errors_; }
+
+ private:
+  std::uint64_t errors_ = 0;
+};
+
 }  // namespace usina::core

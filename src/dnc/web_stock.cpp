@@ -28,16 +28,6 @@ namespace stock = sim::stock;
 using core::Vec3;
 using nlohmann::json;
 
-// The page shows what ran; the check tells why a run stopped.
-class ErrorCount final : public core::DiagnosticSink {
- public:
-  void report(core::Diagnostic d) override {
-    if (d.severity == core::Severity::Error) ++errors;
-  }
-
-  std::uint64_t errors = 0;
-};
-
 // The tool's diameter as the simulator takes it: the settings' shape, the
 // tool change's diameter, or the default 6 mm end mill.
 double diameter_of(const StockSettings& s, int tool, std::optional<double> from_program) {
@@ -268,7 +258,7 @@ struct Run {
 
 Run run_program(std::string_view text, const gcode::Dialect& dialect, std::uint64_t max_ops,
                 canon::Sink& sink) {
-  ErrorCount diags;
+  core::ErrorCount diags;
   core::SourceManager sources;
   const std::uint32_t id =
       sources.add(core::SourceFile::from_string("<revision>", std::string(text)));
@@ -277,7 +267,7 @@ Run run_program(std::string_view text, const gcode::Dialect& dialect, std::uint6
       sources, gcode::InterpOptions{}, gcode::default_options(dialect), budget, diags});
   const bool ok = runner->run(id);
   budget.finish();
-  return {ok && diags.errors == 0};
+  return {ok && diags.errors() == 0};
 }
 
 std::string refusal(unsigned status, const std::string& why) {
@@ -398,7 +388,7 @@ std::string encode_stock(std::string_view text, const StockSettings& settings) {
                             "; give stock=box:WxLxH and origin=X,Y,Z");
   stock::SimulateOptions options;
   options.tools = settings.tools;
-  ErrorCount checks;  // the simulator's checks are in its list
+  core::ErrorCount checks;  // the simulator's checks are in its list
   stock::StockSimulator sim(*map, options, checks);
   // The times: stats' planner on the generic mill (a revision has no machine).
   core::DiagnosticList timing_checks;

@@ -95,16 +95,6 @@ class VertexSink final : public canon::Sink {
   std::uint32_t tool_ = 0;
 };
 
-// Counts the errors only: the viewer shows what ran, the check tells why.
-class ErrorCount final : public core::DiagnosticSink {
- public:
-  void report(core::Diagnostic d) override {
-    if (d.severity == core::Severity::Error) ++errors;
-  }
-
-  std::uint64_t errors = 0;
-};
-
 float gap(const PathVertex& a, const PathVertex& b) {
   return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
 }
@@ -153,7 +143,7 @@ ToolpathResult program_toolpath(std::string_view text, const ToolpathSettings& s
     r.vertices.push_back({});
     return r;
   }
-  ErrorCount diags;
+  core::ErrorCount diags;
   core::SourceManager sources;
   const std::uint32_t id =
       sources.add(core::SourceFile::from_string("<revision>", std::string(text)));
@@ -162,7 +152,7 @@ ToolpathResult program_toolpath(std::string_view text, const ToolpathSettings& s
   canon::OpBudget budget(vertices, settings.max_ops, diags);
   auto runner = dialect->make_runner(
       gcode::RunContext{sources, gcode::InterpOptions{}, std::move(options), budget, diags});
-  r.ok = runner->run(id) && diags.errors == 0;
+  r.ok = runner->run(id) && diags.errors() == 0;
   budget.finish();
   r.collected = r.vertices.size();
   r.vertices = decimate(r.vertices, settings.max_vertices);

@@ -19,16 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-// The figures need no diagnostics: the check has them.
-class Errors final : public core::DiagnosticSink {
- public:
-  void report(core::Diagnostic d) override {
-    if (d.severity == core::Severity::Error) ++count;
-  }
-
-  std::uint64_t count = 0;
-};
-
 json tool_json(const sim::ToolStats& t) {
   return {{"tool", t.tool},         {"total_s", t.total_s()},   {"cutting_s", t.cutting_s},
           {"rapid_s", t.rapid_s},   {"other_s", t.other_s},     {"cutting_mm", t.cutting_mm},
@@ -43,7 +33,7 @@ std::string tool_figures_json(std::string_view text, const ToolFiguresSettings& 
   json out = {{"machine", settings.profile.name}, {"complete", false}, {"tools", json::array()}};
   const gcode::Dialect* dialect = gcode::find_dialect(settings.dialect);
   if (dialect == nullptr) return out.dump();
-  Errors diags;
+  core::ErrorCount diags;
   core::SourceManager sources;
   const std::uint32_t id =
       sources.add(core::SourceFile::from_string("<revision>", std::string(text)));
@@ -54,7 +44,7 @@ std::string tool_figures_json(std::string_view text, const ToolFiguresSettings& 
   const bool ok = runner->run(id);
   stats.finish();
   const sim::StatsReport report = stats.report();
-  out["complete"] = ok && diags.count == 0;
+  out["complete"] = ok && diags.errors() == 0;
   for (const sim::ToolStats& t : report.tools)
     out["tools"].push_back(tool_json(t));
   out["total"] = tool_json(report.total);
