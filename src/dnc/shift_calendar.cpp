@@ -277,8 +277,9 @@ class ZoneScope {
 
 constexpr std::int64_t kProbeFrom = 0;            // 1970-01-01 UTC
 constexpr std::int64_t kProbeTo = 4'133'980'800;  // 2101-01-01 UTC
-// A day: no zone of tzdata 2024 changes its offset and back within one
-// (the hourly table of every zone is the same; ZoneOffsets' tests).
+// A day: in tzdata 2025b no zone's changes are closer than 7 days
+// (America/Boa_Vista, 601,200 s), and the daily table of each of its 645
+// zones is the hourly one (ZoneOffsets.EveryZoneDailyIsHourly, run by hand).
 constexpr std::int64_t kProbeStep = 86'400;
 
 // The zone's offsets by asking glibc every `step` seconds of 1970 to 2100,
