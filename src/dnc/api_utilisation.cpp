@@ -1,6 +1,7 @@
 // A machine's utilisation per day and its tool-life counts
-// (store_utilisation.hpp), over a range of UTC calendar days given as
-// `?from=YYYY-MM-DD&to=YYYY-MM-DD` (both inclusive).
+// (store_utilisation.hpp), over a range of calendar days given as
+// `?from=YYYY-MM-DD&to=YYYY-MM-DD` (both inclusive): UTC days, or with
+// `days=local` the days of the machine's shift calendar's zone.
 #include <charconv>
 #include <chrono>
 
@@ -60,8 +61,9 @@ nlohmann::json day_json(const MachineDay& d, double elapsed) {
   const double feeding = seconds(d, "feeding");
   const double alarm = seconds(d, "alarm");
   const double down = seconds(d, "down");
+  const double length = d.length_seconds();
   // The control's own cycles ran from its memory while the link was idle.
-  const double running = std::min(feeding + d.control_cycle_seconds, kDaySeconds);
+  const double running = std::min(feeding + d.control_cycle_seconds, length);
   const double idle = std::max(0.0, seconds(d, "idle") - d.control_cycle_seconds);
   nlohmann::json out = {{"date", date_text(d.day)},
                         {"running_seconds", running},
@@ -74,7 +76,8 @@ nlohmann::json day_json(const MachineDay& d, double elapsed) {
                         {"unknown_seconds", std::max(0.0, elapsed - d.known_seconds)},
                         {"server_off_seconds", seconds(d, "off")},
                         {"parts", d.parts},
-                        {"utilisation", running / kDaySeconds}};
+                        {"day_seconds", length},
+                        {"utilisation", running / length}};
   out["availability"] = d.known_seconds > 0
                             ? nlohmann::json((d.known_seconds - alarm - down) / d.known_seconds)
                             : nlohmann::json(nullptr);
@@ -101,16 +104,47 @@ nlohmann::json calendar_json(const ShiftCalendar& c) {
 }
 
 // The seconds of `day` that have passed at `now_us`.
-double elapsed_of(std::int64_t day, std::int64_t now_us) {
-  const double since = static_cast<double>(now_us) / 1e6 - static_cast<double>(day) * kDaySeconds;
-  return std::clamp(since, 0.0, kDaySeconds);
+double elapsed_of(const MachineDay& day, std::int64_t now_us) {
+  const double since = static_cast<double>(now_us - day.start_us) / 1e6;
+  return std::clamp(since, 0.0, day.length_seconds());
 }
 
 std::int64_t today(const ApiCall& c) {
-  const std::int64_t now = c.ctx.store.now_us();
-  return chr::floor<chr::days>(chr::sys_time<chr::microseconds>(chr::microseconds(now)))
-      .time_since_epoch()
-      .count();
+  return calendar_date(nullptr, c.ctx.store.now_us());
+}
+
+// Whose midnight cuts the days: UTC's (no `days`, or `days=utc`), or with
+// `days=local` the zone of the machine's calendar. A machine without a
+// calendar has no local midnight to give: 400, rather than UTC days under
+// a local name.
+struct DayZone {
+  const ZoneOffsets* offsets = nullptr;  // nullptr: UTC
+  std::string name = "UTC";
+  bool local = false;
+};
+
+tl::expected<DayZone, std::string> read_day_zone(const ApiCall& c,
+                                                 const std::optional<ShiftCalendar>& calendar) {
+  const auto it = c.target.query.find("days");
+  if (it == c.target.query.end() || it->second == "utc") return DayZone{};
+  if (it->second != "local")
+    return tl::unexpected(fmt::format("days must be utc or local, not \"{}\"", it->second));
+  if (!calendar) {
+    return tl::unexpected(fmt::format(
+        "days=local cuts the days at midnight in the zone of the machine's shift calendar, and "
+        "{} has none: give it one ([calendar] or its own, with a timezone), or leave days out "
+        "for UTC days",
+        c.params[0]));
+  }
+  return DayZone{calendar->offsets.get(), calendar->timezone, true};
+}
+
+std::string utilisation_basis(const DayZone& zone) {
+  if (!zone.local) return "running_seconds / 86400: a 24 h UTC calendar day, not a shift";
+  return fmt::format(
+      "running_seconds / day_seconds: a calendar day of {} from midnight to midnight (23, 24 or "
+      "25 h), not a shift",
+      zone.name);
 }
 
 }  // namespace
@@ -120,26 +154,28 @@ HttpResponse api_utilisation(ApiCall& c) {
   if (machine == nullptr)
     return error_response(c.req, http::status::not_found,
                           fmt::format("no machine {}", c.params[0]));
-  const std::int64_t now_day = today(c);
+  const std::optional<ShiftCalendar>& calendar = machine->config.calendar;
+  auto zone = read_day_zone(c, calendar);
+  if (!zone) return bad(c, zone.error());
+  const std::int64_t now_day = calendar_date(zone->offsets, c.ctx.store.now_us());
   auto range = read_range(c, now_day, now_day);
   if (!range) return bad(c, range.error());
   if (range->last - range->first + 1 > kMaxDays)
     return bad(c, fmt::format("at most {} days at a time", kMaxDays));
-  const std::optional<ShiftCalendar>& calendar = machine->config.calendar;
-  const std::int64_t day_us = 86'400'000'000;
+  const std::vector<CalendarDay> spans = calendar_days(zone->offsets, range->first, range->last);
   const TimeSpans shifts =
-      calendar ? shift_times(*calendar, range->first * day_us, (range->last + 1) * day_us)
-               : TimeSpans{};
-  auto days = machine_days(c.ctx.store, c.params[0], range->first, range->last,
-                           calendar ? &shifts : nullptr);
+      calendar ? shift_times(*calendar, spans.front().start_us, spans.back().end_us) : TimeSpans{};
+  auto days = machine_days(c.ctx.store, c.params[0], spans, calendar ? &shifts : nullptr);
   if (!days) return error_response(c.req, status_of(days.error()), days.error().message);
   nlohmann::json list = nlohmann::json::array();
   double running = 0.0;
+  double length = 0.0;
   double scheduled = 0.0;
   double in_shift = 0.0;
   for (const MachineDay& d : *days) {
-    list.push_back(day_json(d, elapsed_of(d.day, c.ctx.store.now_us())));
+    list.push_back(day_json(d, elapsed_of(d, c.ctx.store.now_us())));
     running += list.back()["running_seconds"].get<double>();
+    length += d.length_seconds();
     if (!calendar) continue;
     add_shift_figures(list.back(), d);
     scheduled += d.scheduled_seconds;
@@ -149,16 +185,18 @@ HttpResponse api_utilisation(ApiCall& c) {
       {"machine", c.params[0]},
       {"from", date_text(range->first)},
       {"to", date_text(range->last)},
-      {"day_seconds", kDaySeconds},
-      {"utilisation_basis", "running_seconds / 86400: a 24 h UTC calendar day, not a shift"},
-      {"utilisation", running / (kDaySeconds * static_cast<double>(days->size()))},
+      {"days_in", zone->name},
+      {"day_seconds", zone->local ? nlohmann::json(nullptr) : nlohmann::json(kDaySeconds)},
+      {"utilisation_basis", utilisation_basis(*zone)},
+      {"utilisation", running / length},
       {"calendar", calendar ? calendar_json(*calendar) : nlohmann::json(nullptr)},
       {"days", std::move(list)}};
   if (calendar) {
     out["shift_utilisation"] =
         scheduled > 0 ? nlohmann::json(in_shift / scheduled) : nlohmann::json(nullptr);
-    out["shift_utilisation_basis"] =
-        "running seconds inside the shifts / the shifts' planned seconds, per UTC calendar day";
+    out["shift_utilisation_basis"] = fmt::format(
+        "running seconds inside the shifts / the shifts' planned seconds, per {} calendar day",
+        zone->name);
   }
   return json_response(c.req, http::status::ok, out);
 }

@@ -277,32 +277,40 @@ class ZoneScope {
 
 constexpr std::int64_t kProbeFrom = 0;            // 1970-01-01 UTC
 constexpr std::int64_t kProbeTo = 4'133'980'800;  // 2101-01-01 UTC
-constexpr std::int64_t kProbeStep = 3600;         // no zone changes twice within an hour
+// A day: in tzdata 2025b no zone's changes are closer than 7 days
+// (America/Boa_Vista, 601,200 s), and the daily table of each of its 645
+// zones is the hourly one (ZoneOffsets.EveryZoneDailyIsHourly, run by hand).
+constexpr std::int64_t kProbeStep = 86'400;
 
-// The zone's offsets by asking glibc every hour of 1970 to 2100, and to the
-// second (bisecting) in each hour the offset changes. Asking glibc rather
-// than reading the TZif file ourselves keeps its reading of the file's POSIX
-// rule for the years past the file's last transition, and its answers to
-// the second.
-ZoneOffsets probe_offsets(const std::string& name) {
-  const ZoneScope zone(name);
+// The zone's offsets by asking glibc every `step` seconds of 1970 to 2100,
+// and to the second (bisecting) in each step the offset changes in. Asking
+// glibc rather than reading the TZif file ourselves keeps its reading of
+// the file's POSIX rule for the years past the file's last transition, and
+// its answers to the second.
+ZoneOffsets probe_offsets(std::int64_t step) {
   ZoneOffsets z;
   z.initial_s = ZoneScope::offset_at(kProbeFrom);
   std::int32_t current = z.initial_s;
-  for (std::int64_t t = kProbeFrom + kProbeStep; t < kProbeTo; t += kProbeStep) {
-    const std::int32_t now = ZoneScope::offset_at(t);
+  for (std::int64_t t = kProbeFrom + step; t < kProbeTo + step; t += step) {
+    const std::int64_t at = std::min(t, kProbeTo);
+    const std::int32_t now = ZoneScope::offset_at(at);
     if (now == current) continue;
-    std::int64_t lo = t - kProbeStep;  // still `current`
-    std::int64_t hi = t;               // already changed
+    std::int64_t lo = t - step;  // still `current`
+    std::int64_t hi = at;        // already changed
     while (hi - lo > 1) {
       const std::int64_t mid = lo + (hi - lo) / 2;
       (ZoneScope::offset_at(mid) == current ? lo : hi) = mid;
     }
     z.changes.push_back({hi, ZoneScope::offset_at(hi)});
     current = z.changes.back().offset_s;
-    if (current != now) t = hi;  // a second change within the hour: go on from this one
+    if (current != now) t = hi;  // a second change within the step: go on from this one
   }
   return z;
+}
+
+// a / b rounded down (to the day or second before 1970 too).
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  return a >= 0 ? a / b : (a - b + 1) / b;
 }
 
 // The UTC instant of the wall-clock time `local_s` (seconds since 1970 as
@@ -335,9 +343,14 @@ std::shared_ptr<const ZoneOffsets> zone_offsets(const std::string& name) {
     const std::lock_guard lock(ZoneScope::mutex());
     if (auto it = read.find(name); it != read.end()) return it->second;
   }
-  auto zone = std::make_shared<const ZoneOffsets>(probe_offsets(name));
+  auto zone = std::make_shared<const ZoneOffsets>(probe_zone_offsets(name, kProbeStep));
   const std::lock_guard lock(ZoneScope::mutex());
   return read.emplace(name, std::move(zone)).first->second;
+}
+
+ZoneOffsets probe_zone_offsets(const std::string& name, std::int64_t step_s) {
+  const ZoneScope zone(name);
+  return probe_offsets(std::max<std::int64_t>(step_s, 1));
 }
 
 int Shift::minutes() const {
@@ -398,8 +411,7 @@ std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalend
   std::vector<std::pair<std::int64_t, std::int64_t>> out;
   if (to_us <= from_us || calendar.shifts.empty()) return out;
   const auto floor_day = [](std::int64_t us) {
-    const std::int64_t s = us >= 0 ? us / 1'000'000 : (us - 999'999) / 1'000'000;
-    return s >= 0 ? s / kDaySeconds : (s - kDaySeconds + 1) / kDaySeconds;
+    return floor_div(floor_div(us, 1'000'000), kDaySeconds);
   };
   // A zone is within a day of UTC and a shift lasts a day at most: the
   // local dates from two days before to a day after cover every shift.
@@ -422,6 +434,25 @@ std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalend
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::vector<CalendarDay> calendar_days(const ZoneOffsets* zone, std::int64_t first,
+                                       std::int64_t last) {
+  std::vector<CalendarDay> out;
+  if (last < first) return out;
+  out.reserve(static_cast<std::size_t>(last - first + 1));
+  std::int64_t start = utc_of(zone, first * kDaySeconds);
+  for (std::int64_t date = first; date <= last; ++date) {
+    const std::int64_t end = utc_of(zone, (date + 1) * kDaySeconds);
+    out.push_back({date, start * 1'000'000, end * 1'000'000});
+    start = end;
+  }
+  return out;
+}
+
+std::int64_t calendar_date(const ZoneOffsets* zone, std::int64_t utc_us) {
+  const std::int64_t s = floor_div(utc_us, 1'000'000);
+  return floor_div(s + (zone != nullptr ? zone->offset_at(s) : 0), kDaySeconds);
 }
 
 std::optional<std::int64_t> day_number(std::string_view text) {

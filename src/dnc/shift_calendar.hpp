@@ -50,11 +50,13 @@ struct ZoneOffsets {
   struct Change {
     std::int64_t at_s = 0;  // UTC seconds since 1970 from which `offset_s` holds
     std::int32_t offset_s = 0;
+    bool operator==(const Change&) const = default;
   };
 
   std::int32_t initial_s = 0;   // before the first change
   std::vector<Change> changes;  // in order of time
   std::int64_t offset_at(std::int64_t utc_s) const;
+  bool operator==(const ZoneOffsets&) const = default;
 };
 
 // The offsets of the zone `name` (a name timezone_error accepts). It sets TZ
@@ -62,6 +64,13 @@ struct ZoneOffsets {
 // other thread runs (the configuration is read before the server starts).
 // A zone read before is not read again.
 std::shared_ptr<const ZoneOffsets> zone_offsets(const std::string& name);
+
+// The table as zone_offsets builds it, glibc asked every `step_s` seconds
+// and each change bisected to the second: zone_offsets asks daily. Two
+// changes within a step that come back to the first offset would be
+// missed; a test compares the daily table with an hourly one for every
+// zone of /usr/share/zoneinfo. The same TZ rules as zone_offsets.
+ZoneOffsets probe_zone_offsets(const std::string& name, std::int64_t step_s);
 
 struct ShiftCalendar {
   std::string timezone;  // a name under /usr/share/zoneinfo ("UTC", "Europe/Berlin")
@@ -88,6 +97,23 @@ std::string timezone_error(std::string_view name);
 std::vector<std::pair<std::int64_t, std::int64_t>> shift_times(const ShiftCalendar& calendar,
                                                                std::int64_t from_us,
                                                                std::int64_t to_us);
+
+// A calendar day as UTC instants: from its midnight to the next day's.
+struct CalendarDay {
+  std::int64_t date = 0;      // days since 1970-01-01
+  std::int64_t start_us = 0;  // UTC microseconds since 1970
+  std::int64_t end_us = 0;    // the next day's start
+};
+
+// The dates `first` to `last` (both included) as days of `zone`: each from
+// its local midnight to the next, so 23 h or 25 h on the days the clocks
+// change (a midnight that a change skips is taken on the old offset, as a
+// shift's start is). Without a zone (nullptr): UTC days of 24 h.
+std::vector<CalendarDay> calendar_days(const ZoneOffsets* zone, std::int64_t first,
+                                       std::int64_t last);
+
+// The date in `zone` (nullptr: UTC) at the UTC instant `utc_us`.
+std::int64_t calendar_date(const ZoneOffsets* zone, std::int64_t utc_us);
 
 // Days since 1970-01-01 of "YYYY-MM-DD"; nothing when it is not a date.
 std::optional<std::int64_t> day_number(std::string_view text);

@@ -43,6 +43,19 @@ struct SqlRow {
 
 using SqlRows = std::vector<SqlRow>;
 
+// One BLOB / BYTEA value read a slice at a time, so a large one (a revision
+// of up to 256 MiB) is never whole in memory. The value is immutable while
+// it is read (the store's triggers refuse UPDATE and DELETE of blobs).
+class BlobReader {
+ public:
+  virtual ~BlobReader() = default;
+
+  // The value's length in bytes, as stored.
+  virtual std::uint64_t size() const = 0;
+  // Up to `n` bytes from `offset`: fewer only at the end.
+  virtual StoreResult<std::string> read(std::uint64_t offset, std::size_t n) = 0;
+};
+
 class Database {
  public:
   virtual ~Database() = default;
@@ -53,6 +66,17 @@ class Database {
   virtual StoreResult<SqlRows> query(std::string_view sql, const SqlParams& params = {}) = 0;
   // Runs several statements without parameters (a migration).
   virtual StoreResult<void> script(std::string_view sql) = 0;
+
+  // The `column` of the `table` row whose `key_column` is `key`, to read in
+  // slices (NotFound without such a row). Names are the caller's constants,
+  // never a user's text. SQLite reads it through a connection of its own
+  // (incremental BLOB I/O), so the store's connection stays free for other
+  // requests between slices; PostgreSQL asks for each slice on the store's
+  // connection, outside any transaction.
+  virtual StoreResult<std::unique_ptr<BlobReader>> open_blob(std::string_view table,
+                                                             std::string_view column,
+                                                             std::string_view key_column,
+                                                             std::string_view key) = 0;
 
   // A write transaction: writers are serialised (SQLite BEGIN IMMEDIATE,
   // PostgreSQL a transaction-scoped advisory lock), so the audit chain and

@@ -225,6 +225,15 @@ CREATE TABLE tool_resets (
 CREATE INDEX tool_resets_by_machine ON tool_resets (machine, at, id);
 )SQL";
 
+// Version 8: PostgreSQL keeps new blobs uncompressed (STORAGE EXTERNAL), so
+// the export reads a large revision in slices that fetch only their own
+// TOAST chunks (a compressed value is decompressed from its start for each
+// slice). The blobs stored before stay compressed and are read in fewer,
+// larger slices (store_postgres.cpp). SQLite has nothing to change.
+constexpr std::string_view kV8Postgres = R"SQL(
+ALTER TABLE blobs ALTER COLUMN bytes SET STORAGE EXTERNAL;
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres, nullptr},
     {2, kV2, "SELECT 1", "SELECT 1", nullptr},
@@ -233,6 +242,7 @@ constexpr Migration kMigrations[] = {
     {5, kV5, "SELECT 1", "SELECT 1", nullptr},
     {6, kV6, "SELECT 1", "SELECT 1", &record_missing_facts},
     {7, kV7, "SELECT 1", "SELECT 1", nullptr},
+    {8, "SELECT 1", "SELECT 1", kV8Postgres, nullptr},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

@@ -4,6 +4,7 @@
 // on, and a busy timeout so two processes on one folder wait, not fail.
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -67,9 +68,59 @@ SqlRow read_row(sqlite3_stmt* s) {
   return row;
 }
 
+// A connection closed with its owner: the blob reader's own.
+struct Connection {
+  sqlite3* db = nullptr;
+
+  Connection() = default;
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  ~Connection() { sqlite3_close_v2(db); }
+};
+
+// Incremental BLOB I/O (sqlite3_blob_read) on a read-only connection of its
+// own, inside one read transaction: the handle keeps the row's overflow
+// pages' list, so each slice costs its own pages only, and the store's
+// connection keeps no statement open (its own snapshot moves on).
+class SqliteBlobReader final : public BlobReader {
+ public:
+  SqliteBlobReader(std::unique_ptr<Connection> connection, sqlite3_blob* blob)
+      : connection_(std::move(connection)), blob_(blob) {}
+
+  SqliteBlobReader(const SqliteBlobReader&) = delete;
+  SqliteBlobReader& operator=(const SqliteBlobReader&) = delete;
+
+  ~SqliteBlobReader() override {
+    sqlite3_blob_close(blob_);
+    sqlite3_exec(connection_->db, "ROLLBACK", nullptr, nullptr, nullptr);
+  }
+
+  std::uint64_t size() const override {
+    return static_cast<std::uint64_t>(sqlite3_blob_bytes(blob_));
+  }
+
+  StoreResult<std::string> read(std::uint64_t offset, std::size_t n) override {
+    if (offset >= size()) return std::string();
+    n = static_cast<std::size_t>(std::min<std::uint64_t>(n, size() - offset));
+    std::string out(n, '\0');
+    const int rc =
+        sqlite3_blob_read(blob_, out.data(), static_cast<int>(n), static_cast<int>(offset));
+    if (rc != SQLITE_OK) {
+      return store_error(StoreErrorKind::Backend,
+                         fmt::format("sqlite blob read at {}: {}", offset, sqlite3_errstr(rc)));
+    }
+    return out;
+  }
+
+ private:
+  std::unique_ptr<Connection> connection_;
+  sqlite3_blob* blob_;
+};
+
 class SqliteDatabase final : public Database {
  public:
-  explicit SqliteDatabase(sqlite3* db) : db_(db) {}
+  SqliteDatabase(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
 
   SqliteDatabase(const SqliteDatabase&) = delete;
   SqliteDatabase& operator=(const SqliteDatabase&) = delete;
@@ -103,6 +154,33 @@ class SqliteDatabase final : public Database {
     return {};
   }
 
+  StoreResult<std::unique_ptr<BlobReader>> open_blob(std::string_view table,
+                                                     std::string_view column,
+                                                     std::string_view key_column,
+                                                     std::string_view key) override {
+    auto c = std::make_unique<Connection>();
+    const int rc =
+        sqlite3_open_v2(path_.c_str(), &c->db, SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX, nullptr);
+    if (rc != SQLITE_OK) {
+      return store_error(StoreErrorKind::Backend, fmt::format("cannot open {} to read a blob: {}",
+                                                              path_, sqlite3_errstr(rc)));
+    }
+    sqlite3_busy_timeout(c->db, kBusyTimeoutMs);
+    // One snapshot from the row's look-up to the last slice.
+    if (sqlite3_exec(c->db, "BEGIN", nullptr, nullptr, nullptr) != SQLITE_OK)
+      return failure_of(c->db, "begin");
+    auto rowid =
+        rowid_of(c->db, fmt::format("SELECT rowid FROM {} WHERE {} = $1", table, key_column), key);
+    if (!rowid) return tl::unexpected(rowid.error());
+    sqlite3_blob* blob = nullptr;
+    if (sqlite3_blob_open(c->db, "main", std::string(table).c_str(), std::string(column).c_str(),
+                          *rowid, 0, &blob) != SQLITE_OK) {
+      sqlite3_blob_close(blob);
+      return failure_of(c->db, "blob open");
+    }
+    return std::unique_ptr<BlobReader>(std::make_unique<SqliteBlobReader>(std::move(c), blob));
+  }
+
   StoreResult<void> begin_write() override { return script("BEGIN IMMEDIATE"); }
 
   StoreResult<void> begin_read() override { return script("BEGIN"); }
@@ -124,12 +202,28 @@ class SqliteDatabase final : public Database {
     return {};
   }
 
-  tl::unexpected<StoreError> failure(const char* what) const {
+  static tl::unexpected<StoreError> failure_of(sqlite3* db, const char* what) {
     return store_error(StoreErrorKind::Backend,
-                       fmt::format("sqlite {}: {}", what, sqlite3_errmsg(db_)));
+                       fmt::format("sqlite {}: {}", what, sqlite3_errmsg(db)));
+  }
+
+  tl::unexpected<StoreError> failure(const char* what) const { return failure_of(db_, what); }
+
+  // The rowid `sql` answers for `key`; NotFound without a row.
+  static StoreResult<sqlite3_int64> rowid_of(sqlite3* db, const std::string& sql,
+                                             std::string_view key) {
+    Statement st(db, sql);
+    if (st.prepared() != SQLITE_OK) return failure_of(db, "prepare");
+    if (bind_one(st.get(), 1, key) != SQLITE_OK) return failure_of(db, "bind");
+    const int rc = sqlite3_step(st.get());
+    if (rc == SQLITE_DONE)
+      return store_error(StoreErrorKind::NotFound, fmt::format("no blob {} in the store", key));
+    if (rc != SQLITE_ROW) return failure_of(db, "step");
+    return sqlite3_column_int64(st.get(), 0);
   }
 
   sqlite3* db_;
+  std::string path_;
 };
 
 StoreResult<void> make_folder(const std::string& folder) {
@@ -152,7 +246,7 @@ StoreResult<std::unique_ptr<Database>> open_sqlite(const std::string& folder) {
   const int rc =
       sqlite3_open_v2(path.c_str(), &raw,
                       SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
-  auto db = std::make_unique<SqliteDatabase>(raw);
+  auto db = std::make_unique<SqliteDatabase>(raw, path);
   if (rc != SQLITE_OK) {
     return store_error(StoreErrorKind::Backend,
                        fmt::format("cannot open {}: {}", path, sqlite3_errstr(rc)));

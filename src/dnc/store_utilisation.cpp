@@ -8,10 +8,12 @@
 namespace usina::dnc {
 namespace {
 
-constexpr std::int64_t kDayUs = 86'400'000'000;
-
-std::int64_t day_of(std::int64_t us) {
-  return us >= 0 ? us / kDayUs : (us - kDayUs + 1) / kDayUs;
+// The index of the day holding the instant `us` (days.size() past the last).
+std::size_t day_at(const std::vector<MachineDay>& days, std::int64_t us) {
+  const auto after =
+      std::upper_bound(days.begin(), days.end(), us,
+                       [](std::int64_t t, const MachineDay& d) { return t < d.start_us; });
+  return after == days.begin() ? days.size() : static_cast<std::size_t>(after - days.begin() - 1);
 }
 
 struct Change {
@@ -52,12 +54,11 @@ std::int64_t inside(const TimeSpans* spans, std::int64_t a, std::int64_t b) {
 void spread(std::vector<MachineDay>& days, std::int64_t a, std::int64_t b,
             const std::string& activity, const TimeSpans* shifts) {
   if (days.empty() || b <= a) return;
-  const std::int64_t first = days.front().day;
-  for (std::int64_t d = day_of(a); d <= day_of(b - 1); ++d) {
-    const auto i = static_cast<std::size_t>(d - first);
-    if (d < first || i >= days.size()) continue;
-    const std::int64_t lo = std::max(a, d * kDayUs);
-    const std::int64_t hi = std::min(b, (d + 1) * kDayUs);
+  a = std::max(a, days.front().start_us);
+  for (std::size_t i = day_at(days, a); i < days.size() && days[i].start_us < b; ++i) {
+    const std::int64_t lo = std::max(a, days[i].start_us);
+    const std::int64_t hi = std::min(b, days[i].end_us);
+    if (hi <= lo) continue;
     const double s = static_cast<double>(hi - lo) / 1e6;
     if (activity != "off") days[i].known_seconds += s;
     days[i].seconds[activity] += s;
@@ -130,13 +131,24 @@ StoreResult<std::int64_t> close_activity_of_dead_server(Store& store) {
 StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
                                                   std::int64_t first_day, std::int64_t last_day,
                                                   const TimeSpans* shifts) {
+  return machine_days(store, machine, calendar_days(nullptr, first_day, last_day), shifts);
+}
+
+StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
+                                                  const std::vector<CalendarDay>& calendar,
+                                                  const TimeSpans* shifts) {
   std::vector<MachineDay> days;
-  for (std::int64_t d = first_day; d <= last_day; ++d) {
-    const double planned = static_cast<double>(inside(shifts, d * kDayUs, (d + 1) * kDayUs));
-    days.push_back(MachineDay{d, {}, 0.0, 0, 0.0, planned / 1e6, 0.0});
+  for (const CalendarDay& c : calendar) {
+    MachineDay d;
+    d.day = c.date;
+    d.start_us = c.start_us;
+    d.end_us = c.end_us;
+    d.scheduled_seconds = static_cast<double>(inside(shifts, c.start_us, c.end_us)) / 1e6;
+    days.push_back(std::move(d));
   }
-  const std::int64_t from = first_day * kDayUs;
-  const std::int64_t to = std::min((last_day + 1) * kDayUs, store.now_us());
+  if (days.empty()) return days;
+  const std::int64_t from = days.front().start_us;
+  const std::int64_t to = std::min(days.back().end_us, store.now_us());
   if (to <= from) return days;
   auto list = changes(store, machine, from, to);
   if (!list) return tl::unexpected(list.error());
@@ -147,15 +159,17 @@ StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view
   auto drips = drip_parts(store, machine, from, to);
   if (!drips) return tl::unexpected(drips.error());
   for (const SqlRow& r : *drips)
-    ++days[static_cast<std::size_t>(day_of(r.integer(0)) - first_day)].parts;
+    if (const std::size_t i = day_at(days, r.integer(0)); i < days.size()) ++days[i].parts;
   auto control = control_parts(store, machine, from, to);
   if (!control) return tl::unexpected(control.error());
   for (const ControlPart& p : *control) {
-    MachineDay& day = days[static_cast<std::size_t>(day_of(p.at_us) - first_day)];
+    const std::size_t i = day_at(days, p.at_us);
+    if (i >= days.size()) continue;
+    MachineDay& day = days[i];
     ++day.parts;
     if (!p.cycle_us) continue;
     day.control_cycle_seconds += static_cast<double>(*p.cycle_us) / 1e6;
-    const std::int64_t began = std::max(p.at_us - *p.cycle_us, day.day * kDayUs);
+    const std::int64_t began = std::max(p.at_us - *p.cycle_us, day.start_us);
     day.running_in_shift_seconds += static_cast<double>(inside(shifts, began, p.at_us)) / 1e6;
   }
   return days;

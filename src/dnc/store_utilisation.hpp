@@ -1,7 +1,9 @@
 // Utilisation per day and tool-life counts, from what the store keeps: each
 // machine's activity changes (schema version 4: feeding, transfer, idle,
 // alarm, down, off), its jobs, and the parts its control printed
-// (store_parts.hpp). Days are UTC calendar days of 24 h.
+// (store_parts.hpp). Days are UTC calendar days of 24 h, or the days of a
+// calendar's zone (shift_calendar.hpp's calendar_days: 23 h or 25 h on the
+// days its clocks change).
 #pragma once
 
 #include <cstdint>
@@ -10,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "dnc/shift_calendar.hpp"
 #include "dnc/store.hpp"
 #include "dnc/store_tool_resets.hpp"
 
@@ -43,7 +46,12 @@ StoreResult<std::optional<std::int64_t>> last_heartbeat(Store& store);
 StoreResult<std::int64_t> close_activity_of_dead_server(Store& store);
 
 struct MachineDay {
-  std::int64_t day = 0;                   // days since 1970-01-01 (UTC)
+  std::int64_t day = 0;       // the date, days since 1970-01-01
+  std::int64_t start_us = 0;  // its midnight (UTC microseconds)
+  std::int64_t end_us = 0;    // the next day's
+
+  double length_seconds() const { return static_cast<double>(end_us - start_us) / 1e6; }
+
   std::map<std::string, double> seconds;  // activity → seconds of the day
   double control_cycle_seconds = 0.0;     // cycles the control printed (ran from its memory)
   std::int64_t parts = 0;                 // drip feeds done + the control's part lines
@@ -57,10 +65,15 @@ struct MachineDay {
 // [start, end) in microseconds since 1970 (UTC), in order, not overlapping.
 using TimeSpans = std::vector<std::pair<std::int64_t, std::int64_t>>;
 
-// Days `first_day` to `last_day` (inclusive) of `machine`. With `shifts`
-// (shift_calendar.hpp's shift_times), each day's scheduled and in-shift
-// running seconds too; a control's cycle runs from its part line back by
-// the cycle's seconds (within the day).
+// The `days` of `machine` (consecutive: each starts where the one before
+// ends). With `shifts` (shift_calendar.hpp's shift_times), each day's
+// scheduled and in-shift running seconds too; a control's cycle runs from
+// its part line back by the cycle's seconds (within the day).
+StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
+                                                  const std::vector<CalendarDay>& days,
+                                                  const TimeSpans* shifts = nullptr);
+
+// UTC days `first_day` to `last_day` (inclusive).
 StoreResult<std::vector<MachineDay>> machine_days(Store& store, std::string_view machine,
                                                   std::int64_t first_day, std::int64_t last_day,
                                                   const TimeSpans* shifts = nullptr);

@@ -5,9 +5,12 @@
 // server whose machine has a calendar.
 #include "dnc/shift_calendar.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
+#include <limits>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -251,6 +254,65 @@ TEST(ZoneOffsets, EuropeBerlinChangesToTheSecondFrom1970To2100) {
   EXPECT_EQ(zone_offsets("Europe/Berlin").get(), zone_offsets("Europe/Berlin").get());
 }
 
+// The table is probed daily (and bisected): the same as probed hourly for
+// zones with unusual changes: half-hour summer time (Lord Howe), two hours
+// (Troll), a skipped day (Apia, 2011-12-30), Ramadan suspensions a few weeks
+// apart (Casablanca), midnight changes (Sao Paulo), a zone without DST.
+TEST(ZoneOffsets, TheDailyProbesFindWhatHourlyProbesFind) {
+  for (const char* name :
+       {"Europe/Berlin", "America/Sao_Paulo", "Australia/Lord_Howe", "Antarctica/Troll",
+        "Pacific/Apia", "Africa/Casablanca", "America/Nuuk", "Asia/Kolkata"}) {
+    const ZoneOffsets daily = probe_zone_offsets(name, 86'400);
+    EXPECT_EQ(daily, probe_zone_offsets(name, 3600)) << name;
+    EXPECT_EQ(daily, *zone_offsets(name)) << name;
+  }
+  // A coarser step than the zone's closest changes misses some: the check can fail.
+  EXPECT_NE(probe_zone_offsets("Africa/Casablanca", 120 * 86'400),
+            probe_zone_offsets("Africa/Casablanca", 3600));
+}
+
+// Every zone of /usr/share/zoneinfo (but posix/ and right/, copies with
+// other leap-second rules), daily against hourly, and the closest two
+// changes of any zone; a check of the tzdata installed, minutes long:
+//   USINA_ZONE_CHECK_ALL=1 build/tests/dnc_tests --gtest_filter='ZoneOffsets.EveryZone*'
+TEST(ZoneOffsets, EveryZoneDailyIsHourly) {
+  if (std::getenv("USINA_ZONE_CHECK_ALL") == nullptr)
+    GTEST_SKIP() << "a check of the installed tzdata: set USINA_ZONE_CHECK_ALL=1";
+  namespace fs = std::filesystem;
+  const fs::path root = "/usr/share/zoneinfo";
+  std::vector<std::string> names;
+  for (const auto& e : fs::recursive_directory_iterator(root)) {
+    const std::string name = fs::relative(e.path(), root).string();
+    if (!e.is_regular_file() || name.starts_with("posix") || name.starts_with("right")) continue;
+    if (timezone_error(name).empty()) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  std::int64_t closest = std::numeric_limits<std::int64_t>::max();
+  std::string closest_zone;
+  double daily_s = 0;
+  double hourly_s = 0;
+  for (const std::string& name : names) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const ZoneOffsets daily = probe_zone_offsets(name, 86'400);
+    const auto t1 = std::chrono::steady_clock::now();
+    const ZoneOffsets hourly = probe_zone_offsets(name, 3600);
+    const auto t2 = std::chrono::steady_clock::now();
+    daily_s += std::chrono::duration<double>(t1 - t0).count();
+    hourly_s += std::chrono::duration<double>(t2 - t1).count();
+    EXPECT_EQ(daily, hourly) << name;
+    for (std::size_t i = 1; i < hourly.changes.size(); ++i) {
+      const std::int64_t gap = hourly.changes[i].at_s - hourly.changes[i - 1].at_s;
+      if (gap < closest) {
+        closest = gap;
+        closest_zone = name;
+      }
+    }
+  }
+  fmt::print("{} zones: daily probes {:.1f} s, hourly {:.1f} s; closest changes {} s apart ({})\n",
+             names.size(), daily_s, hourly_s, closest, closest_zone);
+  EXPECT_GT(names.size(), 300u);
+}
+
 // The conversion must not read TZ once the calendar is read: the server
 // never changes the environment while its threads run (setenv beside a
 // getenv in libpq or OpenSSL is undefined behaviour). With TZ set to another
@@ -299,6 +361,48 @@ TEST(ShiftTimes, NoShiftStartsOnAHolidayButTheNightBeforeRunsIntoIt) {
   EXPECT_DOUBLE_EQ(day_hours(c, thu + 3), 0.0);    // Sunday
 }
 
+TEST(CalendarDays, BerlinsChangeDaysAre23And25HoursFromLocalMidnight) {
+  const ZoneOffsets* berlin = zone_offsets("Europe/Berlin").get();
+  const std::int64_t spring = date_of(2026, 3, 29);
+  const auto march = calendar_days(berlin, spring - 1, spring + 1);
+  ASSERT_EQ(march.size(), 3u);
+  // Midnight CET is 23:00 UTC the day before; midnight CEST 22:00 UTC.
+  EXPECT_EQ(march[0].start_us, (spring - 1) * kDayUs - kHourUs);
+  EXPECT_EQ(march[1].date, spring);
+  EXPECT_EQ(march[1].start_us, spring * kDayUs - kHourUs);
+  EXPECT_EQ(march[1].end_us - march[1].start_us, 23 * kHourUs);
+  EXPECT_EQ(march[2].start_us, (spring + 1) * kDayUs - 2 * kHourUs);
+  EXPECT_EQ(march[0].end_us - march[0].start_us, kDayUs);
+  EXPECT_EQ(march[2].end_us - march[2].start_us, kDayUs);
+  const std::int64_t autumn = date_of(2026, 10, 25);
+  const auto october = calendar_days(berlin, autumn, autumn);
+  ASSERT_EQ(october.size(), 1u);
+  EXPECT_EQ(october[0].start_us, autumn * kDayUs - 2 * kHourUs);
+  EXPECT_EQ(october[0].end_us - october[0].start_us, 25 * kHourUs);
+  // Without a zone: UTC days.
+  const auto utc = calendar_days(nullptr, spring, spring);
+  EXPECT_EQ(utc[0].start_us, spring * kDayUs);
+  EXPECT_EQ(utc[0].end_us, (spring + 1) * kDayUs);
+  // 23:30 UTC on the 28th is already the 29th in Berlin.
+  EXPECT_EQ(calendar_date(berlin, spring * kDayUs - kHourUs / 2), spring);
+  EXPECT_EQ(calendar_date(nullptr, spring * kDayUs - kHourUs / 2), spring - 1);
+  EXPECT_EQ(calendar_date(berlin, spring * kDayUs - kHourUs - 1), spring - 1);
+}
+
+// Brazil's summer time began at midnight: on 2018-11-04 in Sao Paulo 00:00
+// (-03) became 01:00 (-02), so the day starts at 01:00, 03:00 UTC.
+TEST(CalendarDays, AMidnightTheClocksSkipIsTakenOnTheOldOffset) {
+  const ZoneOffsets* sao_paulo = zone_offsets("America/Sao_Paulo").get();
+  const std::int64_t d = date_of(2018, 11, 4);
+  const auto days = calendar_days(sao_paulo, d - 1, d);
+  ASSERT_EQ(days.size(), 2u);
+  EXPECT_EQ(days[0].start_us, (d - 1) * kDayUs + 3 * kHourUs);
+  EXPECT_EQ(days[1].start_us, d * kDayUs + 3 * kHourUs);
+  EXPECT_EQ(days[1].end_us - days[1].start_us, 23 * kHourUs);
+  EXPECT_EQ(calendar_date(sao_paulo, d * kDayUs + 3 * kHourUs), d);
+  EXPECT_EQ(calendar_date(sao_paulo, d * kDayUs + 3 * kHourUs - 1), d - 1);
+}
+
 class ShiftUtilisationOnBothStores : public test::StoreTest {};
 
 TEST_P(ShiftUtilisationOnBothStores, RunningInsideAndOutsideTheShifts) {
@@ -326,6 +430,49 @@ TEST_P(ShiftUtilisationOnBothStores, RunningInsideAndOutsideTheShifts) {
   auto plain = machine_days(*store, "m1", d, d);
   ASSERT_TRUE(plain);
   EXPECT_DOUBLE_EQ((*plain)[0].scheduled_seconds, 0.0);
+}
+
+// Local days of Europe/Berlin around both 2026 changes: 2026-03-29 has 23 h,
+// 2026-10-25 has 25 h, and a part printed at 00:30 local on the 29th (23:30
+// UTC on the 28th) counts on the 29th.
+TEST_P(ShiftUtilisationOnBothStores, BerlinDaysOf23And25HoursAroundTheClockChanges) {
+  const std::int64_t spring = date_of(2026, 3, 29);
+  const std::int64_t autumn = date_of(2026, 10, 25);
+  now_us = (autumn + 5) * kDayUs;
+  auto store = open();
+  ASSERT_TRUE(store);
+  const ZoneOffsets* berlin = zone_offsets("Europe/Berlin").get();
+  // Idle from the 27th, feeding from 20:00 UTC on the 28th to 02:00 UTC on the 30th.
+  ASSERT_TRUE(record_activity(*store, "m1", "idle", (spring - 2) * kDayUs));
+  ASSERT_TRUE(record_activity(*store, "m1", "feeding", spring * kDayUs - 4 * kHourUs));
+  ASSERT_TRUE(record_activity(*store, "m1", "idle", (spring + 1) * kDayUs + 2 * kHourUs));
+  ASSERT_TRUE(record_control_part(*store, {"m1", spring * kDayUs - kHourUs / 2, 0, 1, "", ""}));
+  const auto march = machine_days(*store, "m1", calendar_days(berlin, spring - 1, spring + 1));
+  ASSERT_TRUE(march) << march.error().message;
+  ASSERT_EQ(march->size(), 3u);
+  EXPECT_DOUBLE_EQ((*march)[0].seconds.at("feeding"), 3 * 3600.0);  // 20:00-23:00 UTC
+  EXPECT_DOUBLE_EQ((*march)[0].seconds.at("idle"), 21 * 3600.0);
+  EXPECT_EQ((*march)[0].parts, 0);
+  EXPECT_DOUBLE_EQ((*march)[1].seconds.at("feeding"), 23 * 3600.0);  // the whole short day
+  EXPECT_DOUBLE_EQ((*march)[1].known_seconds, 23 * 3600.0);
+  EXPECT_DOUBLE_EQ((*march)[1].length_seconds(), 23 * 3600.0);
+  EXPECT_EQ((*march)[1].parts, 1);
+  EXPECT_DOUBLE_EQ((*march)[2].seconds.at("feeding"), 4 * 3600.0);  // 22:00-02:00 UTC
+  // The same records in UTC days: the part is on the 28th.
+  const auto utc = machine_days(*store, "m1", spring - 1, spring);
+  ASSERT_TRUE(utc);
+  EXPECT_EQ((*utc)[0].parts, 1);
+  EXPECT_DOUBLE_EQ((*utc)[1].seconds.at("feeding"), 24 * 3600.0);
+  // October: feeding from 21:00 UTC on the 24th to 00:00 UTC on the 26th.
+  ASSERT_TRUE(record_activity(*store, "m1", "feeding", autumn * kDayUs - 3 * kHourUs));
+  ASSERT_TRUE(record_activity(*store, "m1", "idle", (autumn + 1) * kDayUs));
+  const auto october = machine_days(*store, "m1", calendar_days(berlin, autumn - 1, autumn + 1));
+  ASSERT_TRUE(october) << october.error().message;
+  EXPECT_DOUBLE_EQ((*october)[0].seconds.at("feeding"), 3600.0);  // 21:00-22:00 UTC
+  EXPECT_DOUBLE_EQ((*october)[1].seconds.at("feeding"), 25 * 3600.0);
+  EXPECT_DOUBLE_EQ((*october)[1].known_seconds, 25 * 3600.0);
+  EXPECT_DOUBLE_EQ((*october)[1].length_seconds(), 25 * 3600.0);
+  EXPECT_DOUBLE_EQ((*october)[2].seconds.at("feeding"), 3600.0);  // 23:00-00:00 UTC
 }
 
 USINA_STORE_BACKENDS(ShiftUtilisationOnBothStores);
@@ -403,6 +550,81 @@ TEST(ApiShiftUtilisation, ScheduledAndInShiftSecondsPerUtcDayAroundTheClockChang
   EXPECT_DOUBLE_EQ(none.json()["days"][0]["scheduled_seconds"].get<double>(), 0.0);
   EXPECT_TRUE(none.json()["days"][0]["shift_utilisation"].is_null());
   EXPECT_TRUE(none.json()["shift_utilisation"].is_null());
+}
+
+// days=local: the same records as above in Berlin's days. Saturday the
+// 28th runs from 23:00 UTC on the 27th, Sunday the 29th is 23 h, and the
+// early shift (01:00-04:00) is 2 h on it; Sunday 25 October is 25 h, its
+// shift 4 h.
+TEST(ApiShiftUtilisation, DaysInTheCalendarsZoneAre23And25HoursLong) {
+  RunningServer s;
+  Control control = start_with_calendar(s, true);
+  const std::int64_t sat = date_of(2026, 3, 28);
+  const bool recorded = s.on_loop([&] {
+    Store& store = s.server().store();
+    const std::pair<std::int64_t, const char*> log[] = {{sat * kDayUs, "idle"},
+                                                        {sat * kDayUs + kHourUs / 2, "feeding"},
+                                                        {sat * kDayUs + 2 * kHourUs, "idle"},
+                                                        {(sat + 1) * kDayUs + kHourUs, "feeding"},
+                                                        {(sat + 1) * kDayUs + 3 * kHourUs, "idle"},
+                                                        {(sat + 3) * kDayUs, "off"}};
+    bool ok = true;
+    for (const auto& [at, what] : log)
+      ok = record_activity(store, "mill-1", what, at).has_value() && ok;
+    return ok;
+  });
+  ASSERT_TRUE(recorded);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", usina::test::kPassword);
+  const auto r =
+      c.get("/api/machines/mill-1/utilisation?from=2026-03-28&to=2026-03-30&days=local", oper);
+  ASSERT_EQ(r.status, 200) << r.body;
+  const auto j = r.json();
+  EXPECT_EQ(j["days_in"], "Europe/Berlin");
+  EXPECT_TRUE(j["day_seconds"].is_null());
+  const auto& days = j["days"];
+  ASSERT_EQ(days.size(), 3u);
+  EXPECT_EQ(days[1]["date"], "2026-03-29");
+  EXPECT_DOUBLE_EQ(days[0]["day_seconds"].get<double>(), 24 * 3600.0);
+  EXPECT_DOUBLE_EQ(days[1]["day_seconds"].get<double>(), 23 * 3600.0);
+  // Saturday: the hour before 00:00 UTC has no record; 00:30-02:00 UTC ran, in the shift.
+  EXPECT_DOUBLE_EQ(days[0]["unknown_seconds"].get<double>(), 3600.0);
+  EXPECT_DOUBLE_EQ(days[0]["scheduled_seconds"].get<double>(), 3 * 3600.0);
+  EXPECT_DOUBLE_EQ(days[0]["running_in_shift_seconds"].get<double>(), 1.5 * 3600.0);
+  // Sunday: 01:00 CET to 04:00 CEST is 2 h; 01:00-03:00 UTC ran (03:00-05:00 CEST), 1 h in it.
+  EXPECT_DOUBLE_EQ(days[1]["scheduled_seconds"].get<double>(), 2 * 3600.0);
+  EXPECT_DOUBLE_EQ(days[1]["running_seconds"].get<double>(), 2 * 3600.0);
+  EXPECT_DOUBLE_EQ(days[1]["running_in_shift_seconds"].get<double>(), 3600.0);
+  EXPECT_DOUBLE_EQ(days[1]["utilisation"].get<double>(), 2.0 / 23.0);
+  // Monday the 30th is a holiday: nothing planned in its local day.
+  EXPECT_DOUBLE_EQ(days[2]["scheduled_seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(days[2]["shift_utilisation"].is_null());
+  EXPECT_DOUBLE_EQ(j["utilisation"].get<double>(), 3.5 / 71.0);
+  const auto autumn =
+      c.get("/api/machines/mill-1/utilisation?from=2026-10-25&to=2026-10-25&days=local", oper);
+  ASSERT_EQ(autumn.status, 200) << autumn.body;
+  const auto october = autumn.json();
+  const auto& sunday = october["days"][0];
+  EXPECT_DOUBLE_EQ(sunday["day_seconds"].get<double>(), 25 * 3600.0);
+  EXPECT_DOUBLE_EQ(sunday["scheduled_seconds"].get<double>(), 4 * 3600.0);
+  // Without days (or days=utc) the answer is the UTC one of the test above.
+  const auto plain =
+      c.get("/api/machines/mill-1/utilisation?from=2026-03-29&to=2026-03-29&days=utc", oper).json();
+  EXPECT_EQ(plain["days_in"], "UTC");
+  EXPECT_DOUBLE_EQ(plain["day_seconds"].get<double>(), 86400.0);
+  EXPECT_DOUBLE_EQ(plain["days"][0]["scheduled_seconds"].get<double>(), 2 * 3600.0);
+  EXPECT_EQ(c.get("/api/machines/mill-1/utilisation?days=berlin", oper).status, 400);
+}
+
+TEST(ApiShiftUtilisation, LocalDaysWithoutACalendarAre400WithTheReason) {
+  RunningServer s;
+  Control control = start_with_calendar(s, false);
+  const ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", usina::test::kPassword);
+  const auto r = c.get("/api/machines/mill-1/utilisation?days=local", oper);
+  EXPECT_EQ(r.status, 400);
+  EXPECT_NE(r.body.find("mill-1 has none"), std::string::npos) << r.body;
+  EXPECT_EQ(c.get("/api/machines/mill-1/utilisation?days=utc", oper).status, 200);
 }
 
 TEST(ApiShiftUtilisation, WithoutACalendarTheAnswerHasNoShiftFields) {
