@@ -14,7 +14,10 @@ double RemovalTimeline::Pending::mm3() const {
 
 void RemovalTimeline::cut(std::uint64_t op, double mm3, double f0, double f1) {
   if (!(mm3 > 0.0) || !std::isfinite(mm3)) return;
-  if (pending_.empty() || pending_.back().op != op) pending_.push_back({op, {}});
+  if (pending_.empty() || pending_.back().op != op) {
+    if (pending_.size() >= kMaxPending) merge_oldest();
+    pending_.push_back({op, {}});
+  }
   std::array<double, kParts>& parts = pending_.back().parts;
   const double n = static_cast<double>(kParts);
   f0 = std::clamp(f0, 0.0, 1.0);
@@ -64,6 +67,14 @@ void RemovalTimeline::finish() {
     left += p.mm3();
   pending_.clear();
   if (left > 0.0) spread(left, clock_, clock_);
+}
+
+// The oldest op's volume goes with the next one's, evenly over its stretches.
+void RemovalTimeline::merge_oldest() {
+  const double mm3 = pending_.front().mm3();
+  pending_.pop_front();
+  for (double& part : pending_.front().parts)
+    part += mm3 / static_cast<double>(kParts);
 }
 
 std::size_t RemovalTimeline::peak_bin() const {

@@ -29,6 +29,10 @@ class RemovalTimeline {
  public:
   static constexpr std::size_t kBins = 1000;
   static constexpr std::size_t kParts = 16;
+  // Ops waiting for their time at most: a planner that times nothing (a
+  // profile whose times come out undefined) must not make them grow with
+  // the program. Past it the two oldest are taken as one.
+  static constexpr std::size_t kMaxPending = 4096;
   static constexpr double kFirstBinSeconds = 0.01;
 
   // From the simulator: op `op` cut `mm3` in the stretch [f0, f1] of its
@@ -60,6 +64,9 @@ class RemovalTimeline {
   // Each operation's seconds (moves and waits), by index.
   const std::vector<double>& operation_s() const { return operation_s_; }
 
+  // Ops whose volume waits for their time.
+  std::size_t waiting() const { return pending_.size(); }
+
   // The bin with the most volume (the first of equals); 0 when none cut.
   std::size_t peak_bin() const;
 
@@ -72,6 +79,7 @@ class RemovalTimeline {
   };
 
   void close();
+  void merge_oldest();
   void spread(double mm3, double t0, double t1);
   void add_to_bin(std::size_t bin, double mm3);
   void grow_to(double t);

@@ -111,6 +111,17 @@ TEST(RemovalTimeline, VolumeNeverTimedIsLaidAtTheEnd) {
   EXPECT_NEAR(t.bins().back(), 3.0, 1e-9);
 }
 
+TEST(RemovalTimeline, OpsNeverTimedDoNotPileUp) {
+  // A planner that times nothing: the volume waits in a bounded queue and
+  // is all laid at the end.
+  RemovalTimeline t;
+  for (std::uint64_t op = 1; op <= 3 * RemovalTimeline::kMaxPending; ++op)
+    t.cut(op, 1.0);
+  EXPECT_LE(t.waiting(), RemovalTimeline::kMaxPending);
+  t.finish();
+  EXPECT_NEAR(sum(t.bins()), 3.0 * RemovalTimeline::kMaxPending, 1e-6);
+}
+
 TEST(RemovalTimeline, EachOperationGetsItsOpsTime) {
   RemovalTimeline t;
   t.timed(1, 0.5);  // before the first operation: counted with it
