@@ -58,8 +58,6 @@ struct SimulateOptions {
   std::string machine;  // profile for the times (docs/stats.md); empty: the generic mill
 };
 
-// mm: the chords of the target's arcs, finer than the grid can tell.
-constexpr double kTargetChord = 0.001;
 // mm: a target deeper or higher than this is no part's.
 constexpr double kMaxTargetZ = 1e5;
 

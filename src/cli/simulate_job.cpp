@@ -17,9 +17,6 @@ namespace stock = sim::stock;
 using core::Vec2;
 using Rings = std::vector<std::vector<Vec2>>;
 
-// mm: the chords of a target's arcs and offsets, finer than a grid tells.
-constexpr double kChord = 0.001;
-
 // DXF diagnostics as `usina: SEVERITY[CODE]: message` (they name the file).
 class DxfDiagnostics final : public core::DiagnosticSink {
  public:
@@ -70,15 +67,15 @@ std::vector<cam::Ring> oriented(const Rings& rings) {
 
 // What a tool of `radius` reaches of an area: eroded by its radius, grown back.
 Rings reachable(const Rings& area, double radius) {
-  const std::vector<cam::Ring> in = cam::offset_rings(oriented(area), -radius, kChord);
-  return cam::offset_rings(in, radius, kChord);
+  const std::vector<cam::Ring> in = cam::offset_rings(oriented(area), -radius, kTargetChord);
+  return cam::offset_rings(in, radius, kTargetChord);
 }
 
 Rings ellipse_ring(const job::Operation& op) {
-  // Chords within kChord of the ellipse: its largest radius sets the step.
-  const double r = std::max(op.rx, op.ry);
+  // Chords within kTargetChord of the ellipse: its largest radius sets the step.
+  const double r = std::max({op.rx, op.ry, kTargetChord});  // acos stays defined
   const auto n = static_cast<std::size_t>(
-      std::clamp(std::ceil(std::numbers::pi / std::acos(1.0 - kChord / r)), 64.0, 100000.0));
+      std::clamp(std::ceil(std::numbers::pi / std::acos(1.0 - kTargetChord / r)), 64.0, 100000.0));
   std::vector<Vec2> ring;
   for (std::size_t k = 0; k < n; ++k) {
     const double t = 2.0 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(n);
@@ -108,7 +105,7 @@ tl::expected<std::optional<stock::TargetLayer>, std::string> target_of(const job
   const double radius = step->tool.diameter / 2.0;
   switch (op.type) {
   case job::OpType::Pocket: {
-    auto rings = closed_rings(j.job.drawing, op.layer, kChord);
+    auto rings = closed_rings(j.job.drawing, op.layer, kTargetChord);
     if (!rings) return tl::unexpected(rings.error());
     t.layer = op.layer;
     t.rings = reachable(*rings, radius);

@@ -20,6 +20,9 @@
 
 namespace usina::cli {
 
+// mm: the chords of a target's arcs and offsets, finer than a grid tells.
+inline constexpr double kTargetChord = 0.001;
+
 // A file whose name ends in ".toml" is a job, not an NC program.
 bool is_job_file(std::string_view path);
 
