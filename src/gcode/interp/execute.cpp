@@ -1,8 +1,6 @@
-// Step 4 of a block: execution in RS274NGC's order (LinuxCNC
-// execute_block): comments, feed mode, F, S, T, M6, spindle, coolant,
-// overrides, user M codes, dwell, plane, units, lathe mode, cutter
-// compensation, tool length, work offsets, path control, distance modes,
-// retract mode, G10/G28/G30/G52/G92, motion, stop.
+// Step 4 of a block: its parts run in the order its dialect gives
+// (DialectRules::order; LinuxCNC's execute_block order for rs274ngc,
+// fanuc and grbl: execution_order.cpp), one step each.
 #include <cmath>
 
 #include <fmt/format.h>
@@ -47,36 +45,49 @@ void Interpreter::in_order(std::function<void()> effect) {
 }
 
 bool Interpreter::execute(std::span<const CommentText> notes, BlockWords& w) {
-  comments(notes);
-  if (!tool_and_spindle(w)) return false;
-  if (w.g[kGroupNonModal] == 40) {
-    if (!w.has('P') || w.get('P') < 0) {
-      return error(core::Code::MissingWord, w.gcol[kGroupNonModal],
-                   "G4 needs P (seconds, not negative)");
-    }
-    in_order([this, s = w.get('P')] { machine_.dwell(s); });
+  for (const ExecStep step : order_.steps) {
+    if (!run_step(step, notes, w)) return false;
   }
-  if (!modal_save_restore(w) || !modal_settings(w) || !modal_zero(w)) return false;
-  if (w.motion != -1 && !motion(w)) return false;
-  if (tool_changed_) {
-    // After a tool change LinuxCNC re-reads the current point from the
-    // machine before the next block: the point last sent, so what the block
-    // did to the program position (G43 beside M6, G40) is undone.
-    tool_changed_ = false;
-    set_xyz(state_.pos, machine_.last_emitted());
-  }
-  return stop(w);
+  return true;
 }
 
-bool Interpreter::tool_and_spindle(BlockWords& w) {
-  ModalState& s = state_;
-  if (w.g[kGroupFeedMode] != -1) {
-    const GCode g = w.g[kGroupFeedMode];
-    s.feed_mode = g == 930 ? FeedMode::InverseTime
-                           : (g == 950 ? FeedMode::UnitsPerRev : FeedMode::UnitsPerMinute);
-    // LinuxCNC: entering inverse time clears the feed rate.
-    if (g == 930) s.feed = 0.0;
+// One step of the dialect's order (execution_order.hpp).
+bool Interpreter::run_step(ExecStep step, std::span<const CommentText> notes, BlockWords& w) {
+  switch (step) {
+  case ExecStep::Comments: return comments(notes);
+  case ExecStep::FeedMode: feed_mode(w); return true;
+  case ExecStep::Feed: return feed(w);
+  case ExecStep::SpindleMode:
+    if (w.g[kGroupSpindleMode] != -1) state_.css = w.g[kGroupSpindleMode] == 960;
+    return true;
+  case ExecStep::Speed: return speed(w);
+  case ExecStep::SelectTool: return select_tool(w);
+  case ExecStep::ChangeTool: return change_tool(w);
+  case ExecStep::Spindle: spindle(w); return true;
+  case ExecStep::Coolant: coolant(w); return true;
+  case ExecStep::Overrides: overrides(w); return true;
+  case ExecStep::UserM: user_m_codes(w); return true;
+  case ExecStep::Dwell: return dwell(w);
+  case ExecStep::ModalState: return modal_save_restore(w);
+  case ExecStep::Motion: return w.motion == -1 || motion(w);
+  case ExecStep::Resync: resync_after_tool_change(); return true;
+  case ExecStep::Subprogram: return subprogram(w);
+  case ExecStep::Stop: return stop(w);
+  default: return modal_setting(step, w);
   }
+}
+
+void Interpreter::feed_mode(const BlockWords& w) {
+  if (w.g[kGroupFeedMode] == -1) return;
+  const GCode g = w.g[kGroupFeedMode];
+  state_.feed_mode = g == 930 ? FeedMode::InverseTime
+                              : (g == 950 ? FeedMode::UnitsPerRev : FeedMode::UnitsPerMinute);
+  // LinuxCNC: entering inverse time clears the feed rate.
+  if (g == 930) state_.feed = 0.0;
+}
+
+bool Interpreter::feed(const BlockWords& w) {
+  ModalState& s = state_;
   if (w.has('F')) {
     if (w.get('F') < 0) return error(core::Code::BadWordValue, w.col_of('F'), "negative feed rate");
     s.feed = s.feed_mode == FeedMode::InverseTime ? w.get('F') : mm(w.get('F'));
@@ -84,50 +95,69 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
   if (w.has('F') || w.g[kGroupFeedMode] != -1) {
     in_order([this, f = s.feed, mode = s.feed_mode] { machine_.set_feed(f, mode); });
   }
-  if (w.g[kGroupSpindleMode] != -1) s.css = w.g[kGroupSpindleMode] == 960;
-  if (w.has('S')) {
-    if (w.get('S') < 0)
-      return error(core::Code::BadWordValue, w.col_of('S'), "negative spindle speed");
-    s.speed = w.get('S');
-  }
-  if (w.has('T')) {
-    auto t = whole(w, 'T', 0, kMaxToolNumber);
-    if (!t) return false;
-    s.selected_tool = *t;
-  }
+  return true;
+}
+
+bool Interpreter::speed(const BlockWords& w) {
+  if (!w.has('S')) return true;
+  if (w.get('S') < 0)
+    return error(core::Code::BadWordValue, w.col_of('S'), "negative spindle speed");
+  state_.speed = w.get('S');
+  return true;
+}
+
+bool Interpreter::select_tool(const BlockWords& w) {
+  if (!w.has('T')) return true;
+  auto t = whole(w, 'T', 0, kMaxToolNumber);
+  if (!t) return false;
+  state_.selected_tool = *t;
+  return true;
+}
+
+bool Interpreter::change_tool(const BlockWords& w) {
+  ModalState& s = state_;
   const int tc = w.m[kMGroupToolChange];
-  if (tc == 6 || tc == 61) {
-    if (tc == 61 && !w.has('Q'))
-      return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
-                   "M61 needs Q (the tool number)");
-    std::optional<int> q;
-    if (tc == 61 && !(q = whole(w, 'Q', 0, kMaxToolNumber))) return false;
-    const int tool = tc == 61 ? *q : s.selected_tool;
-    if (tool < 0)
-      return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
-                   "M6 with no tool selected: give T first");
-    // LinuxCNC's M6 stops the spindle before the change.
-    if (tc == 6 && s.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
-    s.tool = tool;
-    tool_changed_ = true;
-    const double d = tool_diameter(tool);
-    machine_.set_tool_diameter(d);
-    machine_.emit(canon::ToolChange{tool, d > 0 ? std::optional<double>(d) : std::nullopt});
-  }
+  if (tc != 6 && tc != 61) return true;
+  if (tc == 61 && !w.has('Q'))
+    return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
+                 "M61 needs Q (the tool number)");
+  std::optional<int> q;
+  if (tc == 61 && !(q = whole(w, 'Q', 0, kMaxToolNumber))) return false;
+  const int tool = tc == 61 ? *q : s.selected_tool;
+  if (tool < 0)
+    return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
+                 "M6 with no tool selected: give T first");
+  // LinuxCNC's M6 stops the spindle before the change.
+  if (tc == 6 && s.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
+  s.tool = tool;
+  tool_changed_ = true;
+  const double d = tool_diameter(tool);
+  machine_.set_tool_diameter(d);
+  machine_.emit(canon::ToolChange{tool, d > 0 ? std::optional<double>(d) : std::nullopt});
+  return true;
+}
+
+void Interpreter::spindle(const BlockWords& w) {
   const int spin = w.m[kMGroupSpindle];
-  if (spin == 3 || spin == 4 || spin == 5) {
-    const auto dir = spin == 3 ? canon::SpindleDir::Cw
-                               : (spin == 4 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
-    s.spindle = dir;
-    in_order([this, dir] { machine_.spindle(dir); });
-  }
+  if (spin != 3 && spin != 4 && spin != 5) return;
+  const auto dir = spin == 3 ? canon::SpindleDir::Cw
+                             : (spin == 4 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
+  state_.spindle = dir;
+  in_order([this, dir] { machine_.spindle(dir); });
+}
+
+void Interpreter::coolant(const BlockWords& w) {
+  ModalState& s = state_;
   const int cool = w.m[kMGroupCoolant];
-  if (cool != -1) {
-    if (cool == 7 || w.m7_and_m8) s.mist = true;
-    if (cool == 8 || w.m7_and_m8) s.flood = true;
-    if (cool == 9) s.mist = s.flood = false;
-    in_order([this, c = canon::Coolant{s.mist, s.flood}] { machine_.emit(c); });
-  }
+  if (cool == -1) return;
+  if (cool == 7 || w.m7_and_m8) s.mist = true;
+  if (cool == 8 || w.m7_and_m8) s.flood = true;
+  if (cool == 9) s.mist = s.flood = false;
+  in_order([this, c = canon::Coolant{s.mist, s.flood}] { machine_.emit(c); });
+}
+
+void Interpreter::overrides(const BlockWords& w) {
+  ModalState& s = state_;
   switch (w.m[kMGroupOverride]) {
   case 48: s.feed_override = s.speed_override = true; break;
   case 49: s.feed_override = s.speed_override = false; break;
@@ -135,40 +165,75 @@ bool Interpreter::tool_and_spindle(BlockWords& w) {
   case 51: s.speed_override = !w.has('P') || w.get('P') != 0; break;
   default: break;
   }
+}
+
+void Interpreter::user_m_codes(const BlockWords& w) {
   for (int i = 0; i < w.user_m_count; ++i) {
     machine_.emit(
         canon::Comment{fmt::format("M{} (user M code)", w.user_m[static_cast<std::size_t>(i)])});
   }
+}
+
+bool Interpreter::dwell(const BlockWords& w) {
+  if (w.g[kGroupNonModal] != 40) return true;
+  if (!w.has('P') || w.get('P') < 0) {
+    return error(core::Code::MissingWord, w.gcol[kGroupNonModal],
+                 "G4 needs P (seconds, not negative)");
+  }
+  in_order([this, s = w.get('P')] { machine_.dwell(s); });
   return true;
 }
 
-bool Interpreter::modal_settings(BlockWords& w) {
+// After a tool change LinuxCNC re-reads the current point from the machine
+// before the next block: the point last sent, so what the block did to the
+// program position (G43 beside M6, G40) is undone.
+void Interpreter::resync_after_tool_change() {
+  if (!tool_changed_) return;
+  tool_changed_ = false;
+  set_xyz(state_.pos, machine_.last_emitted());
+}
+
+// The modal settings of G codes, one step each.
+bool Interpreter::modal_setting(ExecStep step, BlockWords& w) {
   ModalState& s = state_;
-  switch (w.g[kGroupPlane]) {
-  case 170: s.plane = core::Plane::XY; break;
-  case 180: s.plane = core::Plane::ZX; break;
-  case 190: s.plane = core::Plane::YZ; break;
-  default: break;
+  switch (step) {
+  case ExecStep::Plane:
+    if (w.g[kGroupPlane] == 170) s.plane = core::Plane::XY;
+    if (w.g[kGroupPlane] == 180) s.plane = core::Plane::ZX;
+    if (w.g[kGroupPlane] == 190) s.plane = core::Plane::YZ;
+    return true;
+  case ExecStep::Units:
+    return w.g[kGroupUnits] == -1 ||
+           set_units(w.g[kGroupUnits] == 200 ? core::LengthUnit::Inch : core::LengthUnit::Mm);
+  case ExecStep::LatheMode:
+    if (w.g[kGroupLathe] != -1) s.lathe_diameter = w.g[kGroupLathe] == 70;
+    return true;
+  case ExecStep::CutterComp: return w.g[kGroupCutterComp] == -1 || cutter_comp_mode(w);
+  case ExecStep::ToolLength: return w.g[kGroupToolLength] == -1 || tool_length(w);
+  case ExecStep::CoordSystem: return coord_system(w);
+  case ExecStep::PathControl: return w.g[kGroupPathControl] == -1 || path_control(w);
+  case ExecStep::Distance:
+    if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;
+    return true;
+  case ExecStep::ArcDistance:
+    if (w.g[kGroupArcDistance] != -1) s.arc_absolute = w.g[kGroupArcDistance] == 901;
+    return true;
+  case ExecStep::Retract:
+    if (w.g[kGroupRetract] != -1)
+      s.retract = w.g[kGroupRetract] == 990 ? RetractMode::RPlane : RetractMode::OldZ;
+    return true;
+  case ExecStep::NonModal: return modal_zero(w);
+  default: return true;
   }
-  if (w.g[kGroupUnits] != -1 &&
-      !set_units(w.g[kGroupUnits] == 200 ? core::LengthUnit::Inch : core::LengthUnit::Mm)) {
-    return false;
-  }
-  if (w.g[kGroupLathe] != -1) s.lathe_diameter = w.g[kGroupLathe] == 70;
-  if (w.g[kGroupCutterComp] != -1 && !cutter_comp_mode(w)) return false;
-  if (w.g[kGroupToolLength] != -1 && !tool_length(w)) return false;
-  if (w.g[kGroupCoordSystem] != -1) {
-    const GCode g = w.g[kGroupCoordSystem];
-    const int n = g <= 590 ? g / 10 - 53 : 6 + g - 590;
-    const bool again = n == s.coord_system && !rules_.reselect_reloads_work_offsets;
-    if (!again && !select_coord_system(n)) return false;
-    s.coord_system_chosen = true;
-  }
-  if (w.g[kGroupPathControl] != -1 && !path_control(w)) return false;
-  if (w.g[kGroupDistance] != -1) s.incremental = w.g[kGroupDistance] == 910;
-  if (w.g[kGroupArcDistance] != -1) s.arc_absolute = w.g[kGroupArcDistance] == 901;
-  if (w.g[kGroupRetract] != -1)
-    s.retract = w.g[kGroupRetract] == 990 ? RetractMode::RPlane : RetractMode::OldZ;
+}
+
+bool Interpreter::coord_system(const BlockWords& w) {
+  if (w.g[kGroupCoordSystem] == -1) return true;
+  const GCode g = w.g[kGroupCoordSystem];
+  const int n = g <= 590 ? g / 10 - 53 : 6 + g - 590;
+  const bool again = n == state_.coord_system && !rules_.reselect_reloads_work_offsets;
+  if (!again && !select_coord_system(n)) return false;
+  state_.coord_system_chosen = true;
   return true;
 }
 
@@ -255,10 +320,14 @@ void Interpreter::restore_modal(const ModalState& saved) {
   if (s.coord_system != saved.coord_system) select_coord_system(saved.coord_system);
 }
 
-bool Interpreter::stop(const BlockWords& w) {
+bool Interpreter::subprogram(const BlockWords& w) {
   const int m = w.m[kMGroupSubprogram];
-  if (m == 98 && !fanuc_call(w)) return false;
-  if (m == 99 && !fanuc_return()) return false;
+  if (m == 98) return fanuc_call(w);
+  if (m == 99) return fanuc_return();
+  return true;
+}
+
+bool Interpreter::stop(const BlockWords& w) {
   switch (w.m[kMGroupStop]) {
   case 2:
   case 30: {

@@ -18,6 +18,7 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
       options_(std::move(options)),
       rules_(rules),
       codes_(rules.codes != nullptr ? *rules.codes : rs274ngc_code_table()),
+      order_(rules.order != nullptr ? *rules.order : linuxcnc_execution_order()),
       cycle_hooks_(cycle_hooks),
       sink_(sink),
       run_(diags, options_.max_total_iterations),
@@ -25,6 +26,7 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
       words_(std::make_unique<BlockWords>()) {
   // Programs start in mm whatever the machine's units, as LinuxCNC's
   // stand-alone interpreter does (the conformance traces depend on it).
+  check_execution_order(order_);
   state_.units = core::LengthUnit::Mm;
   state_.motion = rules_.start_motion;
   set_xyz(state_.pos, options_.start);

@@ -21,6 +21,7 @@
 #include "gcode/interp/cutter_comp.hpp"
 #include "gcode/interp/cycle_hooks.hpp"
 #include "gcode/interp/evaluated_block.hpp"
+#include "gcode/interp/execution_order.hpp"
 #include "gcode/interp/state.hpp"
 #include "gcode/parameters.hpp"
 #include "gcode/parser.hpp"
@@ -66,6 +67,9 @@ struct DialectRules {
   // The dialect's G/M table resolved (interp/codes.hpp): which codes the
   // control has and their groups. Null: LinuxCNC's, the rs274ngc dialect's.
   const InterpCodes* codes = nullptr;
+  // The order in which a block's parts run (execution_order.hpp). Null:
+  // LinuxCNC's execute_block order.
+  const ExecutionOrder* order = nullptr;
 };
 
 struct BlockWords;
@@ -208,12 +212,26 @@ class Interpreter final : private ParameterSource {
   bool check(BlockWords& w);
   bool check_unused(const BlockWords& w);
   bool check_increments(const BlockWords& w);
+  // Step 4 in the dialect's order (execute.cpp, execution_order.hpp).
   bool execute(std::span<const CommentText> notes, BlockWords& w);
+  bool run_step(ExecStep step, std::span<const CommentText> notes, BlockWords& w);
   bool comments(std::span<const CommentText> notes);
-  bool tool_and_spindle(BlockWords& w);
-  bool modal_settings(BlockWords& w);
+  void feed_mode(const BlockWords& w);
+  bool feed(const BlockWords& w);
+  bool speed(const BlockWords& w);
+  bool select_tool(const BlockWords& w);
+  bool change_tool(const BlockWords& w);
+  void spindle(const BlockWords& w);
+  void coolant(const BlockWords& w);
+  void overrides(const BlockWords& w);
+  void user_m_codes(const BlockWords& w);
+  bool dwell(const BlockWords& w);
+  void resync_after_tool_change();
+  bool modal_setting(ExecStep step, BlockWords& w);
+  bool coord_system(const BlockWords& w);
   bool path_control(const BlockWords& w);
   bool modal_zero(BlockWords& w);
+  bool subprogram(const BlockWords& w);
   bool stop(const BlockWords& w);
   bool modal_save_restore(const BlockWords& w);
   void restore_modal(const ModalState& saved);
@@ -270,7 +288,8 @@ class Interpreter final : private ParameterSource {
   core::SourceManager& sources_;
   InterpOptions options_;
   DialectRules rules_;
-  const InterpCodes& codes_;  // rules_.codes, or the rs274ngc table
+  const InterpCodes& codes_;     // rules_.codes, or the rs274ngc table
+  const ExecutionOrder& order_;  // rules_.order, or LinuxCNC's
   CycleHooks* cycle_hooks_;
   canon::Sink& sink_;
   RunServices run_;  // the block diagnostics point at, failure, the budget of jumps
