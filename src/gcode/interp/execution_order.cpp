@@ -8,24 +8,6 @@
 namespace usina::gcode {
 namespace {
 
-using enum ExecStep;
-
-// LinuxCNC's execute_block (interp_execute.cc): comments; feed mode, F,
-// S, T (convert_feed_mode ... convert_tool_select); convert_m (tool
-// change, spindle, coolant, overrides, user M codes); convert_g (dwell,
-// plane, units, lathe mode, compensation, tool length, coordinate system,
-// path control, distance modes, retract, the non-modal codes, motion);
-// convert_stop. M70-M73 run before the G codes, as usina has always run
-// them; M98/M99 (fanuc's calls) after the move.
-constexpr std::array kLinuxcncSteps = {
-    Comments,    FeedMode,  Feed,       SpindleMode, Speed,       SelectTool,  ChangeTool,
-    Spindle,     Coolant,   Overrides,  UserM,       Dwell,       ModalState,  Plane,
-    Units,       LatheMode, CutterComp, ToolLength,  CoordSystem, PathControl, Distance,
-    ArcDistance, Retract,   NonModal,   Motion,      Resync,      Subprogram,  Stop,
-};
-
-static_assert(kLinuxcncSteps.size() == static_cast<std::size_t>(kExecSteps));
-
 constexpr std::array<std::string_view, kExecSteps> kNames = {
     "comments",
     "feed mode",
@@ -60,7 +42,7 @@ constexpr std::array<std::string_view, kExecSteps> kNames = {
 }  // namespace
 
 const ExecutionOrder& linuxcnc_execution_order() {
-  static const ExecutionOrder kOrder{"rs274ngc", kLinuxcncSteps};
+  static const ExecutionOrder kOrder{"rs274ngc", kLinuxcncOrder};
   return kOrder;
 }
 

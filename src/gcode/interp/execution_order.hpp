@@ -3,6 +3,7 @@
 // not an order written into the interpreter's code.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -50,8 +51,26 @@ struct ExecutionOrder {
   std::span<const ExecStep> steps;
 };
 
-// LinuxCNC's execute_block order (rs274ngc, and the controls that run on
-// its interpreter: fanuc, grbl).
+// LinuxCNC's execute_block order (interp_execute.cc): comments; feed
+// mode, F, S, T; convert_m (tool change, spindle, coolant, overrides, user
+// M codes); convert_g (dwell, plane, units, lathe mode, compensation, tool
+// length, coordinate system, path control, distance modes, retract, the
+// non-modal codes, motion); convert_stop. M70-M73 run before the G codes,
+// as usina has always run them; M98/M99 (fanuc's calls) after the move.
+// A constant, so that the interpreter can run it without a dispatch per
+// step (execute.cpp).
+inline constexpr std::array<ExecStep, kExecSteps> kLinuxcncOrder = {
+    ExecStep::Comments,   ExecStep::FeedMode,    ExecStep::Feed,        ExecStep::SpindleMode,
+    ExecStep::Speed,      ExecStep::SelectTool,  ExecStep::ChangeTool,  ExecStep::Spindle,
+    ExecStep::Coolant,    ExecStep::Overrides,   ExecStep::UserM,       ExecStep::Dwell,
+    ExecStep::ModalState, ExecStep::Plane,       ExecStep::Units,       ExecStep::LatheMode,
+    ExecStep::CutterComp, ExecStep::ToolLength,  ExecStep::CoordSystem, ExecStep::PathControl,
+    ExecStep::Distance,   ExecStep::ArcDistance, ExecStep::Retract,     ExecStep::NonModal,
+    ExecStep::Motion,     ExecStep::Resync,      ExecStep::Subprogram,  ExecStep::Stop,
+};
+
+// kLinuxcncOrder as the rs274ngc dialect's order (and the controls that
+// run on its interpreter: fanuc, grbl).
 const ExecutionOrder& linuxcnc_execution_order();
 
 // "feed mode", "change tool": a step as the docs and messages name it.
