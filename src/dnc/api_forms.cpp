@@ -1,3 +1,6 @@
+// GET /api/forms: every cycle's fields with their ranges and defaults, as
+// the server reads them (form_specs), so the page checks a field as the
+// user types by the server's own ranges.
 // POST /api/forms/{cycle}/preview: a cycle's form made into a program for
 // one control (form_cycles.hpp), checked in its dialect as an upload is
 // (store_check.hpp), with its tool path in the viewer's stream
@@ -124,6 +127,12 @@ HttpResponse preview_response(const ToolpathReply& reply, const std::string& com
 }  // namespace
 
 // Without the service (an Api made without one): computed here, on the loop.
+HttpResponse api_form_specs(ApiCall& c) {
+  // The same for every call: made once.
+  static const nlohmann::json kSpecs = form_specs();
+  return json_response(c.req, http::status::ok, kSpecs);
+}
+
 HttpResponse api_form_preview(ApiCall& c) {
   auto r = preview_request(c);
   if (!r) return std::move(r.error());

@@ -84,6 +84,43 @@ bool is_form_cycle(std::string_view cycle) {
   return std::find(names.begin(), names.end(), cycle) != names.end();
 }
 
+namespace {
+
+nlohmann::json spec_json(const FieldSpec& f) {
+  nlohmann::json j{{"name", f.name},
+                   {"what", f.what},
+                   {"kind", f.kind},
+                   {"unit", f.range.unit},
+                   {"min", f.range.min},
+                   {"max", f.range.max},
+                   {"min_included", f.range.min_included}};
+  if (f.number_default) j["default"] = *f.number_default;
+  if (f.text_default) j["default"] = *f.text_default;
+  if (!f.choices.empty()) j["choices"] = f.choices;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json form_specs() {
+  nlohmann::json cycles = nlohmann::json::array();
+  for (const Cycle& c : kCycles) {
+    // The cycle's own reading, of an empty form: each field it asks for is
+    // described as it is asked (the errors of the empty form are dropped).
+    const nlohmann::json empty = nlohmann::json::object();
+    FormFields f(empty);
+    std::vector<FieldSpec> specs;
+    f.describe_into(specs);
+    post::PostOptions options;
+    c.read(f, options);
+    nlohmann::json fields = nlohmann::json::array();
+    for (const FieldSpec& s : specs)
+      fields.push_back(spec_json(s));
+    cycles.push_back({{"name", c.name}, {"fields", std::move(fields)}});
+  }
+  return {{"cycles", std::move(cycles)}};
+}
+
 FormProgram form_program(std::string_view cycle, const nlohmann::json& body) {
   FormProgram out;
   const auto it = std::find_if(std::begin(kCycles), std::end(kCycles),

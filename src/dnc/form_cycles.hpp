@@ -34,6 +34,11 @@ struct FormProgram {
   std::vector<core::Diagnostic> notes;  // the generator's and the post's warnings
 };
 
+// Every cycle's fields as its reading asks for them (FieldSpec), for the
+// page (GET /api/forms): {"cycles": [{"name", "fields": [{"name", "what",
+// "kind", "unit", "min", "max", "min_included", "default", "choices"}]}]}.
+nlohmann::json form_specs();
+
 // `body`: the cycle's fields and "dialect" (and "machine_class", which is
 // the caller's). Never throws for bad input.
 FormProgram form_program(std::string_view cycle, const nlohmann::json& body);

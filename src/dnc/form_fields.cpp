@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -27,8 +28,16 @@ const nlohmann::json* FormFields::find(std::string_view name) {
   return &*it;
 }
 
+void FormFields::describe(FieldSpec spec) {
+  if (specs_ == nullptr) return;
+  const auto same = [&](const FieldSpec& s) { return s.name == spec.name; };
+  if (std::find_if(specs_->begin(), specs_->end(), same) == specs_->end())
+    specs_->push_back(std::move(spec));
+}
+
 double FormFields::number(std::string_view name, std::string_view what, const cam::Range& range,
                           std::optional<double> fallback) {
+  describe({std::string(name), std::string(what), "number", range, fallback, std::nullopt, {}});
   const nlohmann::json* v = find(name);
   if (v == nullptr) {
     if (fallback) return *fallback;
@@ -49,6 +58,13 @@ double FormFields::number(std::string_view name, std::string_view what, const ca
 int FormFields::whole(std::string_view name, std::string_view what, int min, int max,
                       std::optional<int> fallback) {
   const cam::Range range{static_cast<double>(min), static_cast<double>(max), true, ""};
+  describe({std::string(name),
+            std::string(what),
+            "whole",
+            range,
+            fallback ? std::optional<double>(*fallback) : std::nullopt,
+            std::nullopt,
+            {}});
   const double x = number(name, what, range, fallback);
   if (x == std::floor(x)) return static_cast<int>(x);
   fail(std::string(name), fmt::format("{} is {:g}; give a whole number", what, x));
@@ -57,6 +73,13 @@ int FormFields::whole(std::string_view name, std::string_view what, int min, int
 
 std::string FormFields::text(std::string_view name, std::string_view what, std::size_t max_chars,
                              std::optional<std::string> fallback) {
+  describe({std::string(name),
+            std::string(what),
+            "text",
+            cam::Range{1.0, static_cast<double>(max_chars), true, "characters"},
+            std::nullopt,
+            fallback,
+            {}});
   const nlohmann::json* v = find(name);
   if (v == nullptr) {
     if (fallback) return *fallback;
@@ -71,6 +94,29 @@ std::string FormFields::text(std::string_view name, std::string_view what, std::
   if (s.empty() || s.size() > max_chars) {
     fail(std::string(name),
          fmt::format("{} has {} characters; give 1 to {}", what, s.size(), max_chars));
+    return {};
+  }
+  return s;
+}
+
+std::string FormFields::choice(std::string_view name, std::string_view what,
+                               std::initializer_list<std::string_view> choices,
+                               std::string_view fallback) {
+  FieldSpec spec{
+      std::string(name), std::string(what),     "text", cam::Range{1.0, 0.0, true, "characters"},
+      std::nullopt,      std::string(fallback), {}};
+  std::string list;
+  for (const std::string_view c : choices) {
+    spec.choices.emplace_back(c);
+    spec.range.max = std::max(spec.range.max, static_cast<double>(c.size()));
+    list += (list.empty() ? "" : ", ") + std::string(c);
+  }
+  describe(std::move(spec));
+  std::vector<FieldSpec>* specs = std::exchange(specs_, nullptr);
+  std::string s = text(name, what, 64, std::string(fallback));
+  specs_ = specs;
+  if (!s.empty() && std::find(choices.begin(), choices.end(), s) == choices.end()) {
+    fail(std::string(name), fmt::format("{} is one of {}", what, list));
     return {};
   }
   return s;

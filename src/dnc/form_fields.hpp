@@ -32,9 +32,26 @@ inline constexpr cam::Range kCoordinate{-cam::kMaxCoordinate, cam::kMaxCoordinat
 inline constexpr std::size_t kMaxFieldErrors = 100;
 inline constexpr std::size_t kMaxFieldName = 64;
 
+// A field as a cycle's reading asks for it: what the page needs to check
+// it as the user types (GET /api/forms), taken from the very reading the
+// server checks a form with, so the two cannot disagree.
+struct FieldSpec {
+  std::string name;
+  std::string what;  // how a message names it ("the tool diameter")
+  std::string kind;  // "number", "whole" or "text"
+  cam::Range range;  // of a number; of a text, 1 to its most characters
+  std::optional<double> number_default;
+  std::optional<std::string> text_default;
+  std::vector<std::string> choices;  // a text that must be one of these
+};
+
 class FormFields {
  public:
   explicit FormFields(const nlohmann::json& body) : body_(body) {}
+
+  // Every field read from now on is also described into `specs` (in the
+  // order read; a field read twice once).
+  void describe_into(std::vector<FieldSpec>& specs) { specs_ = &specs; }
 
   // The number `name` (`what` says it in a message): `fallback` when it is
   // absent, an error when it is absent and has none, is no number, or is out
@@ -47,6 +64,10 @@ class FormFields {
   // A string of 1 to `max_chars` characters.
   std::string text(std::string_view name, std::string_view what, std::size_t max_chars,
                    std::optional<std::string> fallback);
+
+  // A text that is one of `choices` (`fallback`, when absent, is one).
+  std::string choice(std::string_view name, std::string_view what,
+                     std::initializer_list<std::string_view> choices, std::string_view fallback);
 
   void fail(std::string field, std::string message, std::string code = "E_GEN_BAD_VALUE");
 
@@ -62,10 +83,12 @@ class FormFields {
 
  private:
   const nlohmann::json* find(std::string_view name);
+  void describe(FieldSpec spec);
 
   const nlohmann::json& body_;
   std::vector<std::string> asked_;
   std::vector<FieldError> errors_;
+  std::vector<FieldSpec>* specs_ = nullptr;
 };
 
 // A generator's diagnostics for a form: errors become FieldErrors (the

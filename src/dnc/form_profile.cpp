@@ -9,7 +9,7 @@
 namespace usina::dnc {
 namespace {
 
-constexpr cam::Range kTabCount{0.0, 10000.0, true, ""};
+constexpr int kMaxTabs = 10000;
 
 }  // namespace
 
@@ -20,19 +20,16 @@ Reading read_profile_dxf(FormFields& f, post::PostOptions&) {
   if (!layer.empty()) d.layer = layer;
   d.spline_tolerance = f.number("spline_tolerance", "the spline tolerance", cam::kTolerance, 0.01);
   cam::ProfileOptions o;
-  const std::string side = f.text("side", "the side", 10, std::string("outside"));
+  const std::string side =
+      f.choice("side", "the side", {"outside", "inside", "auto", "left", "right", "on"}, "outside");
   o.depth = f.number("depth", "the depth", cam::kLength, std::nullopt);
   o.step_down = f.number("step_down", "the step down", cam::kLength, 1.0);
   o.lead_radius = f.number("lead_radius", "the lead radius", cam::kLengthOrZero, 0.0);
-  o.tabs.count = static_cast<int>(f.number("tabs", "the tab count", kTabCount, 0.0));
+  o.tabs.count = f.whole("tabs", "the tab count", 0, kMaxTabs, 0);
   o.tabs.width = f.number("tab_width", "the tab width", cam::kLength, 3.0);
   o.tabs.height = f.number("tab_height", "the tab height", cam::kLength, 1.0);
   o.cut = read_cutting(f);
-  if (const auto s = cam::profile_side(side)) {
-    o.side = *s;
-  } else if (f.ok()) {
-    f.fail("side", "the side is outside, inside, left, right, on or auto");
-  }
+  if (const auto s = cam::profile_side(side)) o.side = *s;
   return {[dxf, d, o](canon::Sink& sink, core::DiagnosticSink& diags) {
             auto entities = cam::read_dxf_text(dxf, "the drawing", d, diags);
             if (!entities) return false;

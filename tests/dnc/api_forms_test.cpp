@@ -1,9 +1,11 @@
 // POST /api/forms/{cycle}/preview against a real server: each cycle's
 // program in each control, read back by that dialect with no error; each
 // bad field named; too much work refused before anything is made; roles.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -201,6 +203,74 @@ TEST_F(FormsRoute, AnOperatorIs403NoTokenIs401AnUnknownCycleIs404) {
   EXPECT_NE(none.body.find("ellipse_pocket"), std::string::npos) << none.body;
   EXPECT_EQ(client().call(test::bhttp::verb::post, "/api/forms/engrave/preview", "{x", prog).status,
             400);
+}
+
+// GET /api/forms describes each cycle's fields as the preview reads them:
+// the page's ranges come from here, so a value the description puts past a
+// field's range is one the preview refuses at that field.
+TEST_F(FormsRoute, TheFormsDescribeTheRangesThePreviewChecks) {
+  const test::Reply r = client().get("/api/forms", prog);
+  ASSERT_EQ(r.status, 200) << r.body;
+  const json specs = r.json();
+  ASSERT_EQ(specs["cycles"].size(), form_cycles().size());
+  int refused = 0;
+  for (const json& cycle : specs["cycles"]) {
+    const std::string name = cycle["name"];
+    std::map<std::string, json> by_name;
+    for (const json& f : cycle["fields"])
+      by_name[f["name"]] = f;
+    const json good = form_of(name);
+    for (const auto& [key, value] : good.items())
+      EXPECT_TRUE(by_name.contains(key)) << name << ": " << key << " is not described";
+    for (const auto& [key, f] : by_name) {
+      if (f["kind"] == "text") continue;
+      json body = form_of(name);
+      body[key] = f["max"].get<double>() * 2 + 1;
+      EXPECT_EQ(fields(preview(name, body)), std::vector<std::string>{key}) << name << " " << key;
+      ++refused;
+    }
+  }
+  EXPECT_GE(refused, 100);  // 103 today: every number of the seven cycles
+  const json& cutting = specs["cycles"][0]["fields"];
+  const auto diameter = std::find_if(cutting.begin(), cutting.end(),
+                                     [](const json& f) { return f["name"] == "tool_diameter"; });
+  ASSERT_NE(diameter, cutting.end());
+  EXPECT_EQ((*diameter)["min"], 0.001);
+  EXPECT_EQ((*diameter)["max"], 1000.0);
+  EXPECT_EQ((*diameter)["min_included"], true);
+  EXPECT_EQ((*diameter)["unit"], "mm");
+  EXPECT_EQ((*diameter)["default"], 6.0);
+  EXPECT_EQ(client().get("/api/forms", client().log_in("oper", test::kPassword)).status, 403);
+}
+
+// The profile's side is one of its choices; its tab count a whole number
+// (2.5 tabs were read as 2 before the count was described).
+TEST_F(FormsRoute, TheSideIsAChoiceAndTabsAWholeNumber) {
+  const json specs = client().get("/api/forms", prog).json();
+  json side;
+  json tabs;
+  for (const json& cycle : specs["cycles"]) {
+    for (const json& f : cycle["fields"]) {
+      if (cycle["name"] == "profile_dxf" && f["name"] == "side") side = f;
+      if (cycle["name"] == "profile_dxf" && f["name"] == "tabs") tabs = f;
+    }
+  }
+  EXPECT_EQ(side["choices"],
+            (std::vector<std::string>{"outside", "inside", "auto", "left", "right", "on"}));
+  EXPECT_EQ(side["default"], "outside");
+  EXPECT_EQ(tabs["kind"], "whole");
+  json body = form_of("profile_dxf");
+  body["tabs"] = 2.5;
+  const test::Reply half = preview("profile_dxf", body);
+  EXPECT_EQ(fields(half), std::vector<std::string>{"tabs"});
+  EXPECT_NE(half.body.find("whole number"), std::string::npos) << half.body;
+  body = form_of("profile_dxf");
+  body["side"] = "around";
+  const test::Reply around = preview("profile_dxf", body);
+  EXPECT_EQ(fields(around), std::vector<std::string>{"side"});
+  EXPECT_NE(around.body.find("the side is one of outside, inside, auto, left, right, on"),
+            std::string::npos)
+      << around.body;
 }
 
 TEST_F(FormsRoute, AFormSentAgainIsAnsweredFromTheCacheAndSavesAsADraft) {

@@ -1,8 +1,10 @@
-// The cycles of the "New program" page and their fields, with the units,
-// defaults and ranges of `usina gen` (docs/gen.md "Names" and "Ranges",
-// src/cam/limits.hpp). The page checks them as the user types only to say
-// so at once; the server checks them again and decides
-// (POST /api/forms/{cycle}/preview, docs/dnc-server.md "Forms for cycles").
+// The cycles of the "New program" page and their fields. Ranges, units,
+// defaults and choices are the server's (GET /api/forms, made from the
+// very reading that checks a form: src/dnc/form_cycles.cpp); the page
+// adds only its words (titles and labels). The page checks a field as the
+// user types only to say so at once; the server checks it again and
+// decides (POST /api/forms/{cycle}/preview, docs/dnc-server.md "Forms for
+// cycles").
 
 export interface FieldDef {
   name: string; // the field of the request body
@@ -13,11 +15,11 @@ export interface FieldDef {
   max: number;
   minIncluded: boolean;
   whole?: boolean;
-  value?: number; // docs/gen.md's default; none: required
+  value?: number; // the server's default; none: required
   text?: boolean; // a string, not a number
   textValue?: string;
   file?: boolean; // a file's text (a drawing), chosen by the user
-  choices?: string[]; // one of these strings (the first is the default)
+  choices?: string[]; // one of these strings
 }
 
 export interface CycleDef {
@@ -26,106 +28,114 @@ export interface CycleDef {
   fields: FieldDef[];
 }
 
-const M = 1e5; // ±100 m: coordinates and lengths (cam::kMaxCoordinate)
-// The preview's bound on the work (src/dnc/form_cycles.hpp, kFormMaxMoves).
-export const FORM_MAX_MOVES = 1_000_000;
+// A field as GET /api/forms describes it.
+export interface FieldSpec {
+  name: string;
+  what: string;
+  kind: 'number' | 'whole' | 'text';
+  unit: string;
+  min: number;
+  max: number;
+  min_included: boolean;
+  default?: number | string;
+  choices?: string[];
+}
 
-const length = (name: string, label: string, value?: number): FieldDef => ({ name, label, unit: 'mm', min: 0, max: M, minIncluded: false, value });
-const lengthOrZero = (name: string, label: string, value: number): FieldDef => ({ name, label, unit: 'mm', min: 0, max: M, minIncluded: true, value });
-const coordinate = (name: string, label: string, what: string, value: number | undefined = 0): FieldDef => ({ name, label, what, unit: 'mm', min: -M, max: M, minIncluded: true, value });
-const count = (name: string, label: string, value?: number): FieldDef => ({ name, label, unit: '', min: 1, max: 100000, minIncluded: true, whole: true, value });
+export interface FormSpecs {
+  cycles: { name: string; fields: FieldSpec[] }[];
+}
 
-const CUTTING: FieldDef[] = [
-  { name: 'tool', label: 'Tool number', unit: '', min: 0, max: 99999, minIncluded: true, whole: true, value: 1 },
-  { name: 'tool_diameter', label: 'Tool diameter', unit: 'mm', min: 0.001, max: 1000, minIncluded: true, value: 6 },
-  { name: 'feed', label: 'Feed', unit: 'mm/min', min: 0, max: 1e6, minIncluded: false, value: 600 },
-  { name: 'plunge_feed', label: 'Plunge feed', unit: 'mm/min', min: 0, max: 1e6, minIncluded: false, value: 200 },
-  { name: 'rpm', label: 'Spindle speed', unit: 'rev/min', min: 0, max: 1e6, minIncluded: false, value: 10000 },
-  length('safe_z', 'Safe Z', 5),
-];
+const TITLES: Record<string, string> = {
+  ellipse_pocket: 'Elliptical pocket (seed 002)',
+  rect_pocket: 'Rectangular pocket',
+  circle_pocket: 'Circular pocket',
+  drill_grid: 'Drilling: a grid of holes',
+  bolt_circle: 'Drilling: a bolt circle',
+  engrave: 'Engraving text',
+  profile_dxf: 'Profile from a DXF drawing',
+};
 
-const POCKET: FieldDef[] = [
-  length('depth', 'Depth'),
-  length('stepover', 'Stepover'),
-  length('step_down', 'Step down', 1),
-  lengthOrZero('finish_allowance', 'Finish allowance', 0.2),
-];
+// The page's words for a field, by its name (the same in every cycle).
+const LABELS: Record<string, string> = {
+  center_x: 'Centre X',
+  center_y: 'Centre Y',
+  rx: 'Radius along X',
+  ry: 'Radius along Y',
+  depth: 'Depth',
+  stepover: 'Stepover',
+  step_down: 'Step down',
+  finish_allowance: 'Finish allowance',
+  floor_allowance: 'Floor allowance',
+  resolution: 'Resolution (DDA increment)',
+  width: 'Width',
+  height: 'Height',
+  corner_radius: 'Corner radius',
+  radius: 'Radius',
+  x0: 'First hole X',
+  y0: 'First hole Y',
+  nx: 'Holes along X',
+  ny: 'Holes along Y',
+  dx: 'Spacing along X',
+  dy: 'Spacing along Y',
+  retract: 'Retract height (R plane)',
+  peck: 'Peck (0: none)',
+  count: 'Holes',
+  start_angle: 'Start angle (from +X, counter-clockwise)',
+  text: 'Text (printable ASCII)',
+  at_x: 'Baseline start X',
+  at_y: 'Baseline start Y',
+  font: 'Font (Hershey)',
+  dxf: 'Drawing (DXF)',
+  layer: 'Layer (optional)',
+  side: 'Side',
+  lead_radius: 'Lead arc radius (0: none)',
+  tabs: 'Tabs (0: none)',
+  tab_width: 'Tab width',
+  tab_height: 'Tab height',
+  tool: 'Tool number',
+  tool_diameter: 'Tool diameter',
+  feed: 'Feed',
+  plunge_feed: 'Plunge feed',
+  rpm: 'Spindle speed',
+  safe_z: 'Safe Z',
+};
 
-const DRILL: FieldDef[] = [length('depth', 'Depth'), lengthOrZero('retract', 'Retract height (R plane)', 1), lengthOrZero('peck', 'Peck (0: none)', 0)];
+// Fields the page leaves at the server's default: the bound on the work
+// and the drawing's spline tolerance are for `usina gen` users.
+const LEFT_OUT = new Set(['max_moves', 'spline_tolerance']);
 
-export const CYCLES: CycleDef[] = [
-  {
-    name: 'ellipse_pocket',
-    title: 'Elliptical pocket (seed 002)',
-    fields: [
-      coordinate('center_x', 'Centre X', "the centre's X"),
-      coordinate('center_y', 'Centre Y', "the centre's Y"),
-      length('rx', 'Radius along X'),
-      length('ry', 'Radius along Y'),
-      ...POCKET,
-      lengthOrZero('floor_allowance', 'Floor allowance', 0),
-      { name: 'resolution', label: 'Resolution (DDA increment)', unit: 'mm', min: 0.0001, max: M, minIncluded: true, value: 0.1 },
-      ...CUTTING,
-    ],
-  },
-  {
-    name: 'rect_pocket',
-    title: 'Rectangular pocket',
-    fields: [{ ...length('width', 'Width'), what: "the rectangle's width" }, { ...length('height', 'Height'), what: "the rectangle's height" }, lengthOrZero('corner_radius', 'Corner radius', 0), coordinate('center_x', 'Centre X', "the centre's X"), coordinate('center_y', 'Centre Y', "the centre's Y"), ...POCKET, ...CUTTING],
-  },
-  {
-    name: 'circle_pocket',
-    title: 'Circular pocket',
-    fields: [{ ...length('radius', 'Radius'), what: "the circle's radius" }, coordinate('center_x', 'Centre X', "the centre's X"), coordinate('center_y', 'Centre Y', "the centre's Y"), ...POCKET, ...CUTTING],
-  },
-  {
-    name: 'drill_grid',
-    title: 'Drilling: a grid of holes',
-    fields: [coordinate('x0', 'First hole X', "the first hole's X"), coordinate('y0', 'First hole Y', "the first hole's Y"), count('nx', 'Holes along X'), count('ny', 'Holes along Y'), coordinate('dx', 'Spacing along X', 'the spacing along X', undefined), coordinate('dy', 'Spacing along Y', 'the spacing along Y', undefined), ...DRILL, ...CUTTING],
-  },
-  {
-    name: 'bolt_circle',
-    title: 'Drilling: a bolt circle',
-    fields: [
-      coordinate('center_x', 'Centre X', "the centre's X"),
-      coordinate('center_y', 'Centre Y', "the centre's Y"),
-      { ...length('radius', 'Radius'), what: "the bolt circle's radius" },
-      { ...count('count', 'Holes'), what: 'the count of holes' },
-      { name: 'start_angle', label: 'Start angle (from +X, counter-clockwise)', unit: '°', min: -360, max: 360, minIncluded: true, value: 0 },
-      ...DRILL,
-      ...CUTTING,
-    ],
-  },
-  {
-    name: 'engrave',
-    title: 'Engraving text',
-    fields: [
-      { name: 'text', label: 'Text (printable ASCII)', unit: '', min: 1, max: 10000, minIncluded: true, text: true },
-      { ...length('height', 'Height of a capital'), what: 'the text height' },
-      coordinate('at_x', 'Baseline start X', "the baseline's start's X"),
-      coordinate('at_y', 'Baseline start Y', "the baseline's start's Y"),
-      length('depth', 'Depth', 0.2),
-      { name: 'font', label: 'Font (Hershey)', unit: '', min: 1, max: 40, minIncluded: true, text: true, textValue: 'rowmans' },
-      ...CUTTING,
-    ],
-  },
-  {
-    name: 'profile_dxf',
-    title: 'Profile from a DXF drawing',
-    fields: [
-      { name: 'dxf', label: 'Drawing (DXF)', unit: '', min: 1, max: 64 * 1024 * 1024, minIncluded: true, text: true, file: true },
-      { name: 'layer', label: 'Layer (optional)', unit: '', min: 1, max: 255, minIncluded: true, text: true, textValue: '' },
-      { name: 'side', label: 'Side', unit: '', min: 0, max: 0, minIncluded: true, text: true, choices: ['outside', 'inside', 'auto', 'left', 'right', 'on'], textValue: 'outside' },
-      length('depth', 'Depth'),
-      length('step_down', 'Step down', 1),
-      { ...lengthOrZero('lead_radius', 'Lead arc radius (0: none)', 0), what: 'the lead radius' },
-      { name: 'tabs', label: 'Tabs (0: none)', what: 'the tab count', unit: '', min: 0, max: 10000, minIncluded: true, whole: true, value: 0 },
-      length('tab_width', 'Tab width', 3),
-      length('tab_height', 'Tab height', 1),
-      ...CUTTING,
-    ],
-  },
-];
+// Per cycle, a label that says more than the field's name does.
+const CYCLE_LABELS: Record<string, Record<string, string>> = {
+  engrave: { height: 'Height of a capital' },
+};
+
+function fieldOf(cycle: string, s: FieldSpec): FieldDef {
+  const text = s.kind === 'text';
+  return {
+    name: s.name,
+    label: CYCLE_LABELS[cycle]?.[s.name] ?? LABELS[s.name] ?? s.name,
+    what: s.what,
+    unit: text ? '' : s.unit,
+    min: s.min,
+    max: s.max,
+    minIncluded: s.min_included,
+    whole: s.kind === 'whole' || undefined,
+    value: typeof s.default === 'number' ? s.default : undefined,
+    text: text || undefined,
+    textValue: typeof s.default === 'string' ? s.default : undefined,
+    file: s.name === 'dxf' || undefined,
+    choices: s.choices,
+  };
+}
+
+// The page's cycles from the server's description, in its order.
+export function cyclesOf(specs: FormSpecs): CycleDef[] {
+  return specs.cycles.map((c) => ({
+    name: c.name,
+    title: TITLES[c.name] ?? c.name,
+    fields: c.fields.filter((f) => !LEFT_OUT.has(f.name)).map((f) => fieldOf(c.name, f)),
+  }));
+}
 
 function numberText(v: number): string {
   return String(v);

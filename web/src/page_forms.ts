@@ -6,7 +6,7 @@
 import { enc, getJson, postJson, ApiError, type CheckDiagnostic, type Checks, type Machine } from './api';
 import { field, h, show, status } from './dom';
 import { calculatorsPanel } from './form_calc';
-import { CYCLES, checkField, type CycleDef, type FieldDef } from './form_cycles';
+import { checkField, cyclesOf, type CycleDef, type FieldDef, type FormSpecs } from './form_cycles';
 import { mayUpload, sessionUser } from './roles';
 import { decodeToolpath } from './toolpath';
 import { Viewer } from './viewer';
@@ -125,14 +125,15 @@ export async function formsPage(main: HTMLElement): Promise<void> {
     show(main, 'New program', h('p', { class: 'note', text: `You are ${who.role}: new programs are for programmers and admins.` }), calculatorsPanel());
     return;
   }
-  const page = new FormsPage(list);
+  // The fields' ranges and defaults are the server's (GET /api/forms).
+  const page = new FormsPage(list, cyclesOf(await getJson<FormSpecs>('/api/forms')));
   show(main, 'New program', page.element, calculatorsPanel());
   page.start();
 }
 
 class FormsPage {
   readonly element: HTMLElement;
-  private cycleSelect = h('select', {}, ...CYCLES.map((c) => h('option', { value: c.name, text: c.title })));
+  private cycleSelect: HTMLSelectElement;
   private machineSelect: HTMLSelectElement;
   private dialectSelect = h('select', {}, ...DIALECTS.map((d) => h('option', { value: d, text: d })));
   private fieldsHost = h('fieldset', { class: 'form-fields' });
@@ -152,7 +153,11 @@ class FormsPage {
   private preview: Preview | null = null;
   private viewer: Viewer | null = null;
 
-  constructor(private machines: Machine[]) {
+  constructor(
+    private machines: Machine[],
+    private cycles: CycleDef[],
+  ) {
+    this.cycleSelect = h('select', {}, ...cycles.map((c) => h('option', { value: c.name, text: c.title })));
     this.machineSelect = h('select', {}, h('option', { value: '', text: '(no machine: choose the control below)' }), ...machines.map((m) => h('option', { value: m.name, text: `${m.name} (${m.machine_class || 'no class'}, ${m.dialect})` })));
     this.saveForm = this.makeSaveForm();
     const cycleForm = h(
@@ -181,7 +186,7 @@ class FormsPage {
 
   // The chosen cycle's fields, with their defaults.
   private build(): void {
-    const cycle = CYCLES.find((c) => c.name === this.cycleSelect.value) ?? CYCLES[0];
+    const cycle = this.cycles.find((c) => c.name === this.cycleSelect.value) ?? this.cycles[0];
     this.inputs = { cycle, controls: new Map(), errors: new Map(), files: new Map(), fileRead: () => this.changed(0) };
     this.fieldsHost.replaceChildren(h('legend', { text: `${cycle.title}: fields` }), ...cycle.fields.map((f) => fieldRow(f, this.inputs)));
     this.preview = null;
