@@ -65,7 +65,7 @@ bool Executor::drill_at(Vec2 p) {
   machine_.hole({m.x, m.y, 0.0}, work_.drill.depth);
   machine_.feed({m.x, m.y, -work_.drill.depth});
   if (work_.drill.dwell > 0) machine_.dwell(work_.drill.dwell);
-  const double back = work_.retract_to_r ? zr : clear;
+  const double back = work_.machine.retract == RetractMode::RPlane ? zr : clear;
   machine_.traverse({m.x, m.y, back});
   work_.pos = {p.x, p.y, back};
   return true;

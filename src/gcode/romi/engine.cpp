@@ -139,10 +139,8 @@ bool Engine::evaluate_words() {
 
 std::optional<RunModes> Engine::modes() const {
   const Modal& m = exec_.state();
-  RunModes out;
-  out.inch = m.units == core::LengthUnit::Inch;
-  out.incremental = m.incremental;
-  out.motion = m.drill.active ? 810 : 10 * m.motion;
+  RunModes out = run_modes(m.machine);
+  if (m.drill.active) out.motion = 810;
   const Transform& t = m.tf;
   out.frame_moved =
       t.mirror_x || t.mirror_y || t.scale_x != 1.0 || t.scale_y != 1.0 || t.rotation_deg != 0.0;

@@ -170,8 +170,8 @@ std::optional<double> Executor::take_whole(char letter, int lo, int hi) {
 bool Executor::values() {
   if (auto f = words_.take('F')) {
     if (*f < 0) return error(core::Code::BadWordValue, words_.col('F'), "negative feed rate");
-    work_.feed = mm(*f);
-    in_order([this, f = work_.feed] { machine_.set_feed(f, FeedMode::UnitsPerMinute); });
+    work_.machine.feed = mm(*f);
+    in_order([this, f = work_.machine.feed] { machine_.set_feed(f, FeedMode::UnitsPerMinute); });
   }
   if (auto s = words_.take('S')) {
     if (*s < 0) return error(core::Code::BadWordValue, words_.col('S'), "negative spindle speed");
@@ -180,7 +180,7 @@ bool Executor::values() {
   if (words_.has('T')) {
     auto t = take_whole('T', 0, kMaxToolNumber);
     if (!t) return false;
-    work_.selected_tool = static_cast<int>(*t);
+    work_.machine.selected_tool = static_cast<int>(*t);
   }
   if (words_.has('O')) {
     auto o = take_whole('O', 0, 999);

@@ -116,7 +116,9 @@ class Executor {
 
   double mm(double v) const { return work_.mm(v); }
 
-  bool incremental(char letter) const { return work_.incremental || words_.incremental(letter); }
+  bool incremental(char letter) const {
+    return work_.machine.incremental || words_.incremental(letter);
+  }
 
   // The block's steps (romi/exec.cpp).
   void begin_block(const EvaluatedBlock& block);

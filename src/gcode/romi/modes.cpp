@@ -31,22 +31,22 @@ bool Executor::h_plane(int) {  // NOLINT(readability-convert-member-functions-to
 }
 
 bool Executor::h_distance(int code) {
-  work_.incremental = code == 910;
+  work_.machine.incremental = code == 910;
   return true;
 }
 
 bool Executor::h_units(int code) {
-  work_.units = code == 700 ? core::LengthUnit::Inch : core::LengthUnit::Mm;
+  work_.machine.units = code == 700 ? core::LengthUnit::Inch : core::LengthUnit::Mm;
   return true;
 }
 
 bool Executor::h_retract(int code) {
-  work_.retract_to_r = code == 990;
+  work_.machine.retract = code == 990 ? RetractMode::RPlane : RetractMode::OldZ;
   return true;
 }
 
 bool Executor::h_motion(int code) {
-  work_.motion = code / 10;
+  work_.machine.motion = code;
   if (dialect_options_.motion_cancels_cycle) work_.drill.active = false;
   return true;
 }
@@ -142,10 +142,10 @@ bool Executor::h_tool_change(int) {
     return error(core::Code::CompNotAllowed, 0,
                  "a tool change with cutter radius compensation on: G40 first");
   }
-  if (work_.selected_tool < 0) {
+  if (work_.machine.selected_tool < 0) {
     return error(core::Code::MissingWord, 0, "M06 with no T: give T<n>");
   }
-  const int tool = work_.selected_tool;
+  const int tool = work_.machine.selected_tool;
   std::optional<double> d;
   if (const ToolEntry* t = options_.tools.find(tool); t != nullptr && t->diameter > 0) {
     d = t->diameter;

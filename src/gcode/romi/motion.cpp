@@ -106,7 +106,7 @@ std::optional<Vec2> Executor::polar_end(Vec2 p0, Fail& fail) const {
 }
 
 bool Executor::require_feed(const char* what) {
-  if (work_.feed > 0.0) return true;
+  if (work_.machine.feed > 0.0) return true;
   return error(core::Code::NoFeedRate, 0, fmt::format("{} with no feed rate: give F", what));
 }
 
@@ -120,7 +120,7 @@ bool Executor::move() {
     position = true;
   }
   if (work_.blend) {
-    if (!position || work_.motion > 1 || work_.drill.active) {
+    if (!position || work_.motion() > 1 || work_.drill.active) {
       run_.at(work_.blend->loc);
       return error(core::Code::BlendNeedsMove, 0,
                    "an arc with only R blends into the next move, and the next block is not a "
@@ -129,7 +129,7 @@ bool Executor::move() {
   }
   if (!position) return true;
   if (work_.drill.active) {
-    if (work_.motion > 1) {
+    if (work_.motion() > 1) {
       return error(core::Code::NotAllowedInMode, 0,
                    "an arc while the drilling cycle G81 is on: G80 first");
     }
@@ -138,7 +138,7 @@ bool Executor::move() {
     if (!end) return error(fail);
     return drill_at(xy(*end));
   }
-  if (work_.motion >= 2) return arc_block();
+  if (work_.motion() >= 2) return arc_block();
   Fail fail;
   auto end = line_end(work_.pos, fail);
   if (!end) return error(fail);
@@ -156,19 +156,19 @@ bool Executor::move() {
     }
     if (!blend(*end)) return false;
   }
-  if (work_.motion == 1 && !require_feed("G01")) return false;
-  return emit_line(*end, work_.motion == 0);
+  if (work_.motion() == 1 && !require_feed("G01")) return false;
+  return emit_line(*end, work_.motion() == 0);
 }
 
 bool Executor::arc_block() {
-  if (!require_feed(work_.motion == 2 ? "G02" : "G03")) return false;
+  if (!require_feed(work_.motion() == 2 ? "G02" : "G03")) return false;
   if (words_.has('X') || words_.has('Y')) return arc_cartesian();
   return arc_polar();
 }
 
 // X Y I J (absolute centre) and X Y R (shorter arc; R < 0 the longer).
 bool Executor::arc_cartesian() {
-  const bool ccw = work_.motion == 3;
+  const bool ccw = work_.motion() == 3;
   const Vec2 p0 = xy(work_.pos);
   const Vec3 end = cartesian_end(work_.pos);
   Vec2 center;
@@ -213,7 +213,7 @@ bool Executor::arc_cartesian() {
 
 // The polar forms: C I J, C, R C, R A, R A C, and R alone (a blend).
 bool Executor::arc_polar() {
-  const bool ccw = work_.motion == 3;
+  const bool ccw = work_.motion() == 3;
   const Vec2 p0 = xy(work_.pos);
   if (words_.has('R')) return tangent_arc(p0, ccw);
   if (!words_.has('C')) {

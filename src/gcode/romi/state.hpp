@@ -60,29 +60,31 @@ struct PendingBlend {
   Vec3 start;
 };
 
+// The modes romi shares with the RS274NGC interpreter (motion, distance,
+// units, retract, F, T, and what the canonical machine reads) are the
+// interpreter's ModalState (`machine`); the rest is romi's own.
 struct Modal {
   // Program coordinates.
-  int motion = 0;  // 0..3: G00..G03
-  bool incremental = false;
-  core::LengthUnit units = core::LengthUnit::Mm;
-  bool retract_to_r = true;  // G99; G98 retracts to where the hole started
   DrillCycle drill;
   Transform tf;
   int offset_register = 0;          // O
   Vec3 pos;                         // the programmed point
   std::optional<double> direction;  // of travel at pos, degrees
-  double feed = 0.0;                // mm/min
-  int selected_tool = -1;           // T
   double tool_diameter = 0.0;       // of the tool in the spindle
   std::optional<PendingBlend> blend;
 
-  // What the canonical machine reads and updates: the machine position,
-  // the tool in the spindle, S, spindle and coolant.
+  // The interpreter's modes: motion (G00-G03 in tenths), G90/G91, G70/G71
+  // (inch/mm), G98/G99, F (mm/min), T; and what the canonical machine reads
+  // and updates: the machine position, the tool in the spindle, S, spindle
+  // and coolant.
   ModalState machine;
   // Cutter compensation: its side and radius, and the moves it holds.
   CutterComp comp;
 
-  double mm(double v) const { return v * core::mm_per(units); }
+  // G00..G03: 0..3.
+  int motion() const { return machine.motion / 10; }
+
+  double mm(double v) const { return v * core::mm_per(machine.units); }
 };
 
 }  // namespace usina::gcode::romi

@@ -49,15 +49,15 @@ TEST(RomiState, ASuccessfulBlockCommitsItsModes) {
   auto r = run("G91 G72 K2 G31 X5#T4 O2 F120 S900 G70#M02#");
   ASSERT_TRUE(r->ok);
   const Modal& m = r->state();
-  EXPECT_TRUE(m.incremental);
+  EXPECT_TRUE(m.machine.incremental);
   EXPECT_EQ(m.tf.scale_x, 2.0);
   EXPECT_TRUE(m.tf.mirror_x);
   EXPECT_EQ(m.tf.mirror_at.x, 5.0);
-  EXPECT_EQ(m.selected_tool, 4);
+  EXPECT_EQ(m.machine.selected_tool, 4);
   EXPECT_EQ(m.offset_register, 2);
-  EXPECT_EQ(m.feed, 120.0);
+  EXPECT_EQ(m.machine.feed, 120.0);
   EXPECT_EQ(m.machine.speed, 900.0);
-  EXPECT_EQ(m.units, core::LengthUnit::Inch);
+  EXPECT_EQ(m.machine.units, core::LengthUnit::Inch);
 }
 
 TEST(RomiState, AnErrorInTheBlockOfG91LeavesTheDistanceModeAsItWas) {
@@ -65,7 +65,7 @@ TEST(RomiState, AnErrorInTheBlockOfG91LeavesTheDistanceModeAsItWas) {
   auto r = run("G91 G72 K30#M02#");
   EXPECT_FALSE(r->ok);
   EXPECT_EQ(r->first_error(), Code::ScaleOutOfRange);
-  EXPECT_FALSE(r->state().incremental);
+  EXPECT_FALSE(r->state().machine.incremental);
   EXPECT_EQ(r->state().tf.scale_x, 1.0);
 }
 
@@ -75,24 +75,24 @@ TEST(RomiState, AnErrorAfterAScaleLeavesTheScaleAsItWas) {
   EXPECT_EQ(r->first_error(), Code::NoFeedRate);
   EXPECT_EQ(r->state().tf.scale_x, 1.0);
   EXPECT_EQ(r->state().tf.scale_y, 1.0);
-  EXPECT_EQ(r->state().motion, 0);
+  EXPECT_EQ(r->state().motion(), 0);
 }
 
 TEST(RomiState, TheValuesOfAFailedBlockAreNotKept) {
   auto r = run("T5 O3 F200 S1000 G70 G72 K50#M02#");
   EXPECT_EQ(r->first_error(), Code::ScaleOutOfRange);
   const Modal& m = r->state();
-  EXPECT_EQ(m.selected_tool, -1);
+  EXPECT_EQ(m.machine.selected_tool, -1);
   EXPECT_EQ(m.offset_register, 0);
-  EXPECT_EQ(m.feed, 0.0);
+  EXPECT_EQ(m.machine.feed, 0.0);
   EXPECT_EQ(m.machine.speed, 0.0);
-  EXPECT_EQ(m.units, core::LengthUnit::Mm);
+  EXPECT_EQ(m.machine.units, core::LengthUnit::Mm);
 }
 
 TEST(RomiState, EarlierBlocksStayCommittedWhenALaterBlockFails) {
   auto r = run("G91#G72 K2#G31 X1 G72 K40#M02#");
   EXPECT_EQ(r->first_error(), Code::ScaleOutOfRange);
-  EXPECT_TRUE(r->state().incremental);
+  EXPECT_TRUE(r->state().machine.incremental);
   EXPECT_EQ(r->state().tf.scale_x, 2.0);
   EXPECT_FALSE(r->state().tf.mirror_x);
 }
@@ -126,13 +126,13 @@ TEST(RomiState, AFailedToolChangeBlockKeepsTheToolInTheSpindle) {
   EXPECT_EQ(r->first_error(), Code::MissingWord);
   EXPECT_EQ(r->state().machine.tool, 0);
   EXPECT_EQ(r->state().tool_diameter, 0.0);
-  EXPECT_EQ(r->state().selected_tool, -1);
+  EXPECT_EQ(r->state().machine.selected_tool, -1);
 }
 
 TEST(RomiState, AJumpErrorFailsTheWholeBlock) {
   auto r = run("G91 (GOTO N99)#M02#");
   EXPECT_EQ(r->first_error(), Code::UnknownBlockNumber);
-  EXPECT_FALSE(r->state().incremental);
+  EXPECT_FALSE(r->state().machine.incremental);
 }
 
 TEST(RomiState, ABlendArcOfAFailedBlockIsNotPending) {
@@ -140,19 +140,19 @@ TEST(RomiState, ABlendArcOfAFailedBlockIsNotPending) {
   auto r = run("G01 F100 X10#G02 R5 Q1#G01 X40 Y40#M02#");
   EXPECT_EQ(r->first_error(), Code::UnusedWord);
   EXPECT_FALSE(r->state().blend.has_value());
-  EXPECT_EQ(r->state().motion, 1);
+  EXPECT_EQ(r->state().motion(), 1);
 }
 
 TEST(RomiState, TheStartCodesAreTheStateBeforeTheFirstBlock) {
   auto r = run("G72 K99#");
   EXPECT_FALSE(r->ok);
   const Modal& m = r->state();
-  EXPECT_EQ(m.motion, 0);
-  EXPECT_FALSE(m.incremental);
-  EXPECT_TRUE(m.retract_to_r);
+  EXPECT_EQ(m.motion(), 0);
+  EXPECT_FALSE(m.machine.incremental);
+  EXPECT_EQ(m.machine.retract, RetractMode::RPlane);
   EXPECT_FALSE(m.drill.active);
   EXPECT_FALSE(m.comp.active());
-  EXPECT_EQ(m.units, core::LengthUnit::Mm);
+  EXPECT_EQ(m.machine.units, core::LengthUnit::Mm);
 }
 
 }  // namespace
