@@ -62,7 +62,8 @@ class Link {
 
   // Bytes the link has accepted that have not yet left for the wire: the
   // tty's output queue (TIOCOUTQ), the socket's unsent bytes (SIOCOUTQ), a
-  // memory pipe's unread bytes; nothing when the link cannot tell.
+  // memory pipe's unread bytes; nothing when the link cannot tell (a pty,
+  // whose TIOCOUTQ is always 0).
   virtual std::optional<std::size_t> output_queue() const { return std::nullopt; }
 
   // The control is ready to receive: DSR under dtr/dsr flow control; true
