@@ -8,7 +8,8 @@
 // The wire is modelled as a queue drained at the line's rate: writing n
 // bytes at t moves the moment it empties to max(that, t) + n / rate. The
 // link's own count of queued bytes (TIOCOUTQ, SIOCOUTQ), where it has one,
-// is taken when it is larger (a slower device server, a full pty).
+// is taken when it is larger (a slower device server, a UART held by CTS;
+// a pty has none: link_serial.cpp).
 #pragma once
 
 #include <chrono>

@@ -42,6 +42,18 @@ class Link {
   virtual void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) = 0;
   // Writes all of `bytes` (the buffer must live until the handler runs).
   virtual void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) = 0;
+
+  // Writes what the link takes at once, without waiting and without a trip
+  // through the loop: the count (0 when it would block), or an error in
+  // `ec`. Nothing when the link cannot (the transfer then uses async_write).
+  // A drip feed writes a chunk every few milliseconds on every machine; the
+  // loop's completion of each async_write is a cost of its own.
+  virtual std::optional<std::size_t> try_write(std::span<const std::uint8_t> bytes, ErrorCode& ec) {
+    (void)bytes;
+    ec.clear();
+    return std::nullopt;
+  }
+
   // Ends the pending read and write with operation_aborted; the link stays
   // open (a transfer that ends hands the link back to its station).
   virtual void cancel() = 0;
@@ -50,7 +62,8 @@ class Link {
 
   // Bytes the link has accepted that have not yet left for the wire: the
   // tty's output queue (TIOCOUTQ), the socket's unsent bytes (SIOCOUTQ), a
-  // memory pipe's unread bytes; nothing when the link cannot tell.
+  // memory pipe's unread bytes; nothing when the link cannot tell (a pty,
+  // whose TIOCOUTQ is always 0).
   virtual std::optional<std::size_t> output_queue() const { return std::nullopt; }
 
   // The control is ready to receive: DSR under dtr/dsr flow control; true

@@ -13,6 +13,8 @@
 #include <boost/asio/write.hpp>
 #include <fmt/format.h>
 #include <sys/ioctl.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 namespace usina::dnc {
 namespace {
@@ -41,10 +43,32 @@ speed_t speed_of(std::uint32_t baud) {
   return B9600;
 }
 
+// Linux's pty keeps no output queue: its TIOCOUTQ is 0 whatever waits on
+// the other side, so asking it (a system call before every chunk) says
+// nothing. Unix 98 pty slaves and masters, and BSD ptys, by device major.
+bool is_pty(int fd) {
+  struct stat st {};
+
+  if (::fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return false;
+  const unsigned major_number = major(st.st_rdev);
+  const unsigned minor_number = minor(st.st_rdev);
+  constexpr unsigned kBsdMaster = 2, kBsdSlave = 3, kTtyAux = 5, kPtmx = 2;
+  constexpr unsigned kUnix98Master = 128, kUnix98Slave = 136, kUnix98Count = 8;
+  return major_number == kBsdMaster || major_number == kBsdSlave ||
+         (major_number == kTtyAux && minor_number == kPtmx) ||
+         (major_number >= kUnix98Master && major_number < kUnix98Slave + kUnix98Count);
+}
+
 class DescriptorLink final : public Link {
  public:
   DescriptorLink(asio::io_context& io, int fd, std::string name, bool dsr_flow)
-      : stream_(io, fd), fd_(fd), name_(std::move(name)), dsr_flow_(dsr_flow) {}
+      : stream_(io, fd), fd_(fd), name_(std::move(name)), dsr_flow_(dsr_flow) {
+    // asio makes the descriptor non-blocking at its first asynchronous
+    // operation; try_write must never block the loop before that either.
+    const int flags = ::fcntl(fd_, F_GETFL);
+    if (flags >= 0 && (flags & O_NONBLOCK) == 0) (void)::fcntl(fd_, F_SETFL, flags | O_NONBLOCK);
+    counts_output_ = !is_pty(fd_);
+  }
 
   void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override {
     stream_.async_read_some(asio::buffer(buffer.data(), buffer.size()), std::move(handler));
@@ -52,6 +76,23 @@ class DescriptorLink final : public Link {
 
   void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override {
     asio::async_write(stream_, asio::buffer(bytes.data(), bytes.size()), std::move(handler));
+  }
+
+  std::optional<std::size_t> try_write(std::span<const std::uint8_t> bytes,
+                                       ErrorCode& ec) override {
+    ec.clear();
+    if (!stream_.is_open()) {
+      ec = asio::error::bad_descriptor;
+      return std::nullopt;
+    }
+    for (;;) {
+      const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
+      if (n >= 0) return static_cast<std::size_t>(n);
+      if (errno == EINTR) continue;
+      if (errno == EAGAIN || errno == EWOULDBLOCK) return 0;
+      ec = ErrorCode(errno, boost::system::system_category());
+      return std::nullopt;
+    }
   }
 
   void cancel() override {
@@ -66,7 +107,9 @@ class DescriptorLink final : public Link {
 
   std::optional<std::size_t> output_queue() const override {
     int n = 0;
-    if (!stream_.is_open() || ::ioctl(fd_, TIOCOUTQ, &n) != 0 || n < 0) return std::nullopt;
+    if (!counts_output_ || !stream_.is_open() || ::ioctl(fd_, TIOCOUTQ, &n) != 0 || n < 0) {
+      return std::nullopt;
+    }
     return static_cast<std::size_t>(n);
   }
 
@@ -84,6 +127,7 @@ class DescriptorLink final : public Link {
   int fd_;
   std::string name_;
   bool dsr_flow_;
+  bool counts_output_ = true;  // TIOCOUTQ tells something (not on a pty)
 };
 
 std::string errno_text(const char* what, const std::string& path) {

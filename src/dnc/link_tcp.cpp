@@ -21,6 +21,8 @@ class TcpLink final : public Link {
     ErrorCode ignored;
     // A drip feed writes small chunks; Nagle would hold them back.
     socket_.set_option(tcp::no_delay(true), ignored);
+    // For try_write: asio's own asynchronous operations do not depend on it.
+    socket_.non_blocking(true, ignored);
   }
 
   void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override {
@@ -29,6 +31,17 @@ class TcpLink final : public Link {
 
   void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override {
     asio::async_write(socket_, asio::buffer(bytes.data(), bytes.size()), std::move(handler));
+  }
+
+  std::optional<std::size_t> try_write(std::span<const std::uint8_t> bytes,
+                                       ErrorCode& ec) override {
+    const std::size_t n = socket_.write_some(asio::buffer(bytes.data(), bytes.size()), ec);
+    if (ec == asio::error::would_block || ec == asio::error::try_again) {
+      ec.clear();
+      return 0;
+    }
+    if (ec) return std::nullopt;
+    return n;
   }
 
   void cancel() override {

@@ -1,6 +1,7 @@
 #include "dnc/transfer_send.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <boost/asio/post.hpp>
 #include <fmt/format.h>
@@ -10,6 +11,12 @@ namespace {
 
 constexpr std::size_t kSlice = 16384;  // program bytes read at a time
 constexpr auto kDsrPoll = std::chrono::milliseconds(10);
+// How late a feed may be served once its wire could take a chunk: no hurry
+// (the wire is still busy) for the DSR poll and the final drain.
+constexpr auto kSlack = std::chrono::milliseconds(5);
+// A feed is served before its wire is down to this much line time, so a
+// loop a little late does not leave the line idle.
+constexpr std::chrono::duration<double> kLowMark{0.003};
 
 }  // namespace
 
@@ -46,7 +53,7 @@ Sender::Sender(asio::io_context& io, Link& link, SendOptions options,
       program_(std::move(program)),
       writer_(options.format),
       pacer_(options.bytes_per_second, options.skid),
-      timer_(io),
+      tick_(PacingTick::of(io)),
       watchdog_(io),
       slice_(kSlice) {
   report_.mode = mode;
@@ -139,35 +146,42 @@ void Sender::arm_xon_watchdog() {
   });
 }
 
-bool Sender::refill() {
-  staged_.clear();
+// Keeps at least a skid of rows staged while the program lasts, so that a
+// chunk is never cut short at the end of a slice (one more write).
+bool Sender::top_up() {
+  if (program_done_ || staged_.size() - staged_at_ >= options_.skid) return true;
+  staged_.erase(staged_.begin(), staged_.begin() + static_cast<std::ptrdiff_t>(staged_at_));
   staged_at_ = 0;
-  marks_.clear();
+  marks_.erase(marks_.begin(), marks_.begin() + static_cast<std::ptrdiff_t>(marks_at_));
   marks_at_ = 0;
-  while (staged_.empty() && !program_done_) {
-    const std::size_t n = program_->read(slice_);
-    bool ok = true;
-    if (n == 0) {
-      if (const std::string error = program_->error(); !error.empty()) {
-        end(JobState::Failed, error);
-        return false;
-      }
-      ok = writer_.finish(staged_, marks_);
-      program_done_ = true;
-    } else {
-      ok = writer_.write(std::string_view(slice_.data(), n), staged_, marks_);
-    }
-    if (!ok) {
-      end(JobState::Failed, writer_.diagnostic().message);
-      return false;
-    }
+  while (staged_.size() < options_.skid && !program_done_) {
+    if (!stage_slice()) return false;
   }
   return true;
 }
 
+// The next slice of the program through the tape writer (the closing `%`
+// and trailer after the last); false when the job failed.
+bool Sender::stage_slice() {
+  const std::size_t n = program_->read(slice_);
+  bool ok = true;
+  if (n == 0) {
+    if (const std::string error = program_->error(); !error.empty()) {
+      end(JobState::Failed, error);
+      return false;
+    }
+    ok = writer_.finish(staged_, marks_);
+    program_done_ = true;
+  } else {
+    ok = writer_.write(std::string_view(slice_.data(), n), staged_, marks_);
+  }
+  if (!ok) end(JobState::Failed, writer_.diagnostic().message);
+  return ok;
+}
+
 void Sender::pump() {
   if (finished_ || writing_ || waiting_) return;
-  if (staged_at_ == staged_.size() && !refill()) return;
+  if (!top_up()) return;
   if (staged_at_ == staged_.size()) {
     wait_for_drain();
     return;
@@ -175,7 +189,7 @@ void Sender::pump() {
   if (paused_) return;
   const auto now = Clock::now();
   if (options_.flow == Flow::DtrDsr && !link_.peer_ready()) {
-    wait_until(now + kDsrPoll);
+    wait_between(now + kDsrPoll, now + kDsrPoll + kSlack);
     return;
   }
   const std::size_t rest = staged_.size() - staged_at_;
@@ -183,23 +197,44 @@ void Sender::pump() {
   // The wire model first: while it has no room the link's own count (a
   // system call each time, 256 machines × 720 a second) cannot give more.
   if (pacer_.room(now, std::nullopt) < want) {
-    wait_until(pacer_.ready_at(want, now, std::nullopt));
+    wait_for_room(want, now, std::nullopt);
     return;
   }
   const std::optional<std::size_t> queued = link_.output_queue();
   const std::size_t room = pacer_.room(now, queued);
   if (room < want) {
-    wait_until(pacer_.ready_at(want, now, queued));
+    wait_for_room(want, now, queued);
     return;
   }
   write_chunk(std::min(room, rest));
 }
 
+// Between `want` bytes of room and the wire down to its low mark: the tick
+// serves the feed anywhere in that window, with other feeds, and the chunk
+// is all the room there is then (up to the skid, never more).
+void Sender::wait_for_room(std::size_t want, Clock::time_point now,
+                           std::optional<std::size_t> queued) {
+  const double low = std::ceil(options_.bytes_per_second * kLowMark.count());
+  const auto low_mark = std::min<std::size_t>(
+      std::max<std::size_t>(static_cast<std::size_t>(low), options_.skid / 8), options_.skid / 2);
+  wait_between(pacer_.ready_at(want, now, queued),
+               pacer_.ready_at(options_.skid - low_mark, now, queued));
+}
+
 void Sender::write_chunk(std::size_t n) {
+  const std::span<const std::uint8_t> chunk(staged_.data() + staged_at_, n);
+  ++report_.writes;
+  // At once where the link can (a tty): no trip through the loop per chunk.
+  ErrorCode ec;
+  const std::optional<std::size_t> now = link_.try_write(chunk, ec);
+  if (ec || now.value_or(0) > 0) {
+    on_written(ec, now.value_or(0));
+    return;
+  }
   writing_ = true;
-  link_.async_write(
-      std::span<const std::uint8_t>(staged_.data() + staged_at_, n),
-      [self = shared_from_this()](const ErrorCode& ec, std::size_t k) { self->on_written(ec, k); });
+  link_.async_write(chunk, [self = shared_from_this()](const ErrorCode& e, std::size_t k) {
+    self->on_written(e, k);
+  });
 }
 
 void Sender::on_written(const ErrorCode& ec, std::size_t n) {
@@ -222,12 +257,12 @@ void Sender::on_written(const ErrorCode& ec, std::size_t n) {
   pump();
 }
 
-void Sender::wait_until(Clock::time_point t) {
+void Sender::wait_between(Clock::time_point earliest, Clock::time_point latest) {
   waiting_ = true;
-  timer_.expires_at(t);
-  timer_.async_wait([self = shared_from_this()](const ErrorCode& ec) {
+  ticket_ = tick_.call_between(earliest, latest, [self = shared_from_this()] {
     self->waiting_ = false;
-    if (ec || self->finished_) return;
+    self->ticket_ = 0;
+    if (self->finished_) return;
     self->pump();
   });
 }
@@ -240,7 +275,8 @@ void Sender::wait_for_drain() {
     end(JobState::Done, {});
     return;
   }
-  wait_until(pacer_.ready_at(options_.skid, now, queued));
+  const auto drained = pacer_.ready_at(options_.skid, now, queued);
+  wait_between(drained, drained + kSlack);
 }
 
 void Sender::end(JobState state, std::string reason) {
@@ -255,7 +291,8 @@ void Sender::end(JobState state, std::string reason) {
   } else {
     report_.reason = std::move(reason);
   }
-  timer_.cancel();
+  if (ticket_ != 0) tick_.cancel(ticket_);  // lets go of this sender
+  ticket_ = 0;
   watchdog_.cancel();
   link_.cancel();
   if (done_) {

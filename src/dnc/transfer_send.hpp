@@ -29,6 +29,7 @@
 
 #include "dnc/line_pacer.hpp"
 #include "dnc/link.hpp"
+#include "dnc/pacing_tick.hpp"
 #include "dnc/program_source.hpp"
 #include "dnc/sha256.hpp"
 #include "dnc/tape_writer.hpp"
@@ -67,6 +68,7 @@ struct JobReport {
   std::uint32_t xoff_count = 0;
   std::uint32_t xon_without_xoff = 0;
   double max_in_flight_at_xoff = 0.0;  // never above skid
+  std::uint64_t writes = 0;            // chunks handed to the link (a system call each)
 };
 
 class Sender : public std::enable_shared_from_this<Sender> {
@@ -99,10 +101,12 @@ class Sender : public std::enable_shared_from_this<Sender> {
   void on_xoff();
   void on_xon();
   void pump();
-  bool refill();
+  bool top_up();
+  bool stage_slice();
   void write_chunk(std::size_t n);
   void on_written(const ErrorCode& ec, std::size_t n);
-  void wait_until(Clock::time_point t);
+  void wait_for_room(std::size_t want, Clock::time_point now, std::optional<std::size_t> queued);
+  void wait_between(Clock::time_point earliest, Clock::time_point latest);
   void wait_for_drain();
   void arm_xon_watchdog();
   void end(JobState state, std::string reason);
@@ -116,14 +120,15 @@ class Sender : public std::enable_shared_from_this<Sender> {
   TapeWriter writer_;
   LinePacer pacer_;
   Sha256 sha_;
-  asio::steady_timer timer_;
+  PacingTick& tick_;  // the loop's one pacing timer, shared by every feed
+  PacingTick::Ticket ticket_ = 0;
   asio::steady_timer watchdog_;
   JobReport report_;
   DoneHandler done_;
   DoneHandler progress_;
   BytesHandler received_;
 
-  std::vector<std::uint8_t> staged_;  // rows encoded, not yet written
+  std::vector<std::uint8_t> staged_;  // rows encoded; from staged_at_ on not yet written
   std::size_t staged_at_ = 0;
   std::vector<BlockMark> marks_;  // block ends among the staged rows
   std::size_t marks_at_ = 0;

@@ -5,12 +5,14 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <thread>
 
 #include <boost/asio/ip/tcp.hpp>
 #include <gtest/gtest.h>
+#include <sys/socket.h>
 
 #include "dnc/link_serial.hpp"
 #include "dnc/sim_cnc.hpp"
@@ -127,6 +129,64 @@ TEST(SerialLink, ClosingThePtyMasterInterruptsTheFeed) {
   EXPECT_EQ(f.report.state, JobState::Interrupted) << f.report.reason;
   EXPECT_GE(f.report.bytes_sent, 5000U);
   EXPECT_EQ(f.sim.received, 5000U);
+}
+
+// Linux's pty keeps no output queue (TIOCOUTQ is always 0), so a pty link
+// says it cannot tell rather than have a feed ask before every chunk; a
+// socket's count still answers.
+TEST(SerialLink, APtyDoesNotCountItsOutputAndASocketDoes) {
+  asio::io_context io;
+  auto pair = open_pty_pair(io);
+  ASSERT_TRUE(pair) << pair.error();
+  std::string error;
+  auto link = open_now(io, pty_machine(pair->slave_path), &error);
+  ASSERT_TRUE(link) << error;
+  EXPECT_FALSE(link->output_queue());
+  EXPECT_FALSE(pair->master->output_queue());
+  std::array<int, 2> fds{};
+  ASSERT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, fds.data()), 0);
+  auto socket_link = descriptor_link(io, fds[0], "socket");
+  EXPECT_TRUE(socket_link->output_queue());
+  ::close(fds[1]);
+}
+
+// A chunk is written at once where the link can; a full pty says 0 (the
+// feed then waits through the loop) instead of blocking the loop; a pty
+// whose other end closed is an error.
+TEST(SerialLink, TryWriteWritesAtOnceNeverBlocksAndReportsALostPeer) {
+  asio::io_context io;
+  auto pair = open_pty_pair(io);
+  ASSERT_TRUE(pair) << pair.error();
+  std::string error;
+  auto link = open_now(io, pty_machine(pair->slave_path), &error);
+  ASSERT_TRUE(link) << error;
+  const std::string text = "%\nO1\n";
+  ErrorCode ec;
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
+  EXPECT_EQ(link->try_write(std::span(bytes, text.size()), ec), text.size());
+  EXPECT_FALSE(ec) << ec.message();
+  std::array<std::uint8_t, 64> got{};
+  std::size_t read = 0;
+  pair->master->async_read_some(got, [&](const ErrorCode& e, std::size_t n) {
+    EXPECT_FALSE(e) << e.message();
+    read = n;
+  });
+  test::run_until(io, [&] { return read > 0; });
+  EXPECT_EQ(std::string(got.begin(), got.begin() + static_cast<std::ptrdiff_t>(read)), text);
+
+  const std::vector<std::uint8_t> block(4096, 'X');
+  std::optional<std::size_t> took;
+  for (int i = 0; i < 10000; ++i) {  // nobody reads the master: the pty fills
+    took = link->try_write(block, ec);
+    if (ec || took.value_or(0) == 0) break;
+  }
+  EXPECT_FALSE(ec) << ec.message();
+  EXPECT_EQ(took, 0U);
+
+  pair->master->close();
+  took = link->try_write(std::span(bytes, text.size()), ec);
+  EXPECT_TRUE(ec);
+  EXPECT_FALSE(took);
 }
 
 TEST(SerialLink, AMissingDeviceIsAnErrorNamingIt) {

@@ -227,6 +227,90 @@ TEST(DripFeed, StoppedByTheOperator) {
   test::run_until(io, [&] { return done; });
   EXPECT_EQ(report.state, JobState::Interrupted);
   EXPECT_NE(report.reason.find("stopped by the operator"), std::string::npos);
+  EXPECT_EQ(PacingTick::of(io).waiting(), 0U) << "a stopped feed still waits for the tick";
+}
+
+struct Feeds {
+  std::vector<JobReport> reports;
+  std::vector<SimCncStats> sims;
+  std::uint64_t wakeups = 0;
+};
+
+// `count` feeds at once on one loop, each to its own simulated control.
+Feeds run_feeds(int count, const SendOptions& options, std::uint64_t size, SimCncConfig sc) {
+  asio::io_context io;
+  std::vector<LinkPair> links;
+  std::vector<std::shared_ptr<SimCnc>> sims;
+  std::vector<std::shared_ptr<Sender>> senders;
+  Feeds f;
+  f.reports.resize(static_cast<std::size_t>(count));
+  int left = count;
+  for (int i = 0; i < count; ++i) {
+    links.push_back(memory_link_pair(io, 4096));
+    sims.push_back(std::make_shared<SimCnc>(io, *links.back().b, sc));
+    senders.push_back(std::make_shared<Sender>(io, *links.back().a, options,
+                                               std::make_unique<test::GeneratedProgram>(size),
+                                               JobMode::Drip));
+  }
+  for (int i = 0; i < count; ++i) {
+    sims[static_cast<std::size_t>(i)]->start();
+    senders[static_cast<std::size_t>(i)]->start([&f, &left, i](const JobReport& r) {
+      f.reports[static_cast<std::size_t>(i)] = r;
+      --left;
+    });
+  }
+  test::run_until(io, [&] { return left == 0; });
+  EXPECT_EQ(left, 0);
+  for (std::size_t i = 0; i < sims.size(); ++i) {
+    test::run_until(
+        io, [&] { return sims[i]->stats().received >= f.reports[i].bytes_sent; },
+        std::chrono::seconds(5));
+    f.sims.push_back(sims[i]->stats());
+  }
+  f.wakeups = PacingTick::of(io).wakeups();
+  return f;
+}
+
+// Issue 13, "Speed": the feeds of one loop share its pacing timer, so the
+// loop wakes fewer times than the feeds write; and every byte still arrives
+// with no overflow and no more than the skid after an XOFF.
+TEST(DripFeed, FeedsOnOneLoopShareTheirWakeups) {
+  SimCncConfig sim;
+  sim.buffer = 512;
+  sim.high_water = 256;
+  sim.low_water = 128;
+  sim.execute_rate = 90000.0;  // a little slower than the line: XOFFs come
+  const double rate = 100000.0;
+  const auto skid = static_cast<std::uint32_t>(safe_skid(sim, rate));
+  const Feeds f = run_feeds(16, ascii_options(skid, rate), 60000, sim);
+  std::uint64_t writes = 0;
+  for (std::size_t i = 0; i < f.reports.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "feed " << i);
+    EXPECT_EQ(f.reports[i].state, JobState::Done) << f.reports[i].reason;
+    EXPECT_EQ(f.sims[i].received, f.reports[i].bytes_sent);
+    EXPECT_EQ(f.sims[i].overflow, 0U);
+    EXPECT_LE(f.sims[i].max_after_xoff, skid);
+    writes += f.reports[i].writes;
+  }
+  EXPECT_GT(f.wakeups, 0U);
+  EXPECT_LT(f.wakeups, writes);
+}
+
+// A chunk is all the room there is once half the skid is free: never less
+// than half the skid but for the program's last bytes, so the writes (a
+// system call each) are at most two per skid of program.
+TEST(DripFeed, EachWriteCarriesAtLeastHalfTheSkid) {
+  const std::uint32_t skid = 256;
+  SimCncConfig roomy;  // never says XOFF: the wire alone paces the feeds
+  roomy.buffer = 1U << 20U;
+  roomy.high_water = 1U << 19U;
+  roomy.low_water = 1U << 18U;
+  const Feeds f = run_feeds(4, ascii_options(skid, 50000.0), 40000, roomy);
+  for (const JobReport& r : f.reports) {
+    EXPECT_EQ(r.state, JobState::Done) << r.reason;
+    EXPECT_GE(r.writes, r.bytes_sent / skid);
+    EXPECT_LE(r.writes, r.bytes_sent / (skid / 2) + 1);
+  }
 }
 
 long max_rss_kb() {
