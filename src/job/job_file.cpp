@@ -33,6 +33,8 @@ constexpr std::string_view kStockKeys[] = {"shape",  "size",     "diameter",
 constexpr std::string_view kDrillKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "peck",
                                            "retract"};
 constexpr std::string_view kSpotKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract"};
+constexpr std::string_view kBoreKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract",
+                                          "predrilled"};
 constexpr std::string_view kPocketKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "stepover"};
 constexpr std::string_view kProfileKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "side",
                                              "lead_radius",    "tabs",  "tab_width", "tab_height"};
@@ -55,6 +57,7 @@ constexpr TypeName kTypes[] = {
     {OpType::Drill, "drill", kDrillKeys},
     {OpType::Spot, "spot", kSpotKeys},
     {OpType::Tap, "tap", kSpotKeys},
+    {OpType::Bore, "bore", kBoreKeys},
     {OpType::Pocket, "pocket", kPocketKeys},
     {OpType::Profile, "profile", kProfileKeys},
     {OpType::EllipsePocket, "ellipse_pocket", kEllipseKeys},
@@ -167,8 +170,9 @@ void read_chamfer_keys(TomlReader& r, const toml::table& t, const std::string& w
 
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
   const bool layered = op.type == OpType::Drill || op.type == OpType::Spot ||
-                       op.type == OpType::Tap || op.type == OpType::Pocket ||
-                       op.type == OpType::Profile || op.type == OpType::Chamfer;
+                       op.type == OpType::Tap || op.type == OpType::Bore ||
+                       op.type == OpType::Pocket || op.type == OpType::Profile ||
+                       op.type == OpType::Chamfer;
   if (layered) {
     op.layer = r.text(t, w, "layer", true).value_or("");
     if (const toml::node* l = t.get("layer")) op.layer_loc = r.loc(l->source());
@@ -178,6 +182,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
   op.diameter = r.number(t, w, "diameter", kSmall, false);
   op.peck = r.number(t, w, "peck", kZeroUp, false).value_or(0.0);
   op.retract = r.number(t, w, "retract", kSmall, false).value_or(1.0);
+  op.predrilled = r.flag(t, w, "predrilled").value_or(false);
   op.side = r.text(t, w, "side", false).value_or("outside");
   op.lead_radius = r.number(t, w, "lead_radius", kZeroUp, false).value_or(0.0);
   op.tabs = static_cast<int>(r.number(t, w, "tabs", kTabs, false).value_or(0.0));
@@ -212,7 +217,7 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   if (found == nullptr) {
     r.fail(core::Code::JobUnknownOperation, t.get("type")->source(),
            fmt::format("{}: type \"{}\" is not an operation usina makes: give drill, spot, "
-                       "tap, pocket, profile, ellipse_pocket, face, engrave or chamfer",
+                       "tap, bore, pocket, profile, ellipse_pocket, face, engrave or chamfer",
                        what, *type));
     return;
   }

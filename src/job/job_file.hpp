@@ -15,7 +15,18 @@
 
 namespace usina::job {
 
-enum class OpType { Drill, Spot, Tap, Pocket, Profile, EllipsePocket, Face, Engrave, Chamfer };
+enum class OpType {
+  Drill,
+  Spot,
+  Tap,
+  Bore,
+  Pocket,
+  Profile,
+  EllipsePocket,
+  Face,
+  Engrave,
+  Chamfer
+};
 
 std::string_view op_type_name(OpType t);
 
@@ -33,8 +44,11 @@ struct Operation {
   std::optional<double> diameter;   // drill: only the holes of this diameter
   double peck = 0;                  // drill: G83 pecks, 0 for G81
   double retract = 1.0;             // drill: the R plane above Z0
-  std::string side = "outside";     // profile, chamfer
-  double width = 0;                 // chamfer: its leg on the top face, mm
+  // bore: the holes are there before the job (cast, or drilled in another
+  // setup): no earlier operation of the job need drill them.
+  bool predrilled = false;
+  std::string side = "outside";  // profile, chamfer
+  double width = 0;              // chamfer: its leg on the top face, mm
   core::SourceLoc width_loc;
   double tip_offset = 0.5;  // chamfer: how far the tip goes below the chamfer's foot
   double lead_radius = 0;   // profile
