@@ -24,8 +24,8 @@ constexpr Range kFeed{0.001, 1e6, "mm/min"};
 constexpr Range kTabs{0, 100, "tabs"};
 
 constexpr std::string_view kTop[] = {"job", "stock", "operation"};
-constexpr std::string_view kJobKeys[] = {"name",    "machine", "tools",     "materials",
-                                         "drawing", "safe_z",  "setup_note"};
+constexpr std::string_view kJobKeys[] = {"name",    "machine", "tools",      "materials",
+                                         "drawing", "safe_z",  "setup_note", "tool_table_units"};
 constexpr std::string_view kStockKeys[] = {"shape",  "size",     "diameter",
                                            "height", "material", "origin"};
 // The keys every operation has, then each type's own.
@@ -71,6 +71,30 @@ std::string relative_to(const std::string& folder, const std::string& path) {
   return (std::filesystem::path(folder) / path).lexically_normal().string();
 }
 
+// A LinuxCNC tool table's lengths are in its machine's units and the file
+// does not say which (LinuxCNC docs, "Tool Table Format"): the job says it,
+// for a table and only for one.
+void read_tool_table_units(TomlReader& r, const toml::table& t, Job& job) {
+  const bool table = job.tools.ends_with(".tbl");
+  const auto units = r.text(t, "[job]", "tool_table_units", false);
+  const toml::node* n = t.get("tool_table_units");
+  if (n != nullptr) job.tool_table_units_loc = r.loc(n->source());
+  if (units && !table) {
+    r.fail(n->source(),
+           "[job] tool_table_units is for a LinuxCNC tool table (tools = "
+           "\"FILE.tbl\"); a TOML library's lengths are in mm");
+  } else if (units && *units != "mm" && *units != "inch") {
+    r.fail(n->source(),
+           fmt::format("[job] tool_table_units = \"{}\": give \"mm\" or \"inch\"", *units));
+  } else if (table && !units && n == nullptr) {
+    r.fail(t.get("tools")->source(),
+           "[job] tools is a LinuxCNC tool table, whose lengths are in its machine's units: give "
+           "tool_table_units = \"mm\" or \"inch\"");
+  } else if (units) {
+    job.tool_table_mm = *units == "inch" ? 25.4 : 1.0;
+  }
+}
+
 void read_header(TomlReader& r, const toml::table& root, const std::string& folder, Job& job) {
   const toml::table* section = r.section(root, "job", "the job");
   if (section == nullptr) return;
@@ -87,6 +111,7 @@ void read_header(TomlReader& r, const toml::table& root, const std::string& fold
   job.drawing = path("drawing", false, job.drawing_loc);
   job.safe_z = r.number(t, "[job]", "safe_z", kSmall, false).value_or(5.0);
   job.setup_note = r.text(t, "[job]", "setup_note", false).value_or("");
+  read_tool_table_units(r, t, job);
 }
 
 void read_stock(TomlReader& r, const toml::table& root, Stock& s) {

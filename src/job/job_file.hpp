@@ -83,6 +83,10 @@ struct Job {
   std::string materials;
   std::string drawing;  // empty: no drawing (an ellipse pocket needs none)
   core::SourceLoc tools_loc, materials_loc, drawing_loc, machine_loc;
+  // A LinuxCNC tool table as the library (`tools` ending in ".tbl"): the
+  // mm of its machine's unit (1, or 25.4 for "inch"); 0: not given.
+  double tool_table_mm = 0;
+  core::SourceLoc tool_table_units_loc;
   double safe_z = 5.0;
   std::string setup_note;  // fixtures, clamping, zero: for the setup sheet (--sheet)
   Stock stock;
