@@ -254,13 +254,20 @@ TEST(BoreJob, PredrilledHolesNeedNoPilot) {
   ASSERT_TRUE(m->ok) << first_message(m->diags);
 }
 
-TEST(BoreJob, PredrilledIsTrueOrFalse) {
-  const auto l = testing::load_text(bore_job(bore_op("depth = 9.0\ntool = 13\npredrilled = 1\n")));
+// A job the reader refuses: its first diagnostic of `code` at `line`.
+void expect_read_error(const std::string& text, Code code, std::uint32_t line,
+                       const std::string& words) {
+  const auto l = testing::load_text(text);
   EXPECT_FALSE(l->job);
-  const core::Diagnostic* e = find(l->diags, Code::BadJob);
+  const core::Diagnostic* e = find(l->diags, code);
   ASSERT_NE(e, nullptr);
-  EXPECT_EQ(e->loc.line, kFirstOpLine + 5);
-  EXPECT_NE(e->message.find("true or false"), std::string::npos) << e->message;
+  EXPECT_EQ(e->loc.line, line);
+  EXPECT_NE(e->message.find(words), std::string::npos) << e->message;
+}
+
+TEST(BoreJob, PredrilledIsTrueOrFalse) {
+  expect_read_error(bore_job(bore_op("depth = 9.0\ntool = 13\npredrilled = 1\n")), Code::BadJob,
+                    kFirstOpLine + 5, "true or false");
 }
 
 TEST(BoreJob, APilotAsWideAsTheBoreLeavesNothingToBore) {
@@ -338,11 +345,8 @@ TEST(BoreJob, NoBoringRowMeansRpmAndFeedAreGiven) {
 }
 
 TEST(BoreJob, ABoreIsNotPecked) {
-  const auto l = testing::load_text(bore_job(bore_op("depth = 5.0\ntool = 13\npeck = 1.0\n")));
-  EXPECT_FALSE(l->job);
-  const core::Diagnostic* e = find(l->diags, Code::UnknownJobKey);
-  ASSERT_NE(e, nullptr);
-  EXPECT_EQ(e->loc.line, kFirstOpLine + 5);
+  expect_read_error(bore_job(bore_op("depth = 5.0\ntool = 13\npeck = 1.0\n")), Code::UnknownJobKey,
+                    kFirstOpLine + 5, "peck");
 }
 
 // ---- the posts ----
