@@ -860,6 +860,16 @@ EXPLAIN = {
         "leaves a burr. Point length: a 118° drill's, 0.3 times its diameter.",
         "A through hole: `depth` at least the stock's height and the point (the message "
         "gives it); a blind one: at most the height."),
+    "E_JOB_PILOT_HOLE": (
+        "A bore whose holes no earlier operation of the job drilled (a boring bar finishes a "
+        "hole, it does not cut from solid), or whose pilot hole is as wide as the bore "
+        "(nothing to bore) or whose full diameter ends above the bore's depth (the bar's end "
+        "would cut solid below it). The job checks the earlier drill and bore operations' "
+        "holes at the same centres (within 0.01 mm); a drill's full diameter ends its 118° "
+        "point above its depth.",
+        "Drill the pilot holes first (a drill operation on a layer of the pilot circles at the "
+        "same centres, deep enough), or give `predrilled = true` when the holes are there "
+        "before the job (cast, or drilled in another setup)."),
 }
 
 SECTION = re.compile(r"/\*\s*(.*?)\s*\*/")

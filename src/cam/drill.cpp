@@ -26,6 +26,7 @@ void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
     }
   }
   w.feed(to(bottom));
+  if (o.bore) w.feed(to(r));
   if (o.pitch > 0.0) {
     w.emit(canon::Spindle{o.cut.rpm, canon::SpindleDir::Ccw});
     w.feed(to(r));
@@ -48,6 +49,8 @@ bool check_ranges(const DrillOptions& o, core::DiagnosticSink& diags) {
   ok = check_range("the thread pitch", o.pitch, kLengthOrZero, diags) && ok;
   if (ok && o.pitch > 0.0 && o.peck > 0.0)
     ok = fail(diags, core::Code::GenBadValue, "a tap is not pecked: give no peck with a pitch");
+  if (ok && o.bore && (o.pitch > 0.0 || o.peck > 0.0))
+    ok = fail(diags, core::Code::GenBadValue, "a bore is neither pecked nor tapped");
   if (ok && o.pitch > 0.0 && o.form == HoleForm::Features)
     ok = fail(diags, core::Code::GenBadValue, "tapping is written as moves, not as a drill cycle");
   return ok;
@@ -126,17 +129,19 @@ bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& given, 
   if (o.pitch > 0.0) o.cut.feed = o.cut.plunge_feed = o.pitch * o.cut.rpm;  // synchronised
   if (!check_drill(points, o, diags)) return false;
   ProgramWriter w(sink, o.cut);
-  w.begin(
-      fmt::format("usina gen drill: {} holes, depth {:g} mm{}{}", points.size(), o.depth,
-                  o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string(),
-                  o.pitch > 0.0 ? fmt::format(", tapped, pitch {:g} mm", o.pitch) : std::string()));
+  const canon::HoleCycle cycle = o.bore ? canon::HoleCycle::Bore : canon::HoleCycle::Drill;
+  w.begin(fmt::format("usina gen drill: {} holes, depth {:g} mm{}{}", points.size(), o.depth,
+                      o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string(),
+                      o.pitch > 0.0 ? fmt::format(", tapped, pitch {:g} mm", o.pitch)
+                      : o.bore      ? std::string(", bored (fed out)")
+                                    : std::string()));
   w.rapid_over(points.front());
   if (o.form == HoleForm::Features) {
     const Vec2 p = points.front();
     w.plunge(o.retract);  // the post's cycle drills at this feed
     w.rapid({p.x, p.y, o.cut.safe_z});
     for (const Vec2& q : points) {
-      w.emit(canon::Hole{{q.x, q.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth});
+      w.emit(canon::Hole{{q.x, q.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth, cycle});
     }
     w.end();
     return true;
@@ -145,7 +150,7 @@ bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& given, 
   for (const Vec2& p : points) {
     w.rapid({p.x, p.y, o.cut.safe_z});
     if (o.cut.safe_z > o.retract) w.rapid({p.x, p.y, o.retract});
-    w.emit(canon::Hole{{p.x, p.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth});
+    w.emit(canon::Hole{{p.x, p.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth, cycle});
     drill_moves(w, p, o);
   }
   w.set_origin(canon::Origin::Program);

@@ -38,6 +38,10 @@ struct DrillOptions {
   // is then the pitch a revolution (cut.feed is not read), the spindle
   // reverses at the bottom and the tap feeds back out to R.
   double pitch = 0.0;
+  // Boring (G85) when set: the bar is fed to the bottom and fed back out to
+  // R at the feed (a rapid out would drag its edge along the finished
+  // wall), then rapids to the safe Z. Not pecked, not tapped.
+  bool bore = false;
 };
 
 // Checks, then the holes in the given order. False, with nothing emitted,

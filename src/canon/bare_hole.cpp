@@ -20,6 +20,12 @@ std::vector<Op> bare_hole_moves(const Op& hole, const Hole& h, const Vec3& from,
   down.to = {h.at.x, h.at.y, r - h.depth};
   down.abc = abc;
   moves.push_back({down, hole.src, Origin::Cycle});
+  if (h.cycle == HoleCycle::Bore) {
+    // G85: fed back out to R, then (G98) up to where it started.
+    Feed out = down;
+    out.to.z = r;
+    moves.push_back({out, hole.src, Origin::Cycle});
+  }
   rapid({h.at.x, h.at.y, clear});
   return moves;
 }

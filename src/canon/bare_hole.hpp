@@ -5,7 +5,9 @@
 // simulate) take it as the moves LinuxCNC's G81 makes in G98: from where the
 // tool is, up to R if it is below it, over the hole, down to R, at the last
 // feed rate to the bottom, and back to where it started or to R if that was
-// lower. A Hole with Origin::Cycle comes with its cycle's moves: nothing more.
+// lower. A bored hole (HoleCycle::Bore) is fed back out to R before that,
+// as LinuxCNC's G85. A Hole with Origin::Cycle comes with its cycle's moves:
+// nothing more.
 #pragma once
 
 #include <vector>

@@ -89,11 +89,17 @@ struct Coolant {
   bool flood = false;
 };
 
+// How a bare hole (canon/bare_hole.hpp) is cut: drilled, out at rapid
+// (G81), or bored, fed back out to its top (G85: a boring bar's edge fed
+// out does not mark the finished wall as a rapid would).
+enum class HoleCycle { Drill, Bore };
+
 // A drilled hole (feature), emitted besides the moves that make it.
 struct Hole {
   Vec3 at;  // centre of the hole at the top
   double diameter = 0.0;
   double depth = 0.0;
+  HoleCycle cycle = HoleCycle::Drill;
 };
 
 // A closed outline: straight segments and arcs (turn ±1) from `start`.

@@ -201,6 +201,8 @@ struct JsonFields {
     num(out, m.diameter);
     fmt::format_to(out, FMT_COMPILE(",\"depth\":"));
     num(out, m.depth);
+    // Only a bore says so: every drilled hole's trace stays as it was.
+    if (m.cycle == HoleCycle::Bore) fmt::format_to(out, FMT_COMPILE(",\"cycle\":\"bore\""));
   }
 
   void operator()(const Pocket& m) const {
@@ -311,6 +313,7 @@ struct TextFields {
   void operator()(const Hole& m) const {
     fmt::format_to(out, FMT_COMPILE(" at ({:.4f}, {:.4f}, {:.4f}) diameter {:g} depth {:g}"),
                    m.at.x, m.at.y, m.at.z, m.diameter, m.depth);
+    if (m.cycle == HoleCycle::Bore) fmt::format_to(out, FMT_COMPILE(" bored"));
   }
 
   void operator()(const Pocket& m) const {

@@ -44,7 +44,8 @@ std::string shape_words(const job::Tool& t) {
   case job::ToolType::Tap: return "drill";
   case job::ToolType::Bull:
   case job::ToolType::Flat:
-  case job::ToolType::Face: break;
+  case job::ToolType::Face:
+  case job::ToolType::Bore: break;  // a boring bar's end is square
   }
   return "flat";
 }

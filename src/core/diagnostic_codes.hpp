@@ -173,4 +173,6 @@
   X(JobDeeperThanStock, E_JOB_DEEPER_THAN_STOCK)                 \
   X(JobCutsThroughStock, W_JOB_CUTS_THROUGH_STOCK)               \
   X(JobCutsBelowStock, W_JOB_CUTS_BELOW_STOCK)                   \
-  X(JobHoleNotThrough, W_JOB_HOLE_NOT_THROUGH)
+  X(JobHoleNotThrough, W_JOB_HOLE_NOT_THROUGH)                   \
+  /* job: a bore and the hole it finishes */                     \
+  X(JobPilotHole, E_JOB_PILOT_HOLE)

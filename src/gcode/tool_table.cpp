@@ -348,6 +348,7 @@ std::optional<ToolTable> read_tool_table(const core::SourceFile& file, std::uint
       return;
     }
     if (semicolon != std::string_view::npos) tool->comment = trim(text.substr(semicolon + 1));
+    tool->line = line_number;
     const auto at = read.find(tool->number);
     if (at != read.end()) {
       line.report(Severity::Warning, trim(words),

@@ -29,6 +29,7 @@ struct ToolEntry {
   double back_angle = 0;               // J, degrees (lathe)
   int orientation = 0;                 // Q, 0..9 (lathe)
   std::string comment{};               // text after ';', blanks trimmed
+  std::uint32_t line = 0;              // the table's line it was read from (0: not from a file)
 };
 
 // Tools by number. Pointers from find() stay valid until the next set() or

@@ -24,8 +24,8 @@ constexpr Range kFeed{0.001, 1e6, "mm/min"};
 constexpr Range kTabs{0, 100, "tabs"};
 
 constexpr std::string_view kTop[] = {"job", "stock", "operation"};
-constexpr std::string_view kJobKeys[] = {"name",    "machine", "tools",     "materials",
-                                         "drawing", "safe_z",  "setup_note"};
+constexpr std::string_view kJobKeys[] = {"name",    "machine", "tools",      "materials",
+                                         "drawing", "safe_z",  "setup_note", "tool_table_units"};
 constexpr std::string_view kStockKeys[] = {"shape",  "size",     "diameter",
                                            "height", "material", "origin"};
 // The keys every operation has, then each type's own.
@@ -33,6 +33,8 @@ constexpr std::string_view kStockKeys[] = {"shape",  "size",     "diameter",
 constexpr std::string_view kDrillKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "peck",
                                            "retract"};
 constexpr std::string_view kSpotKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract"};
+constexpr std::string_view kBoreKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract",
+                                          "predrilled"};
 constexpr std::string_view kPocketKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "stepover"};
 constexpr std::string_view kProfileKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "side",
                                              "lead_radius",    "tabs",  "tab_width", "tab_height"};
@@ -55,6 +57,7 @@ constexpr TypeName kTypes[] = {
     {OpType::Drill, "drill", kDrillKeys},
     {OpType::Spot, "spot", kSpotKeys},
     {OpType::Tap, "tap", kSpotKeys},
+    {OpType::Bore, "bore", kBoreKeys},
     {OpType::Pocket, "pocket", kPocketKeys},
     {OpType::Profile, "profile", kProfileKeys},
     {OpType::EllipsePocket, "ellipse_pocket", kEllipseKeys},
@@ -66,6 +69,30 @@ constexpr TypeName kTypes[] = {
 std::string relative_to(const std::string& folder, const std::string& path) {
   if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
   return (std::filesystem::path(folder) / path).lexically_normal().string();
+}
+
+// A LinuxCNC tool table's lengths are in its machine's units and the file
+// does not say which (LinuxCNC docs, "Tool Table Format"): the job says it,
+// for a table and only for one.
+void read_tool_table_units(TomlReader& r, const toml::table& t, Job& job) {
+  const bool table = job.tools.ends_with(".tbl");
+  const auto units = r.text(t, "[job]", "tool_table_units", false);
+  const toml::node* n = t.get("tool_table_units");
+  if (n != nullptr) job.tool_table_units_loc = r.loc(n->source());
+  if (units && !table) {
+    r.fail(n->source(),
+           "[job] tool_table_units is for a LinuxCNC tool table (tools = "
+           "\"FILE.tbl\"); a TOML library's lengths are in mm");
+  } else if (units && *units != "mm" && *units != "inch") {
+    r.fail(n->source(),
+           fmt::format("[job] tool_table_units = \"{}\": give \"mm\" or \"inch\"", *units));
+  } else if (table && !units && n == nullptr) {
+    r.fail(t.get("tools")->source(),
+           "[job] tools is a LinuxCNC tool table, whose lengths are in its machine's units: give "
+           "tool_table_units = \"mm\" or \"inch\"");
+  } else if (units) {
+    job.tool_table_mm = *units == "inch" ? 25.4 : 1.0;
+  }
 }
 
 void read_header(TomlReader& r, const toml::table& root, const std::string& folder, Job& job) {
@@ -84,6 +111,7 @@ void read_header(TomlReader& r, const toml::table& root, const std::string& fold
   job.drawing = path("drawing", false, job.drawing_loc);
   job.safe_z = r.number(t, "[job]", "safe_z", kSmall, false).value_or(5.0);
   job.setup_note = r.text(t, "[job]", "setup_note", false).value_or("");
+  read_tool_table_units(r, t, job);
 }
 
 void read_stock(TomlReader& r, const toml::table& root, Stock& s) {
@@ -167,8 +195,9 @@ void read_chamfer_keys(TomlReader& r, const toml::table& t, const std::string& w
 
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
   const bool layered = op.type == OpType::Drill || op.type == OpType::Spot ||
-                       op.type == OpType::Tap || op.type == OpType::Pocket ||
-                       op.type == OpType::Profile || op.type == OpType::Chamfer;
+                       op.type == OpType::Tap || op.type == OpType::Bore ||
+                       op.type == OpType::Pocket || op.type == OpType::Profile ||
+                       op.type == OpType::Chamfer;
   if (layered) {
     op.layer = r.text(t, w, "layer", true).value_or("");
     if (const toml::node* l = t.get("layer")) op.layer_loc = r.loc(l->source());
@@ -178,6 +207,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
   op.diameter = r.number(t, w, "diameter", kSmall, false);
   op.peck = r.number(t, w, "peck", kZeroUp, false).value_or(0.0);
   op.retract = r.number(t, w, "retract", kSmall, false).value_or(1.0);
+  op.predrilled = r.flag(t, w, "predrilled").value_or(false);
   op.side = r.text(t, w, "side", false).value_or("outside");
   op.lead_radius = r.number(t, w, "lead_radius", kZeroUp, false).value_or(0.0);
   op.tabs = static_cast<int>(r.number(t, w, "tabs", kTabs, false).value_or(0.0));
@@ -212,7 +242,7 @@ void read_operation(TomlReader& r, const toml::table& t, std::size_t index, Job&
   if (found == nullptr) {
     r.fail(core::Code::JobUnknownOperation, t.get("type")->source(),
            fmt::format("{}: type \"{}\" is not an operation usina makes: give drill, spot, "
-                       "tap, pocket, profile, ellipse_pocket, face, engrave or chamfer",
+                       "tap, bore, pocket, profile, ellipse_pocket, face, engrave or chamfer",
                        what, *type));
     return;
   }

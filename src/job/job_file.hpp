@@ -15,7 +15,18 @@
 
 namespace usina::job {
 
-enum class OpType { Drill, Spot, Tap, Pocket, Profile, EllipsePocket, Face, Engrave, Chamfer };
+enum class OpType {
+  Drill,
+  Spot,
+  Tap,
+  Bore,
+  Pocket,
+  Profile,
+  EllipsePocket,
+  Face,
+  Engrave,
+  Chamfer
+};
 
 std::string_view op_type_name(OpType t);
 
@@ -33,8 +44,11 @@ struct Operation {
   std::optional<double> diameter;   // drill: only the holes of this diameter
   double peck = 0;                  // drill: G83 pecks, 0 for G81
   double retract = 1.0;             // drill: the R plane above Z0
-  std::string side = "outside";     // profile, chamfer
-  double width = 0;                 // chamfer: its leg on the top face, mm
+  // bore: the holes are there before the job (cast, or drilled in another
+  // setup): no earlier operation of the job need drill them.
+  bool predrilled = false;
+  std::string side = "outside";  // profile, chamfer
+  double width = 0;              // chamfer: its leg on the top face, mm
   core::SourceLoc width_loc;
   double tip_offset = 0.5;  // chamfer: how far the tip goes below the chamfer's foot
   double lead_radius = 0;   // profile
@@ -69,6 +83,10 @@ struct Job {
   std::string materials;
   std::string drawing;  // empty: no drawing (an ellipse pocket needs none)
   core::SourceLoc tools_loc, materials_loc, drawing_loc, machine_loc;
+  // A LinuxCNC tool table as the library (`tools` ending in ".tbl"): the
+  // mm of its machine's unit (1, or 25.4 for "inch"); 0: not given.
+  double tool_table_mm = 0;
+  core::SourceLoc tool_table_units_loc;
   double safe_z = 5.0;
   std::string setup_note;  // fixtures, clamping, zero: for the setup sheet (--sheet)
   Stock stock;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "job/toml_reader.hpp"
+#include "job/tool_table_library.hpp"
 
 namespace usina::job {
 namespace {
@@ -68,7 +69,10 @@ std::optional<LoadedJob> load_job(const std::string& path, core::SourceManager& 
   const auto tools_text = open(l.job.tools, sources, io_error);
   const auto materials_text = tools_text ? open(l.job.materials, sources, io_error) : std::nullopt;
   if (!materials_text) return std::nullopt;
-  auto tools = read_tool_library(tools_text->first, tools_text->second, diags);
+  auto tools = l.job.tool_table_mm > 0
+                   ? read_tool_table_library(*sources.get(tools_text->second), tools_text->second,
+                                             l.job.tool_table_mm, diags)
+                   : read_tool_library(tools_text->first, tools_text->second, diags);
   auto materials = read_materials(materials_text->first, materials_text->second, diags);
   if (!l.job.machine.empty()) {
     const auto machine_text = open(l.job.machine, sources, io_error);

@@ -65,23 +65,17 @@ std::vector<cam::Vec2> centres_of(const std::vector<HoleGroup>& groups) {
   return centres;
 }
 
+// The depth below Z0 where a drilled hole's full diameter ends: its 118°
+// point above the drill's depth, or none when that is through the stock.
+double full_depth(const Stock& stock, const Operation& op, double diameter) {
+  const double full = op.depth - point_length(diameter, kDrillPointAngle);
+  return full >= stock_top(stock).height - 1e-6 ? kNoCorner : full;
+}
+
 bool run_drill(Context& cx, const Operation& op, const std::string& title) {
-  const auto paths = layer_paths(cx.j, op, cx.diags);
-  if (!paths) return false;
-  std::size_t others = 0;
-  std::vector<HoleGroup> groups = holes_of(*paths, others);
-  if (op.diameter) {
-    std::erase_if(groups,
-                  [&](const HoleGroup& g) { return std::abs(g.diameter - *op.diameter) > 1e-3; });
-  }
-  if (groups.empty() || others > 0) {
-    cx.diags.report(
-        {core::Code::BadJob, core::Severity::Error, op.layer_loc,
-         fmt::format("layer \"{}\" has {} circles{} and {} other entities: a drill "
-                     "layer holds the holes' circles only",
-                     op.layer, groups.size(), op.diameter ? " of that diameter" : "", others)});
-    return false;
-  }
+  const auto found = layer_holes(cx, op);
+  if (!found) return false;
+  const std::vector<HoleGroup>& groups = *found;
   const Stock& stock = cx.j.job.stock;
   if (!check_hole_centres(stock, op, centres_of(groups), cx.diags)) return false;
   check_hole_edges(stock, op, groups, cx.diags);
@@ -106,6 +100,11 @@ bool run_drill(Context& cx, const Operation& op, const std::string& title) {
     if (op.type == OpType::Tap) o.pitch = tool->pitch;
     AtOperation at(cx.diags, op.loc, title);
     if (!cam::generate_drill(g.centers, o, cx.sink, at)) return false;
+    // A spot drill's cone and a tap's thread are no pilot hole for a bore.
+    if (op.type == OpType::Drill) {
+      for (const cam::Vec2& c : g.centers)
+        cx.holes.push_back({c, g.diameter, full_depth(stock, op, g.diameter)});
+    }
   }
   return true;
 }
@@ -182,7 +181,7 @@ void job_header(Context& cx) {
 
 bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags, SheetLog* sheet) {
   ProgramSink program(sink);
-  Context cx{j, program, diags, sheet};
+  Context cx{j, program, diags, sheet, {}, {}};
   job_header(cx);
   for (std::size_t i = 0; i < j.job.operations.size(); ++i) {
     const Operation& op = j.job.operations[i];
@@ -193,6 +192,7 @@ bool make_job(const LoadedJob& j, canon::Sink& sink, core::DiagnosticSink& diags
     case OpType::Drill:
     case OpType::Spot:
     case OpType::Tap: ok = run_drill(cx, op, title); break;
+    case OpType::Bore: ok = run_bore(cx, op, title); break;
     case OpType::Pocket: ok = run_pocket(cx, op, title); break;
     case OpType::Profile: ok = run_profile(cx, op, title); break;
     case OpType::EllipsePocket: ok = run_ellipse(cx, op, title); break;

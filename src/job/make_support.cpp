@@ -1,6 +1,7 @@
 #include "job/make_support.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <variant>
 
 #include <fmt/format.h>
@@ -56,6 +57,26 @@ std::optional<std::vector<cam::Path>> layer_paths(const LoadedJob& j, const Oper
   return paths;
 }
 
+std::optional<std::vector<HoleGroup>> layer_holes(Context& cx, const Operation& op) {
+  const auto paths = layer_paths(cx.j, op, cx.diags);
+  if (!paths) return std::nullopt;
+  std::size_t others = 0;
+  std::vector<HoleGroup> groups = holes_of(*paths, others);
+  if (op.diameter) {
+    std::erase_if(groups,
+                  [&](const HoleGroup& g) { return std::abs(g.diameter - *op.diameter) > 1e-3; });
+  }
+  if (groups.empty() || others > 0) {
+    cx.diags.report({core::Code::BadJob, core::Severity::Error, op.layer_loc,
+                     fmt::format("layer \"{}\" has {} circles{} and {} other entities: a {} "
+                                 "layer holds the holes' circles only",
+                                 op.layer, groups.size(), op.diameter ? " of that diameter" : "",
+                                 others, op_type_name(op.type))});
+    return std::nullopt;
+  }
+  return groups;
+}
+
 namespace {
 
 bool is_end_mill(ToolType t) {
@@ -68,6 +89,7 @@ bool takes_tool(OpType op, ToolType t) {
   case OpType::Drill: return t == ToolType::Drill;
   case OpType::Spot: return t == ToolType::Spot;
   case OpType::Tap: return t == ToolType::Tap;
+  case OpType::Bore: return t == ToolType::Bore;
   case OpType::Face: return t == ToolType::Face || t == ToolType::Flat || t == ToolType::Bull;
   case OpType::Engrave:
     return t == ToolType::Engraver || t == ToolType::Flat || t == ToolType::Ball;
@@ -81,6 +103,7 @@ std::string_view tools_taken(OpType op) {
   case OpType::Drill: return "a drill";
   case OpType::Spot: return "a spot drill";
   case OpType::Tap: return "a tap";
+  case OpType::Bore: return "a boring bar or head";
   case OpType::Face: return "a face mill, or a flat or bull end mill";
   case OpType::Engrave: return "an engraver, or a flat or ball end mill";
   case OpType::Chamfer: return "a chamfer mill";
@@ -150,7 +173,9 @@ bool from_cutting_data(const LoadedJob& j, const Operation& op, const Tool& tool
   const Material& m = j.materials[j.material];
   // A spot drill drills: the tables' drilling rows (none for carbide).
   const bool drills = tool.type == ToolType::Drill || tool.type == ToolType::Spot;
-  const CutKind kind = drills ? CutKind::Drill : CutKind::Mill;
+  const CutKind kind = drills                        ? CutKind::Drill
+                       : tool.type == ToolType::Bore ? CutKind::Bore
+                                                     : CutKind::Mill;
   const CuttingRow* row = cutting_row(m, tool, kind);
   const auto conditions =
       row ? cutting_conditions(*row, tool, slotting, limits_of(j)) : std::nullopt;
@@ -158,7 +183,10 @@ bool from_cutting_data(const LoadedJob& j, const Operation& op, const Tool& tool
     diags.report({core::Code::JobNoCuttingData, core::Severity::Error, op.loc,
                   fmt::format("{} has no {} data for a {} tool of D{:g} (T{}): give rpm and "
                               "feed in the operation, or add the row to {}",
-                              m.name, kind == CutKind::Drill ? "drilling" : "milling",
+                              m.name,
+                              kind == CutKind::Drill  ? "drilling"
+                              : kind == CutKind::Bore ? "boring"
+                                                      : "milling",
                               tool_material_name(tool.material), tool.diameter, tool.number,
                               j.job.materials)});
     return false;
@@ -188,8 +216,9 @@ bool cutting_values(const LoadedJob& j, const Operation& op, const Tool& tool, b
   } else if (op.rpm && op.feed) {
     c.rpm = *op.rpm;
     c.feed = *op.feed;
-    c.plunge_feed =
-        tool.type == ToolType::Drill || tool.type == ToolType::Spot ? c.feed : c.feed / 2;
+    const bool axial = tool.type == ToolType::Drill || tool.type == ToolType::Spot ||
+                       tool.type == ToolType::Bore;  // the whole cut is along Z
+    c.plunge_feed = axial ? c.feed : c.feed / 2;
     c.why.push_back(fmt::format("n {:g} and vf {:g} as the job gives them", c.rpm, c.feed));
   } else if (!from_cutting_data(j, op, tool, slotting, c, diags)) {
     return false;

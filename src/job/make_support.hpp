@@ -10,6 +10,7 @@
 #include "cam/program.hpp"
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
+#include "job/geometry.hpp"
 #include "job/load.hpp"
 #include "job/sheet.hpp"
 
@@ -60,12 +61,22 @@ const Tool* named_tool(const LoadedJob& j, const Operation& op, core::Diagnostic
 bool cutting_values(const LoadedJob& j, const Operation& op, const Tool& tool, bool slotting,
                     cam::Cutting& cut, std::vector<std::string>& why, core::DiagnosticSink& diags);
 
+// A hole an earlier operation made: what a bore's pilot hole is checked by.
+struct MadeHole {
+  cam::Vec2 centre;
+  double diameter = 0;
+  double full_depth = 0;  // mm below Z0 where its full diameter ends (infinity: through)
+};
+
 // What every operation's maker is given.
 struct Context {
   const LoadedJob& j;
   ProgramSink& sink;
   core::DiagnosticSink& diags;
-  SheetLog* sheet = nullptr;  // the setup sheet's record of the steps, if one is written
+  SheetLog* sheet = nullptr;    // the setup sheet's record of the steps, if one is written
+  std::vector<MadeHole> holes;  // drilled and bored so far, in order
+  std::vector<std::pair<int, double>>
+      head_settings;  // boring heads and the diameter each is set to
 };
 
 // The tool of `op`: named, or the largest flat end mill whose radius is
@@ -85,6 +96,15 @@ bool run_ellipse(Context& cx, const Operation& op, const std::string& title);
 // Facing the stock's top and engraving text (make_top.cpp).
 bool run_face(Context& cx, const Operation& op, const std::string& title);
 bool run_engrave(Context& cx, const Operation& op, const std::string& title);
+
+// Bores: pre-drilled holes finished with a boring bar or head, G85
+// (make_bore.cpp).
+bool run_bore(Context& cx, const Operation& op, const std::string& title);
+
+// The circles of a hole operation's layer grouped by diameter (only the
+// op's `diameter` when given); nullopt after an error (none, or other
+// entities on the layer).
+std::optional<std::vector<HoleGroup>> layer_holes(Context& cx, const Operation& op);
 
 // A chamfer along the layer's contours (make_chamfer.cpp).
 bool run_chamfer(Context& cx, const Operation& op, const std::string& title);

@@ -45,22 +45,30 @@ std::optional<CuttingRow> read_row(TomlReader& r, const toml::table& t, const st
   const auto cut = r.text(t, what, "cut", true);
   const auto vc = r.number(t, what, "vc", kVc, true);
   const auto source = r.text(t, what, "source", true);
-  if (cut && *cut != "mill" && *cut != "drill") {
-    r.fail(t.get("cut")->source(), fmt::format("{}: cut must be \"mill\" or \"drill\"", what));
+  if (cut && *cut != "mill" && *cut != "drill" && *cut != "bore") {
+    r.fail(t.get("cut")->source(),
+           fmt::format("{}: cut must be \"mill\", \"drill\" or \"bore\"", what));
     return std::nullopt;
   }
-  const bool drill = cut && *cut == "drill";
-  const char* feed_key = drill ? "fn" : "fz";
+  // Drills and boring bars feed per revolution, mills per tooth.
+  const bool per_rev = cut && *cut != "mill";
+  const char* feed_key = per_rev ? "fn" : "fz";
   const toml::node* feed = t.get(feed_key);
   if (feed == nullptr) {
     r.fail(t.source(),
-           fmt::format("{}: a {} row needs {} (feed per {})", what, drill ? "drill" : "mill",
-                       feed_key, drill ? "revolution" : "tooth"));
+           fmt::format("{}: a {} row needs {} (feed per {})", what, cut.value_or("mill"), feed_key,
+                       per_rev ? "revolution" : "tooth"));
+    return std::nullopt;
+  }
+  // The other feed would be silently unread.
+  if (const toml::node* other = t.get(per_rev ? "fz" : "fn")) {
+    r.fail(other->source(), fmt::format("{}: a {} row's feed is {}, not {}", what,
+                                        cut.value_or("mill"), feed_key, per_rev ? "fz" : "fn"));
     return std::nullopt;
   }
   if (!tool || !cut || !vc || !source || !read_feeds(r, *feed, what, row)) return std::nullopt;
   row.tool_material = *tool;
-  row.cut = drill ? CutKind::Drill : CutKind::Mill;
+  row.cut = *cut == "drill" ? CutKind::Drill : *cut == "bore" ? CutKind::Bore : CutKind::Mill;
   row.vc = *vc;
   row.source = *source;
   return row;
@@ -132,7 +140,7 @@ std::optional<CuttingConditions> cutting_conditions(const CuttingRow& row, const
   const double f = feed_at(row, tool.diameter);
   if (f <= 0) return std::nullopt;
   CuttingConditions c;
-  const bool drill = row.cut == CutKind::Drill;
+  const bool drill = row.cut != CutKind::Mill;  // a drill's or a boring bar's feed a revolution
   const double vc = slotting ? row.vc * 0.8 : row.vc;
   c.rpm = vc * 1000.0 / (std::numbers::pi * tool.diameter);
   c.why.push_back(fmt::format(
@@ -154,8 +162,8 @@ std::optional<CuttingConditions> cutting_conditions(const CuttingRow& row, const
     c.feed = limits.max_feed;
     c.limited = true;
   }
-  // Drills feed along Z at vf; an end mill goes in at half its feed (the
-  // job's rule, docs/job.md).
+  // Drills and boring bars feed along Z at vf; an end mill goes in at half
+  // its feed (the job's rule, docs/job.md).
   c.plunge_feed = drill ? c.feed : c.feed / 2;
   c.why.push_back(fmt::format("vc {:g} m/min, f {:g} mm: {}", row.vc, f, row.source));
   return c;

@@ -17,7 +17,9 @@
 
 namespace usina::job {
 
-enum class CutKind { Mill, Drill };
+// Bore: finishing a pre-drilled hole with a single-point boring bar; its
+// feed is per revolution, as a drill's.
+enum class CutKind { Mill, Drill, Bore };
 
 // One row: a material cut by a tool material, in one kind of cut.
 struct CuttingRow {

@@ -295,6 +295,19 @@ bool check_tap_depth(const StockTop& top, const Operation& op, const Tool& tool,
   return false;
 }
 
+// A boring bar's end is square: it is through once at the bottom, and
+// below it, past what a breakthrough needs, it cuts what the stock stands on.
+void check_bore_depth(const StockTop& top, const Operation& op, const Tool& tool,
+                      core::DiagnosticSink& diags) {
+  const double below = op.depth - top.height;
+  if (below <= kBreakthrough + kOnEdge) return;
+  report(diags, core::Code::JobCutsBelowStock, core::Severity::Warning, at_key(op.depth_loc, op),
+         fmt::format("T{} bores {} mm below the stock's bottom, more than the {} mm a "
+                     "through bore needs: it cuts what the stock stands on; give depth {} at "
+                     "most",
+                     tool.number, mm(below), mm(kBreakthrough), mm(top.height + kBreakthrough)));
+}
+
 }  // namespace
 
 bool check_hole_depth(const Stock& s, const Operation& op, const Tool& tool,
@@ -303,6 +316,7 @@ bool check_hole_depth(const Stock& s, const Operation& op, const Tool& tool,
   switch (op.type) {
   case OpType::Tap: return check_tap_depth(top, op, tool, diags);
   case OpType::Spot: check_spot_depth(top, op, tool, diags); return true;
+  case OpType::Bore: check_bore_depth(top, op, tool, diags); return true;
   default: check_drill_depth(top, op, tool, diags); return true;
   }
 }

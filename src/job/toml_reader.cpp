@@ -83,6 +83,16 @@ std::optional<std::string> TomlReader::text(const toml::table& t, std::string_vi
   return n->value<std::string>();
 }
 
+std::optional<bool> TomlReader::flag(const toml::table& t, std::string_view what, const char* key) {
+  const toml::node* n = t.get(key);
+  if (n == nullptr) return std::nullopt;
+  if (!n->is_boolean()) {
+    fail(n->source(), fmt::format("{} {} must be true or false", what, key));
+    return std::nullopt;
+  }
+  return n->value<bool>();
+}
+
 std::optional<std::vector<double>> TomlReader::numbers(const toml::table& t, std::string_view what,
                                                        const char* key, std::size_t n,
                                                        const Range& range, bool required) {

@@ -66,6 +66,8 @@ class TomlReader {
                                const Range& range, bool required);
   std::optional<std::string> text(const toml::table& t, std::string_view what, const char* key,
                                   bool required);
+  // true or false; nullopt when absent or after reporting another type.
+  std::optional<bool> flag(const toml::table& t, std::string_view what, const char* key);
   // [x, y] (or [x, y, z] with n = 3) of numbers within `range`.
   std::optional<std::vector<double>> numbers(const toml::table& t, std::string_view what,
                                              const char* key, std::size_t n, const Range& range,

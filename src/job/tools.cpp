@@ -19,7 +19,7 @@ constexpr std::array kTypes = {
     std::pair{ToolType::Bull, "bull"}, std::pair{ToolType::Drill, "drill"},
     std::pair{ToolType::Spot, "spot"}, std::pair{ToolType::Chamfer, "chamfer"},
     std::pair{ToolType::Tap, "tap"},   std::pair{ToolType::Engraver, "engraver"},
-    std::pair{ToolType::Face, "face"},
+    std::pair{ToolType::Face, "face"}, std::pair{ToolType::Bore, "bore"},
 };
 constexpr std::array kMaterials = {
     std::pair{ToolMaterial::Hss, "hss"},
@@ -30,7 +30,7 @@ constexpr std::string_view kToolKeys[] = {
     "number",        "type",           "name",           "diameter",
     "flutes",        "cutting_length", "overall_length", "holder_diameter",
     "holder_length", "material",       "pitch",          "angle",
-    "tip_diameter"};
+    "tip_diameter",  "diameter_range"};
 
 constexpr Range kNumber{1, 9999, ""};
 constexpr Range kDiameter{0.01, 500, "mm"};
@@ -90,6 +90,48 @@ bool check_cone(TomlReader& r, const toml::table& t, const std::string& what, co
   return true;
 }
 
+// A boring tool is a bar set to one `diameter`, or a head with its
+// `diameter_range = [smallest, largest]`: one or the other, never both (a
+// head's set diameter changes at the machine, the job sets it per hole).
+// Only a boring tool has a range. The diameter is then the range's start:
+// the smallest hole its bar enters.
+bool read_bore_size(TomlReader& r, const toml::table& t, const std::string& what, Tool& tool,
+                    bool has_diameter) {
+  const toml::node* range = t.get("diameter_range");
+  if (tool.type != ToolType::Bore) {
+    if (range != nullptr) {
+      r.fail(range->source(), fmt::format("{}: only a boring tool has a diameter_range", what));
+      return false;
+    }
+    return has_diameter;
+  }
+  if (range != nullptr && has_diameter) {
+    r.fail(range->source(),
+           fmt::format("{}: give diameter (a bar set to one size) or diameter_range (a boring "
+                       "head's smallest and largest bore), not both",
+                       what));
+    return false;
+  }
+  if (range == nullptr) {
+    if (!has_diameter)
+      r.fail(t.source(), fmt::format("{}: a boring tool needs diameter (a bar set to one size) "
+                                     "or diameter_range = [smallest, largest] (a boring head)",
+                                     what));
+    return has_diameter;
+  }
+  const auto d = r.numbers(t, what, "diameter_range", 2, kDiameter, true);
+  if (!d) return false;
+  if ((*d)[1] <= (*d)[0]) {
+    r.fail(range->source(),
+           fmt::format("{}: diameter_range [{:g}, {:g}] is not [smallest, largest]", what, (*d)[0],
+                       (*d)[1]));
+    return false;
+  }
+  tool.diameter = (*d)[0];
+  tool.max_bore = (*d)[1];
+  return true;
+}
+
 // One [[tool]] entry; nullopt after an error.
 std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
   r.known_keys(t, "[[tool]]", kToolKeys);
@@ -97,7 +139,8 @@ std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
   const auto number = r.number(t, "[[tool]]", "number", kNumber, true);
   const std::string what = number ? fmt::format("tool {:g}", *number) : "[[tool]]";
   const auto type = r.text(t, what, "type", true);
-  const auto diameter = r.number(t, what, "diameter", kDiameter, true);
+  const bool bore = t.get("type") != nullptr && t.get("type")->value_or<std::string>("") == "bore";
+  const auto diameter = r.number(t, what, "diameter", kDiameter, !bore);
   const auto flutes = r.number(t, what, "flutes", kFlutes, false);
   const auto cutting = r.number(t, what, "cutting_length", kLength, true);
   const auto material = r.text(t, what, "material", true);
@@ -123,10 +166,11 @@ std::optional<Tool> read_tool(TomlReader& r, const toml::table& t) {
            fmt::format("{}: material \"{}\" is not one usina knows: give {}", what, *material,
                        list(kMaterials)));
   }
-  if (!number || !ty || !diameter || !cutting || !ma) return std::nullopt;
+  if (!number || !ty || !cutting || !ma) return std::nullopt;
   tool.number = static_cast<int>(*number);
   tool.type = *ty;
-  tool.diameter = *diameter;
+  tool.diameter = diameter.value_or(0.0);
+  if (!read_bore_size(r, t, what, tool, diameter.has_value())) return std::nullopt;
   tool.flutes = static_cast<int>(flutes.value_or(2.0));
   tool.cutting_length = *cutting;
   tool.material = *ma;
@@ -326,6 +370,66 @@ ToolChoice chamfer_mill(const std::vector<Tool>& tools, double width, double tip
         "no chamfer mill's edge reaches a {:g} mm chamfer with a tip offset of {:g} mm: the "
         "widest, T{}, makes {:.3g} mm",
         width, tip_offset, widest->number, chamfer_reach(*widest, tip_offset));
+  }
+  return c;
+}
+
+bool bores(const Tool& tool, double diameter) {
+  if (tool.type != ToolType::Bore) return false;
+  if (tool.max_bore <= 0) return std::abs(tool.diameter - diameter) <= 0.005;
+  return diameter >= tool.diameter - 0.005 && diameter <= tool.max_bore + 0.005;
+}
+
+namespace {
+
+std::string bore_size(const Tool& t) {
+  return t.max_bore > 0 ? fmt::format("D{:g}-{:g}", t.diameter, t.max_bore)
+                        : fmt::format("D{:g}", t.diameter);
+}
+
+// A set bar before any head; among heads, the largest smallest bore.
+bool better_bore(const Tool& a, const Tool& b) {
+  if ((a.max_bore <= 0) != (b.max_bore <= 0)) return a.max_bore <= 0;
+  return a.diameter > b.diameter;
+}
+
+}  // namespace
+
+ToolChoice boring_tool(const std::vector<Tool>& tools, double diameter, double depth,
+                       double pilot) {
+  ToolChoice c;
+  const Tool* refused = nullptr;  // one that bores the size but is refused, to say why
+  for (const Tool& t : tools) {
+    if (!bores(t, diameter)) continue;
+    const bool enters = pilot <= 0 || t.max_bore <= 0 || t.diameter <= pilot + 0.005;
+    if (t.cutting_length >= depth && enters) {
+      if (c.tool == nullptr || better_bore(t, *c.tool)) c.tool = &t;
+    } else {
+      refused = &t;
+    }
+  }
+  if (c.tool != nullptr) {
+    c.why = fmt::format("T{}: {} {} for a D{:g} bore {:g} mm deep{}", c.tool->number,
+                        c.tool->max_bore > 0 ? "the boring head" : "the boring bar",
+                        bore_size(*c.tool), diameter, depth,
+                        c.tool->max_bore > 0 && pilot > 0
+                            ? fmt::format(" whose bar enters the D{:g} pilot hole", pilot)
+                            : std::string());
+  } else if (refused != nullptr) {
+    c.why = refused->cutting_length < depth
+                ? fmt::format(
+                      "the boring tool T{} ({}) cuts {:g} mm deep at most; the bore is "
+                      "{:g} mm deep",
+                      refused->number, bore_size(*refused), refused->cutting_length, depth)
+                : fmt::format(
+                      "the boring head T{} ({}) has a bar for holes of D{:g} or more: it "
+                      "does not enter the D{:g} pilot hole",
+                      refused->number, bore_size(*refused), refused->diameter, pilot);
+  } else {
+    c.why = fmt::format(
+        "the library has no boring tool for D{:g} (a bar set to it, or a head "
+        "whose diameter_range holds it)",
+        diameter);
   }
   return c;
 }

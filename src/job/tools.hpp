@@ -12,7 +12,7 @@
 
 namespace usina::job {
 
-enum class ToolType { Flat, Ball, Bull, Drill, Spot, Chamfer, Tap, Engraver, Face };
+enum class ToolType { Flat, Ball, Bull, Drill, Spot, Chamfer, Tap, Engraver, Face, Bore };
 enum class ToolMaterial { Hss, Carbide, Coated };
 
 std::string_view tool_type_name(ToolType t);
@@ -31,6 +31,10 @@ struct Tool {
   double pitch = 0;            // a tap's thread pitch, mm; 0: not given
   double angle = 0;            // a chamfer mill's or engraver's included angle, deg; 0: not given
   double tip_diameter = 0;     // the flat at a chamfer mill's or engraver's tip, mm
+  // A boring head's largest setting, mm: it bores any diameter from
+  // `diameter` (the smallest, which its bar enters) to this. 0: a boring
+  // bar set to one diameter, `diameter`.
+  double max_bore = 0;
   ToolMaterial material = ToolMaterial::Hss;
 };
 
@@ -90,6 +94,17 @@ double chamfer_reach(const Tool& tool, double tip_offset);
 // The smallest chamfer mill whose cutting edge reaches `width` (the one
 // that reaches into the tightest places).
 ToolChoice chamfer_mill(const std::vector<Tool>& tools, double width, double tip_offset);
+
+// Whether a boring tool bores `diameter`: a bar set to it (within 0.005 mm),
+// or a head whose range holds it.
+bool bores(const Tool& tool, double diameter);
+
+// The boring tool for holes of `diameter` bored `depth` deep, whose bar
+// enters a pre-drilled hole of `pilot` mm (0: not known): a bar set to the
+// diameter first (nothing to set at the machine), else the head whose
+// smallest bore is the largest that enters the pilot hole (the thickest,
+// stiffest bar).
+ToolChoice boring_tool(const std::vector<Tool>& tools, double diameter, double depth, double pilot);
 
 // A drill of `diameter` (within 0.005 mm) whose cutting length reaches `depth`.
 ToolChoice drill_of(const std::vector<Tool>& tools, double diameter, double depth);

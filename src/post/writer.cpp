@@ -31,7 +31,8 @@ Writer::Writer(std::ostream& out, Control control, const PostOptions& options,
       g0_(code('G', 0)),
       g1_(code('G', 1)),
       g81_(code('G', 81)),
-      g83_(code('G', 83)) {}
+      g83_(code('G', 83)),
+      g85_(code('G', 85)) {}
 
 void Writer::append(std::string& words, const std::string& w) {
   if (w.empty()) return;
@@ -165,7 +166,7 @@ std::string Writer::motion_word(const char* g) {
 }
 
 void Writer::cancel_cycle() {
-  if (motion_ != g81_ && motion_ != g83_) return;
+  if (motion_ != g81_ && motion_ != g83_ && motion_ != g85_) return;
   out_.block(code('G', 80));
   motion_.clear();
   cycle_z_.reset();

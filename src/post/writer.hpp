@@ -100,8 +100,8 @@ class Writer final : public canon::Sink {
   bool spindle_stop_written_ = false;
   bool coolant_off_written_ = false;
   std::optional<double> cycle_z_, cycle_r_, cycle_q_;
-  std::string g0_, g1_, g81_, g83_;  // the motion codes as this control writes them
-  std::string words_, axes_buf_;     // reused for every straight move
+  std::string g0_, g1_, g81_, g83_, g85_;  // the motion codes as this control writes them
+  std::string words_, axes_buf_;           // reused for every straight move
 };
 
 }  // namespace usina::post

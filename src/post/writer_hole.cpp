@@ -6,6 +6,9 @@
 // else as the moves LinuxCNC's G81/G83 would make. Either way the hole is
 // drilled from its top (the R plane) to top − depth at the last feed rate,
 // and the tool returns to where it was, or to R if that was lower (G98).
+// A bored hole (HoleCycle::Bore) is G85 where the control has cycles: fed
+// in and fed back out to R at that rate, then up as a drilled one; never
+// pecked.
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -27,8 +30,16 @@ void Writer::hole(const canon::Hole& h, const canon::Op& op) {
 }
 
 void Writer::cycle_hole(const canon::Hole& h) {
-  const bool peck = options_.peck > 0;
-  std::string w = motion_word((peck ? g83_ : g81_).c_str());
+  const bool bore = h.cycle == canon::HoleCycle::Bore;
+  const bool peck = !bore && options_.peck > 0;
+  const std::string& g = bore ? g85_ : peck ? g83_ : g81_;
+  if (motion_ != g) {
+    // Another cycle: its Z and R are written again rather than trusted to
+    // carry over from the last one.
+    cycle_z_.reset();
+    cycle_r_.reset();
+  }
+  std::string w = motion_word(g.c_str());
   const double r = out_.rounded(h.at.z);
   const double bottom = out_.rounded(h.at.z - h.depth);
   append(w, fmt::format("X{} Y{}", out_.number(h.at.x), out_.number(h.at.y)));
@@ -57,7 +68,8 @@ void Writer::expanded_hole(const canon::Hole& h) {
   if (pos_.z < r) rapid(pos_.x, pos_.y, r);
   rapid(h.at.x, h.at.y, clear);
   rapid(h.at.x, h.at.y, r);
-  if (options_.peck > 0) {
+  const bool bore = h.cycle == canon::HoleCycle::Bore;
+  if (!bore && options_.peck > 0) {
     // G83: out to R after each peck, rapid back to just above the last one.
     for (double d = r - options_.peck; d > bottom; d -= options_.peck) {
       down(d);
@@ -66,6 +78,7 @@ void Writer::expanded_hole(const canon::Hole& h) {
     }
   }
   down(bottom);
+  if (bore) down(r);  // G85: fed back out to R
   rapid(h.at.x, h.at.y, clear);
 }
 

@@ -47,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto tools = job::read_tool_library(text, 0, diags);
     if (tools)
       for (const job::Tool& t : *tools)
-        trap_unless_finite(t.diameter);
+        trap_unless_finite(t.diameter + t.max_bore);
     break;
   }
   default: (void)job::read_materials(text, 0, diags); break;

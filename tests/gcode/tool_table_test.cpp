@@ -144,6 +144,14 @@ TEST(ToolTable, MetricMachineKeepsValues) {
   EXPECT_EQ(r->table->find(5)->diameter, 6.0);
 }
 
+// A job reading the table as its tool library reports at the tool's line.
+TEST(ToolTable, EachToolKeepsTheLineItWasReadFrom) {
+  const auto r = read("; header\nT5 P5 D6\n\nT2 P2 D3\nT5 P5 D6.8 ;again\n", 1.0);
+  ASSERT_TRUE(r->table.has_value());
+  EXPECT_EQ(r->table->find(2)->line, 4u);
+  EXPECT_EQ(r->table->find(5)->line, 5u);  // the line that replaced it
+}
+
 TEST(ToolTable, WordsAreCaseInsensitiveAndInAnyOrder) {
   const auto r = read("d0.5 z1 p3 t9 q2 ;any order\n");
   ASSERT_TRUE(r->table.has_value());

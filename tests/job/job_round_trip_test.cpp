@@ -137,6 +137,16 @@ TEST(JobRoundTrip, TappingReadsBackInEveryControl) {
   round_trip(tp);
 }
 
+TEST(JobRoundTrip, BearingPlatePilotsBoredCutOut) {
+  core::DiagnosticList diags;
+  const canon::Toolpath tp = made("bearing_plate.toml", diags);
+  // The D8.5 drill for the pilots, the boring head set to D10, the bar set
+  // to D12, the D10 end mill for the outline.
+  EXPECT_EQ(tool_changes(tp), (std::vector<int>{7, 13, 14, 1}));
+  EXPECT_FALSE(diags.has_errors());
+  round_trip(tp);
+}
+
 TEST(JobRoundTrip, OneProgramEnd) {
   core::DiagnosticList diags;
   const canon::Toolpath tp = made("plate.toml", diags);

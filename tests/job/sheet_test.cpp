@@ -5,6 +5,8 @@
 // fails).
 #include "job/sheet.hpp"
 
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "canon/sink.hpp"
@@ -73,6 +75,28 @@ TEST(SetupSheet, TheToolListGivesEachToolItsDeepestCutAndStickOut) {
   EXPECT_NE(row.find("<td>10.5</td><td>12.5</td>"), std::string::npos) << row;
   EXPECT_NE(html.find("Cycle time"), std::string::npos);
   EXPECT_NE(html.find("no [cost] per_hour"), std::string::npos);  // the default profile has none
+}
+
+TEST(SetupSheet, ABoreIsAStepWithItsToolSetToTheHoleAndItsTime) {
+  std::string text = testing::job_text(
+      "[[operation]]\ntype = \"drill\"\nlayer = \"PILOT\"\ndepth = 13.0\ntool = \"auto\"\n"
+      "[[operation]]\ntype = \"bore\"\nlayer = \"BORE\"\ndiameter = 10.0\ndepth = 9.0\n"
+      "tool = \"auto\"\n");
+  text.replace(text.find("plate.dxf"), 9, "bearing_plate.dxf");
+  const auto m = made_with_sheet(text);
+  ASSERT_TRUE(m->timer);
+  ASSERT_EQ(m->log.steps.size(), 2u);
+  const SheetStep& bore = m->log.steps[1];
+  EXPECT_NE(bore.title.find("bore layer BORE: 2 holes D10"), std::string::npos) << bore.title;
+  EXPECT_EQ(bore.tool.number, 13);
+  EXPECT_DOUBLE_EQ(bore.tool.diameter, 10.0);  // the head as set, not its range
+  EXPECT_EQ(bore.holes.size(), 2u);
+  // Fed in and out 10 mm (R1 to Z-9) at fn*n = 0.0127 * 727.7 mm/min, twice
+  // a hole: 4 * 10 / 9.242 min, at the least.
+  EXPECT_GT(bore.time.cutting_s, 4 * 10 / (0.0127 * 22.86e3 / (std::numbers::pi * 10)) * 60);
+  const std::string html = sheet_html(*m->loaded->job, m->log, *m->timer, "", "p.ngc");
+  EXPECT_NE(html.find("<tr><td>T13</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("bore"), std::string::npos);
 }
 
 TEST(SetupSheet, TheAuthorsTextIsEscaped) {

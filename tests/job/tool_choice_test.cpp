@@ -22,7 +22,7 @@ std::vector<Tool> shop() {
 
 TEST(ToolChoice, TheShopLibraryReads) {
   const auto tools = shop();
-  ASSERT_EQ(tools.size(), 12u);
+  ASSERT_EQ(tools.size(), 14u);
   const Tool* t = find_tool(tools, 5);
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(t->type, ToolType::Drill);

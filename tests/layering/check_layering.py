@@ -24,7 +24,8 @@ ALLOWED = {
     "sim": {"core", "canon"},
     "post": {"core", "canon"},
     # job (issue 16): the cam generators, driven by a job file, on a machine profile.
-    "job": {"core", "canon", "cam", "sim"},
+    # gcode: a LinuxCNC tool table (gcode/tool_table) read as the tool library.
+    "job": {"core", "canon", "cam", "sim", "gcode"},
     "dnc": {"core", "canon", "gcode", "apt", "cam", "draw", "sim", "post"},
     "cli": {"core", "canon", "gcode", "apt", "cam", "draw", "sim", "post", "dnc", "job"},
 }

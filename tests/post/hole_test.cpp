@@ -52,6 +52,42 @@ TEST(PostHoles, CycleAndMovesMakeTheSamePath) {
   EXPECT_FALSE(diags.has_errors());
 }
 
+// A drilled hole, then a bored one of the same Z and R (a job's pilot and
+// its bore, docs/post.md "Holes").
+std::vector<canon::Op> drilled_then_bored() {
+  return {
+      op(canon::Traverse{{0, 0, 10}}),
+      op(canon::Feed{{0, 0, 5}, 120.0}),
+      op(canon::Hole{{20, 10, 2}, 6, 12}),
+      op(canon::Hole{{40, 10, 2}, 10, 12, canon::HoleCycle::Bore}),
+      op(canon::Hole{{60, 10, 2}, 10, 12, canon::HoleCycle::Bore}),
+      op(canon::Traverse{{0, 0, 10}}),
+      op(canon::ProgramEnd{}),
+  };
+}
+
+TEST(PostHoles, ABoredHoleIsG85WithItsZAndRWrittenAgain) {
+  core::DiagnosticList diags;
+  post::PostOptions o;
+  o.peck = 3;  // pecks a drilled hole, never a bore
+  EXPECT_THAT(test::post_text(drilled_then_bored(), "rs274ngc", diags, o),
+              HasSubstr("G83 X20 Y10 Z-10 R2 Q3\nG85 X40 Y10 Z-10 R2\nX60 Y10\nG80\n"));
+  EXPECT_THAT(test::post_text(drilled_then_bored(), "grbl", diags),
+              HasSubstr("X40\nZ2\nG1 Z-10\nZ2\nG0 Z5\nX60\n"));
+  EXPECT_FALSE(diags.has_errors());
+}
+
+TEST(PostHoles, ABoreReadsBackTheSameInEveryControl) {
+  core::DiagnosticList diags;
+  const auto cycle = test::interpret(test::post_text(drilled_then_bored(), "rs274ngc", diags));
+  for (const char* post : {"fanuc", "grbl", "romi"}) {
+    const auto back = test::interpret_in(test::post_text(drilled_then_bored(), post, diags), post);
+    ASSERT_TRUE(back) << post;
+    test::expect_same_path(cycle, *back, 1e-3);
+  }
+  EXPECT_FALSE(diags.has_errors());
+}
+
 TEST(PostHoles, InterpreterHolesAreWrittenAsTheirMoves) {
   // A G81 read by the interpreter: its moves (Origin::Cycle) and its Hole.
   const auto ops = test::interpret("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R1 F50\nG80\nM2\n");
