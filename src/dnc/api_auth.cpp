@@ -55,6 +55,87 @@ HttpResponse api_session(ApiCall& c) {
 }  // namespace usina::dnc
 
 namespace usina::dnc {
+namespace {
+
+nlohmann::json user_json(const User& u) {
+  return {{"name", u.name},
+          {"role", role_name(u.role)},
+          {"disabled", u.disabled},
+          {"created_at_us", u.created_at_us}};
+}
+
+// What POST /api/users/{name} asks for, read and checked before anything is written.
+struct UserChange {
+  std::optional<Role> role;
+  std::optional<bool> disabled;
+  std::optional<std::string> password;
+};
+
+tl::expected<UserChange, std::string> user_change(const nlohmann::json& body) {
+  UserChange change;
+  for (const auto& [key, value] : body.items()) {
+    if (key != "role" && key != "disabled" && key != "password")
+      return tl::unexpected(
+          fmt::format("unknown field \"{}\": give role, disabled or password", key));
+  }
+  auto role = string_field(body, "role", false);
+  if (!role) return tl::unexpected(role.error());
+  if (*role) {
+    change.role = parse_role(**role);
+    if (!change.role)
+      return tl::unexpected(std::string("role must be operator, programmer, approver or admin"));
+  }
+  if (const auto it = body.find("disabled"); it != body.end()) {
+    if (!it->is_boolean()) return tl::unexpected(std::string("disabled must be true or false"));
+    change.disabled = it->get<bool>();
+  }
+  auto password = string_field(body, "password", false);
+  if (!password) return tl::unexpected(password.error());
+  change.password = std::move(*password);
+  if (change.password && (change.password->size() < kMinPasswordBytes ||
+                          change.password->size() > kMaxPasswordBytes)) {
+    return tl::unexpected(fmt::format("a password has {} to {} bytes; this one has {}",
+                                      kMinPasswordBytes, kMaxPasswordBytes,
+                                      change.password->size()));
+  }
+  if (!change.role && !change.disabled && !change.password)
+    return tl::unexpected(std::string("nothing to change: give role, disabled or password"));
+  return change;
+}
+
+}  // namespace
+
+// GET /api/users (admin): every account, by name.
+HttpResponse api_list_users(ApiCall& c) {
+  auto users = list_users(c.ctx.store);
+  if (!users) return error_response(c.req, status_of(users.error()), users.error().message);
+  nlohmann::json list = nlohmann::json::array();
+  for (const User& u : *users)
+    list.push_back(user_json(u));
+  return json_response(c.req, http::status::ok, {{"users", std::move(list)}});
+}
+
+// POST /api/users/{name} {"role"?,"disabled"?,"password"?} (admin): each
+// change its own audited write, in that order; the account as it is after.
+HttpResponse api_change_user(ApiCall& c) {
+  auto body = json_body(c.req);
+  if (!body) return error_response(c.req, http::status::bad_request, body.error());
+  auto change = user_change(*body);
+  if (!change) return error_response(c.req, http::status::bad_request, change.error());
+  const std::string& name = c.params[0];
+  if (auto u = find_user(c.ctx.store, name); !u)
+    return error_response(c.req, status_of(u.error()), u.error().message);
+  StoreResult<void> done;
+  if (change->role) done = set_role(c.ctx.store, name, *change->role, c.actor());
+  if (done && change->disabled)
+    done = set_disabled(c.ctx.store, name, *change->disabled, c.actor());
+  if (done && change->password)
+    done = set_password(c.ctx.store, name, *change->password, c.actor());
+  if (!done) return error_response(c.req, status_of(done.error()), done.error().message);
+  auto after = find_user(c.ctx.store, name);
+  if (!after) return error_response(c.req, status_of(after.error()), after.error().message);
+  return json_response(c.req, http::status::ok, user_json(*after));
+}
 
 // POST /api/users {"name","role","password"} (admin): a new account.
 HttpResponse api_create_user(ApiCall& c) {

@@ -99,6 +99,7 @@ std::string preview_work(const PreviewRequest& r) {
   const CheckResults check = check_program(p.text, settings);
   ToolpathSettings path;
   path.dialect = p.dialect;
+  if (r.profile != nullptr) path.profile = *r.profile;
   const std::string stream = encode_toolpath(program_toolpath(p.text, path));
   const json out = {{"cycle", r.cycle},
                     {"dialect", p.dialect},

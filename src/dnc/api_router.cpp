@@ -18,6 +18,8 @@ constexpr std::array kRoutes{
     ApiRoute{V::post, "/api/logout", A::AnyUser, P::ReadPrograms, api_logout},
     ApiRoute{V::get, "/api/session", A::AnyUser, P::ReadPrograms, api_session},
     ApiRoute{V::post, "/api/users", A::Permission, P::ManageUsers, api_create_user},
+    ApiRoute{V::get, "/api/users", A::Permission, P::ManageUsers, api_list_users},
+    ApiRoute{V::post, "/api/users/{}", A::Permission, P::ManageUsers, api_change_user},
     ApiRoute{V::get, "/api/programs", A::Permission, P::ReadPrograms, api_list_programs},
     ApiRoute{V::post, "/api/programs", A::Permission, P::UploadRevision, api_upload},
     ApiRoute{V::get, "/api/programs/{}", A::Permission, P::ReadPrograms, api_program},

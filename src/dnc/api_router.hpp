@@ -91,6 +91,8 @@ HttpResponse api_login(ApiCall& c);
 HttpResponse api_logout(ApiCall& c);
 HttpResponse api_session(ApiCall& c);
 HttpResponse api_create_user(ApiCall& c);
+HttpResponse api_list_users(ApiCall& c);
+HttpResponse api_change_user(ApiCall& c);
 HttpResponse api_list_programs(ApiCall& c);
 HttpResponse api_upload(ApiCall& c);
 HttpResponse api_program(ApiCall& c);

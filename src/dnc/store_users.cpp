@@ -48,6 +48,19 @@ StoreResult<void> in_write(Store& store, F&& write) {
   return tx.commit();
 }
 
+// Refused when `name` is the only enabled admin (inside the write).
+StoreResult<void> refuse_last_admin(Store& store, std::string_view name,
+                                    const std::string& change) {
+  auto rows = store.db().query(
+      "SELECT COUNT(*) FROM users WHERE role = 'admin' AND disabled = 0 AND name <> $1", {name});
+  if (!rows) return tl::unexpected(rows.error());
+  if (rows->front().integer(0) > 0) return {};
+  return store_error(StoreErrorKind::Refused,
+                     fmt::format("{} is the only enabled admin and cannot be {}: make another "
+                                 "admin first",
+                                 name, change));
+}
+
 }  // namespace
 
 StoreResult<User> create_user(Store& store, std::string_view name, Role role,
@@ -99,13 +112,51 @@ StoreResult<void> set_password(Store& store, std::string_view name, std::string_
 StoreResult<void> set_disabled(Store& store, std::string_view name, bool disabled,
                                const Actor& actor) {
   return in_write(store, [&]() -> StoreResult<void> {
-    if (auto u = find_user(store, name); !u) return tl::unexpected(u.error());
+    auto u = find_user(store, name);
+    if (!u) return tl::unexpected(u.error());
+    if (u->disabled == disabled) return {};
+    if (disabled && u->role == Role::Admin) {
+      if (auto last = refuse_last_admin(store, name, "disabled"); !last) return last;
+    }
     auto r = store.db().query("UPDATE users SET disabled = $1 WHERE name = $2",
                               {std::int64_t{disabled ? 1 : 0}, name});
+    if (!r) return tl::unexpected(r.error());
+    // A disabled account's sessions end now, not when they expire.
+    if (disabled) r = store.db().query("DELETE FROM sessions WHERE user_name = $1", {name});
     if (!r) return tl::unexpected(r.error());
     return audit_only(store, actor,
                       {disabled ? "user.disable" : "user.enable", std::string(name), "", "{}"});
   });
+}
+
+StoreResult<void> set_role(Store& store, std::string_view name, Role role, const Actor& actor) {
+  return in_write(store, [&]() -> StoreResult<void> {
+    auto u = find_user(store, name);
+    if (!u) return tl::unexpected(u.error());
+    if (u->role == role) return {};
+    if (u->role == Role::Admin && !u->disabled) {
+      if (auto last = refuse_last_admin(store, name, "made " + std::string(role_name(role))); !last)
+        return last;
+    }
+    auto r =
+        store.db().query("UPDATE users SET role = $1 WHERE name = $2", {role_name(role), name});
+    if (!r) return tl::unexpected(r.error());
+    return audit_only(
+        store, actor,
+        {"user.role", std::string(name), "",
+         fmt::format(R"({{"from":"{}","to":"{}"}})", role_name(u->role), role_name(role))});
+  });
+}
+
+StoreResult<std::vector<User>> list_users(Store& store) {
+  auto rows =
+      store.db().query("SELECT name, role, disabled, created_at FROM users ORDER BY name", {});
+  if (!rows) return tl::unexpected(rows.error());
+  std::vector<User> users;
+  users.reserve(rows->size());
+  for (const SqlRow& r : *rows)
+    users.push_back(user_of(r));
+  return users;
 }
 
 StoreResult<std::int64_t> login_wait_seconds(Store& store, std::string_view name,

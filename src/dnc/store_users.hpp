@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dnc/store.hpp"
 #include "dnc/store_roles.hpp"
@@ -37,6 +38,12 @@ StoreResult<void> set_password(Store& store, std::string_view name, std::string_
                                const Actor& actor);
 StoreResult<void> set_disabled(Store& store, std::string_view name, bool disabled,
                                const Actor& actor);
+// A new role; audited (user.role) when it changes.
+StoreResult<void> set_role(Store& store, std::string_view name, Role role, const Actor& actor);
+// Every account, by name (the admin's users page).
+StoreResult<std::vector<User>> list_users(Store& store);
+// set_role and set_disabled refuse (Refused) to leave the store without an
+// enabled admin: nobody could make users or import programs again.
 
 // Checks the login limits, then the password; records the attempt (and an
 // audit entry); a new session on success. A wrong user and a wrong password

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
 
 #include "canon/sink.hpp"
@@ -38,14 +39,49 @@ class VertexSink final : public canon::Sink {
   }
 
   void on(const canon::Op& op) override {
+    ++op_;  // numbered as the timer numbers them: every op, from 1
     if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) {
       tool_ = t->tool < 0 ? 0u : static_cast<std::uint32_t>(t->tool);
       return;
     }
     if (!canon::is_motion(op.kind)) return;
     ++r_.moves;
+    const std::size_t first = r_.vertices.size();
     const std::uint32_t line = op.src.line;
     std::visit([&](const auto& m) { move(m, line); }, op.kind);
+    untimed_.push_back({op_, first, r_.vertices.size()});
+  }
+
+  // The timer's report (sim::StatsSink::observe): op `op` and the ops
+  // before it still untimed took `seconds` more; their vertices get times
+  // spread evenly over them (an arc's chords are equal).
+  void timed(std::uint64_t op, double seconds) {
+    if (!(seconds >= 0.0) || !std::isfinite(seconds)) seconds = 0.0;
+    const double from = clock_;
+    clock_ += seconds;
+    std::size_t first = 0;
+    std::size_t end = 0;
+    bool any = false;
+    while (!untimed_.empty() && untimed_.front().op <= op) {
+      if (!any) first = untimed_.front().first;
+      end = untimed_.front().end;
+      any = true;
+      untimed_.pop_front();
+    }
+    if (!any) return;  // a wait: the next vertex starts later
+    const double n = static_cast<double>(end - first);
+    for (std::size_t i = first; i < end; ++i)
+      r_.vertices[i].t =
+          static_cast<float>(from + seconds * static_cast<double>(i - first + 1) / n);
+  }
+
+  // After the timer's finish: what it never timed ends at the last time.
+  void close() {
+    for (const Untimed& u : untimed_)
+      for (std::size_t i = u.first; i < u.end; ++i)
+        r_.vertices[i].t = static_cast<float>(clock_);
+    untimed_.clear();
+    r_.total_s = clock_;
   }
 
  private:
@@ -89,10 +125,20 @@ class VertexSink final : public canon::Sink {
                            static_cast<float>(p.z), kind, tool_, line});
   }
 
+  // A motion op's vertices [first, end) that wait for the timer.
+  struct Untimed {
+    std::uint64_t op;
+    std::size_t first;
+    std::size_t end;
+  };
+
   ToolpathResult& r_;
   std::uint64_t max_;
   Vec3 pos_{};
   std::uint32_t tool_ = 0;
+  std::uint64_t op_ = 0;
+  std::deque<Untimed> untimed_;  // as long as the planner's look-ahead
+  double clock_ = 0.0;
 };
 
 float gap(const PathVertex& a, const PathVertex& b) {
@@ -149,11 +195,17 @@ ToolpathResult program_toolpath(std::string_view text, const ToolpathSettings& s
       sources.add(core::SourceFile::from_string("<revision>", std::string(text)));
   gcode::OptionValues options = gcode::default_options(*dialect);
   VertexSink vertices(r, settings.max_collected);
-  canon::OpBudget budget(vertices, settings.max_ops, diags);
+  // The timer's own checks (travel, feeds) are the revision check's business.
+  core::ErrorCount timing_checks;
+  sim::StatsSink timer(settings.profile, sim::StatsOptions{}, timing_checks);
+  timer.observe([&vertices](std::uint64_t op, double s) { vertices.timed(op, s); });
+  canon::TeeSink both({&vertices, &timer});  // the vertices first: the timer reports after
+  canon::OpBudget budget(both, settings.max_ops, diags);
   auto runner = dialect->make_runner(
       gcode::RunContext{sources, gcode::InterpOptions{}, std::move(options), budget, diags});
   r.ok = runner->run(id) && diags.errors() == 0;
   budget.finish();
+  vertices.close();
   r.collected = r.vertices.size();
   r.vertices = decimate(r.vertices, settings.max_vertices);
   return r;
@@ -182,7 +234,7 @@ std::vector<PathVertex> decimate(const std::vector<PathVertex>& path, std::uint3
 std::string encode_toolpath(const ToolpathResult& r) {
   const auto n = static_cast<std::uint32_t>(r.vertices.size());
   std::string out;
-  out.reserve(kToolpathHeaderBytes + std::size_t{n} * 21);
+  out.reserve(kToolpathHeaderBytes + std::size_t{n} * kToolpathVertexBytes);
   std::uint32_t flags = 0;
   if (r.vertices.size() < r.collected) flags |= 1u;  // decimated
   if (r.truncated) flags |= 2u;
@@ -206,6 +258,7 @@ std::string encode_toolpath(const ToolpathResult& r) {
     put(out, f);
   for (float f : hi)
     put(out, f);
+  put(out, r.total_s);
   for (const PathVertex& v : r.vertices) {
     put(out, v.x);
     put(out, v.y);
@@ -215,6 +268,8 @@ std::string encode_toolpath(const ToolpathResult& r) {
     put(out, v.line);
   for (const PathVertex& v : r.vertices)
     put(out, v.tool);
+  for (const PathVertex& v : r.vertices)
+    put(out, v.t);
   for (const PathVertex& v : r.vertices)
     put(out, static_cast<std::uint8_t>(v.kind));
   return out;

@@ -131,10 +131,15 @@ tl::expected<Wanted, HttpResponse> wanted(ApiCall& c) {
   }
   auto named = named_revision(c);
   if (!named) return tl::unexpected(std::move(named.error()));
+  const Program& program = named->program;
   Wanted w;
-  w.settings.dialect = named->program.dialect;
+  w.settings.dialect = program.dialect;
   w.settings.max_vertices = *max_vertices;
-  w.key = toolpath_key(named->revision.hash, w.settings.dialect, w.settings.max_vertices);
+  // The vertices' times come from the class's profile, as its check's cycle time.
+  const auto it = c.ctx.profiles.find(program.machine_class);
+  if (it != c.ctx.profiles.end()) w.settings.profile = it->second;
+  w.key = toolpath_key(named->revision.hash, program.dialect + "@" + program.machine_class,
+                       w.settings.max_vertices);
   return w;
 }
 

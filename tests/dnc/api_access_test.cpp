@@ -119,5 +119,65 @@ TEST(ApiAccess, AnAdminCreatesUsersAndTheyLogIn) {
   EXPECT_EQ(c.get("/api/session", ana).status, 401);
 }
 
+TEST(ApiUsers, AnAdminListsAndChangesAccounts) {
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  const std::string boss = c.log_in("boss", test::kPassword);
+  ASSERT_EQ(c.post("/api/users",
+                   {{"name", "ana"}, {"role", "operator"}, {"password", "ana's long pass"}}, boss)
+                .status,
+            201);
+  const test::Reply list = c.get("/api/users", boss);
+  ASSERT_EQ(list.status, 200) << list.body;
+  bool ana_listed = false;
+  const nlohmann::json users = list.json();
+  for (const auto& u : users["users"])
+    ana_listed |= u["name"] == "ana" && u["role"] == "operator" && u["disabled"] == false &&
+                  u["created_at_us"].get<std::int64_t>() > 0;
+  EXPECT_TRUE(ana_listed) << list.body;
+  EXPECT_EQ(c.get("/api/users", c.log_in("prog", test::kPassword)).status, 403);
+
+  const test::Reply promoted = c.post("/api/users/ana", {{"role", "programmer"}}, boss);
+  ASSERT_EQ(promoted.status, 200) << promoted.body;
+  EXPECT_EQ(promoted.json()["role"], "programmer");
+  const std::string ana = c.log_in("ana", "ana's long pass");
+  EXPECT_EQ(c.get("/api/session", ana).json()["role"], "programmer");
+  // Disabled: the session ends and no login opens another.
+  EXPECT_EQ(c.post("/api/users/ana", {{"disabled", true}}, boss).json()["disabled"], true);
+  EXPECT_EQ(c.get("/api/session", ana).status, 401);
+  EXPECT_TRUE(c.log_in("ana", "ana's long pass").empty());
+  // Enabled again with a new password.
+  ASSERT_EQ(c.post("/api/users/ana", {{"disabled", false}, {"password", "a newer long pass"}}, boss)
+                .status,
+            200);
+  EXPECT_TRUE(c.log_in("ana", "ana's long pass").empty());
+  EXPECT_FALSE(c.log_in("ana", "a newer long pass").empty());
+}
+
+TEST(ApiUsers, ABadChangeIsRefusedAndChangesNothing) {
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  const std::string boss = c.log_in("boss", test::kPassword);
+  EXPECT_EQ(c.post("/api/users/prog", nlohmann::json::object(), boss).status, 400);
+  EXPECT_EQ(c.post("/api/users/prog", {{"role", "king"}}, boss).status, 400);
+  EXPECT_EQ(c.post("/api/users/prog", {{"disabled", "yes"}}, boss).status, 400);
+  EXPECT_EQ(c.post("/api/users/prog", {{"password", "short"}}, boss).status, 400);
+  // Checked whole before anything is written: the role stays.
+  EXPECT_EQ(c.post("/api/users/prog", {{"role", "admin"}, {"colour", "red"}}, boss).status, 400);
+  EXPECT_EQ(c.post("/api/users/nobody", {{"role", "admin"}}, boss).status, 404);
+  EXPECT_EQ(
+      c.post("/api/users/prog", {{"role", "admin"}}, c.log_in("prog", test::kPassword)).status,
+      403);
+  EXPECT_EQ(c.get("/api/session", c.log_in("prog", test::kPassword)).json()["role"], "programmer");
+  // boss is the only admin: 409, and boss stays one.
+  const test::Reply last = c.post("/api/users/boss", {{"role", "operator"}}, boss);
+  EXPECT_EQ(last.status, 409);
+  EXPECT_NE(last.body.find("only enabled admin"), std::string::npos) << last.body;
+  EXPECT_EQ(c.post("/api/users/boss", {{"disabled", true}}, boss).status, 409);
+  EXPECT_EQ(c.get("/api/session", boss).json()["role"], "admin");
+}
+
 }  // namespace
 }  // namespace usina::dnc

@@ -168,6 +168,57 @@ TEST_P(StoreUsers, ATokenThatIsNotOneIsNoSession) {
     EXPECT_FALSE(verify_session(*s, t)) << t;
 }
 
+TEST_P(StoreUsers, ARoleChangesAndIsAudited) {
+  auto s = with_admin();
+  ASSERT_TRUE(s);
+  ASSERT_TRUE(create_user(*s, "ana", Role::Operator, "long enough", {"root", "t"}));
+  ASSERT_TRUE(set_role(*s, "ana", Role::Programmer, {"root", "t"}));
+  EXPECT_EQ(find_user(*s, "ana").value().role, Role::Programmer);
+  const auto audit = read_audit(*s, 0, 100).value();
+  EXPECT_EQ(audit.back().action, "user.role");
+  EXPECT_EQ(audit.back().subject, "ana");
+  EXPECT_NE(audit.back().detail.find(R"("from":"operator","to":"programmer")"), std::string::npos)
+      << audit.back().detail;
+  EXPECT_EQ(set_role(*s, "nobody", Role::Admin, {"root", "t"}).error().kind,
+            StoreErrorKind::NotFound);
+}
+
+// Nobody could make users or import programs again: the last enabled admin
+// stays an admin and enabled until another is made.
+TEST_P(StoreUsers, TheLastEnabledAdminCannotBeDemotedOrDisabled) {
+  auto s = with_admin();
+  ASSERT_TRUE(s);
+  auto demote = set_role(*s, "root", Role::Operator, {"root", "t"});
+  ASSERT_FALSE(demote);
+  EXPECT_EQ(demote.error().kind, StoreErrorKind::Refused);
+  EXPECT_NE(demote.error().message.find("only enabled admin"), std::string::npos);
+  EXPECT_EQ(set_disabled(*s, "root", true, {"root", "t"}).error().kind, StoreErrorKind::Refused);
+  ASSERT_TRUE(create_user(*s, "ana", Role::Admin, "long enough", {"root", "t"}));
+  ASSERT_TRUE(set_disabled(*s, "ana", true, {"root", "t"}));
+  EXPECT_FALSE(set_role(*s, "root", Role::Operator, {"root", "t"}));  // ana is disabled
+  ASSERT_TRUE(set_disabled(*s, "ana", false, {"root", "t"}));
+  ASSERT_TRUE(set_role(*s, "root", Role::Operator, {"ana", "t"}));
+  EXPECT_EQ(find_user(*s, "root").value().role, Role::Operator);
+  EXPECT_FALSE(set_disabled(*s, "ana", true, {"ana", "t"}));
+}
+
+TEST_P(StoreUsers, UsersAreListedByName) {
+  auto s = with_admin();
+  ASSERT_TRUE(s);
+  ASSERT_TRUE(create_user(*s, "zeca", Role::Approver, "long enough", {"root", "t"}));
+  ASSERT_TRUE(create_user(*s, "ana", Role::Operator, "long enough", {"root", "t"}));
+  ASSERT_TRUE(set_disabled(*s, "ana", true, {"root", "t"}));
+  const auto users = list_users(*s).value();
+  ASSERT_EQ(users.size(), 3u);
+  EXPECT_EQ(users[0].name, "ana");
+  EXPECT_TRUE(users[0].disabled);
+  EXPECT_EQ(users[1].name, "root");
+  EXPECT_EQ(users[1].role, Role::Admin);
+  EXPECT_EQ(users[2].name, "zeca");
+  EXPECT_EQ(users[2].role, Role::Approver);
+  EXPECT_FALSE(users[2].disabled);
+}
+
 USINA_STORE_BACKENDS(StoreUsers);
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "dnc/store_check.hpp"
 #include "server_fixture.hpp"
 
 namespace usina::dnc {
@@ -27,11 +28,16 @@ struct Layout {
   std::size_t positions = kToolpathHeaderBytes;
   std::size_t lines;
   std::size_t tools;
+  std::size_t times;
   std::size_t kinds;
   std::size_t size;
 
   explicit Layout(std::size_t n)
-      : lines(positions + 12 * n), tools(lines + 4 * n), kinds(tools + 4 * n), size(kinds + n) {}
+      : lines(positions + 12 * n),
+        tools(lines + 4 * n),
+        times(tools + 4 * n),
+        kinds(times + 4 * n),
+        size(kinds + n) {}
 };
 
 TEST(WebToolpath, TheStreamHasTheDocumentedBytes) {
@@ -41,7 +47,7 @@ TEST(WebToolpath, TheStreamHasTheDocumentedBytes) {
   const Layout l(3);
   ASSERT_EQ(b.size(), l.size);
   EXPECT_EQ(b.substr(0, 4), "USTP");
-  EXPECT_EQ(at<std::uint32_t>(b, 4), 1u);   // version
+  EXPECT_EQ(at<std::uint32_t>(b, 4), 2u);   // version
   EXPECT_EQ(at<std::uint32_t>(b, 8), 3u);   // vertices: the start and two moves
   EXPECT_EQ(at<std::uint32_t>(b, 12), 0u);  // flags: not decimated, complete
   EXPECT_EQ(at<std::uint64_t>(b, 16), 2u);  // moves
@@ -56,6 +62,53 @@ TEST(WebToolpath, TheStreamHasTheDocumentedBytes) {
   EXPECT_EQ(at<std::uint8_t>(b, l.kinds + 0), 0u);  // start
   EXPECT_EQ(at<std::uint8_t>(b, l.kinds + 1), 1u);  // rapid
   EXPECT_EQ(at<std::uint8_t>(b, l.kinds + 2), 2u);  // feed
+  // The times: 0 at the start, then when each move ends; the program's
+  // time in the header is the last vertex's (nothing waits after it).
+  EXPECT_EQ(at<float>(b, l.times), 0.0f);
+  const auto rapid_end = at<float>(b, l.times + 4);
+  const auto feed_end = at<float>(b, l.times + 8);
+  EXPECT_GT(rapid_end, 0.0f);
+  // 21.8 mm at 100 mm/min: 13.1 s and a little for the acceleration.
+  const double feed_s = std::sqrt(20.0 * 20.0 + 6.0 * 6.0) / (100.0 / 60.0);
+  EXPECT_GE(feed_end - rapid_end, feed_s - 1e-3);
+  EXPECT_LT(feed_end - rapid_end, feed_s + 1.0);
+  EXPECT_NEAR(at<double>(b, 48), feed_end, 1e-4);
+}
+
+// The times are stats': the path's last time is the revision check's
+// cycle time, a dwell is a step in time between two vertices, and the
+// chords of an arc share its time evenly.
+TEST(WebToolpath, EachVertexIsTimedAsStatsTimesTheProgram) {
+  const std::string text = "G1 X100 F600\nG4 P2\nG2 X0 Y0 I-50 J0\nM2\n";
+  const ToolpathResult r = program_toolpath(text, {});
+  ASSERT_TRUE(r.ok);
+  ASSERT_GT(r.vertices.size(), 10u);
+  EXPECT_EQ(r.vertices[0].t, 0.0f);
+  for (std::size_t i = 1; i < r.vertices.size(); ++i)
+    ASSERT_GE(r.vertices[i].t, r.vertices[i - 1].t) << i;
+  const double line_end = r.vertices[1].t;
+  EXPECT_GE(line_end, 10.0 - 1e-3);  // 100 mm at 10 mm/s
+  EXPECT_LT(line_end, 11.0);
+  // The half circle (157 mm, 15.7 s) starts after the dwell.
+  const double arc_first = r.vertices[2].t;
+  const double per_chord =
+      (r.total_s - line_end - 2.0) / static_cast<double>(r.vertices.size() - 2);
+  EXPECT_NEAR(arc_first - line_end, 2.0 + per_chord, 1e-3);
+  for (std::size_t i = 3; i < r.vertices.size(); ++i)
+    EXPECT_NEAR(r.vertices[i].t - r.vertices[i - 1].t, per_chord, 1e-3) << i;
+  const CheckResults check = check_program(text, {});
+  EXPECT_NEAR(r.total_s, check.cycle_time_s, 1e-9);
+  EXPECT_NEAR(r.vertices.back().t, r.total_s, 1e-3);
+}
+
+TEST(WebToolpath, TheProfileGivesTheTimes) {
+  ToolpathSettings slow;
+  slow.profile.axes[0].rapid = 1000.0;  // X, mm/min
+  const std::string text = "G0 X500\n";
+  const double generic = program_toolpath(text, {}).total_s;
+  const double on_slow = program_toolpath(text, slow).total_s;
+  EXPECT_GE(on_slow, 30.0);  // 500 mm at 1000 mm/min
+  EXPECT_LT(generic, on_slow);
 }
 
 TEST(WebToolpath, AnArcIsLinearisedOnItsCircle) {

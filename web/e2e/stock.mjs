@@ -61,10 +61,11 @@ export async function stockFlow(page, { check, shot }) {
   check(changed(uncut, last) > 0.01 && shares.some((s) => s > 0), `the picture changes between frames (uncut to last: ${(100 * changed(uncut, last)).toFixed(1)} % of pixels; steps: ${shares.map((s) => (100 * s).toFixed(2)).join(', ')} %)`);
   // Play runs to the end by itself.
   await slider.press('Home');
-  await page.getByRole('button', { name: 'Play' }).click();
+  const stock = page.getByRole('group', { name: 'Stock' });
+  await stock.getByRole('button', { name: 'Play' }).click();
   await page.waitForFunction((n) => Number(document.getElementById('viewer').dataset.stockFrame) === n, frames, { timeout: 60000 });
   const played = await picture(page);
-  check(changed(played, last) < 0.001 && (await page.getByRole('button', { name: 'Play' }).getAttribute('aria-pressed')) === 'false', 'Play replays the removal to the last frame and stops');
+  check(changed(played, last) < 0.001 && (await stock.getByRole('button', { name: 'Play' }).getAttribute('aria-pressed')) === 'false', 'Play replays the removal to the last frame and stops');
   await page.getByLabel('Colour the stock by').selectOption('tool');
   const byTool = await picture(page);
   check(changed(byTool, last) > 0.005, `coloured by the tool that cut last, the picture changes (${(100 * changed(byTool, last)).toFixed(1)} %)`);

@@ -1,4 +1,4 @@
-// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines, #/new.
+// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines, #/new, #/users.
 import { ApiError, getJson, postJson, setToken, token } from './api';
 import { h, show } from './dom';
 import { loginPage } from './page_login';
@@ -6,6 +6,7 @@ import { libraryPage } from './page_library';
 import { programPage } from './page_program';
 import { machinesPage, leaveMachines } from './page_machines';
 import { formsPage } from './page_forms';
+import { usersPage } from './page_users';
 
 const main = document.getElementById('main') as HTMLElement;
 
@@ -23,6 +24,7 @@ async function route(): Promise<void> {
     else if (parts[0] === 'program' && parts[1]) await programPage(main, parts[1], parts[2]);
     else if (parts[0] === 'machines') await machinesPage(main);
     else if (parts[0] === 'new') await formsPage(main);
+    else if (parts[0] === 'users') await usersPage(main);
     else await libraryPage(main);
   } catch (e) {
     if (e instanceof ApiError && e.status === 401) {
@@ -35,12 +37,15 @@ async function route(): Promise<void> {
 
 async function whoAmI(): Promise<void> {
   const who = document.getElementById('who') as HTMLElement;
+  const usersLink = document.getElementById('nav-users') as HTMLElement;
   if (!token()) return;
   try {
     const s = await getJson<{ user: string; role: string }>('/api/session');
     who.textContent = `${s.user} (${s.role})`;
+    usersLink.hidden = s.role !== 'admin'; // the server refuses the others anyway
   } catch {
     who.textContent = '';
+    usersLink.hidden = true;
   }
 }
 

@@ -1,8 +1,9 @@
 // A program: its text with line numbers and the check's diagnostics inline,
 // and the 3D viewer of its tool path (a click on a move shows its line; a
-// line's moves can be highlighted).
+// line's moves can be highlighted; the cut replays in time).
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
+import { replayPanel } from './program_replay';
 import { reviewPanel, revisionsPanel } from './program_review';
 import { statsPanel, type Figures } from './program_stats';
 import { stockPanel } from './program_stock';
@@ -54,6 +55,7 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const feedTools: number[] = [];
   for (let i = 1; i < path.count; i++) if (path.kinds[i] !== Kind.Rapid) feedTools.push(path.tools[i]);
   viewerHost.before(viewControls(viewer, feedTools, select, picked), stockPanel(viewer, base, viewerHost));
+  viewerHost.after(replayPanel(viewer, path, viewerHost, (line) => code.mark(line, false)));
   viewer.onPick = select;
   code.onSelect = select;
   viewerHost.dataset.vertices = String(path.count);
@@ -112,7 +114,9 @@ function firstLines(text: string, max: number): { lines: string[]; total: number
 interface CodePanel {
   element: HTMLElement;
   fill(text: string): void;
-  mark(line: number): void;
+  // Marks the line; scrolls the page to it too unless `page` is false (the
+  // text panel alone scrolls: a replay's slider stays under the pointer).
+  mark(line: number, page?: boolean): void;
   onSelect: (line: number) => void;
 }
 
@@ -139,11 +143,17 @@ function codePanel(diags: CheckDiagnostic[]): CodePanel {
       list.replaceChildren(items);
       note.textContent = shown < total ? `The first ${shown} of ${total} lines are shown.` : '';
     },
-    mark(line: number) {
+    mark(line: number, page = true) {
       list.querySelector('.selected')?.classList.remove('selected');
       const li = document.getElementById(`L${line}`);
-      li?.classList.add('selected');
-      li?.scrollIntoView({ block: 'center' });
+      if (!li) return;
+      li.classList.add('selected');
+      if (page) {
+        li.scrollIntoView({ block: 'center' });
+        return;
+      }
+      const box = panel.element;
+      box.scrollTop += li.getBoundingClientRect().top - box.getBoundingClientRect().top - box.clientHeight / 2;
     },
     onSelect: () => {},
   };

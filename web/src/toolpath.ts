@@ -21,19 +21,22 @@ export interface Toolpath {
   lines: Uint32Array;
   tools: Uint32Array;
   kinds: Uint8Array;
+  times: Float32Array; // s from the program's start when the tool reaches each vertex
+  totalSeconds: number; // the program's time on the machine class's profile
 }
 
 const MAGIC = 0x50545355; // "USTP"
-const HEADER = 48;
+const HEADER = 56;
+const VERTEX = 25; // bytes a vertex: 3 × float32, uint32 line, uint32 tool, float32 time, uint8 kind
 
 export function decodeToolpath(buf: ArrayBuffer): Toolpath {
   const v = new DataView(buf);
   if (buf.byteLength < HEADER || v.getUint32(0, true) !== MAGIC)
     throw new Error('not a usina tool-path stream');
-  if (v.getUint32(4, true) !== 1) throw new Error('a tool-path stream of another version');
+  if (v.getUint32(4, true) !== 2) throw new Error('a tool-path stream of another version');
   const n = v.getUint32(8, true);
   const flags = v.getUint32(12, true);
-  if (buf.byteLength !== HEADER + n * 21) throw new Error('the tool-path stream is cut short');
+  if (buf.byteLength !== HEADER + n * VERTEX) throw new Error('the tool-path stream is cut short');
   const f = (o: number) => v.getFloat32(o, true);
   return {
     count: n,
@@ -46,6 +49,8 @@ export function decodeToolpath(buf: ArrayBuffer): Toolpath {
     positions: new Float32Array(buf, HEADER, n * 3),
     lines: new Uint32Array(buf, HEADER + n * 12, n),
     tools: new Uint32Array(buf, HEADER + n * 16, n),
-    kinds: new Uint8Array(buf, HEADER + n * 20, n),
+    times: new Float32Array(buf, HEADER + n * 20, n),
+    kinds: new Uint8Array(buf, HEADER + n * 24, n),
+    totalSeconds: v.getFloat64(48, true),
   };
 }

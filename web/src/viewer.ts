@@ -1,6 +1,7 @@
 // The 3D tool-path viewer (three.js): rapids dashed, feeds coloured by
 // tool, orbit/pan/zoom, the standard views, a click on a move names its
-// source line, and a line's moves can be highlighted.
+// source line, a line's moves can be highlighted, and the cut can be
+// replayed up to a time of the program.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { Kind, type Toolpath } from './toolpath';
@@ -24,6 +25,8 @@ export class Viewer {
   private pickables: THREE.LineSegments[] = [];
   private segmentVertex = new Map<THREE.Object3D, Uint32Array>();
   private highlight: THREE.LineSegments | null = null;
+  private drawn: { lines: THREE.LineSegments; vertex: Uint32Array }[] = [];
+  private tool: THREE.Group | null = null; // the replay's tool and the move it is on
   private stock: THREE.Object3D | null = null;
   private centre = new THREE.Vector3();
   private size = 1;
@@ -56,6 +59,8 @@ export class Viewer {
     this.path = path;
     this.scene.clear();
     this.pickables = [];
+    this.drawn = [];
+    this.tool = null;
     this.segmentVertex.clear();
     const [rapids, cuts] = this.segments(path);
     const dashed = new THREE.LineDashedMaterial({ color: 0x9aa5b1, dashSize: 1, gapSize: 1 });
@@ -72,6 +77,7 @@ export class Viewer {
       this.scene.add(obj);
       this.pickables.push(obj);
       this.segmentVertex.set(obj, map);
+      this.drawn.push({ lines: obj, vertex: map });
     }
     const min = new THREE.Vector3(...path.min);
     const max = new THREE.Vector3(...path.max);
@@ -134,6 +140,44 @@ export class Viewer {
       { geometry: geometry(rapidXyz), vertex: rapidVertex },
       { geometry: cutGeometry, vertex: cutVertex },
     ] as const;
+  }
+
+  // The cut up to `seconds` of the program: the moves that ended before it
+  // drawn, the one under way drawn to where the tool is, the tool shown
+  // there. Returns the vertex that move ends at (0 before the first move).
+  replayTo(seconds: number): { vertex: number; at: THREE.Vector3 } {
+    const p = this.path;
+    if (!p || p.count < 2) return { vertex: 0, at: new THREE.Vector3() };
+    const i = firstAtOrAfter(p.times, seconds, p.count);
+    const end = Math.min(Math.max(i, 1), p.count - 1);
+    const from = new THREE.Vector3().fromArray(p.positions, (end - 1) * 3);
+    const to = new THREE.Vector3().fromArray(p.positions, end * 3);
+    const span = p.times[end] - p.times[end - 1];
+    const f = i === 0 ? 0 : span > 0 ? Math.min(Math.max((seconds - p.times[end - 1]) / span, 0), 1) : 1;
+    const at = from.clone().lerp(to, f);
+    // Segments are stored by the vertex that ends them, in the program's order.
+    for (const d of this.drawn) d.lines.geometry.setDrawRange(0, 2 * firstAtOrAfter(d.vertex, end, d.vertex.length));
+    this.showTool(from, at, p.kinds[end] === Kind.Rapid ? 0x9aa5b1 : toolColour(p.tools[end]));
+    this.render();
+    return { vertex: end, at };
+  }
+
+  // The whole path again, without the tool.
+  endReplay(): void {
+    for (const d of this.drawn) d.lines.geometry.setDrawRange(0, Infinity);
+    if (this.tool) this.scene.remove(this.tool);
+    this.tool = null;
+    this.render();
+  }
+
+  private showTool(from: THREE.Vector3, at: THREE.Vector3, colour: number): void {
+    if (this.tool) this.scene.remove(this.tool);
+    const g = new THREE.BufferGeometry().setFromPoints([from, at]);
+    const move = new THREE.Line(g, new THREE.LineBasicMaterial({ color: colour }));
+    const tip = new THREE.Mesh(new THREE.SphereGeometry(this.size / 120, 16, 8), new THREE.MeshBasicMaterial({ color: 0xffffff }));
+    tip.position.copy(at);
+    this.tool = new THREE.Group().add(move, tip);
+    this.scene.add(this.tool);
   }
 
   setView(view: View): void {
@@ -201,4 +245,16 @@ export class Viewer {
   render(): void {
     this.renderer.render(this.scene, this.camera);
   }
+}
+
+// The first index of ascending `a` (its first `n`) whose value is at least `x`; `n` when none.
+function firstAtOrAfter(a: ArrayLike<number>, x: number, n: number): number {
+  let lo = 0;
+  let hi = n;
+  while (lo < hi) {
+    const mid = (lo + hi) >>> 1;
+    if (a[mid] < x) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
 }
