@@ -26,6 +26,14 @@ void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
     }
   }
   w.feed(to(bottom));
+  if (o.bore && o.bore_cycle == canon::HoleCycle::BoreStop) {
+    // G86: stopped, so the edge is not dragged round as it comes out.
+    w.emit(canon::Spindle{0.0, canon::SpindleDir::Off});
+    w.rapid(to(o.cut.safe_z));
+    w.emit(canon::Spindle{o.cut.rpm, canon::SpindleDir::Cw});
+    return;
+  }
+  if (o.bore && o.bore_cycle == canon::HoleCycle::BoreDwell) w.emit(canon::Dwell{o.dwell});
   if (o.bore) w.feed(to(r));
   if (o.pitch > 0.0) {
     w.emit(canon::Spindle{o.cut.rpm, canon::SpindleDir::Ccw});
@@ -35,9 +43,35 @@ void drill_moves(ProgramWriter& w, Vec2 at, const DrillOptions& o) {
   w.rapid(to(o.cut.safe_z));
 }
 
+// How the title says a bore leaves its holes.
+std::string bore_words(const DrillOptions& o) {
+  switch (o.bore_cycle) {
+  case canon::HoleCycle::BoreDwell: return fmt::format(", bored (dwell {:g} s, fed out)", o.dwell);
+  case canon::HoleCycle::BoreStop: return ", bored (spindle stopped, out at rapid)";
+  case canon::HoleCycle::Bore:
+  case canon::HoleCycle::Drill: break;
+  }
+  return ", bored (fed out)";
+}
+
 // The pecks of one hole, as drill_moves makes them (with none: one feed).
 double pecks(const DrillOptions& o) {
   return o.peck > 0.0 ? std::ceil((o.depth + o.retract) / o.peck) : 1.0;
+}
+
+// A bore's cycle and its dwell: only G89 dwells, and for a time that makes
+// sense at the bottom of a hole.
+bool check_bore_cycle(const DrillOptions& o, core::DiagnosticSink& diags) {
+  using canon::HoleCycle;
+  const HoleCycle c = o.bore ? o.bore_cycle : HoleCycle::Drill;
+  if (o.bore && c == HoleCycle::Drill)
+    return fail(diags, core::Code::GenBadValue, "a bore's cycle is G85, G89 or G86, not G81");
+  if (c == HoleCycle::BoreDwell)
+    return check_range("the dwell", o.dwell, Range{0.001, kMaxBoreDwell, true, "s"}, diags);
+  if (o.dwell != 0.0)
+    return fail(diags, core::Code::GenBadValue,
+                "only a G89 bore dwells at the bottom: give no dwell for another cycle");
+  return true;
 }
 
 bool check_ranges(const DrillOptions& o, core::DiagnosticSink& diags) {
@@ -53,7 +87,7 @@ bool check_ranges(const DrillOptions& o, core::DiagnosticSink& diags) {
     ok = fail(diags, core::Code::GenBadValue, "a bore is neither pecked nor tapped");
   if (ok && o.pitch > 0.0 && o.form == HoleForm::Features)
     ok = fail(diags, core::Code::GenBadValue, "tapping is written as moves, not as a drill cycle");
-  return ok;
+  return ok && check_bore_cycle(o, diags);
 }
 
 // A peck as deep as the hole drills it in one feed, as G81 does: legal, but
@@ -129,19 +163,23 @@ bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& given, 
   if (o.pitch > 0.0) o.cut.feed = o.cut.plunge_feed = o.pitch * o.cut.rpm;  // synchronised
   if (!check_drill(points, o, diags)) return false;
   ProgramWriter w(sink, o.cut);
-  const canon::HoleCycle cycle = o.bore ? canon::HoleCycle::Bore : canon::HoleCycle::Drill;
+  const canon::HoleCycle cycle = o.bore ? o.bore_cycle : canon::HoleCycle::Drill;
   w.begin(fmt::format("usina gen drill: {} holes, depth {:g} mm{}{}", points.size(), o.depth,
                       o.peck > 0.0 ? fmt::format(", peck {:g} mm", o.peck) : std::string(),
                       o.pitch > 0.0 ? fmt::format(", tapped, pitch {:g} mm", o.pitch)
-                      : o.bore      ? std::string(", bored (fed out)")
+                      : o.bore      ? bore_words(o)
                                     : std::string()));
   w.rapid_over(points.front());
   if (o.form == HoleForm::Features) {
-    const Vec2 p = points.front();
-    w.plunge(o.retract);  // the post's cycle drills at this feed
-    w.rapid({p.x, p.y, o.cut.safe_z});
+    // Each hole carries its feed (the plunge feed: the whole cut is along
+    // Z): the cycle goes to R at rapid, as a control's own does.
     for (const Vec2& q : points) {
-      w.emit(canon::Hole{{q.x, q.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth, cycle});
+      w.emit(canon::Hole{{q.x, q.y, o.retract},
+                         o.cut.tool_diameter,
+                         o.retract + o.depth,
+                         cycle,
+                         o.cut.plunge_feed,
+                         o.dwell});
     }
     w.end();
     return true;
@@ -150,7 +188,12 @@ bool generate_drill(const std::vector<Vec2>& points, const DrillOptions& given, 
   for (const Vec2& p : points) {
     w.rapid({p.x, p.y, o.cut.safe_z});
     if (o.cut.safe_z > o.retract) w.rapid({p.x, p.y, o.retract});
-    w.emit(canon::Hole{{p.x, p.y, o.retract}, o.cut.tool_diameter, o.retract + o.depth, cycle});
+    w.emit(canon::Hole{{p.x, p.y, o.retract},
+                       o.cut.tool_diameter,
+                       o.retract + o.depth,
+                       cycle,
+                       std::nullopt,
+                       o.dwell});
     drill_moves(w, p, o);
   }
   w.set_origin(canon::Origin::Program);

@@ -6,9 +6,9 @@
 //   post writes the moves as plain blocks (a conversion expands cycles);
 // - Features: each hole a bare Hole feature (origin Program) and no moves, so
 //   the post drills it: G81/G83 where the control has canned cycles, the
-//   same moves where it has not. The post drills at the last feed rate, so
-//   the program first feeds down to the R plane over the first hole (at the
-//   plunge feed) and rapids back to the safe Z.
+//   same moves where it has not. Each hole carries its feed rate (the
+//   plunge feed), so the program goes from the safe Z over the first hole
+//   straight into its cycle: to R at rapid, as a control's cycle does.
 #pragma once
 
 #include <vector>
@@ -42,7 +42,16 @@ struct DrillOptions {
   // R at the feed (a rapid out would drag its edge along the finished
   // wall), then rapids to the safe Z. Not pecked, not tapped.
   bool bore = false;
+  // How a bore leaves the hole: Bore (G85, fed out, the default);
+  // BoreDwell (G89: `dwell` s at the bottom, then fed out); BoreStop (G86:
+  // the spindle stopped at the bottom, out at rapid, started again).
+  canon::HoleCycle bore_cycle = canon::HoleCycle::Bore;
+  double dwell = 0.0;  // s at the bottom, G89 only
 };
+
+// The longest dwell at a bore's bottom, s: a few turns of the bar clean a
+// shoulder in a fraction of a second; a minute is a slip of units (ms).
+constexpr double kMaxBoreDwell = 60.0;
 
 // Checks, then the holes in the given order. False, with nothing emitted,
 // after an error (bad value, no points, R plane above the safe Z).

@@ -121,6 +121,7 @@ struct Check {
     c.point("centre", h.at);
     c.value("diameter", h.diameter, kMaxLength, "mm");
     c.value("depth", h.depth, kMaxLength, "mm");
+    if (h.f) c.rate("feed rate", *h.f);
   }
 
   void operator()(const Pocket& p) const {

@@ -90,9 +90,11 @@ struct Coolant {
 };
 
 // How a bare hole (canon/bare_hole.hpp) is cut: drilled, out at rapid
-// (G81), or bored, fed back out to its top (G85: a boring bar's edge fed
-// out does not mark the finished wall as a rapid would).
-enum class HoleCycle { Drill, Bore };
+// (G81); bored, fed back out to its top (G85: a boring bar's edge fed out
+// does not mark the finished wall as a rapid would); bored with a dwell at
+// the bottom, then fed out (G89: a blind bore's shoulder cleaned); bored,
+// the spindle stopped at the bottom, out at rapid and started again (G86).
+enum class HoleCycle { Drill, Bore, BoreDwell, BoreStop };
 
 // A drilled hole (feature), emitted besides the moves that make it.
 struct Hole {
@@ -100,6 +102,11 @@ struct Hole {
   double diameter = 0.0;
   double depth = 0.0;
   HoleCycle cycle = HoleCycle::Drill;
+  // mm/min the hole is cut at; empty: the last feed move's rate, as a
+  // canned cycle's F carries over (the interpreter's holes). A generator
+  // gives it, so the program need not feed to the R plane to set it.
+  std::optional<double> f{};
+  double dwell = 0.0;  // s at the bottom (BoreDwell)
 };
 
 // A closed outline: straight segments and arcs (turn ±1) from `start`.

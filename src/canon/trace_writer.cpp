@@ -115,6 +115,28 @@ void json_string(Out out, std::string_view s) {
   fmt::format_to(out, FMT_COMPILE("\""));
 }
 
+// A bored hole's cycle as the trace names it (a drilled hole says none).
+const char* hole_cycle_name(HoleCycle c) {
+  switch (c) {
+  case HoleCycle::Bore: return "bore";
+  case HoleCycle::BoreDwell: return "bore_dwell";
+  case HoleCycle::BoreStop: return "bore_stop";
+  case HoleCycle::Drill: break;
+  }
+  return "drill";
+}
+
+// The text form's words for it: "bored", "bored, dwell 0.5 s" ...
+const char* hole_cycle_words(HoleCycle c) {
+  switch (c) {
+  case HoleCycle::Bore: return "bored";
+  case HoleCycle::BoreDwell: return "bored with a dwell";
+  case HoleCycle::BoreStop: return "bored, spindle stopped";
+  case HoleCycle::Drill: break;
+  }
+  return "drilled";
+}
+
 const char* dir_name(SpindleDir d) {
   switch (d) {
   case SpindleDir::Cw: return "cw";
@@ -202,7 +224,16 @@ struct JsonFields {
     fmt::format_to(out, FMT_COMPILE(",\"depth\":"));
     num(out, m.depth);
     // Only a bore says so: every drilled hole's trace stays as it was.
-    if (m.cycle == HoleCycle::Bore) fmt::format_to(out, FMT_COMPILE(",\"cycle\":\"bore\""));
+    if (m.cycle != HoleCycle::Drill)
+      fmt::format_to(out, FMT_COMPILE(",\"cycle\":\"{}\""), hole_cycle_name(m.cycle));
+    if (m.f) {
+      fmt::format_to(out, FMT_COMPILE(",\"f\":"));
+      num(out, *m.f);
+    }
+    if (m.cycle == HoleCycle::BoreDwell) {
+      fmt::format_to(out, FMT_COMPILE(",\"dwell\":"));
+      num(out, m.dwell);
+    }
   }
 
   void operator()(const Pocket& m) const {
@@ -313,7 +344,10 @@ struct TextFields {
   void operator()(const Hole& m) const {
     fmt::format_to(out, FMT_COMPILE(" at ({:.4f}, {:.4f}, {:.4f}) diameter {:g} depth {:g}"),
                    m.at.x, m.at.y, m.at.z, m.diameter, m.depth);
-    if (m.cycle == HoleCycle::Bore) fmt::format_to(out, FMT_COMPILE(" bored"));
+    if (m.cycle != HoleCycle::Drill)
+      fmt::format_to(out, FMT_COMPILE(" {}"), hole_cycle_words(m.cycle));
+    if (m.cycle == HoleCycle::BoreDwell) fmt::format_to(out, FMT_COMPILE(" {:g} s"), m.dwell);
+    if (m.f) fmt::format_to(out, FMT_COMPILE(" feed {:g}"), *m.f);
   }
 
   void operator()(const Pocket& m) const {

@@ -190,6 +190,10 @@ tl::expected<std::map<int, stock::ToolShape>, std::string> job_tool_shapes(
     }
     if (!tool)
       return tl::unexpected(fmt::format("tool {} of the library: {}", t.number, tool.error()));
+    // A boring head cuts at the diameter the job sets it to, which its tool
+    // change carries (make_bore.cpp); its library diameter is only the
+    // smallest it sets to. Without one here the simulator takes the stream's.
+    if (t.max_bore > 0.0) tool->second.diameter = 0.0;
     shapes[tool->first] = tool->second;
   }
   return shapes;

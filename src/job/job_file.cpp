@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cam/drill.hpp"
 #include "cam/profile.hpp"
 #include "job/toml_reader.hpp"
 
@@ -22,6 +23,7 @@ constexpr Range kTool{1, 9999, ""};
 constexpr Range kRpm{1, 1e6, "rev/min"};
 constexpr Range kFeed{0.001, 1e6, "mm/min"};
 constexpr Range kTabs{0, 100, "tabs"};
+constexpr Range kDwell{0.001, cam::kMaxBoreDwell, "s"};
 
 constexpr std::string_view kTop[] = {"job", "stock", "operation"};
 constexpr std::string_view kJobKeys[] = {"name",    "machine", "tools",      "materials",
@@ -34,7 +36,7 @@ constexpr std::string_view kDrillKeys[] = {USINA_JOB_COMMON, "layer", "diameter"
                                            "retract"};
 constexpr std::string_view kSpotKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract"};
 constexpr std::string_view kBoreKeys[] = {USINA_JOB_COMMON, "layer", "diameter", "retract",
-                                          "predrilled"};
+                                          "predrilled",     "cycle", "dwell"};
 constexpr std::string_view kPocketKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "stepover"};
 constexpr std::string_view kProfileKeys[] = {USINA_JOB_COMMON, "layer", "step_down", "side",
                                              "lead_radius",    "tabs",  "tab_width", "tab_height"};
@@ -193,6 +195,34 @@ void read_chamfer_keys(TomlReader& r, const toml::table& t, const std::string& w
   }
 }
 
+// A bore's cycle (G85 unless given) and G89's dwell, which only it has.
+void read_bore_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
+  const auto cycle = r.text(t, w, "cycle", false);
+  const toml::node* c = t.get("cycle");
+  if (cycle == "G89") {
+    op.bore_cycle = BoreCycle::DwellFeedOut;
+  } else if (cycle == "G86") {
+    op.bore_cycle = BoreCycle::StopRapidOut;
+  } else if (cycle && *cycle != "G85") {
+    r.fail(c->source(),
+           fmt::format("{} cycle = \"{}\": give \"G85\" (fed out, the default), \"G89\" (a dwell "
+                       "at the bottom, then fed out) or \"G86\" (the spindle stopped at the "
+                       "bottom, out at rapid)",
+                       w, *cycle));
+  }
+  op.dwell = r.number(t, w, "dwell", kDwell, false).value_or(0.0);
+  const toml::node* d = t.get("dwell");
+  if (op.bore_cycle == BoreCycle::DwellFeedOut && d == nullptr) {
+    r.fail(c->source(), fmt::format("{} cycle = \"G89\" dwells at the bottom: give dwell = the "
+                                    "seconds (e.g. 0.5)",
+                                    w));
+  } else if (op.bore_cycle != BoreCycle::DwellFeedOut && d != nullptr) {
+    r.fail(d->source(), fmt::format("{} gives dwell: only G89 dwells at the bottom; give cycle = "
+                                    "\"G89\" or no dwell",
+                                    w));
+  }
+}
+
 void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, Operation& op) {
   const bool layered = op.type == OpType::Drill || op.type == OpType::Spot ||
                        op.type == OpType::Tap || op.type == OpType::Bore ||
@@ -222,6 +252,7 @@ void read_type_keys(TomlReader& r, const toml::table& t, const std::string& w, O
   }
   if (op.type == OpType::Engrave) read_engrave_keys(r, t, w, op);
   if (op.type == OpType::Chamfer) read_chamfer_keys(r, t, w, op);
+  if (op.type == OpType::Bore) read_bore_keys(r, t, w, op);
   if (!cam::profile_side(op.side)) {
     r.fail(
         t.get("side")->source(),

@@ -30,6 +30,11 @@ enum class OpType {
 
 std::string_view op_type_name(OpType t);
 
+// How a bore leaves its hole (docs/job.md, "Boring"): fed out (G85, the
+// default), fed out after a dwell at the bottom (G89), or out at rapid
+// with the spindle stopped (G86).
+enum class BoreCycle { FeedOut, DwellFeedOut, StopRapidOut };
+
 struct Operation {
   OpType type = OpType::Pocket;
   core::SourceLoc loc;  // its [[operation]] header
@@ -47,8 +52,10 @@ struct Operation {
   // bore: the holes are there before the job (cast, or drilled in another
   // setup): no earlier operation of the job need drill them.
   bool predrilled = false;
-  std::string side = "outside";  // profile, chamfer
-  double width = 0;              // chamfer: its leg on the top face, mm
+  BoreCycle bore_cycle = BoreCycle::FeedOut;  // bore: `cycle`
+  double dwell = 0;                           // bore, G89: s at the bottom
+  std::string side = "outside";               // profile, chamfer
+  double width = 0;                           // chamfer: its leg on the top face, mm
   core::SourceLoc width_loc;
   double tip_offset = 0.5;  // chamfer: how far the tip goes below the chamfer's foot
   double lead_radius = 0;   // profile

@@ -122,6 +122,15 @@ bool set_head(Context& cx, const Operation& op, const Tool& tool, double diamete
   return true;
 }
 
+canon::HoleCycle hole_cycle(BoreCycle c) {
+  switch (c) {
+  case BoreCycle::DwellFeedOut: return canon::HoleCycle::BoreDwell;
+  case BoreCycle::StopRapidOut: return canon::HoleCycle::BoreStop;
+  case BoreCycle::FeedOut: break;
+  }
+  return canon::HoleCycle::Bore;
+}
+
 }  // namespace
 
 bool run_bore(Context& cx, const Operation& op, const std::string& title) {
@@ -156,8 +165,10 @@ bool run_bore(Context& cx, const Operation& op, const std::string& title) {
                                                 "(predrilled = true)")
                                   : fmt::format("pilot holes D{:g}, drilled before", *pilot));
     if (cx.sheet != nullptr) cx.sheet->steps.back().holes = g.centers;
-    o.form = cam::HoleForm::Features;  // G85 where the control has it
+    o.form = cam::HoleForm::Features;  // G85 (G89, G86) where the control has it
     o.bore = true;
+    o.bore_cycle = hole_cycle(op.bore_cycle);
+    o.dwell = op.dwell;
     o.depth = op.depth;
     o.retract = op.retract;
     AtOperation at(cx.diags, op.loc, title);

@@ -29,7 +29,13 @@ struct Control {
   int line_number_width = 0;         // zero-padded N words ("N0010")
   bool always_line_numbers = false;
   bool tool_change_m6 = true;
-  std::string dwell_word = "P";     // G4 P<s> (LinuxCNC, grbl) or G4 X<s> (Fanuc)
+  std::string dwell_word = "P";  // G4 P<s> (LinuxCNC, grbl) or G4 X<s> (Fanuc)
+  // A cycle's dwell P in whole milliseconds (Fanuc: P500 is 0.5 s), and a
+  // G86 with none; else P in seconds, and G86 with P0 (LinuxCNC wants it).
+  bool cycle_dwell_ms = false;
+  // A dwell in a block of its own (G4) the control's dialect reads; romi's
+  // spec has none (its only dwell is G81's D, at a drilled hole's bottom).
+  bool standalone_dwell = true;
   std::string program_end = "M30";  // after the spindle stop and coolant off
   void (*header)(BlockOut& out, const PostOptions& options) = nullptr;
   // What follows the program end (Fanuc's closing '%'); none for most.

@@ -1,6 +1,6 @@
 // Fanuc (0i/30i milling, ISO): % delimiters, O number, every coordinate
 // with a decimal point (without one Fanuc reads least increments), two-digit
-// codes, G81/G83 with G98, dwell as G04 X<seconds>.
+// codes, G81/G83 with G98, dwell as G04 X<seconds> (a cycle's P in ms).
 #include <fmt/format.h>
 
 #include "post/block_out.hpp"
@@ -32,6 +32,7 @@ Control fanuc_control() {
   c.always_point = true;
   c.two_digit_codes = true;
   c.dwell_word = "X";
+  c.cycle_dwell_ms = true;
   c.header = header;
   c.footer = footer;
   return c;

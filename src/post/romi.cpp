@@ -42,6 +42,7 @@ Control romi_control() {
   c.line_number_width = 4;
   c.always_line_numbers = true;
   c.dwell_word = "K";
+  c.standalone_dwell = false;
   c.header = header;
   c.program_end = "M02";  // as the seed's program ends
   return c;

@@ -32,7 +32,9 @@ Writer::Writer(std::ostream& out, Control control, const PostOptions& options,
       g1_(code('G', 1)),
       g81_(code('G', 81)),
       g83_(code('G', 83)),
-      g85_(code('G', 85)) {}
+      g85_(code('G', 85)),
+      g86_(code('G', 86)),
+      g89_(code('G', 89)) {}
 
 void Writer::append(std::string& words, const std::string& w) {
   if (w.empty()) return;
@@ -106,7 +108,7 @@ void Writer::on(const canon::Op& op) {
           out_.block(w);
           pos_ = k.to;
         } else if constexpr (std::is_same_v<T, canon::Dwell>) {
-          out_.block(fmt::format("{} {}{}", code('G', 4), control_.dwell_word, out_.number(k.s)));
+          dwell(k.s);
         } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
           tool_change(k);
         } else if constexpr (std::is_same_v<T, canon::Spindle>) {
@@ -159,6 +161,10 @@ void Writer::append_axis_words(std::string& w, const Vec3& to, const canon::Abc&
   }
 }
 
+void Writer::dwell(double s) {
+  out_.block(fmt::format("{} {}{}", code('G', 4), control_.dwell_word, out_.number(s)));
+}
+
 std::string Writer::motion_word(const char* g) {
   if (motion_ == g) return {};
   motion_ = g;
@@ -166,7 +172,8 @@ std::string Writer::motion_word(const char* g) {
 }
 
 void Writer::cancel_cycle() {
-  if (motion_ != g81_ && motion_ != g83_ && motion_ != g85_) return;
+  if (motion_ != g81_ && motion_ != g83_ && motion_ != g85_ && motion_ != g86_ && motion_ != g89_)
+    return;
   out_.block(code('G', 80));
   motion_.clear();
   cycle_z_.reset();

@@ -44,8 +44,12 @@ class Writer final : public canon::Sink {
   void arc_block(const canon::Arc& a, const core::Vec3& to, bool ccw, int turns, int plane,
                  RateWords& rate);
   void hole(const canon::Hole& h, const canon::Op& op);
-  void cycle_hole(const canon::Hole& h);
-  void expanded_hole(const canon::Hole& h);
+  void cycle_hole(const canon::Hole& h, std::optional<double> f);
+  const std::string& cycle_code(const canon::Hole& h) const;
+  std::string cycle_dwell_word(const canon::Hole& h) const;
+  void expanded_hole(const canon::Hole& h, std::optional<double> f);
+  void expanded_bore_stop(const canon::Hole& h, double clear);
+  void dwell(double s);
   void spindle(const canon::Spindle& s);
   void tool_change(const canon::ToolChange& t);
   void coolant(const canon::Coolant& c);
@@ -89,7 +93,7 @@ class Writer final : public canon::Sink {
   core::Vec3 pos_;                             // the canon's own position (exact)
   bool pos_known_ = false;
   std::optional<double> feed_;       // F as written
-  std::optional<double> last_feed_;  // the last feed rate of any move (for bare holes)
+  std::optional<double> last_feed_;  // the last feed rate of any move (for bare holes without one)
   int feed_mode_ = 94;               // G93, G94 or G95 as written
   int plane_ = 17;
   std::optional<long> speed_;
@@ -100,8 +104,10 @@ class Writer final : public canon::Sink {
   bool spindle_stop_written_ = false;
   bool coolant_off_written_ = false;
   std::optional<double> cycle_z_, cycle_r_, cycle_q_;
-  std::string g0_, g1_, g81_, g83_, g85_;  // the motion codes as this control writes them
-  std::string words_, axes_buf_;           // reused for every straight move
+  int retract_mode_ = 98;  // G98 or G99 as written (every header with cycles says G98)
+  // The motion codes as this control writes them.
+  std::string g0_, g1_, g81_, g83_, g85_, g86_, g89_;
+  std::string words_, axes_buf_;  // reused for every straight move
 };
 
 }  // namespace usina::post

@@ -140,7 +140,9 @@ void StatsSink::on(const canon::Op& op) {
         } else if constexpr (std::is_same_v<T, canon::Hole>) {
           ++tool().counts.holes;
           const canon::Abc abc{pos_[3], pos_[4], pos_[5]};
-          for (const canon::Op& m : canon::bare_hole_moves(op, k, xyz(pos_), abc, feed_in_force_))
+          const canon::Spindle running{spindle_rpm_, spindle_dir_};  // restarted after a G86
+          for (const canon::Op& m :
+               canon::bare_hole_moves(op, k, xyz(pos_), abc, feed_in_force_, running))
             on(m);
         } else if constexpr (std::is_same_v<T, canon::ProgramEnd>) {
           planner_->stop();

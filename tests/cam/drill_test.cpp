@@ -82,7 +82,7 @@ TEST(Drill, PecksAsG83OutToRAndBackToTheClearance) {
   EXPECT_EQ(zs, expect);
 }
 
-TEST(Drill, FeaturesFormIsBareHolesAfterAFeedThatSetsTheRate) {
+TEST(Drill, FeaturesFormIsBareHolesThatCarryTheirFeed) {
   canon::Toolpath tp;
   core::DiagnosticList d;
   DrillOptions o = options();
@@ -93,13 +93,67 @@ TEST(Drill, FeaturesFormIsBareHolesAfterAFeedThatSetsTheRate) {
   EXPECT_NEAR(holes[1].at.y, 20, 1e-12);
   for (const canon::Op& op : tp.ops())
     EXPECT_EQ(op.origin, canon::Origin::Program);
-  const auto feeds = ops_of<canon::Feed>(tp);
-  ASSERT_EQ(feeds.size(), 1u);
-  EXPECT_EQ(feeds[0].to, (Vec3{20, 0, 2}));
-  EXPECT_EQ(feeds[0].f, o.cut.plunge_feed);
-  // Back at the safe Z before the first hole: the cycle's clear level.
+  // No feed down to R to set the rate (it cost a bore 26 s at its feed):
+  // each hole carries it, and the cycle goes to R at rapid.
+  EXPECT_TRUE(ops_of<canon::Feed>(tp).empty());
+  for (const canon::Hole& h : holes)
+    EXPECT_EQ(h.f, o.cut.plunge_feed);
+  // At the safe Z over the first hole: the cycle's clear level.
   const auto t = ops_of<canon::Traverse>(tp);
-  EXPECT_EQ(t[1].to, (Vec3{20, 0, 10}));
+  EXPECT_EQ(t.back().to, (Vec3{20, 0, 10}));
+}
+
+TEST(Drill, ABoresCycleAndDwellAreChecked) {
+  const auto refused = [](const DrillOptions& o, const std::string& words) {
+    canon::Toolpath tp;
+    core::DiagnosticList d;
+    EXPECT_FALSE(generate_drill({{0, 0}}, o, tp, d));
+    ASSERT_EQ(count_code(d, core::Code::GenBadValue), 1) << words;
+    EXPECT_NE(d.all()[0].message.find(words), std::string::npos) << d.all()[0].message;
+    EXPECT_EQ(tp.size(), 0u);
+  };
+  DrillOptions o = options();
+  o.bore = true;
+  o.bore_cycle = canon::HoleCycle::Drill;
+  refused(o, "not G81");
+  o.bore_cycle = canon::HoleCycle::Bore;
+  o.dwell = 0.5;
+  refused(o, "only a G89 bore dwells");
+  o.bore_cycle = canon::HoleCycle::BoreDwell;
+  for (const double bad : {0.0, -0.5, 61.0}) {
+    o.dwell = bad;
+    refused(o, "dwell");
+  }
+}
+
+// As moves: G89 dwells at the bottom before the feed out; G86 stops the
+// spindle, rapids out and starts it again.
+TEST(Drill, BoreCyclesAsMoves) {
+  DrillOptions o = options();
+  o.bore = true;
+  o.bore_cycle = canon::HoleCycle::BoreDwell;
+  o.dwell = 0.5;
+  canon::Toolpath tp;
+  core::DiagnosticList d;
+  ASSERT_TRUE(generate_drill({{0, 0}}, o, tp, d));
+  const auto dwells = ops_of<canon::Dwell>(tp);
+  ASSERT_EQ(dwells.size(), 1u);
+  EXPECT_EQ(dwells[0].s, 0.5);
+  EXPECT_EQ(ops_of<canon::Hole>(tp)[0].dwell, 0.5);
+  const auto feeds = ops_of<canon::Feed>(tp);
+  ASSERT_EQ(feeds.size(), 2u);
+  EXPECT_EQ(feeds[1].to.z, 2);  // fed out to R
+  o.bore_cycle = canon::HoleCycle::BoreStop;
+  o.dwell = 0;
+  canon::Toolpath stop;
+  ASSERT_TRUE(generate_drill({{0, 0}}, o, stop, d));
+  EXPECT_EQ(ops_of<canon::Feed>(stop).size(), 1u);  // in; out at rapid
+  std::vector<canon::SpindleDir> dirs;
+  for (const canon::Spindle& s : ops_of<canon::Spindle>(stop))
+    dirs.push_back(s.dir);
+  // Started, stopped at the bottom, started again, stopped at the end.
+  EXPECT_EQ(dirs, (std::vector<canon::SpindleDir>{canon::SpindleDir::Cw, canon::SpindleDir::Off,
+                                                  canon::SpindleDir::Cw, canon::SpindleDir::Off}));
 }
 
 TEST(Drill, ErrorsNothingEmitted) {

@@ -40,6 +40,40 @@ TEST(BareHole, FromBelowRItFirstRisesToR) {
   EXPECT_EQ(end_of(moves[3]), (Vec3{10, 0, 2}));
 }
 
+TEST(BareHole, AHoleWithItsOwnFeedIsCutAtItPerMinute) {
+  Hole h{{10, 0, 2}, 5, 4, HoleCycle::Bore};
+  h.f = 9.5;
+  const Op hole{h, {}, Origin::Program};
+  Feed in_force;  // a feed per revolution in force: not the hole's
+  in_force.programmed = {ProgrammedFeed::Mode::PerRevolution, 0.1};
+  const auto moves = bare_hole_moves(hole, h, {0, 0, 10}, {}, in_force);
+  ASSERT_EQ(moves.size(), 5u);
+  for (const std::size_t i : {2u, 3u}) {
+    const Feed& f = std::get<Feed>(moves[i].kind);
+    EXPECT_EQ(f.f, 9.5);
+    EXPECT_EQ(f.programmed.mode, ProgrammedFeed::Mode::PerMinute);
+  }
+}
+
+TEST(BareHole, G89DwellsThenFeedsOutG86StopsAndRapidsOut) {
+  Hole h{{10, 0, 2}, 5, 4, HoleCycle::BoreDwell, 50.0, 0.5};
+  const Op dwell{h, {}, Origin::Program};
+  const auto d = bare_hole_moves(dwell, h, {10, 0, 5}, {}, Feed{}, Spindle{900, SpindleDir::Cw});
+  ASSERT_EQ(d.size(), 6u);  // over, down to R, in, the dwell, out, up
+  EXPECT_EQ(std::get<Dwell>(d[3].kind).s, 0.5);
+  EXPECT_EQ(end_of(d[4]), (Vec3{10, 0, 2}));  // fed out to R
+  EXPECT_TRUE(std::holds_alternative<Feed>(d[4].kind));
+  EXPECT_EQ(end_of(d[5]), (Vec3{10, 0, 5}));
+  h.cycle = HoleCycle::BoreStop;
+  const Op stop{h, {}, Origin::Program};
+  const auto s = bare_hole_moves(stop, h, {10, 0, 5}, {}, Feed{}, Spindle{900, SpindleDir::Cw});
+  ASSERT_EQ(s.size(), 6u);
+  EXPECT_EQ(std::get<Spindle>(s[3].kind).dir, SpindleDir::Off);  // stopped at the bottom
+  EXPECT_TRUE(std::holds_alternative<Traverse>(s[4].kind));      // out at rapid
+  EXPECT_EQ(end_of(s[4]), (Vec3{10, 0, 5}));
+  EXPECT_EQ(std::get<Spindle>(s[5].kind).rpm, 900);  // started again
+}
+
 TEST(BareHole, ACyclesHoleOrOneOfNoDepthHasNoMoves) {
   const Op cycle{Hole{{10, 0, 2}, 5, 4}, {}, Origin::Cycle};
   EXPECT_TRUE(bare_hole_moves(cycle, std::get<Hole>(cycle.kind), {}, {}, Feed{}).empty());

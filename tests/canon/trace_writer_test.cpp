@@ -92,6 +92,12 @@ TEST(TraceJsonl, CoolantBooleans) {
 TEST(TraceJsonl, Hole) {
   EXPECT_EQ(to_jsonl({Hole{{10, 20, 2}, 8.5, 12}, at(8, 1)}),
             R"({"op":"hole","src":[8,1],"at":[10,20,2],"diameter":8.5,"depth":12})");
+  // A generator's hole with its own feed rate says it.
+  Hole bored{{10, 20, 2}, 10, 12, HoleCycle::Bore};
+  bored.f = 9.5;
+  EXPECT_EQ(
+      to_jsonl({bored, at(8, 1)}),
+      R"({"op":"hole","src":[8,1],"at":[10,20,2],"diameter":10,"depth":12,"cycle":"bore","f":9.5})");
 }
 
 TEST(TraceJsonl, PocketOutlineWithLineAndArc) {

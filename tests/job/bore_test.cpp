@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../post/round_trip.hpp"
+#include "canon/bare_hole.hpp"
 #include "canon/toolpath.hpp"
 #include "canon/trace_writer.hpp"
 #include "job/make.hpp"
@@ -419,6 +420,175 @@ TEST(BorePost, TheTraceSaysAHoleIsBored) {
   EXPECT_NE(traced(h).find("bored"), std::string::npos) << traced(h);
   h.cycle = canon::HoleCycle::Drill;
   EXPECT_EQ(traced(h).find("bored"), std::string::npos) << traced(h);
+}
+
+// ---- G89 and G86 (the `cycle` key) ----
+
+TEST(BoreCycle, TheCycleIsG85G89OrG86) {
+  expect_read_error(bore_job(bore_op("depth = 9.0\ntool = 13\ncycle = \"G81\"\n")), Code::BadJob,
+                    kFirstOpLine + 5, "give \"G85\" (fed out, the default)");
+  expect_read_error(bore_job(bore_op("depth = 9.0\ntool = 13\ncycle = 89\n")), Code::BadJob,
+                    kFirstOpLine + 5, "cycle");
+}
+
+TEST(BoreCycle, G89NeedsItsDwellAndOnlyG89HasOne) {
+  expect_read_error(bore_job(bore_op("depth = 9.0\ntool = 13\ncycle = \"G89\"\n")), Code::BadJob,
+                    kFirstOpLine + 5, "give dwell = the seconds");
+  expect_read_error(bore_job(bore_op("depth = 9.0\ntool = 13\ndwell = 0.5\n")), Code::BadJob,
+                    kFirstOpLine + 5, "only G89 dwells");
+  expect_read_error(bore_job(bore_op("depth = 9.0\ntool = 13\ncycle = \"G86\"\ndwell = 0.5\n")),
+                    Code::BadJob, kFirstOpLine + 6, "only G89 dwells");
+  // A drill has no dwell key at all.
+  expect_read_error(bore_job("[[operation]]\ntype = \"drill\"\nlayer = \"PILOT\"\ndepth = 13.0\n"
+                             "tool = \"auto\"\ndwell = 0.5\n"),
+                    Code::UnknownJobKey, kFirstOpLine + 5, "dwell");
+}
+
+TEST(BoreCycle, TheDwellIsAboveZeroAndAtMostAMinute) {
+  for (const char* dwell : {"0.0", "-1.0", "61.0", "500.0"}) {
+    SCOPED_TRACE(dwell);
+    expect_read_error(bore_job(bore_op(std::string("depth = 9.0\ntool = 13\ncycle = \"G89\"\n"
+                                                   "dwell = ") +
+                                       dwell + "\n")),
+                      Code::BadJob, kFirstOpLine + 6, "dwell");
+  }
+  const auto m =
+      make(bore_job(bore_op("depth = 9.0\ntool = 13\ndiameter = 10.0\npredrilled = "
+                            "true\ncycle = \"G89\"\ndwell = 60.0\n")));
+  EXPECT_TRUE(m->ok) << first_message(m->diags);
+}
+
+const std::string kDwellBore = bore_op(
+    "depth = 9.0\ntool = 13\ndiameter = 10.0\npredrilled = true\ncycle = \"G89\"\ndwell = 0.5\n");
+const std::string kStopBore =
+    bore_op("depth = 9.0\ntool = 13\ndiameter = 10.0\npredrilled = true\ncycle = \"G86\"\n");
+
+TEST(BoreCycle, TheHolesCarryTheCycleAndTheDwell) {
+  for (const auto& [ops, cycle, dwell] : {std::tuple{kDwellBore, canon::HoleCycle::BoreDwell, 0.5},
+                                          std::tuple{kStopBore, canon::HoleCycle::BoreStop, 0.0}}) {
+    const canon::Toolpath tp = bored(ops);
+    int holes = 0;
+    for (const canon::Op& op : tp.ops()) {
+      const auto* h = std::get_if<canon::Hole>(&op.kind);
+      if (h == nullptr) continue;
+      ++holes;
+      EXPECT_EQ(h->cycle, cycle);
+      EXPECT_DOUBLE_EQ(h->dwell, dwell);
+      ASSERT_TRUE(h->f);
+    }
+    EXPECT_EQ(holes, 2);
+  }
+}
+
+std::string posted(const canon::Toolpath& tp, const char* post) {
+  core::DiagnosticList d;
+  std::string text = test::post_text(tp.ops(), post, d);
+  EXPECT_FALSE(d.has_errors()) << post << ": " << first_message(d);
+  return text;
+}
+
+// G89 in G99, so LinuxCNC's feeds out to R as a Fanuc's does, then a rapid
+// up; the dwell in seconds (LinuxCNC), in ms (Fanuc), as G4 (grbl, romi).
+TEST(BoreCycle, G89AsEachControlWritesIt) {
+  const canon::Toolpath tp = bored(kDwellBore);
+  const std::string ngc = posted(tp, "rs274ngc");
+  EXPECT_NE(ngc.find("G99 G89 X25 Y30 Z-9 R1 P0.5 F"), std::string::npos) << ngc;
+  EXPECT_NE(ngc.find("G80\nG0 Z5\nG89 X75 Y30 Z-9 R1 P0.5\nG80\nG0 Z5\n"), std::string::npos)
+      << ngc;
+  const std::string fanuc = posted(tp, "fanuc");
+  EXPECT_NE(fanuc.find("G99 G89 X25. Y30. Z-9. R1. P500 F"), std::string::npos) << fanuc;
+  const std::string grbl = posted(tp, "grbl");
+  EXPECT_NE(grbl.find("G1 Z-9 F"), std::string::npos) << grbl;
+  EXPECT_NE(grbl.find("G4 P0.5\nZ1\nG0 Z5\n"), std::string::npos) << grbl;
+  // romi's only dwell is G81's D (out at rapid): the post refuses the bore.
+  core::DiagnosticList d;
+  test::post_text(tp.ops(), "romi", d);
+  const core::Diagnostic* e = find(d, Code::Unsupported);
+  ASSERT_NE(e, nullptr);
+  EXPECT_NE(e->message.find("a bore's dwell"), std::string::npos) << e->message;
+}
+
+// G86: no dwell on a Fanuc, P0 where LinuxCNC wants a P; the moves stop
+// the spindle, rapid out and start it again.
+TEST(BoreCycle, G86AsEachControlWritesIt) {
+  const canon::Toolpath tp = bored(kStopBore);
+  EXPECT_NE(posted(tp, "rs274ngc").find("G86 X25 Y30 Z-9 R1 P0 F"), std::string::npos);
+  const std::string fanuc = posted(tp, "fanuc");
+  EXPECT_NE(fanuc.find("G86 X25. Y30. Z-9. R1. F"), std::string::npos) << fanuc;
+  EXPECT_EQ(fanuc.find("P0"), std::string::npos) << fanuc;
+  const std::string grbl = posted(tp, "grbl");
+  EXPECT_NE(grbl.find("G1 Z-9 F"), std::string::npos) << grbl;
+  EXPECT_NE(grbl.find("M5\nG0 Z5\nM3\nX75\n"), std::string::npos) << grbl;
+}
+
+// The job's path with its bare holes as stats and simulate follow them
+// (canon/bare_hole.hpp).
+std::vector<canon::Op> expanded(const canon::Toolpath& tp) {
+  std::vector<canon::Op> out;
+  core::Vec3 at;
+  canon::Feed feed;
+  canon::Spindle spindle;
+  for (const canon::Op& op : tp.ops()) {
+    if (const auto* h = std::get_if<canon::Hole>(&op.kind)) {
+      for (const canon::Op& m : canon::bare_hole_moves(op, *h, at, {}, feed, spindle))
+        out.push_back(m);
+      at = test::motion_ends(out, 1e-9).back();
+      continue;
+    }
+    if (const auto* s = std::get_if<canon::Spindle>(&op.kind)) spindle = *s;
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind)) feed = *f;
+    out.push_back(op);
+    if (canon::is_motion(op.kind)) at = test::motion_ends(out, 1e-9).back();
+  }
+  return out;
+}
+
+struct Seen {
+  std::vector<double> dwells;
+  int stops_at_bottom = 0;  // spindle stopped with the tool at Z-9
+};
+
+Seen seen(const std::vector<canon::Op>& ops) {
+  Seen s;
+  double z = 0;
+  for (const canon::Op& op : ops) {
+    if (const auto* d = std::get_if<canon::Dwell>(&op.kind); d && d->s > 0)
+      s.dwells.push_back(d->s);
+    if (const auto* sp = std::get_if<canon::Spindle>(&op.kind);
+        sp && sp->dir == canon::SpindleDir::Off && std::abs(z + 9.0) < 1e-3)
+      ++s.stops_at_bottom;
+    if (canon::is_motion(op.kind)) z = test::motion_ends({op}, 1e-9).back().z;
+  }
+  return s;
+}
+
+// Every control's program reads back to the path the job's holes stand for
+// (the moves stats and simulate follow), with its dwells and spindle stops.
+TEST(BoreCycle, G89AndG86ReadBackTheSameInEveryControl) {
+  for (const std::string& ops : {kDwellBore, kStopBore}) {
+    const canon::Toolpath tp = bored(ops);
+    const std::vector<canon::Op> path = expanded(tp);
+    const Seen want = seen(path);
+    EXPECT_EQ(want.dwells.size() + static_cast<std::size_t>(want.stops_at_bottom), 2u);
+    for (const char* post : {"rs274ngc", "fanuc", "grbl", "romi"}) {
+      SCOPED_TRACE(post);
+      if (ops == kDwellBore && std::string_view(post) == "romi") continue;  // refused, above
+      const auto back = test::interpret_in(posted(tp, post), post);
+      ASSERT_TRUE(back);
+      test::expect_same_path(path, *back, 1e-3);
+      const Seen got = seen(*back);
+      EXPECT_EQ(got.dwells, want.dwells);
+      EXPECT_EQ(got.stops_at_bottom, want.stops_at_bottom);
+    }
+  }
+}
+
+TEST(BorePost, TheTraceSaysHowAHoleIsBored) {
+  canon::Hole h{{1, 2, 1}, 10, 10, canon::HoleCycle::BoreDwell};
+  h.dwell = 0.5;
+  EXPECT_NE(traced(h).find("bored with a dwell 0.5 s"), std::string::npos) << traced(h);
+  h.cycle = canon::HoleCycle::BoreStop;
+  EXPECT_NE(traced(h).find("bored, spindle stopped"), std::string::npos) << traced(h);
 }
 
 }  // namespace

@@ -220,6 +220,19 @@ TEST(SimulateJobCli, AJobIsSimulatedOnItsStockWithItsToolsAndMachine) {
               nlohmann::json::parse(stats.out)["time"]["total_s"].get<double>(), 0.05);
 }
 
+TEST(SimulateJobCli, ABoringHeadCutsAtTheDiameterItIsSetTo) {
+  // The bearing plate's head T13 (D8-24 in the library) set to D10 bores two
+  // D8.5 pilot holes through the 10 mm plate: 2 × π (5² − 4.25²) × 10 mm³.
+  // At its smallest diameter, D8, it would cut nothing.
+  TempDir dir;
+  const usina::test::Run r = usina("simulate " + quote(kExamples + "jobs/bearing_plate.toml") +
+                                   " -o " + quote(dir.path("r.json")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(dir.read("r.json"));
+  EXPECT_NEAR(j["per_tool"]["13"]["removed_mm3"].get<double>(), 2 * M_PI * (25 - 18.0625) * 10,
+              0.03 * 436);
+}
+
 TEST(SimulateJobCli, APocketCutWithTooSmallATool) {
   // The pocket's path is for its 6 mm end mill; cut with a 3 mm one it
   // leaves ridges between the passes: material above the operation's target.
