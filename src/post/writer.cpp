@@ -108,6 +108,9 @@ void Writer::on(const canon::Op& op) {
           out_.block(w);
           pos_ = k.to;
         } else if constexpr (std::is_same_v<T, canon::Dwell>) {
+          // romi's only dwell is G81's D: a G04 its reader refuses is no program.
+          if (!control_.standalone_dwell)
+            return unsupported(op, "a dwell: the control's only dwell is its drilling cycle's");
           dwell(k.s);
         } else if constexpr (std::is_same_v<T, canon::ToolChange>) {
           tool_change(k);

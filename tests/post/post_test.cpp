@@ -232,5 +232,21 @@ TEST(Post, ARotaryMoveIsReportedOnceNotForEveryLaterMove) {
     EXPECT_EQ(d.code, core::Code::Unsupported);
 }
 
+// spec/romi.md has no G04: its only dwell is G81's D, so a program's dwell
+// is refused, not written as a block romi's own reader rejects.
+TEST(Post, ADwellForRomiIsRefusedAndWrittenForTheOthers) {
+  const std::vector<canon::Op> ops = {op(canon::Traverse{{0, 0, 5}}), op(canon::Dwell{1.5}),
+                                      op(canon::Traverse{{10, 0, 5}})};
+  core::DiagnosticList romi;
+  const std::string text = test::post_text(ops, "romi", romi);
+  ASSERT_EQ(romi.all().size(), 1u);
+  EXPECT_EQ(romi.all()[0].code, core::Code::Unsupported);
+  EXPECT_NE(romi.all()[0].message.find("dwell"), std::string::npos) << romi.all()[0].message;
+  EXPECT_EQ(text.find("G04"), std::string::npos) << text;
+  core::DiagnosticList fanuc;
+  EXPECT_NE(test::post_text(ops, "fanuc", fanuc).find("G04"), std::string::npos);
+  EXPECT_TRUE(fanuc.all().empty());
+}
+
 }  // namespace
 }  // namespace usina
