@@ -4,6 +4,7 @@
 #
 #   bench/run_bench.sh [--blocks N] [--runs R] [--no-micro] [--no-draw] [--no-dialects]
 #   BUILD_DIR=/tmp/build-bench bench/run_bench.sh
+#   bench/run_bench.sh --usina PATH ...   # times that usina, builds nothing
 #
 # 1. builds usina Release in $BUILD_DIR (default build-release/, not build/);
 # 2. generates a 3D surfacing program of N blocks (default 1,000,000, ~30 MB)
@@ -28,6 +29,10 @@
 #    program when it is installed (its ratio to usina check); --no-dialects
 #    leaves this out;
 # 7. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
+#
+# --usina PATH times an executable already built (two builds compared under
+# the same load, one after the other) and skips step 1 and the
+# micro-benchmarks, which need the build.
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -37,6 +42,7 @@ runs=5
 micro=1
 draw=1
 dialects=1
+given=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --blocks) blocks="$2"; shift 2 ;;
@@ -44,17 +50,23 @@ while [[ $# -gt 0 ]]; do
     --no-micro) micro=0; shift ;;
     --no-draw) draw=0; shift ;;
     --no-dialects) dialects=0; shift ;;
-    -h | --help) sed -n "2,29p" "$0"; exit 0 ;;
+    --usina) given="$2"; micro=0; shift 2 ;;
+    -h | --help) sed -n "2,35p" "$0"; exit 0 ;;
     *) echo "run_bench.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
 
 # GCC 12 at -O3 reports a false -Wrestrict inside std::string (parser.cpp,
 # o_word); it must not stop a benchmark build.
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_CXX_FLAGS="${BENCH_CXXFLAGS:--Wno-error=restrict}" > /dev/null
-cmake --build "$build" --target usina usina_bench > /dev/null
-usina="$build/usina"
+if [[ -n "$given" ]]; then
+  [[ -x "$given" ]] || { echo "run_bench.sh: --usina $given is not an executable" >&2; exit 2; }
+  usina="$(cd "$(dirname "$given")" && pwd)/$(basename "$given")"
+else
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_FLAGS="${BENCH_CXXFLAGS:--Wno-error=restrict}" > /dev/null
+  cmake --build "$build" --target usina usina_bench > /dev/null
+  usina="$build/usina"
+fi
 
 program="/tmp/usina-bench-surfacing-$blocks.ngc"
 if [[ ! -s "$program" || "$root/bench/gen_surfacing.py" -nt "$program" ]]; then
@@ -63,7 +75,11 @@ fi
 bytes="$(stat -c %s "$program")"
 echo "program: $program, $blocks blocks, $bytes bytes"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
-echo "usina:   $usina ($(cd "$build" && grep -m1 CMAKE_BUILD_TYPE:STRING CMakeCache.txt | cut -d= -f2))"
+if [[ -n "$given" ]]; then
+  echo "usina:   $usina (given)"
+else
+  echo "usina:   $usina ($(cd "$build" && grep -m1 CMAKE_BUILD_TYPE:STRING CMakeCache.txt | cut -d= -f2))"
+fi
 "$usina" check "$program" || { echo "run_bench.sh: usina check fails on the generated program" >&2; exit 1; }
 
 tmp="$(mktemp -d)"

@@ -20,6 +20,12 @@ class Checker {
   // is out of range.
   void value(const char* field, double v, double max, const char* unit, char axis = 0) {
     if (problem || (std::fabs(v) <= max)) return;  // NaN fails the comparison
+    out_of_range(field, v, max, unit, axis);
+  }
+
+  // Apart from value(), so value() stays small enough to be inlined.
+  [[gnu::noinline]] void out_of_range(const char* field, double v, double max, const char* unit,
+                                      char axis) {
     const std::string name = axis != 0 ? fmt::format("{} {}", field, axis) : std::string(field);
     if (!std::isfinite(v)) {
       problem = fmt::format("the {}'s {} ({}) is not a finite number", op_, name, v);
@@ -158,6 +164,20 @@ std::string limit_text(double bound) {
 tl::expected<void, std::string> check_range(const OpKind& op) {
   Checker c(op_name(op));
   std::visit(Check{c}, op);
+  if (c.problem) return tl::unexpected(std::move(*c.problem));
+  return {};
+}
+
+tl::expected<void, std::string> check_range(const Traverse& move) {
+  Checker c("traverse");
+  Check{c}(move);
+  if (c.problem) return tl::unexpected(std::move(*c.problem));
+  return {};
+}
+
+tl::expected<void, std::string> check_range(const Feed& move) {
+  Checker c("feed");
+  Check{c}(move);
   if (c.problem) return tl::unexpected(std::move(*c.problem));
   return {};
 }

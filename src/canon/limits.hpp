@@ -31,6 +31,10 @@ inline constexpr int kMaxTurns = 1'000'001;  // of one arc or helix
 // Every number of `op` in range; else what is wrong with the first that is
 // not, e.g. "the arc's centre Y (-inf) is not a finite number".
 tl::expected<void, std::string> check_range(const OpKind& op);
+// The same for a move not built into an op (Sink::reads_ops): the same
+// message as for the op.
+tl::expected<void, std::string> check_range(const Traverse& move);
+tl::expected<void, std::string> check_range(const Feed& move);
 
 // A bound as the docs write it: "1e9", "1e-6".
 std::string limit_text(double bound);

@@ -23,19 +23,38 @@ bool TeeSink::stopped() const {
   return false;
 }
 
-void OpBudget::on(const Op& op) {
-  if (exceeded_) return;
+bool TeeSink::reads_ops() const {
+  for (const Sink* s : sinks_)
+    if (s->reads_ops()) return true;
+  return false;
+}
+
+void TeeSink::pass(const core::SourceLoc& src) {
+  for (Sink* s : sinks_)
+    s->pass(src);
+}
+
+bool OpBudget::admit(const core::SourceLoc& src) {
+  if (exceeded_) return false;
   if (passed_ >= max_ops_) {
     exceeded_ = true;
-    diags_.report({core::Code::TooManyOperations, core::Severity::Error, op.src,
+    diags_.report({core::Code::TooManyOperations, core::Severity::Error, src,
                    fmt::format("the run made {} operations (moves, arcs, tool changes, ...), its "
                                "budget; stopped here: a loop that does not end? A longer program "
                                "runs with a larger --max-ops",
                                max_ops_)});
-    return;
+    return false;
   }
   ++passed_;
-  next_.on(op);
+  return true;
+}
+
+void OpBudget::on(const Op& op) {
+  if (admit(op.src)) next_.on(op);
+}
+
+void OpBudget::pass(const core::SourceLoc& src) {
+  if (admit(src)) next_.pass(src);
 }
 
 ProgressSink::ProgressSink(Sink& next, Show show, std::uint64_t max_ops, ProgressTiming timing,
@@ -57,14 +76,19 @@ double ProgressSink::steady_seconds() {
 void ProgressSink::on(const Op& op) {
   next_.on(op);
   // The clock is read once every `every` ops: the cost per op stays a count.
-  if (++ops_ % timing_.every == 0) tick(op);
+  if (++ops_ % timing_.every == 0) tick(op.src);
 }
 
-void ProgressSink::tick(const Op& op) {
+void ProgressSink::pass(const core::SourceLoc& src) {
+  next_.pass(src);
+  if (++ops_ % timing_.every == 0) tick(src);
+}
+
+void ProgressSink::tick(const core::SourceLoc& src) {
   const double now = clock_();
   if (now < next_show_) return;
   next_show_ = now + timing_.period;
-  show_(progress_line(ops_, max_ops_, op.src.line, now - start_));
+  show_(progress_line(ops_, max_ops_, src.line, now - start_));
   showing_ = true;
 }
 

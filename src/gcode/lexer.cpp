@@ -6,16 +6,8 @@
 namespace usina::gcode {
 namespace {
 
-bool is_blank(char c) {
-  return c == ' ' || c == '\t' || c == '\r';
-}
-
 char upper(char c) {
   return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
-}
-
-bool is_digit(char c) {
-  return c >= '0' && c <= '9';
 }
 
 }  // namespace
@@ -44,45 +36,6 @@ bool Lexer::accept_keyword(std::string_view keyword) {
   }
   i_ = j;
   return true;
-}
-
-std::optional<double> Lexer::number() {
-  const std::size_t start = pos();
-  // Fast path, the shape of nearly every number in a program: digits with
-  // at most one point, no blanks, at most 15 significant digits. The value
-  // is mantissa / 10^k, exact operands and one correctly rounded division,
-  // so it equals what from_chars gives.
-  static constexpr std::array<double, 16> kPow10 = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                    1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-  std::uint64_t mantissa = 0;
-  int digits = 0;
-  int decimals = 0;
-  bool point = false;
-  std::size_t j = start;
-  for (; j < text_.size(); ++j) {
-    const char c = text_[j];
-    if (is_digit(c)) {
-      if (++digits > 15) return number_slow(start);
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
-      if (point) ++decimals;
-    } else if (c == '.' && !point) {
-      point = true;
-    } else {
-      break;
-    }
-  }
-  // Blanks inside a number ("1 . 5") are legal RS274NGC: the slow path.
-  if (j < text_.size() && is_blank(text_[j])) {
-    std::size_t k = j;
-    while (k < text_.size() && is_blank(text_[k]))
-      ++k;
-    if (k < text_.size() && (is_digit(text_[k]) || (text_[k] == '.' && !point))) {
-      return number_slow(start);
-    }
-  }
-  if (digits == 0) return std::nullopt;
-  i_ = j;
-  return static_cast<double>(mantissa) / kPow10[static_cast<std::size_t>(decimals)];
 }
 
 std::optional<double> Lexer::number_slow(std::size_t start) {

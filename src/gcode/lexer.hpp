@@ -4,6 +4,7 @@
 // letters in upper case.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -40,9 +41,39 @@ class Lexer {
   // Consumes `keyword` (upper case letters) if the next letters spell it,
   // blanks allowed between them.
   bool accept_keyword(std::string_view keyword);
+
   // An unsigned decimal number: digits with at most one point (blanks
   // allowed inside). Nullopt, consuming nothing, when none is next.
-  std::optional<double> number();
+  // Inline: the parser reads every word's value through it.
+  std::optional<double> number() {
+    skip_blanks();
+    const std::size_t start = i_;
+    const char* s = text_.data();
+    const std::size_t n = text_.size();
+    // Fast path, the shape of nearly every number in a program: digits with
+    // at most one point, no blanks, at most 15 significant digits, read in
+    // one pass. The value is mantissa / 10^k, exact operands and one
+    // correctly rounded division, so it equals what from_chars gives.
+    std::uint64_t mantissa = 0;  // wraps past 19 digits, but then unused
+    std::size_t j = start;
+    for (; j < n && is_digit(s[j]); ++j)
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[j] - '0');
+    std::size_t digits = j - start;
+    std::size_t decimals = 0;
+    const bool point = j < n && s[j] == '.';
+    if (point) {
+      const std::size_t first = ++j;
+      for (; j < n && is_digit(s[j]); ++j)
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[j] - '0');
+      decimals = j - first;
+      digits += decimals;
+    }
+    if (digits > kExactDigits || blank_inside(j, point)) return number_slow(start);
+    if (digits == 0) return std::nullopt;
+    i_ = j;
+    return static_cast<double>(mantissa) / kPow10[decimals];
+  }
+
   // Everything up to (not including) `close`, raw; consumes `close` too.
   // Nullopt (consuming the rest) if `close` never comes.
   std::optional<std::string_view> until(char close);
@@ -57,9 +88,28 @@ class Lexer {
  private:
   // Hot: called before every token.
   void skip_blanks() {
-    while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '\r'))
+    while (i_ < text_.size() && is_blank(text_[i_]))
       ++i_;
   }
+
+  static bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+  // Blanks inside a number ("1 . 5") are legal RS274NGC: true when blanks
+  // at `j` are followed by more of the number (a digit, or the point if
+  // there was none), which the slow path reads.
+  bool blank_inside(std::size_t j, bool point) const {
+    if (j >= text_.size() || !is_blank(text_[j])) return false;
+    while (j < text_.size() && is_blank(text_[j]))
+      ++j;
+    return j < text_.size() && (is_digit(text_[j]) || (text_[j] == '.' && !point));
+  }
+
+  static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+  // Digits a double holds exactly, and the powers of ten that are exact.
+  static constexpr std::size_t kExactDigits = 15;
+  static constexpr std::array<double, kExactDigits + 1> kPow10 = {
+      1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
   std::optional<double> number_slow(std::size_t start);
   std::string_view text_;

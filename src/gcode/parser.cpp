@@ -34,9 +34,21 @@ class Parser {
 
  private:
   bool fail(core::Code code, std::size_t pos, std::string message);
-  ExprRef node(ExprNode n);
+  ExprRef node(const ExprNode& n);
+  // A plain number's node (ExprKind::Number), the value of nearly every word.
+  ExprRef number_node(double value, std::size_t at);
+  [[gnu::noinline]] ExprRef too_many_nodes(std::uint32_t at_col);
   ExprRef real_value(int depth);
   bool exponent_in_range(std::size_t start);
+
+  // Whether the number just read is followed by an E: nearly every number
+  // is not, and then there is no exponent to ask about.
+  bool at_exponent() {
+    const std::string_view text = lex_.text();
+    const std::size_t end = lex_.offset();
+    return end < text.size() && (text[end] == 'e' || text[end] == 'E');
+  }
+
   ExprRef expression(int depth);
   ExprRef function(std::size_t pos, int depth);
   ExprRef bracketed(int depth);
@@ -57,16 +69,28 @@ bool Parser::fail(core::Code code, std::size_t pos, std::string message) {
   return false;
 }
 
-ExprRef Parser::node(ExprNode n) {
+ExprRef Parser::node(const ExprNode& n) {
   // The evaluator recurses once per operator: a limit keeps a hostile line
   // from exhausting the stack (LinuxCNC's whole line is 255 characters).
-  if (block_.exprs.size() >= kMaxExprNodes) {
-    fail(core::Code::BlockTooLong, n.col > 0 ? n.col - 1 : 0,
-         fmt::format("a block with more than {} values and operators", kMaxExprNodes));
-    return kNoExpr;
-  }
+  if (block_.exprs.size() >= kMaxExprNodes) return too_many_nodes(n.col);
   block_.exprs.push_back(n);
   return static_cast<ExprRef>(block_.exprs.size() - 1);
+}
+
+// Built in place: a node built apart and copied in was read back before its
+// fields had all been written (a stalled store-to-load forward per value).
+ExprRef Parser::number_node(double value, std::size_t at) {
+  if (block_.exprs.size() >= kMaxExprNodes) return too_many_nodes(col(at));
+  ExprNode& n = block_.exprs.emplace_back();
+  n.value = value;
+  n.col = col(at);
+  return static_cast<ExprRef>(block_.exprs.size() - 1);
+}
+
+ExprRef Parser::too_many_nodes(std::uint32_t at_col) {
+  fail(core::Code::BlockTooLong, at_col > 0 ? at_col - 1 : 0,
+       fmt::format("a block with more than {} values and operators", kMaxExprNodes));
+  return kNoExpr;
 }
 
 struct OpInfo {
@@ -265,16 +289,16 @@ ExprRef Parser::real_value(int depth) {
     lex_.advance();
     const std::size_t digits = lex_.pos();
     if (auto v = lex_.number()) {
-      if (!exponent_in_range(digits)) return kNoExpr;
-      return node({ExprKind::Number, 0, kNoExpr, kNoExpr, c == '-' ? -*v : *v, {}, col(at)});
+      if (at_exponent() && !exponent_in_range(digits)) return kNoExpr;
+      return number_node(c == '-' ? -*v : *v, at);
     }
     const ExprRef inner = real_value(depth + 1);
     if (inner == kNoExpr || c == '+') return inner;
     return node({ExprKind::Negate, 0, inner, kNoExpr, 0.0, {}, col(at)});
   }
   if (auto v = lex_.number()) {
-    if (!exponent_in_range(at)) return kNoExpr;
-    return node({ExprKind::Number, 0, kNoExpr, kNoExpr, *v, {}, col(at)});
+    if (at_exponent() && !exponent_in_range(at)) return kNoExpr;
+    return number_node(*v, at);
   }
   if (c >= 'A' && c <= 'Z') return function(at, depth + 1);
   if (c >= '0' && c <= '9') {

@@ -6,6 +6,7 @@
 // (canon/limits.hpp, CanonMachine).
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include <tl/expected.hpp>
@@ -17,8 +18,24 @@ namespace usina::gcode {
 // what it is multiplied or added into.
 inline constexpr double kMaxWordValue = 1e9;
 
+// The smallest F that is not 0 (canon::kMinFeed, the smallest feed usina
+// times: a feed of 1e-300 would make a move's time infinite).
+inline constexpr double kMinFeedWord = 1e-6;
+
+// Why `letter`'s word of `value` is out of range (the message of
+// word_out_of_range).
+std::string word_range_error(char letter, double value);
+
 // Why the value of `letter`'s word is out of range, as the error; a value
-// when it is in range. G and M words are codes, checked as codes.
-tl::expected<void, std::string> word_out_of_range(char letter, double value);
+// when it is in range. G and M words are codes, checked as codes. Inline:
+// every word of every block asks.
+inline tl::expected<void, std::string> word_out_of_range(char letter, double value) {
+  if (letter == 'G' || letter == 'M') return {};
+  // NaN fails the first comparison.
+  const bool in_range = std::fabs(value) <= kMaxWordValue &&
+                        (letter != 'F' || !(value > 0.0 && value < kMinFeedWord));
+  if (in_range) return {};
+  return tl::unexpected(word_range_error(letter, value));
+}
 
 }  // namespace usina::gcode

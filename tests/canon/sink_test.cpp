@@ -73,6 +73,42 @@ TEST(OpBudget, WrappingSinksAnswerForTheOneInside) {
   EXPECT_TRUE(progress.stopped());
 }
 
+// usina check's road: ops that go by unbuilt (Sink::pass) count as ops.
+TEST(OpBudget, UnbuiltOpsCountAgainstTheBudgetAndTheLastIsNamed) {
+  NullSink null;
+  EXPECT_FALSE(null.reads_ops());
+  core::DiagnosticList diags;
+  OpBudget budget(null, 2, diags);
+  EXPECT_FALSE(budget.reads_ops());
+  budget.pass({1, 1, 1, 0, 0});
+  budget.on(move(2, 2));
+  EXPECT_FALSE(budget.stopped());
+  budget.pass({1, 3, 1, 0, 0});
+  budget.pass({1, 4, 1, 0, 0});
+  EXPECT_TRUE(budget.stopped());
+  EXPECT_EQ(budget.passed(), 2u);
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_EQ(diags.all()[0].code, core::Code::TooManyOperations);
+  EXPECT_EQ(diags.all()[0].loc.line, 3u);
+}
+
+TEST(OpBudget, ASinkThatReadsOpsIsAskedForThemThroughEveryWrapper) {
+  Toolpath path;
+  NullSink null;
+  core::DiagnosticList diags;
+  OpBudget reading(path, 10, diags);
+  EXPECT_TRUE(reading.reads_ops());
+  EXPECT_TRUE(TeeSink({&null, &reading}).reads_ops());
+  EXPECT_FALSE(TeeSink({&null, &null}).reads_ops());
+  ProgressSink progress(
+      reading, [](std::string_view) {}, 10);
+  EXPECT_TRUE(progress.reads_ops());
+  OpBudget counting(null, 10, diags);
+  ProgressSink quiet(
+      counting, [](std::string_view) {}, 10);
+  EXPECT_FALSE(quiet.reads_ops());
+}
+
 // A clock the test moves by hand.
 struct FakeClock {
   double now = 100.0;
@@ -119,6 +155,21 @@ TEST(ProgressSink, ReadsTheClockOnlyEveryFewOps) {
   for (std::uint32_t i = 0; i < 1000; ++i)
     progress.on(move(i, 1));
   EXPECT_EQ(reads - at_start, 10);
+}
+
+TEST(ProgressSink, UnbuiltOpsShowTheirLine) {
+  NullSink null;
+  FakeClock clock;
+  std::vector<std::string> shown;
+  ProgressSink progress(
+      null, [&](std::string_view s) { shown.emplace_back(s); }, 1000, ProgressTiming{1.0, 0.5, 1},
+      [&] { return clock.now; });
+  progress.pass({1, 7, 1, 0, 0});
+  EXPECT_TRUE(shown.empty());
+  clock.now += 1.2;
+  progress.pass({1, 8, 1, 0, 0});
+  ASSERT_EQ(shown.size(), 1u);
+  EXPECT_EQ(shown[0], "usina: 2 operations of at most 1,000 (--max-ops), line 8, 1 s");
 }
 
 TEST(ProgressSink, NothingToEraseWhenNothingWasShown) {

@@ -1,6 +1,7 @@
 #include "gcode/lexer.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -139,6 +140,72 @@ TEST(Lexer, NumberLongerThanSixtyFourCharactersIsRefusedNotTruncated) {
   Lexer lex(t);
   EXPECT_FALSE(lex.number().has_value());
   EXPECT_EQ(lex.pos(), 0u);
+}
+
+// The one-pass reader of plain numbers (lexer.hpp) and its edges: what it
+// leaves to the slow path must read the same.
+TEST(Lexer, NumberEdgesOfTheFastPath) {
+  struct Case {
+    const char* text;
+    double value;
+    std::size_t end;  // where the lexer stands after it
+  };
+
+  for (const Case c : {Case{"1.", 1.0, 2}, Case{".5", 0.5, 2}, Case{"0", 0.0, 1},
+                       Case{"0.0000", 0.0, 6}, Case{"007.250", 7.25, 7}, Case{"1e5", 1.0, 1},
+                       Case{"2.5E-3", 2.5, 3}, Case{"12 X", 12.0, 2}, Case{"1. 5", 1.5, 4},
+                       Case{". 5", 0.5, 3}, Case{"1.5 .5", 1.5, 3}, Case{"3\t", 3.0, 1}}) {
+    Lexer lex(c.text);
+    const auto v = lex.number();
+    ASSERT_TRUE(v.has_value()) << c.text;
+    EXPECT_EQ(*v, c.value) << c.text;
+    EXPECT_EQ(lex.offset(), c.end) << c.text;
+  }
+}
+
+TEST(Lexer, ZeroIsPositiveZero) {
+  Lexer lex("0.000");
+  const auto v = lex.number();
+  ASSERT_TRUE(v.has_value());
+  EXPECT_FALSE(std::signbit(*v));
+}
+
+TEST(Lexer, FifteenAndSixteenDigitsAreCorrectlyRounded) {
+  // Fifteen digits are the fast path's, sixteen and more the slow path's.
+  for (const std::string t : {"999999999999999", "9999999999999999", "0.123456789012345",
+                              "0.1234567890123456", "12345678.9012345", "12345678.90123456"}) {
+    Lexer lex(t);
+    EXPECT_EQ(lex.number(), nearest(t)) << t;
+    EXPECT_TRUE(lex.at_end()) << t;
+  }
+}
+
+TEST(Lexer, DigitsBeyondAnyIntegerAreReadNotWrapped) {
+  // Twenty digits overflow a 64-bit mantissa: the value must not wrap.
+  const std::string t = "99999999999999999999";
+  Lexer lex(t);
+  EXPECT_EQ(lex.number(), nearest(t));
+  const std::string tail = "0.00000000000000000001";
+  Lexer small(tail);
+  EXPECT_EQ(small.number(), nearest(tail));
+}
+
+TEST(Lexer, AVeryLongDigitStringIsRefusedWhole) {
+  const std::string t = std::string(4000, '7') + " X";
+  Lexer lex(t);
+  EXPECT_FALSE(lex.number().has_value());
+  EXPECT_EQ(lex.pos(), 0u);
+  const std::string points = "1." + std::string(4000, '5');
+  Lexer fraction(points);
+  EXPECT_FALSE(fraction.number().has_value());
+  EXPECT_EQ(fraction.pos(), 0u);
+}
+
+TEST(Lexer, AVeryLongNumberOfZerosBeforeItsDigitsIsTheSlowPaths) {
+  const std::string t = std::string(40, '0') + "25.5";
+  Lexer lex(t);
+  EXPECT_EQ(lex.number(), 25.5);
+  EXPECT_TRUE(lex.at_end());
 }
 
 TEST(Lexer, AcceptKeywordIsCaseInsensitiveAndAllowsBlanks) {

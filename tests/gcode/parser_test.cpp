@@ -12,6 +12,7 @@
 #include "gcode/block.hpp"
 #include "gcode/expr.hpp"
 #include "gcode/program_index.hpp"
+#include "gcode/program_text.hpp"
 
 namespace usina::gcode {
 namespace {
@@ -100,6 +101,38 @@ TEST(Parser, WordsHaveUpperCaseLettersValuesAndColumns) {
   EXPECT_EQ(w[2].letter, 'Y');
   EXPECT_EQ(w[2].col, 9u);
   EXPECT_EQ(value(p->block, w[2].value), -3.0);
+}
+
+// A number's value is kept whole and its exponent, which no dialect has,
+// asked about only when an E follows the digits.
+TEST(Parser, NumberEdges) {
+  EXPECT_EQ(word_value("X1."), 1.0);
+  EXPECT_EQ(word_value("X.5"), 0.5);
+  EXPECT_EQ(word_value("X-.5"), -0.5);
+  EXPECT_TRUE(std::signbit(word_value("X-0")));
+  EXPECT_FALSE(std::signbit(word_value("X+0")));
+  EXPECT_EQ(word_value("X-12345678.90123456"), -12345678.90123456);
+  auto p = parse("X1e5");  // X1 and an E word, as the control reads it
+  ASSERT_TRUE(p->ok);
+  ASSERT_EQ(p->block.words.size(), 2u);
+  EXPECT_EQ(value(p->block, p->block.words[0].value), 1.0);
+  EXPECT_EQ(p->block.words[1].letter, 'E');
+  EXPECT_EQ(value(p->block, p->block.words[1].value), 5.0);
+  EXPECT_SYNTAX_ERROR("X1e400", Code::NumberOutOfRange, 2);
+  EXPECT_SYNTAX_ERROR("X-1E-400", Code::NumberOutOfRange, 3);
+  EXPECT_SYNTAX_ERROR("G1 X1 E1e999", Code::NumberOutOfRange, 8);
+}
+
+TEST(Parser, AValueBeyondTheNodeLimitIsAnError) {
+  // Every value is a node; a block has at most kMaxBlockLength of them.
+  std::string line = "X[0";
+  for (std::size_t i = 0; i < kMaxBlockLength; ++i)
+    line += "+1";
+  line += "]";
+  auto p = parse(line);
+  EXPECT_FALSE(p->ok);
+  ASSERT_EQ(p->diags.all().size(), 1u);
+  EXPECT_EQ(p->diags.all()[0].code, Code::BlockTooLong);
 }
 
 TEST(Parser, BlanksAnywhereOutsideComments) {

@@ -62,18 +62,26 @@ void CanonMachine::emit(canon::OpKind kind) {
   sink_->on(canon::Op{std::move(kind), src_, origin_});
 }
 
+template <class Move>
+void CanonMachine::send(Move&& move) {
+  if (sink_->reads_ops()) return emit(std::forward<Move>(move));
+  if (faulted_) return;
+  if (auto in_range = canon::check_range(move); !in_range) return refuse(in_range.error());
+  sink_->pass(src_);
+}
+
 void CanonMachine::traverse_axes(const Axes& to) {
   state_->pos = to;
   last_ = to_absolute(xyz(to));
   moved_ = true;
-  emit(canon::Traverse{to_absolute(xyz(to)), abc_of(to)});
+  send(canon::Traverse{last_, abc_of(to)});
 }
 
 void CanonMachine::feed_axes(const Axes& to) {
   state_->pos = to;
   last_ = to_absolute(xyz(to));
   moved_ = true;
-  emit(canon::Feed{to_absolute(xyz(to)), feed_rate(), abc_of(to), programmed_feed()});
+  send(canon::Feed{last_, feed_rate(), abc_of(to), programmed_feed()});
 }
 
 void CanonMachine::probe_axes(const Axes& to, const Vec3& stop) {

@@ -76,6 +76,9 @@ class CanonMachine final : public MotionTarget {
  private:
   // Reports why an op cannot be sent; nothing is sent from then on.
   void refuse(const std::string& why);
+  // A straight move: built into an op only for a sink that reads ops.
+  template <class Move>
+  void send(Move&& move);
   std::optional<double> feed_rate() const;
   canon::ProgrammedFeed programmed_feed() const;
 

@@ -1,0 +1,100 @@
+// `usina check` hands the interpreter a sink that reads no op
+// (canon::Sink::reads_ops), and the canonical machine then builds no
+// straight move, only checks its numbers and counts it. Whatever the sink,
+// a program must say the same: each program below runs twice, once into a
+// toolpath (every op built) and once as check runs it (an operation budget
+// over a NullSink), and the diagnostics must match in every field.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "canon/sink.hpp"
+#include "canon/toolpath.hpp"
+#include "core/source.hpp"
+#include "gcode/dialect.hpp"
+
+namespace usina::gcode {
+namespace {
+
+struct Outcome {
+  bool ok = false;
+  std::vector<core::Diagnostic> diags;
+  std::uint64_t ops = 0;
+};
+
+Outcome run_into(canon::Sink& inner, const std::string& text, std::uint64_t max_ops) {
+  core::SourceManager sources;
+  core::DiagnosticList diags;
+  const std::uint32_t id = sources.add(core::SourceFile::from_string("test.nc", text));
+  const Dialect* d = find_dialect("rs274ngc");
+  EXPECT_NE(d, nullptr);
+  canon::OpBudget budget(inner, max_ops, diags);
+  auto runner = d->make_runner(RunContext{sources, {}, {}, budget, diags});
+  Outcome out;
+  out.ok = runner->run(id);
+  out.diags = diags.all();
+  out.ops = budget.passed();
+  return out;
+}
+
+void expect_same_either_way(const std::string& text, std::uint64_t max_ops = 1000) {
+  SCOPED_TRACE(text);
+  canon::Toolpath path;
+  ASSERT_TRUE(path.reads_ops());
+  const Outcome built = run_into(path, text, max_ops);
+  canon::NullSink null;
+  ASSERT_FALSE(null.reads_ops());
+  const Outcome counted = run_into(null, text, max_ops);
+  EXPECT_EQ(built.ok, counted.ok);
+  EXPECT_EQ(built.ops, counted.ops);
+  ASSERT_EQ(built.diags.size(), counted.diags.size());
+  for (std::size_t i = 0; i < built.diags.size(); ++i) {
+    const core::Diagnostic& a = built.diags[i];
+    const core::Diagnostic& b = counted.diags[i];
+    EXPECT_EQ(core::code_name(a.code), core::code_name(b.code));
+    EXPECT_EQ(a.severity, b.severity);
+    EXPECT_EQ(a.loc.line, b.loc.line);
+    EXPECT_EQ(a.loc.col, b.loc.col);
+    EXPECT_EQ(a.loc.length, b.loc.length);
+    EXPECT_EQ(a.message, b.message);
+  }
+}
+
+TEST(UnreadOps, AGoodProgramCountsTheSameOps) {
+  expect_same_either_way("G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F600\nX10 Y5\nG2 X20 Y5 I5 J0\nM30\n");
+}
+
+TEST(UnreadOps, TraverseBeyondTheRangeSaysTheSame) {
+  expect_same_either_way("G91 G0 X900000000\nX900000000\nM2\n");
+}
+
+TEST(UnreadOps, FeedBeyondTheRangeSaysTheSame) {
+  expect_same_either_way("G1 F100 X1\nG91 G1 Y900000000\nY900000000\nM2\n");
+}
+
+TEST(UnreadOps, RotaryAxisBeyondTheRangeSaysTheSame) {
+  expect_same_either_way("G91 G1 F100 A900000000\nA900000000\nM2\n");
+}
+
+TEST(UnreadOps, FeedRateBelowTheSmallestSaysTheSame) {
+  expect_same_either_way("G1 X1 F0.0000001\nM2\n");
+}
+
+TEST(UnreadOps, InverseTimeFeedSaysTheSame) {
+  expect_same_either_way("G93 G1 X1 F2\nX2 F0.00000001\nM2\n");
+}
+
+TEST(UnreadOps, TheBudgetRunsOutAtTheSameBlock) {
+  expect_same_either_way("G0 X1\nG1 X2 F100\nG0 X3\nG1 X4\nG0 X5\nM2\n", 3);
+}
+
+TEST(UnreadOps, NothingIsSentAfterAFault) {
+  canon::NullSink null;
+  const Outcome counted = run_into(null, "G0 X1\nG91 G0 X2000000000\nG0 X1\nM2\n", 1000);
+  EXPECT_FALSE(counted.ok);
+  EXPECT_EQ(counted.ops, 1u);
+}
+
+}  // namespace
+}  // namespace usina::gcode
