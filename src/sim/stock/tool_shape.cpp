@@ -24,10 +24,12 @@ std::pair<std::string, std::string> split_word(std::string_view words) {
 
 // The end's own numbers: diameter, corner radius, point angle.
 tl::expected<void, std::string> check_end(const ToolShape& t) {
-  if (!std::isfinite(t.diameter) || t.diameter <= 0.0 || t.diameter > kMaxToolDiameter) {
+  if (!std::isfinite(t.diameter) || t.diameter < kMinToolDiameter ||
+      t.diameter > kMaxToolDiameter) {
     return tl::unexpected(
-        fmt::format("a tool's diameter must be more than 0 and at most {:g} mm, not {:g}",
-                    kMaxToolDiameter, t.diameter));
+        fmt::format("a tool's diameter must be at least {:g} and at most {:g} mm, "
+                    "not {:g}",
+                    kMinToolDiameter, kMaxToolDiameter, t.diameter));
   }
   if (t.kind == ToolKind::BullNose && (!std::isfinite(t.corner_radius) || t.corner_radius <= 0.0 ||
                                        t.corner_radius >= t.radius())) {
@@ -175,11 +177,11 @@ tl::expected<std::pair<int, ToolShape>, std::string> parse_tool_spec(
     if (!d)
       return tl::unexpected(fmt::format("--tool-shape '{}': the diameter is not a number", spec));
     // A diameter written here is checked as written, not taken for a missing one.
-    if (*d <= 0.0 || *d > kMaxToolDiameter) {
+    if (*d < kMinToolDiameter || *d > kMaxToolDiameter) {
       return tl::unexpected(
-          fmt::format("--tool-shape '{}': the diameter must be more than 0 and at most {:g} mm, "
+          fmt::format("--tool-shape '{}': the diameter must be at least {:g} and at most {:g} mm, "
                       "not {:g}",
-                      spec, kMaxToolDiameter, *d));
+                      spec, kMinToolDiameter, kMaxToolDiameter, *d));
     }
     diameter = *d;
   }

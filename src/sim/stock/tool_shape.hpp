@@ -43,8 +43,10 @@ struct ToolShape {
   double cone_slope() const;
 };
 
-// Bounds every tool keeps (docs/simulate.md): a diameter in (0, 1000] mm,
+// Bounds every tool keeps (docs/simulate.md): a diameter in [0.001, 1000]
+// mm (below a micrometre is a slip, not a tool: the fuzzer's 6.5e-323),
 // an angle in [10, 170] degrees.
+inline constexpr double kMinToolDiameter = 0.001;
 inline constexpr double kMaxToolDiameter = 1000.0;
 inline constexpr double kMinToolAngle = 10.0;
 inline constexpr double kMaxToolAngle = 170.0;
