@@ -120,6 +120,21 @@ async function waitForEnd(page, id) {
   }
 }
 
+// A job queued behind the running drip feed (by the admin, through the API)
+// is listed under it, the running job stays shown, and Remove takes the
+// queued one out after asking: it ends with nothing sent.
+async function removeQueued(page, h, t, rev) {
+  const running = await machineJob(page);
+  const queued = (await h.api('boss', 'POST', '/api/machines/romi-1/jobs', { program: 'long-drip', revision: rev, mode: 'drip' })).json.job;
+  await page.locator(`#romi-1-queue li[data-job="${queued}"]`).waitFor();
+  const shown = await machineJob(page);
+  await page.getByRole('button', { name: `Remove job ${queued}` }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Remove' }).click();
+  await page.locator(`#romi-1-queue li[data-job="${queued}"]`).waitFor({ state: 'detached' });
+  const after = (await h.api('boss', 'GET', `/api/jobs/${queued}`)).json;
+  t.check(shown.id === running.id && after.state === 'interrupted' && after.bytes_sent === 0 && /before it started/.test(after.reason), `a job queued behind the drip feed is listed and removed from the page (job ${queued}: ${after.state}, "${after.reason}")`);
+}
+
 // A drip feed of 25 kB (half a minute at 9600 baud) stopped from the page
 // once it is under way: the job ends interrupted, the rest never sent.
 async function dripAndStop(page, h, t, control) {
@@ -138,6 +153,7 @@ async function dripAndStop(page, h, t, control) {
   t.check(/Drip feed long-drip to romi-1\?/.test(await dialog.innerText()), 'Drip feed asks for confirmation');
   await dialog.getByRole('button', { name: 'Drip feed' }).click();
   await page.waitForFunction(() => Number(document.querySelector('#machine-romi-1 .job')?.dataset.bytesSent) > 0);
+  await removeQueued(page, h, t, rev);
   await page.getByRole('button', { name: 'Stop the job' }).click();
   await page.getByRole('dialog').getByRole('button', { name: 'Stop the job' }).click();
   await page.waitForFunction(() => document.querySelector('#machine-romi-1 .job')?.dataset.jobState === 'interrupted', null, { timeout: 60000 });
@@ -222,7 +238,7 @@ export async function machineFlow(page, h, t, first) {
     const audit = (await h.api('boss', 'GET', '/api/audit')).json;
     const made = audit.entries.filter((e) => e.action === 'job.create' && e.actor === 'oper').length;
     const stopped = audit.entries.filter((e) => e.action === 'job.interrupted' && /stopped by oper/.test(e.reason)).length;
-    t.check(made === 4 && stopped === 1, `the audit log holds the operator's four jobs (${made}) and the stop (${stopped})`);
+    t.check(made === 4 && stopped === 2, `the audit log holds the operator's four jobs (${made}), the stop and the removal from the queue (${stopped})`);
   } finally {
     control.close();
   }

@@ -1,7 +1,8 @@
 // A machine's job buttons: send or drip feed a revision, from its start, a
 // block (a line number or an N word) or a tool change; stop the running
-// job. Each asks for confirmation first, and each is one call of the API,
-// which writes the audit log (docs/web.md, "The machines' jobs").
+// job; take a queued job out of the queue. Each asks for confirmation
+// first, and each is one call of the API, which writes the audit log
+// (docs/web.md, "The machines' jobs").
 import { ApiError, enc, getJson, postJson, type Job, type LibraryList, type Machine, type Program } from './api';
 import { confirmAction } from './confirm';
 import { field, h, status } from './dom';
@@ -120,6 +121,7 @@ export function jobForm(m: Machine, currentJob: () => Job | null): JobForm {
   const stop = h('button', { type: 'button', class: 'stop', text: 'Stop the job', disabled: true });
   const said = status(id('job-status'));
   const report = reporter(said);
+  const queue = h('ul', { class: 'queue', id: id('queue'), 'aria-label': `Queued for ${m.name}` });
   const start = async (how: string) => {
     if (!pick.revision.value) return report.fail(new Error('Choose a program and a revision the machine may take.'));
     const verb = how === 'drip' ? 'Drip feed' : 'Send';
@@ -141,6 +143,7 @@ export function jobForm(m: Machine, currentJob: () => Job | null): JobForm {
     field('Start at', from.at, id('start-at')),
     field('Block or tool', from.where, id('start-where')),
     h('div', { class: 'buttons' }, h('button', { type: 'submit', value: 'send', text: 'Send' }), h('button', { type: 'submit', value: 'drip', text: 'Drip feed' }), stop),
+    queue,
     said,
   );
   form.addEventListener('submit', (e) => {
@@ -155,8 +158,25 @@ export function jobForm(m: Machine, currentJob: () => Job | null): JobForm {
         void pick.fill();
       }
       stop.disabled = !job || !RUNNING.includes(job.state);
+      const waiting = (machine.queue ?? []).filter((n) => n !== job?.job);
+      queue.replaceChildren(...waiting.map((n) => queuedItem(m, n, report)));
     },
   };
+}
+
+// A job waiting for the machine, and the button that takes it out of the queue.
+function queuedItem(m: Machine, n: number, report: ReturnType<typeof reporter>): HTMLElement {
+  const remove = h('button', { type: 'button', text: `Remove job ${n}` });
+  remove.addEventListener('click', async () => {
+    if (!(await confirmAction(`Remove job ${n} from ${m.name}'s queue?`, 'It has not started: nothing of it is sent.', 'Remove'))) return;
+    try {
+      await postJson(`/api/jobs/${n}/stop`, {});
+      report.ok(`Job ${n}: removed from the queue.`);
+    } catch (err) {
+      report.fail(err);
+    }
+  });
+  return h('li', { 'data-job': n }, `Job ${n}, queued `, remove);
 }
 
 async function stopJob(m: Machine, j: Job | null, report: ReturnType<typeof reporter>): Promise<void> {

@@ -120,8 +120,9 @@ function listen(shown: Map<string, Shown>, live: HTMLElement): void {
     if (ev.type.startsWith('job.')) {
       // The job's progress is in the event itself: no request per tick.
       const j = ev as unknown as Job;
-      // The newest job, unless an older one is still running.
-      if (!s.job || j.job >= s.job.job || s.job.state !== 'running') s.job = j;
+      // The running job stays shown until it ends; a job queued behind it
+      // is in the queue's list (machine_jobs.ts), and shown when it starts.
+      if (!s.job || s.job.state !== 'running' || j.job === s.job.job || j.state === 'running') s.job = j;
       render(s);
       if (ev.type !== 'job.progress') void refresh(shown, name);
     } else if (ev.type === 'machine.part') {
