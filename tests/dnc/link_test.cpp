@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 #include <boost/asio/ip/tcp.hpp>
@@ -46,6 +47,22 @@ std::unique_ptr<Link> open_now(asio::io_context& io, const LinkConfig& c, std::s
   return link;
 }
 
+// A pty pair with its slave opened as the machine's serial port (the real
+// code path); a failure to open either fails the test that asked.
+struct PtyLink {
+  std::optional<PtyPair> pair;
+  std::unique_ptr<Link> link;
+};
+
+void open_pty_link(asio::io_context& io, PtyLink& out) {
+  auto pair = open_pty_pair(io);
+  ASSERT_TRUE(pair) << pair.error();
+  out.pair = std::move(*pair);
+  std::string error;
+  out.link = open_now(io, pty_machine(out.pair->slave_path), &error);
+  ASSERT_TRUE(out.link) << error;
+}
+
 struct Fed {
   JobReport report;
   SimCncStats sim;
@@ -77,11 +94,10 @@ Fed feed(asio::io_context& io, Link& ours, Link& theirs, const LinkConfig& c,
 
 TEST(SerialLink, APtyTakesTheRawFrameWithIxonOff) {
   asio::io_context io;
-  auto pair = open_pty_pair(io);
-  ASSERT_TRUE(pair) << pair.error();
-  std::string error;
-  auto link = open_now(io, pty_machine(pair->slave_path), &error);
-  ASSERT_TRUE(link) << error;
+  PtyLink p;
+  ASSERT_NO_FATAL_FAILURE(open_pty_link(io, p));
+  auto& pair = p.pair;
+  auto& link = p.link;
   const int fd = ::open(pair->slave_path.c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(fd, 0);
   termios t{};
@@ -136,11 +152,10 @@ TEST(SerialLink, ClosingThePtyMasterInterruptsTheFeed) {
 // socket's count still answers.
 TEST(SerialLink, APtyDoesNotCountItsOutputAndASocketDoes) {
   asio::io_context io;
-  auto pair = open_pty_pair(io);
-  ASSERT_TRUE(pair) << pair.error();
-  std::string error;
-  auto link = open_now(io, pty_machine(pair->slave_path), &error);
-  ASSERT_TRUE(link) << error;
+  PtyLink p;
+  ASSERT_NO_FATAL_FAILURE(open_pty_link(io, p));
+  auto& pair = p.pair;
+  auto& link = p.link;
   EXPECT_FALSE(link->output_queue());
   EXPECT_FALSE(pair->master->output_queue());
   std::array<int, 2> fds{};
@@ -155,11 +170,10 @@ TEST(SerialLink, APtyDoesNotCountItsOutputAndASocketDoes) {
 // whose other end closed is an error.
 TEST(SerialLink, TryWriteWritesAtOnceNeverBlocksAndReportsALostPeer) {
   asio::io_context io;
-  auto pair = open_pty_pair(io);
-  ASSERT_TRUE(pair) << pair.error();
-  std::string error;
-  auto link = open_now(io, pty_machine(pair->slave_path), &error);
-  ASSERT_TRUE(link) << error;
+  PtyLink p;
+  ASSERT_NO_FATAL_FAILURE(open_pty_link(io, p));
+  auto& pair = p.pair;
+  auto& link = p.link;
   const std::string text = "%\nO1\n";
   ErrorCode ec;
   const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
