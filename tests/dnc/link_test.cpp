@@ -95,10 +95,8 @@ Fed feed(asio::io_context& io, Link& ours, Link& theirs, const LinkConfig& c,
 TEST(SerialLink, APtyTakesTheRawFrameWithIxonOff) {
   asio::io_context io;
   PtyLink p;
-  ASSERT_NO_FATAL_FAILURE(open_pty_link(io, p));
-  auto& pair = p.pair;
-  auto& link = p.link;
-  const int fd = ::open(pair->slave_path.c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_NO_FATAL_FAILURE(open_pty_link(io, p));  // the link sets the slave's termios
+  const int fd = ::open(p.pair->slave_path.c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(fd, 0);
   termios t{};
   ASSERT_EQ(::tcgetattr(fd, &t), 0);
