@@ -92,11 +92,8 @@ tl::expected<UserChange, std::string> user_change(const nlohmann::json& body) {
   auto password = string_field(body, "password", false);
   if (!password) return tl::unexpected(password.error());
   change.password = std::move(*password);
-  if (change.password && (change.password->size() < kMinPasswordBytes ||
-                          change.password->size() > kMaxPasswordBytes)) {
-    return tl::unexpected(fmt::format("a password has {} to {} bytes; this one has {}",
-                                      kMinPasswordBytes, kMaxPasswordBytes,
-                                      change.password->size()));
+  if (change.password) {
+    if (auto ok = check_password(*change.password); !ok) return tl::unexpected(ok.error().message);
   }
   if (!change.role && !change.disabled && !change.password)
     return tl::unexpected(std::string("nothing to change: give role, disabled or password"));

@@ -15,11 +15,7 @@ namespace {
 constexpr std::int64_t kMicro = 1'000'000;
 
 StoreResult<std::string> hash_password(const Store& store, std::string_view password) {
-  if (password.size() < kMinPasswordBytes || password.size() > kMaxPasswordBytes) {
-    return store_error(StoreErrorKind::Invalid,
-                       fmt::format("a password has {} to {} bytes; this one has {}",
-                                   kMinPasswordBytes, kMaxPasswordBytes, password.size()));
-  }
+  if (auto ok = check_password(password); !ok) return tl::unexpected(ok.error());
   std::array<char, crypto_pwhash_STRBYTES> out{};
   if (crypto_pwhash_str(out.data(), password.data(), password.size(), store.options().password_ops,
                         store.options().password_memory) != 0) {
@@ -62,6 +58,15 @@ StoreResult<void> refuse_last_admin(Store& store, std::string_view name,
 }
 
 }  // namespace
+
+StoreResult<void> check_password(std::string_view password) {
+  if (password.size() < kMinPasswordBytes || password.size() > kMaxPasswordBytes) {
+    return store_error(StoreErrorKind::Invalid,
+                       fmt::format("a password has {} to {} bytes; this one has {}",
+                                   kMinPasswordBytes, kMaxPasswordBytes, password.size()));
+  }
+  return {};
+}
 
 StoreResult<User> create_user(Store& store, std::string_view name, Role role,
                               std::string_view password, const Actor& actor) {

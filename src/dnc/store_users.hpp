@@ -67,4 +67,8 @@ StoreResult<User> create_first_admin(Store& store, std::string_view name,
 constexpr std::size_t kMinPasswordBytes = 8;
 constexpr std::size_t kMaxPasswordBytes = 1024;
 
+// Invalid unless the password has kMinPasswordBytes to kMaxPasswordBytes
+// (what every setter checks; the API asks before it writes anything).
+StoreResult<void> check_password(std::string_view password);
+
 }  // namespace usina::dnc
