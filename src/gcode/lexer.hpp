@@ -9,6 +9,8 @@
 #include <optional>
 #include <string_view>
 
+#include "gcode/decimal.hpp"
+
 namespace usina::gcode {
 
 class Lexer {
@@ -47,31 +49,14 @@ class Lexer {
   // Inline: the parser reads every word's value through it.
   std::optional<double> number() {
     skip_blanks();
-    const std::size_t start = i_;
-    const char* s = text_.data();
-    const std::size_t n = text_.size();
-    // Fast path, the shape of nearly every number in a program: digits with
-    // at most one point, no blanks, at most 15 significant digits, read in
-    // one pass. The value is mantissa / 10^k, exact operands and one
-    // correctly rounded division, so it equals what from_chars gives.
-    std::uint64_t mantissa = 0;  // wraps past 19 digits, but then unused
-    std::size_t j = start;
-    for (; j < n && is_digit(s[j]); ++j)
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[j] - '0');
-    std::size_t digits = j - start;
-    std::size_t decimals = 0;
-    const bool point = j < n && s[j] == '.';
-    if (point) {
-      const std::size_t first = ++j;
-      for (; j < n && is_digit(s[j]); ++j)
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[j] - '0');
-      decimals = j - first;
-      digits += decimals;
-    }
-    if (digits > kExactDigits || blank_inside(j, point)) return number_slow(start);
-    if (digits == 0) return std::nullopt;
-    i_ = j;
-    return static_cast<double>(mantissa) / kPow10[decimals];
+    // The shape of nearly every number in a program, read in one pass
+    // (gcode/decimal.hpp); blanks inside it or more than 15 digits go the
+    // slow way.
+    const Decimal d = scan_decimal(text_, i_);
+    if (d.digits > kExactDigits || blank_inside(d.end, d.point)) return number_slow(i_);
+    if (d.digits == 0) return std::nullopt;
+    i_ = d.end;
+    return d.value;
   }
 
   // Everything up to (not including) `close`, raw; consumes `close` too.
@@ -106,10 +91,7 @@ class Lexer {
 
   static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-  // Digits a double holds exactly, and the powers of ten that are exact.
-  static constexpr std::size_t kExactDigits = 15;
-  static constexpr std::array<double, kExactDigits + 1> kPow10 = {
-      1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  static constexpr std::size_t kExactDigits = decimal_detail::kExactDigits;
 
   std::optional<double> number_slow(std::size_t start);
   std::string_view text_;

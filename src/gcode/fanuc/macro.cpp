@@ -1,12 +1,12 @@
 #include "gcode/fanuc/macro.hpp"
 
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "gcode/decimal.hpp"
 #include "gcode/fanuc/tape.hpp"
 
 namespace usina::gcode::fanuc {
@@ -122,87 +122,59 @@ bool MacroReader::keyword(std::string_view word) {
   return true;
 }
 
-namespace {
-
-// The place values after the point, 0.1 then each a tenth of the last,
-// made once: the same values as dividing digit by digit.
-constexpr std::array<double, 24> kPlaces = [] {
-  std::array<double, 24> p{};
-  double d = 0.1;
-  for (double& x : p) {
-    x = d;
-    d /= 10;
-  }
-  return p;
-}();
-
-// One digit more of a number being read; `place` counts the digits after
-// the point (0: none yet, or no point).
-inline void add_digit(double& v, double& scale, std::size_t& place, char c) {
-  if (scale == 0) {
-    v = v * 10 + (c - '0');
-  } else {
-    v += (c - '0') * scale;
-    scale = ++place < kPlaces.size() ? kPlaces[place] : scale / 10;
-  }
-}
-
-}  // namespace
-
 bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_point) {
-  double scale = 0;
-  std::size_t place = 0;
-  std::size_t j = i;
-  v = 0;
-  had_point = false;
-  for (; j < text.size(); ++j) {
-    const char c = text[j];
-    if (c >= '0' && c <= '9') {
-      add_digit(v, scale, place, c);
-    } else if (c == '.' && !had_point) {
-      had_point = true;
-      scale = 0.1;
-    } else {
-      break;
-    }
-  }
-  if (j == i || (j == i + 1 && had_point)) return false;
-  i = j;
+  const Decimal d = scan_decimal(text, i);
+  if (d.digits == 0) return false;
+  i = d.end;
+  v = d.value;
+  had_point = d.point;
   return std::isfinite(v);
 }
 
-std::optional<double> MacroReader::number() {
-  blanks();
-  const std::size_t start = i_;
-  double v = 0;
-  double scale = 0;
-  std::size_t place = 0;
-  bool any = false;
-  had_point_ = false;
-  for (; i_ < text_.size(); ++i_) {
-    const char c = text_[i_];
+namespace {
+
+// The digits and the point of a number that has blanks or comments inside
+// ("1 2.(TENTHS)5"), from text[i] on, as one number without them; `i`
+// ends at the first other character.
+std::string number_characters(std::string_view text, std::size_t& i) {
+  std::string out;
+  bool point = false;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
     if (c == '(') {
-      i_ = skip_comment(text_, i_) - 1;  // a blank inside the number
-    } else if (c >= '0' && c <= '9') {
-      any = true;
-      add_digit(v, scale, place, c);
-    } else if (c == '.' && !had_point_) {
-      had_point_ = true;
-      scale = 0.1;
+      i = skip_comment(text, i) - 1;  // a blank inside the number
+    } else if ((c >= '0' && c <= '9') || (c == '.' && !point)) {
+      point = point || c == '.';
+      out += c;
     } else if (c != ' ' && c != '\t') {
       break;
     }
   }
-  if (!any && !had_point_) {
-    i_ = start;
-    return std::nullopt;
+  return out;
+}
+
+}  // namespace
+
+std::optional<double> MacroReader::number() {
+  blanks();
+  const std::size_t start = i_;
+  Decimal d = scan_decimal(text_, i_);
+  std::size_t end = d.end;
+  const char after = end < text_.size() ? text_[end] : '\0';
+  if (after == ' ' || after == '\t' || after == '(') {
+    // Blanks or comments inside or after it: read them as nothing.
+    end = start;
+    const std::string chars = number_characters(text_, end);
+    d = scan_decimal(chars, 0);
   }
-  if (!std::isfinite(v)) {
-    i_ = start;
+  had_point_ = d.point;
+  if (d.digits == 0 && !d.point) return std::nullopt;
+  if (!std::isfinite(d.value)) {
     return fail(core::Code::NumberOutOfRange,
                 "a number with more digits than any number holds (beyond 1.8e308)");
   }
-  return v;
+  i_ = end;
+  return d.value;
 }
 
 std::optional<long> MacroReader::variable_number() {

@@ -100,10 +100,10 @@ class MacroReader {
 };
 
 // Fanuc's functions and operators on plain numbers (unit-tested apart).
-// Digits with at most one point from text[i] on, read as
-// MacroReader::number reads them (the same value for the same digits); `i`
-// ends at the first other character. False, `i` unchanged, when there is
-// neither digit nor point.
+// Digits with at most one point from text[i] on, correctly rounded
+// (gcode/decimal.hpp, as MacroReader::number and every dialect read them);
+// `i` ends at the first other character. False, `i` unchanged, when there
+// is no digit, or the number is beyond a double.
 bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_point);
 
 double fix(double x);  // toward zero

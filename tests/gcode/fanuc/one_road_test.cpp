@@ -55,5 +55,26 @@ TEST(FanucComments, AnUnclosedCommentEndsAtTheLineEnd) {
   expect_end(*r, {1, 2, 0});
 }
 
+// Fanuc reads a number as every dialect does (gcode/decimal.hpp): the same
+// digits give the same double as in rs274ngc, so the two traces agree to
+// the last bit (digit-by-digit sums once gave 0.7500000000000001).
+TEST(FanucNumbers, TheSameDigitsGiveTheSameValueAsRs274ngc) {
+  const std::string program = "G1 X0.75 Y1.4833 Z-0.7487 F1500.\nG1 X[1.4833] Y0.1\nM30\n";
+  auto fanuc = run_fanuc(program);
+  auto ngc = dialect_test::run_in("rs274ngc", program, {}, {});
+  ASSERT_TRUE(fanuc->ok) << fanuc->first_error_text();
+  ASSERT_TRUE(ngc->ok);
+  ASSERT_EQ(fanuc->ends().size(), 2u);
+  EXPECT_EQ(fanuc->ends()[0].x, 0.75);
+  EXPECT_EQ(fanuc->ends()[0].y, 1.4833);
+  EXPECT_EQ(fanuc->ends()[0].z, -0.7487);
+  EXPECT_EQ(fanuc->ends()[1].x, 1.4833);
+  EXPECT_EQ(fanuc->ends(), ngc->ends());
+  // Blanks and a comment inside a number read as nothing.
+  auto spaced = run_fanuc("G1 X1 4.7(C)5 F1.\nM30\n");
+  ASSERT_TRUE(spaced->ok) << spaced->first_error_text();
+  EXPECT_EQ(spaced->ends().back().x, 14.75);
+}
+
 }  // namespace
 }  // namespace usina::gcode::fanuc_test
