@@ -2,11 +2,11 @@
 // line streamed to the firmware, and the words it is read into.
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <string>
 
+#include "gcode/decimal.hpp"
 #include "gcode/grbl/dialect.hpp"
 
 namespace usina::gcode::grbl {
@@ -122,65 +122,16 @@ LineSpan read_line(std::string_view text, std::uint64_t offset) {
 
 namespace {
 
-// Digits with at most one point as a finite number, by from_chars, which
-// takes no sign and is given a digit before the point. A number as long as
-// a line fits the buffer, so nothing is allocated.
-bool read_unsigned(std::string_view t, double& v) {
-  std::array<char, 512> buffer;
-  std::string longer;
-  const char* first = t.data();
-  std::size_t length = t.size();
-  if (t.front() == '.') {
-    if (t.size() < buffer.size()) {
-      buffer[0] = '0';
-      std::memcpy(buffer.data() + 1, t.data(), t.size());
-      first = buffer.data();
-    } else {
-      longer = "0";
-      longer += t;
-      first = longer.data();
-    }
-    ++length;
-  }
-  const auto r = std::from_chars(first, first + length, v);
-  return r.ec == std::errc{} && std::isfinite(v);
-}
-
 // Grbl's read_float: an optional sign, then digits with at most one point,
-// at least one digit. Returns the characters read, 0 when it is no number.
+// at least one digit, read as every dialect reads them (gcode/decimal.hpp).
+// Returns the characters read, 0 when it is no number or beyond a double.
 std::size_t read_number(std::string_view s, double& value) {
-  // Clinger's fast path: at most 15 digits and 22 decimals make an exact
-  // integer and an exact power of ten, whose quotient is rounded once, so
-  // it is the correctly rounded value from_chars gives.
-  static constexpr std::array<double, 23> kPowers = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
   std::size_t i = 0;
   if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
-  const std::size_t start = i;
-  std::uint64_t digits = 0;
-  std::size_t count = 0;
-  std::size_t decimals = 0;
-  bool point = false;
-  for (; i < s.size(); ++i) {
-    if (s[i] >= '0' && s[i] <= '9') {
-      if (++count <= 15) digits = digits * 10 + static_cast<std::uint64_t>(s[i] - '0');
-      if (point) ++decimals;
-    } else if (s[i] == '.' && !point) {
-      point = true;
-    } else {
-      break;
-    }
-  }
-  if (count == 0) return 0;
-  double v = 0.0;
-  if (count <= 15) {
-    v = static_cast<double>(digits) / kPowers[decimals];
-  } else if (!read_unsigned(s.substr(start, i - start), v)) {
-    return 0;
-  }
-  value = s[0] == '-' ? -v : v;
-  return i;
+  const Decimal d = scan_decimal(s, i);
+  if (d.digits == 0 || !std::isfinite(d.value)) return 0;
+  value = s[0] == '-' ? -d.value : d.value;
+  return d.end;
 }
 
 std::string not_a_letter(char c) {

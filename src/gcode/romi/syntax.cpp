@@ -2,11 +2,13 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <optional>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "gcode/decimal.hpp"
 #include "gcode/number_form.hpp"
 #include "gcode/program_text.hpp"
 
@@ -159,34 +161,23 @@ std::optional<std::size_t> Parser::dash_length(std::size_t at) const {
   return std::nullopt;
 }
 
-// Digits with at most one point (mm or degrees, never least increments).
+// Digits with at most one point (mm or degrees, never least increments),
+// read as every dialect reads them (gcode/decimal.hpp).
 std::optional<double> Parser::number() {
   skip();
   const std::size_t start = i_;
-  bool point = false;
-  bool digits = false;
-  while (i_ < end_ && (is_digit(s_[i_]) || (s_[i_] == '.' && !point))) {
-    if (s_[i_] == '.')
-      point = true;
-    else
-      digits = true;
-    ++i_;
-  }
-  if (!digits) {
-    i_ = start;
-    return std::nullopt;
-  }
+  const Decimal d = scan_decimal(s_.substr(0, end_), start);
+  if (d.digits == 0) return std::nullopt;
+  i_ = d.end;
   if (const auto ok = exponent_out_of_range(s_.substr(0, end_), start, i_); !ok) {
     fail(core::Code::NumberOutOfRange, start, ok.error());
     return std::nullopt;
   }
-  double v = 0.0;
-  const auto r = std::from_chars(s_.data() + start, s_.data() + i_, v);
-  if (r.ec != std::errc()) {
+  if (!std::isfinite(d.value)) {
     fail(core::Code::BadNumber, start, "number out of range");
     return std::nullopt;
   }
-  return v;
+  return d.value;
 }
 
 // P followed by digits: a parameter number 0..999.
