@@ -7,6 +7,8 @@
 //               [--tls-cert FILE --tls-key FILE]   (HTTPS and WSS)
 //   usina serve --store postgresql://... ...   (PostgreSQL instead of DIR)
 //   usina serve --verify-audit --data DIR       (exit 1 when the chain is broken)
+//   usina serve --import DIR --user NAME [--machine-class C] [--dialect D] [--reason R]
+//   usina serve --export DIR --user NAME [--extension EXT]   (cli/serve_folder.cpp)
 // SIGTERM or SIGINT stops it: running jobs end interrupted, their ends written.
 #include <csignal>
 #include <filesystem>
@@ -20,6 +22,7 @@
 #include <fmt/format.h>
 
 #include "cli/entry.hpp"
+#include "cli/serve_folder.hpp"
 #include "core/diagnostic.hpp"
 #include "dnc/server.hpp"
 #include "dnc/store_audit.hpp"
@@ -42,6 +45,9 @@ struct ServeOptions {
   std::string listen;
   std::string tls_cert;  // with tls_key: HTTPS instead of HTTP
   std::string tls_key;
+  FolderOptions folder;  // --import / --export
+  std::string import_dir;
+  std::string export_dir;
 };
 
 std::string where(const ServeOptions& o) {
@@ -194,14 +200,47 @@ void add_serve_options(CLI::App& cmd, ServeOptions& o) {
   cmd.add_option("--tls-cert", o.tls_cert,
                  "a PEM certificate (chain): serve HTTPS and WSS (with --tls-key)");
   cmd.add_option("--tls-key", o.tls_key, "the PEM private key of --tls-cert");
+  cmd.add_option("--import", o.import_dir,
+                 "make each file of DIR a revision of the program named after it, then exit");
+  cmd.add_option("--export", o.export_dir,
+                 "write the released revision of every program to DIR, then exit");
+  cmd.add_option("--user", o.folder.user, "--import/--export: the store's user the audit names");
+  cmd.add_option("--machine-class", o.folder.machine_class,
+                 "--import: the machine class of new programs")
+      ->capture_default_str();
+  cmd.add_option("--dialect", o.folder.dialect,
+                 "--import: rs274ngc|fanuc|grbl|romi (default: guessed for each file)");
+  cmd.add_option("--reason", o.folder.reason, "--import: the revisions' reason");
+  cmd.add_option("--extension", o.folder.extension, "--export: the files' extension, no dot")
+      ->capture_default_str();
 }
 
-int serve(const ServeOptions& o) {
+// --import or --export: the configuration gives the machine classes' profiles.
+int folder(ServeOptions& o) {
+  const auto config = configuration(o);
+  if (!config) return kUsage;
+  o.folder.where = where(o);
+  o.folder.profiles = &config->profiles;
+  o.folder.folder = o.import_dir.empty() ? o.export_dir : o.import_dir;
+  return o.import_dir.empty() ? export_folder_command(o.folder) : import_folder_command(o.folder);
+}
+
+int serve(ServeOptions& o) {
   if (!o.store.empty() && !dnc::is_postgres_url(o.store)) {
     fmt::print(stderr, "usina: error: --store takes a postgresql:// URL; a folder is --data\n");
     return kUsage;
   }
-  return o.init ? init(o) : o.verify_audit ? verify(o) : run_server(o);
+  const int tasks =
+      int{o.init} + int{o.verify_audit} + int{!o.import_dir.empty()} + int{!o.export_dir.empty()};
+  if (tasks > 1) {
+    fmt::print(stderr,
+               "usina: error: --init, --verify-audit, --import and --export: one at a time\n");
+    return kUsage;
+  }
+  if (o.init) return init(o);
+  if (o.verify_audit) return verify(o);
+  if (!o.import_dir.empty() || !o.export_dir.empty()) return folder(o);
+  return run_server(o);
 }
 
 // argv: what followed `usina serve`. Help and usage errors are said as
