@@ -7,6 +7,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include <boost/asio/posix/stream_descriptor.hpp>
@@ -19,7 +20,7 @@
 namespace usina::dnc {
 namespace {
 
-speed_t speed_of(std::uint32_t baud) {
+std::optional<speed_t> speed_of(std::uint32_t baud) {
   static constexpr std::array<std::pair<std::uint32_t, speed_t>, 15> kSpeeds{{
       {110, B110},
       {134, B134},
@@ -40,7 +41,7 @@ speed_t speed_of(std::uint32_t baud) {
   for (const auto& [b, s] : kSpeeds) {
     if (b == baud) return s;
   }
-  return B9600;
+  return std::nullopt;
 }
 
 // Linux's pty keeps no output queue: its TIOCOUTQ is 0 whatever waits on
@@ -136,15 +137,14 @@ std::string errno_text(const char* what, const std::string& path) {
 
 }  // namespace
 
-tl::expected<void, std::string> configure_tty(int fd, const LinkConfig& config) {
-  termios t{};
-  if (::tcgetattr(fd, &t) != 0) {
-    return tl::make_unexpected(fmt::format("not a serial port or pty ({})", std::strerror(errno)));
-  }
+tl::expected<termios, std::string> serial_frame(termios t, const LinkConfig& config) {
+  // A rate the port has no constant for is refused, never replaced by another.
+  const auto speed = speed_of(config.baud);
+  if (!speed) return tl::make_unexpected(fmt::format("no serial rate of {} baud", config.baud));
   // Raw: no kernel flow control (IXON would eat the control's XOFF and hide
   // it from usina), no CR/LF translation, no echo, no signals.
   t.c_iflag &= ~static_cast<tcflag_t>(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL |
-                                      IXON | IXOFF | IXANY);
+                                      IXON | IXOFF | IXANY | INPCK);
   t.c_oflag &= ~static_cast<tcflag_t>(OPOST);
   t.c_lflag &= ~static_cast<tcflag_t>(ECHO | ECHONL | ICANON | ISIG | IEXTEN);
   t.c_cflag &= ~static_cast<tcflag_t>(CSIZE | PARENB | PARODD | CSTOPB | CRTSCTS);
@@ -158,9 +158,19 @@ tl::expected<void, std::string> configure_tty(int fd, const LinkConfig& config) 
   if (config.flow == Flow::RtsCts) t.c_cflag |= CRTSCTS;
   t.c_cc[VMIN] = 1;
   t.c_cc[VTIME] = 0;
-  ::cfsetispeed(&t, speed_of(config.baud));
-  ::cfsetospeed(&t, speed_of(config.baud));
-  if (::tcsetattr(fd, TCSANOW, &t) != 0) {
+  ::cfsetispeed(&t, *speed);
+  ::cfsetospeed(&t, *speed);
+  return t;
+}
+
+tl::expected<void, std::string> configure_tty(int fd, const LinkConfig& config) {
+  termios now{};
+  if (::tcgetattr(fd, &now) != 0) {
+    return tl::make_unexpected(fmt::format("not a serial port or pty ({})", std::strerror(errno)));
+  }
+  const auto frame = serial_frame(now, config);
+  if (!frame) return tl::make_unexpected(frame.error());
+  if (::tcsetattr(fd, TCSANOW, &*frame) != 0) {
     return tl::make_unexpected(fmt::format("cannot set the frame ({})", std::strerror(errno)));
   }
   // Controls without handshake still want DTR and RTS high (research/dnc.md

@@ -4,6 +4,8 @@
 // handshake uses them; then read and written through the event loop.
 #pragma once
 
+#include <termios.h>
+
 #include <memory>
 #include <string>
 
@@ -12,6 +14,10 @@
 #include "dnc/link.hpp"
 
 namespace usina::dnc {
+
+// The termios of `t` with the machine's frame (rate, data bits, parity,
+// stop bits, RTS/CTS) in raw mode; an error for a rate with no constant.
+tl::expected<termios, std::string> serial_frame(termios t, const LinkConfig& config);
 
 // Applies the machine's frame to an open tty; a pty takes every flag but
 // the speed, which it ignores.
