@@ -23,6 +23,7 @@ struct ResumeState {
   int feed_mode = 94;                // 93, 94 or 95
   std::optional<double> feed;        // F in the program's units (per minute or per revolution)
   std::optional<int> tool;           // the tool in the spindle
+  std::optional<double> tool_diameter_mm;  // its diameter, when the program's change gave one
   bool start_block_changes_tool = false;
   double rpm = 0.0;
   SpindleDir spindle = SpindleDir::Off;

@@ -25,6 +25,7 @@ class Observer final : public canon::Sink {
   }
 
   std::optional<int> tool;
+  std::optional<double> tool_diameter;  // mm
   double rpm = 0.0;
   canon::SpindleDir dir = canon::SpindleDir::Off;
   canon::Coolant coolant;
@@ -70,6 +71,7 @@ class Observer final : public canon::Sink {
 
   void take(const canon::ToolChange& t, const canon::Op& op) {
     tool = t.tool;
+    tool_diameter = t.diameter;
     if (first_change_to && *first_change_to == t.tool && !change_line && op.src.file == main_file)
       change_line = op.src.line;
   }
@@ -298,6 +300,7 @@ tl::expected<ResumePoint, std::string> find_resume_point(std::string_view text,
   s.n_word = first.n;
   if (start.kind == ResumeStart::Kind::Tool) s.by_tool = static_cast<int>(start.value);
   s.tool = obs.tool;
+  s.tool_diameter_mm = obs.tool_diameter;
   s.rpm = obs.rpm;
   s.spindle = obs.dir;
   s.coolant = obs.coolant;

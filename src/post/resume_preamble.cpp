@@ -54,7 +54,12 @@ void modes(BlockOut& out, const Control& c, const canon::ResumeState& s) {
 
 void tool_spindle_coolant(BlockOut& out, const Control& c, const canon::ResumeState& s) {
   if (s.tool && !s.start_block_changes_tool) {
-    if (c.tool_change_m6) {
+    if (c.tool_change_m6 && c.name == "romi" && s.tool_diameter_mm) {
+      // Romi's reader takes the tool's diameter from its change's comment
+      // ("T01 M06;fresa d10"): without it the restart is not read back.
+      out.block(fmt::format("T{} {}{}", *s.tool, code(c, 'M', 60),
+                            out.comment(fmt::format("d{:g}", *s.tool_diameter_mm))));
+    } else if (c.tool_change_m6) {
       out.block(fmt::format("T{} {}", *s.tool, code(c, 'M', 60)));
     } else {
       out.block(out.comment(fmt::format("change to tool {}", *s.tool)));

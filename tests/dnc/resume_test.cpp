@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/dialect_run.hpp"
+
 namespace usina::dnc {
 namespace {
 
@@ -74,6 +76,29 @@ TEST(ResumeGolden, GrblFromLine) {
   golden("grbl-line7.resume", restart("grbl.nc", "grbl", "7"));
 }
 
+TEST(ResumeGolden, FanucFromTool) {
+  golden("fanuc-tools-tool2.resume", restart_tool("fanuc-tools.nc", "fanuc", 2));
+}
+
+TEST(ResumeGolden, RomiFromTool) {
+  golden("romi-tools-tool2.resume", restart_tool("romi-tools.nc", "romi", 2));
+}
+
+// A restart is a program like any other: its own dialect reads it with no
+// error (romi's restart once wrote "T1 M06" without the diameter its
+// reader takes from the change's comment, and was refused).
+TEST(ResumeGolden, EveryRestartReadsBackInItsDialect) {
+  const std::pair<const char*, const char*> files[] = {
+      {"rs274ngc-line11.resume", "rs274ngc"}, {"rs274ngc-tool2.resume", "rs274ngc"},
+      {"fanuc-N90.resume", "fanuc"},          {"fanuc-tools-tool2.resume", "fanuc"},
+      {"romi-N110.resume", "romi"},           {"romi-tools-tool2.resume", "romi"},
+      {"grbl-line7.resume", "grbl"}};
+  for (const auto& [file, dialect] : files) {
+    const auto r = gcode::dialect_test::run_in(dialect, read(dir() + file));
+    EXPECT_TRUE(r->ok) << file << ": " << r->first_error_text();
+  }
+}
+
 TEST(ResumeGolden, TheRestIsTheProgramsOwnBytes) {
   const std::string text = read(dir() + "fanuc.nc");
   const std::string out = restart("fanuc.nc", "fanuc", "N90");
@@ -102,6 +127,8 @@ TEST(ResumeRefused, PastTheEnd) {
 TEST(ResumeRefused, AToolNeverUsed) {
   EXPECT_NE(refusal("rs274ngc.ngc", "rs274ngc", {K::Tool, 7}).find("tool T7 is never"),
             std::string::npos);
+  // Grbl 1.1 has no tool change (M6 is its error 20): no start by tool.
+  EXPECT_NE(refusal("grbl.nc", "grbl", {K::Tool, 1}).find("tool T1 is never"), std::string::npos);
 }
 
 TEST(ResumeRefused, AnUnknownNWord) {
