@@ -23,7 +23,9 @@ struct DocBlock {
     Figure,   // the document's picture (the writer's), `text` its caption
   };
 
-  Kind kind = Kind::Note;
+  explicit DocBlock(Kind k = Kind::Note, std::string t = {}) : kind(k), text(std::move(t)) {}
+
+  Kind kind;
   std::string text;
   std::vector<std::string> header;
   // A cell's text may hold '\n': a line break the writers keep.
@@ -36,12 +38,12 @@ struct Document {
   std::string title;
   std::vector<DocBlock> blocks;
 
-  void heading(std::string text) { blocks.push_back({DocBlock::Kind::Heading, std::move(text)}); }
+  void heading(std::string text) { blocks.emplace_back(DocBlock::Kind::Heading, std::move(text)); }
 
-  void note(std::string text) { blocks.push_back({DocBlock::Kind::Note, std::move(text)}); }
+  void note(std::string text) { blocks.emplace_back(DocBlock::Kind::Note, std::move(text)); }
 
   void figure(std::string caption) {
-    blocks.push_back({DocBlock::Kind::Figure, std::move(caption)});
+    blocks.emplace_back(DocBlock::Kind::Figure, std::move(caption));
   }
 };
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <cairo-pdf.h>
@@ -167,7 +168,7 @@ struct Cell {
 
 // Rows of cells in columns of given widths; a row that does not fit on the
 // page goes to the next one, after the header again; a row taller than a
-// page is split between its lines.
+// page is split between its lines, from where it stands.
 class TableWriter {
  public:
   TableWriter(Pages& p, std::vector<double> widths, std::vector<Cell> header)
@@ -188,7 +189,9 @@ class TableWriter {
         draw(cells, next, h - 2.0 * kPad, false);
         break;
       }
-      if (!top_) {
+      // A row that fits on a page of its own goes there whole; a taller
+      // one starts here.
+      if (!top_ && h <= kBottom - kMargin - height(header_, {})) {
         p_.next();
         draw_header();
         continue;
