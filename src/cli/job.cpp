@@ -88,7 +88,8 @@ void draw_stock(const job::Stock& s, draw::Drawing& d) {
 
 // --sheet and -o may not name one file (neither exists yet: no inode to compare).
 bool same_path(const std::string& a, const std::string& b) {
-  std::error_code ec1, ec2;
+  std::error_code ec1;
+  std::error_code ec2;
   const auto ca = std::filesystem::weakly_canonical(a, ec1);
   const auto cb = std::filesystem::weakly_canonical(b, ec2);
   return ec1 || ec2 ? a == b : ca == cb;
@@ -115,7 +116,8 @@ draw::WriteResult write_sheet(const JobCli& o, const core::Document& doc,
     const std::string svg_text = svg.str();
     const std::size_t element = std::min(svg_text.find("<svg"), svg_text.size());
     const std::string html = job::document_html(doc, std::string_view(svg_text).substr(element));
-    std::fwrite(html.data(), 1, html.size(), file.stream());
+    if (std::fwrite(html.data(), 1, html.size(), file.stream()) != html.size())
+      return tl::unexpected(file.write_error().value_or("cannot write " + o.sheet));
   }
   return file.commit();
 }

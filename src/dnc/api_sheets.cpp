@@ -21,9 +21,9 @@ tl::expected<std::string, std::string> sheet_bytes(const nlohmann::json& body) {
   if (!text) return tl::unexpected(text.error());
   auto encoded = string_field(body, "text_base64", false);
   if (!encoded) return tl::unexpected(encoded.error());
-  if (text->has_value() == encoded->has_value())
-    return tl::unexpected(
-        std::string("give the sheet as \"text\" or \"text_base64\", one of them"));
+  if (text->has_value() == encoded->has_value()) {
+    return tl::unexpected(std::string(R"(give the sheet as "text" or "text_base64", one of them)"));
+  }
   if (text->has_value()) return std::move(**text);
   auto bytes = from_base64(**encoded);
   if (!bytes) return tl::unexpected(std::string("\"text_base64\" is not base64"));

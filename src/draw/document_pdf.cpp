@@ -137,7 +137,9 @@ std::vector<std::string> wrap(Pages& p, std::string_view text, Font f, double wi
       std::string word(rest.substr(0, space));
       rest.remove_prefix(std::min(space + 1, rest.size()));
       if (word.empty()) continue;
-      std::string candidate = line.empty() ? word : line + " " + word;
+      std::string candidate = line;
+      if (!candidate.empty()) candidate += ' ';
+      candidate += word;
       if (p.width(candidate) <= width) {
         line = std::move(candidate);
         continue;
@@ -246,9 +248,10 @@ class TableWriter {
       }
       p_.use_font(cells[i].font);
       const double lh = line_height(cells[i].font);
-      for (std::size_t k = 0; k < count[i]; ++k)
+      for (std::size_t k = 0; k < count[i]; ++k) {
         p_.text(x + kPad, p_.y + kPad + static_cast<double>(k) * lh + cells[i].font.size,
                 cells[i].lines[next[i] + k]);
+      }
       next[i] += count[i];
       cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
       cairo_set_line_width(cr, 0.5);

@@ -23,7 +23,9 @@ sim::ToolStats between(const sim::ToolStats& a, const sim::ToolStats& b) {
 // 75 s as "1 min 15 s", 4000 s as "1 h 6 min 40 s".
 std::string duration(double s) {
   const long total = std::lround(std::max(0.0, s));
-  const long h = total / 3600, m = total / 60 % 60, sec = total % 60;
+  const long h = total / 3600;
+  const long m = total / 60 % 60;
+  const long sec = total % 60;
   if (h > 0) return fmt::format("{} h {} min {} s", h, m, sec);
   if (m > 0) return fmt::format("{} min {} s", m, sec);
   return fmt::format("{:.1f} s", std::max(0.0, s));
