@@ -25,6 +25,7 @@ constexpr double kWidth = kPageWidth - 2.0 * kMargin;
 constexpr double kBottom = kPageHeight - kMargin;
 constexpr double kPad = 2.5;  // inside a table's cell
 constexpr double kIndent = 10.0;
+constexpr double kMinFigure = 160.0;  // the figure's least height
 
 struct Font {
   double size;
@@ -356,9 +357,12 @@ void table(Pages& p, const core::DocBlock& b) {
 void figure(Pages& p, const core::DocBlock& b, const Drawing& drawing) {
   const Box box = finite_view_box(drawing);
   // Its width the page's; its height the drawing's, and the legend's strip.
-  const double h =
-      std::clamp(kWidth * box.height() / std::max(box.width(), 1e-9) + 30.0, 160.0, 380.0);
-  p.need(h + 2.0 * line_height(kSmall));
+  double h =
+      std::clamp(kWidth * box.height() / std::max(box.width(), 1e-9) + 30.0, kMinFigure, 380.0);
+  // Smaller, down to kMinFigure, rather than leave the rest of a page empty.
+  const double caption = 2.0 * line_height(kSmall) + 3.0;  // its gap and two lines
+  if (h + caption > p.room() && p.room() - caption >= kMinFigure) h = p.room() - caption;
+  p.need(h + caption);
   render_drawing(p.cr(), drawing, {kMargin, p.y, kWidth, h}, 0.6);
   cairo_set_source_rgb(p.cr(), 0.6, 0.6, 0.6);
   cairo_set_line_width(p.cr(), 0.5);
