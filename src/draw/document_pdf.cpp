@@ -360,7 +360,7 @@ void figure(Pages& p, const core::DocBlock& b, const Drawing& drawing) {
   double h =
       std::clamp(kWidth * box.height() / std::max(box.width(), 1e-9) + 30.0, kMinFigure, 380.0);
   // Smaller, down to kMinFigure, rather than leave the rest of a page empty.
-  const double caption = 2.0 * line_height(kSmall) + 3.0;  // its gap and two lines
+  const double caption = 2.0 * line_height(kSmall) + 4.0;  // its gap, two lines, a hair
   if (h + caption > p.room() && p.room() - caption >= kMinFigure) h = p.room() - caption;
   p.need(h + caption);
   render_drawing(p.cr(), drawing, {kMargin, p.y, kWidth, h}, 0.6);
