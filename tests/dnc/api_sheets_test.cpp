@@ -1,12 +1,16 @@
 // A revision's setup sheet over HTTP: put as JSON (HTML as text, a PDF as
 // base64), read back as its bytes with its type (HTML sandboxed), listed
 // with the revision, audited, announced; refused for a bad body (400), an
-// unknown revision (404), a role that may not (403).
+// unknown revision (404), a role that may not (403); and the whole road:
+// `usina job --sheet` writes a program and its PDF, both go up, the sheet
+// comes back byte for byte.
 #include <gtest/gtest.h>
 
 #include "dnc/base64.hpp"
 #include "dnc/sha256.hpp"
 #include "server_fixture.hpp"
+#include "support/files.hpp"
+#include "support/usina_process.hpp"
 
 namespace usina::dnc {
 namespace {
@@ -87,6 +91,35 @@ TEST(ApiSheets, BadSheetsAre400UnknownRevisions404AndOperators403) {
   EXPECT_EQ(c.post("/api/programs/O999/revisions/" + rev + "/sheet", good, prog).status, 404);
   EXPECT_EQ(c.post(sheet, good, c.log_in("oper", test::kPassword)).status, 403);
   EXPECT_EQ(c.get(sheet, prog).status, 404);  // nothing was stored
+}
+
+TEST(ApiSheets, TheSheetUsinaJobWroteComesBackWithItsProgram) {
+  const usina::test::TempDir dir;
+  const std::string job = std::string(USINA_TEST_DIR) + "/../examples/jobs/plate.toml";
+  const usina::test::Run made =
+      usina::test::usina("job " + usina::test::quote(job) + " --post fanuc -o " +
+                         usina::test::quote(dir.path("plate.nc")) + " --sheet " +
+                         usina::test::quote(dir.path("plate.pdf")));
+  ASSERT_EQ(made.status, 0) << made.err;
+  const std::string pdf = usina::test::slurp(dir.path("plate.pdf"));
+  RunningServer s;
+  s.start();
+  const ApiClient c = s.client();
+  const std::string prog = c.log_in("prog", test::kPassword);
+  const test::Reply up = c.post("/api/programs",
+                                {{"name", "PLATE"},
+                                 {"dialect", "fanuc"},
+                                 {"text", usina::test::slurp(dir.path("plate.nc"))},
+                                 {"reason", "from examples/jobs/plate.toml"}},
+                                prog);
+  ASSERT_EQ(up.status, 201) << up.body;
+  const std::string sheet =
+      "/api/programs/PLATE/revisions/" + up.json()["revision"].get<std::string>() + "/sheet";
+  ASSERT_EQ(c.post(sheet, {{"format", "pdf"}, {"text_base64", to_base64(pdf)}}, prog).status, 201);
+  const test::Reply back = c.get(sheet, c.log_in("oper", test::kPassword));
+  ASSERT_EQ(back.status, 200);
+  EXPECT_EQ(back.body, pdf);
+  EXPECT_EQ(back.content_type, "application/pdf");
 }
 
 }  // namespace
