@@ -53,6 +53,9 @@ TEST(DocumentPdf, AShortDocumentIsOneA4PageWithItsText) {
   doc.blocks.push_back(facts);
   doc.figure("seen from above");
   doc.blocks.push_back(table_of(3));
+  core::DocBlock list{Kind::List};
+  list.rows = {{"warning: a feed past the machine's"}, {}};  // an empty item too
+  doc.blocks.push_back(list);
   doc.note("a note at the end");
   const std::string bytes = test::slurp(written(doc, dir));
   EXPECT_EQ(bytes.rfind("%PDF-", 0), 0u);
@@ -60,8 +63,9 @@ TEST(DocumentPdf, AShortDocumentIsOneA4PageWithItsText) {
   EXPECT_NE(bytes.find("/MediaBox [ 0 0 595.28 841.89 ]"), std::string::npos);  // A4 portrait
   const auto text = test::pdf_text(dir.path("doc.pdf"));
   if (!text) GTEST_SKIP() << "pdftotext (poppler-utils) is not installed";
-  for (const char* part : {"Setup sheet: bracket", "Tools", "box 100 × 80 × 20 mm", "row3", "9",
-                           "seen from above", "a note at the end", "page 1"})
+  for (const char* part :
+       {"Setup sheet: bracket", "Tools", "box 100 × 80 × 20 mm", "row3", "9", "seen from above",
+        "warning: a feed past the machine's", "a note at the end", "page 1"})
     EXPECT_NE(text->find(part), std::string::npos) << part << "\n" << *text;
 }
 
