@@ -235,7 +235,8 @@ class TableWriter {
     for (std::size_t i = 0; i < cells.size() && i < widths_.size(); ++i) {
       const double lh = line_height(cells[i].font);
       const std::size_t left = cells[i].lines.size() - std::min(next[i], cells[i].lines.size());
-      count[i] = std::min(left, std::max<std::size_t>(1, static_cast<std::size_t>(budget / lh)));
+      const auto fit = static_cast<std::size_t>(std::max(0.0, budget / lh));  // no room: 0
+      count[i] = std::min(left, std::max<std::size_t>(1, fit));
       used = std::max(used, static_cast<double>(count[i]) * lh);
     }
     const double h = used + 2.0 * kPad;
