@@ -178,6 +178,15 @@ class TableWriter {
       : p_(p), widths_(std::move(widths)), header_(std::move(header)) {}
 
   void start() {
+    // A header taller than half a page is not repeated: it is the table's
+    // first row, split between pages as a row is.
+    if (height(header_, {}) > (kBottom - kMargin) / 2.0) {
+      const std::vector<Cell> once = std::move(header_);
+      header_.clear();
+      top_ = p_.at_top();
+      row(once);
+      return;
+    }
     p_.need(height(header_, {}) + 3.0 * line_height(kBody) + 2.0 * kPad);
     const bool fresh = p_.at_top();
     draw_header();
@@ -200,6 +209,7 @@ class TableWriter {
         continue;
       }
       draw(cells, next, p_.room() - 2.0 * kPad, false);
+      if (height(cells, next) <= 2.0 * kPad) break;  // every line is out (a page without room)
       p_.next();
       draw_header();
     }

@@ -110,6 +110,27 @@ TEST(DocumentPdf, ACellLongerThanAPageIsSplitAndLosesNoLine) {
   EXPECT_NE(text->find("short"), std::string::npos);
 }
 
+TEST(DocumentPdf, AHeaderTallerThanHalfAPageIsAFirstRowNotRepeated) {
+  const test::TempDir dir;
+  core::Document doc;
+  doc.title = "Odd";
+  core::DocBlock t{Kind::Table};
+  std::string tall;
+  for (int i = 0; i < 100; ++i)
+    tall += "h\n";
+  t.header = {tall, "x"};
+  t.rows = {{"first", "1"}, {"second", "2"}};
+  doc.blocks.push_back(t);
+  const std::string path = written(doc, dir);
+  // The header (1,100 pt) over two pages, not repeated; the rows after it.
+  EXPECT_EQ(test::pdf_pages(test::slurp(path)), 2u);
+  const auto text = test::pdf_text(path);
+  if (!text) GTEST_SKIP() << "pdftotext (poppler-utils) is not installed";
+  EXPECT_NE(text->find("first"), std::string::npos);
+  EXPECT_NE(text->find("second"), std::string::npos);
+  EXPECT_EQ(test::count(*text, "h\n"), 99u);  // and the first, beside the x
+}
+
 TEST(DocumentPdf, AWordWiderThanItsColumnIsBrokenNotLost) {
   const test::TempDir dir;
   core::Document doc;
