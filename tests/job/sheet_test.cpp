@@ -6,6 +6,7 @@
 // format is its extension's.
 #include "job/sheet.hpp"
 
+#include <filesystem>
 #include <numbers>
 #include <regex>
 
@@ -265,6 +266,24 @@ TEST(SetupSheetCli, APdfSheetIsNeverAnInput) {
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(test::slurp(job), before);
   EXPECT_FALSE(test::exists(dir.path("p.nc")));
+}
+
+// docs/cli.md's rules for every output: a folder is refused before
+// anything is written; a character device is written in place, never
+// replaced.
+TEST(SetupSheetCli, APdfSheetFollowsTheOutputRulesForAFolderAndADevice) {
+  const test::TempDir dir;
+  const std::string job = dir.write("job.toml", testing::job_text(kTwoOperations));
+  std::filesystem::create_directory(dir.path("folder.pdf"));
+  test::Run r = job_with_sheet(job, dir, "folder.pdf");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_FALSE(test::exists(dir.path("p.nc")));
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path("folder.pdf")));
+  std::filesystem::create_symlink("/dev/null", dir.path("null.pdf"));
+  r = job_with_sheet(job, dir, "null.pdf");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path("null.pdf")));
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
 }  // namespace
