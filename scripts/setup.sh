@@ -9,6 +9,7 @@ pkgs=(
   libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libexpected-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libdxflib-dev libcairo2-dev libpolyclipping-dev hershey-fonts-data
+  poppler-utils
   clang-14 libclang-rt-14-dev clang-format
   libsqlite3-dev libpqxx-dev libssl-dev libsodium-dev postgresql
   libboost-dev libboost-system-dev socat

@@ -6,6 +6,7 @@
 // profile, drawing) has an error, reported at its line; 2 for a file that
 // cannot be read or a bad option.
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -15,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "cli/post_output.hpp"
+#include "cli/raster_module.hpp"
 #include "cli/verbs.hpp"
 #include "core/output_file.hpp"
 #include "core/source.hpp"
@@ -28,11 +30,48 @@
 namespace usina::cli {
 namespace {
 
+enum class SheetFormat { Html, Pdf };
+
 struct JobCli {
   std::string file;
   PostOutput output;
-  std::string sheet;  // --sheet: the setup sheet's HTML file
+  std::string sheet;  // --sheet: the setup sheet's file, HTML or PDF by its extension
+  SheetFormat sheet_format = SheetFormat::Html;
+  const RasterWriters* raster = nullptr;  // the PDF's writer, loaded for a .pdf sheet
 };
+
+// The sheet's extension chooses its format; no other is guessed.
+std::optional<SheetFormat> sheet_format_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".html" || ext == ".htm") return SheetFormat::Html;
+  if (ext == ".pdf") return SheetFormat::Pdf;
+  return std::nullopt;
+}
+
+// Before the job is read: the sheet's format, and for a PDF the raster
+// module (a missing one is said at once, not after the program is made).
+int check_sheet_option(JobCli& o) {
+  const auto format = sheet_format_of(o.sheet);
+  if (!format) {
+    fmt::print(stderr,
+               "usina: error: --sheet {}: the extension chooses the sheet's format: .html (or "
+               ".htm) or .pdf\n",
+               o.sheet);
+    return 2;
+  }
+  o.sheet_format = *format;
+  if (*format == SheetFormat::Pdf) {
+    const auto writers = raster_writers();
+    if (!writers) {
+      fmt::print(stderr, "usina: error: {}\n", writers.error());
+      return 2;
+    }
+    o.raster = *writers;
+  }
+  return 0;
+}
 
 // The stock's outline, in grey, beside the tool path.
 void draw_stock(const job::Stock& s, draw::Drawing& d) {
@@ -49,7 +88,8 @@ void draw_stock(const job::Stock& s, draw::Drawing& d) {
 
 // --sheet and -o may not name one file (neither exists yet: no inode to compare).
 bool same_path(const std::string& a, const std::string& b) {
-  std::error_code ec1, ec2;
+  std::error_code ec1;
+  std::error_code ec2;
   const auto ca = std::filesystem::weakly_canonical(a, ec1);
   const auto cb = std::filesystem::weakly_canonical(b, ec2);
   return ec1 || ec2 ? a == b : ca == cb;
@@ -63,9 +103,29 @@ void draw_holes(const job::SheetLog& log, draw::Drawing& d) {
   }
 }
 
+// The sheet into its file, put in place only when all of it was written.
+draw::WriteResult write_sheet(const JobCli& o, const core::Document& doc,
+                              const draw::Drawing& picture, core::OutputFile& file) {
+  if (o.sheet_format == SheetFormat::Pdf) {
+    const draw::WriteResult w = o.raster->write_sheet_pdf(doc, picture, file.stream());
+    if (!w) return tl::unexpected(file.write_error().value_or(w.error()));
+  } else {
+    std::ostringstream svg;
+    draw::write_svg(picture, svg);
+    // Inside the page the SVG element goes without its XML declaration.
+    const std::string svg_text = svg.str();
+    const std::size_t element = std::min(svg_text.find("<svg"), svg_text.size());
+    const std::string html = job::document_html(doc, std::string_view(svg_text).substr(element));
+    if (std::fwrite(html.data(), 1, html.size(), file.stream()) != html.size())
+      return tl::unexpected(file.write_error().value_or("cannot write " + o.sheet));
+  }
+  return file.commit();
+}
+
 // The job made once into the post and, for the sheet, into the timer and
 // the picture. The sheet's file is opened (and checked) before anything is
-// written, and put in place after the program.
+// written, and put in place after the program; a failed sheet leaves no
+// file (its temporary goes with the OutputFile).
 int run_with_sheet(const JobCli& o, const job::LoadedJob& loaded, core::SourceManager& sources,
                    DiagnosticPrinter& diags) {
   if (o.output.out != "-" && same_path(o.sheet, o.output.out)) {
@@ -93,16 +153,9 @@ int run_with_sheet(const JobCli& o, const job::LoadedJob& loaded, core::SourceMa
   timer.finish();
   draw_stock(loaded.job.stock, picture);
   draw_holes(log, picture);
-  std::ostringstream svg;
-  draw::write_svg(picture, svg);
   const std::string program = o.output.out == "-" ? "(standard output)" : o.output.out;
-  // Inside the page the SVG element goes without its XML declaration.
-  const std::string svg_text = svg.str();
-  const std::size_t element = std::min(svg_text.find("<svg"), svg_text.size());
-  const std::string html =
-      job::sheet_html(loaded, log, timer, std::string_view(svg_text).substr(element), program);
-  std::fwrite(html.data(), 1, html.size(), sheet_file->stream());
-  if (auto w = sheet_file->commit(); !w) {
+  const core::Document doc = job::sheet_document(loaded, log, timer, program);
+  if (auto w = write_sheet(o, doc, picture, *sheet_file); !w) {
     fmt::print(stderr, "usina: error: {}\n", w.error());
     return 2;
   }
@@ -110,6 +163,9 @@ int run_with_sheet(const JobCli& o, const job::LoadedJob& loaded, core::SourceMa
 }
 
 int run_job(JobCli& o) {
+  if (!o.sheet.empty()) {
+    if (const int status = check_sheet_option(o); status != 0) return status;
+  }
   core::SourceManager sources;
   DiagnosticPrinter diags;
   diags.set_sources(&sources);
@@ -140,8 +196,8 @@ void add_job(CLI::App& app) {
   cmd->add_option("JOB", o->file, "the job file (TOML)")->required();
   add_post_options(*cmd, o->output);
   cmd->add_option("--sheet", o->sheet,
-                  "also write the setup sheet (HTML: stock, zero, tools and stick-out, "
-                  "operations and times, cycle time and cost)");
+                  "also write the setup sheet, HTML or PDF by its extension (.html, .pdf): "
+                  "stock, zero, tools and stick-out, operations and times, cycle time and cost");
   cmd->callback([o] { set_exit_status(run_job(*o)); });
 }
 

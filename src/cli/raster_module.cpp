@@ -1,12 +1,16 @@
-// usina-raster.so: cairo's PNG and PDF writers, for usina draw and usina
-// simulate (cli/raster_module.hpp says why they are a module).
+// usina-raster.so: cairo's PNG and PDF writers, for usina draw, usina
+// simulate and usina job's PDF sheet (cli/raster_module.hpp says why they
+// are a module).
 #include "cli/raster_module.hpp"
+
+#include "draw/document_pdf.hpp"
 
 namespace {
 
 constexpr usina::cli::RasterWriters kWriters{
-    usina::cli::kRasterModuleAbi, USINA_VERSION, usina::draw::write_png, usina::draw::write_pdf,
-    usina::cli::write_stock_png,
+    usina::cli::kRasterModuleAbi, USINA_VERSION,
+    usina::draw::write_png,       usina::draw::write_pdf,
+    usina::cli::write_stock_png,  usina::draw::write_document_pdf,
 };
 
 }  // namespace

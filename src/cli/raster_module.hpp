@@ -11,6 +11,7 @@
 #include <tl/expected.hpp>
 
 #include "cli/simulate_images.hpp"
+#include "core/document.hpp"
 #include "draw/drawing.hpp"
 #include "draw/raster_writer.hpp"
 #include "draw/write_result.hpp"
@@ -22,7 +23,7 @@ inline constexpr const char* kRasterModuleName = "usina-raster.so";
 
 // Changed whenever RasterWriters changes: a module of another build is
 // refused, not called.
-inline constexpr int kRasterModuleAbi = 1;
+inline constexpr int kRasterModuleAbi = 2;
 
 // What the module gives: the writers, called on the caller's data (usina
 // and the module are one build, one compiler, one C++ library).
@@ -34,6 +35,9 @@ struct RasterWriters {
   draw::WriteResult (*write_pdf)(const draw::Drawing& drawing, std::FILE* file);
   tl::expected<void, std::string> (*write_stock_png)(const sim::stock::HeightMap& map,
                                                      StockView view, std::FILE* file);
+  // A document (usina job's setup sheet) as A4 pages; `figure` at its Figure block.
+  draw::WriteResult (*write_sheet_pdf)(const core::Document& doc, const draw::Drawing& figure,
+                                       std::FILE* file);
 };
 
 // The module's writers, loaded on the first call; or why they cannot be

@@ -12,6 +12,7 @@
 #include "dnc/api_http.hpp"
 #include "dnc/store_audit.hpp"
 #include "dnc/store_revisions.hpp"
+#include "dnc/store_sheets.hpp"
 
 namespace usina::dnc {
 
@@ -26,5 +27,7 @@ tl::expected<std::optional<std::uint64_t>, std::string> count_field(const nlohma
 
 nlohmann::json revision_json(const Revision& r);
 nlohmann::json audit_json(const AuditEntry& e);
+// api_sheets.cpp
+nlohmann::json sheet_json(const Sheet& s);
 
 }  // namespace usina::dnc

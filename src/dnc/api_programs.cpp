@@ -89,8 +89,13 @@ HttpResponse api_program(ApiCall& c) {
 HttpResponse api_revision(ApiCall& c) {
   auto r = find_revision(c.ctx.store, c.params[0], c.params[1]);
   if (!r) return store_failure(c, r.error());
+  auto sheets = list_sheets(c.ctx.store, r->program, r->hash);
+  if (!sheets) return store_failure(c, sheets.error());
   nlohmann::json out = revision_json(*r);
   out["name"] = r->program;
+  out["sheets"] = nlohmann::json::array();
+  for (const Sheet& s : *sheets)
+    out["sheets"].push_back(sheet_json(s));
   return json_response(c.req, http::status::ok, out);
 }
 

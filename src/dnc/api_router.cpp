@@ -26,6 +26,11 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/programs/{}/revisions/{}", A::Permission, P::ReadPrograms, api_revision},
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/text", A::Permission, P::ReadPrograms,
              api_revision_text},
+    // The setup sheet made with the program (docs/dnc-server.md, "Setup sheets").
+    ApiRoute{V::post, "/api/programs/{}/revisions/{}/sheet", A::Permission, P::UploadRevision,
+             api_put_sheet},
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/sheet", A::Permission, P::ReadPrograms,
+             api_get_sheet},
     // The viewer's binary tool path (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/toolpath", A::Permission, P::ReadPrograms,
              api_toolpath, api_toolpath_later},

@@ -98,7 +98,9 @@ HttpResponse api_upload(ApiCall& c);
 HttpResponse api_program(ApiCall& c);
 HttpResponse api_revision(ApiCall& c);
 HttpResponse api_revision_text(ApiCall& c);
-HttpResponse api_toolpath(ApiCall& c);  // web_toolpath_api.cpp
+HttpResponse api_put_sheet(ApiCall& c);  // api_sheets.cpp
+HttpResponse api_get_sheet(ApiCall& c);  // api_sheets.cpp
+HttpResponse api_toolpath(ApiCall& c);   // web_toolpath_api.cpp
 void api_toolpath_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_tool_figures(ApiCall& c);  // web_toolpath_tools.cpp
 void api_tool_figures_later(ApiCall& c, HttpAnswer answer);

@@ -234,6 +234,23 @@ constexpr std::string_view kV8Postgres = R"SQL(
 ALTER TABLE blobs ALTER COLUMN bytes SET STORAGE EXTERNAL;
 )SQL";
 
+// Version 9: a revision's setup sheet (store_sheets.hpp), HTML or PDF, its
+// bytes a blob like the revision's own; one of each format a revision, a
+// later one replacing it (each an audit entry naming the one before).
+constexpr std::string_view kV9 = R"SQL(
+CREATE TABLE revision_sheets (
+  program TEXT NOT NULL,
+  revision TEXT NOT NULL,
+  format TEXT NOT NULL,
+  blob TEXT NOT NULL REFERENCES blobs(hash),
+  size BIGINT NOT NULL,
+  author TEXT NOT NULL,
+  created_at BIGINT NOT NULL,
+  PRIMARY KEY (program, revision, format),
+  FOREIGN KEY (program, revision) REFERENCES revisions(program, hash)
+);
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres, nullptr},
     {2, kV2, "SELECT 1", "SELECT 1", nullptr},
@@ -243,6 +260,7 @@ constexpr Migration kMigrations[] = {
     {6, kV6, "SELECT 1", "SELECT 1", &record_missing_facts},
     {7, kV7, "SELECT 1", "SELECT 1", nullptr},
     {8, "SELECT 1", "SELECT 1", kV8Postgres, nullptr},
+    {9, kV9, "SELECT 1", "SELECT 1", nullptr},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

@@ -14,6 +14,7 @@
 
 #include "draw/finite.hpp"
 #include "draw/layer_style.hpp"
+#include "draw/raster_render.hpp"
 
 namespace usina::draw {
 namespace {
@@ -175,10 +176,11 @@ void draw_pieces(cairo_t* cr, const std::vector<Piece>& pieces, const Frame& fra
 }
 
 // A sample and the label of each piece (once a label), left to right.
-void draw_legend(cairo_t* cr, const std::vector<Piece>& pieces, const Furniture& f, double y) {
+void draw_legend(cairo_t* cr, const std::vector<Piece>& pieces, const Furniture& f, double left,
+                 double y) {
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, f.font);
-  double x = f.margin;
+  double x = left + f.margin;
   std::vector<std::string> shown;
   for (const Piece& piece : pieces) {
     if (std::find(shown.begin(), shown.end(), piece.label) != shown.end()) continue;
@@ -205,8 +207,9 @@ double nice_length(double x) {
 }
 
 // A bar of a round number of mm at the bottom right, its length above it.
-void draw_scale_bar(cairo_t* cr, const Frame& frame, const Furniture& f, double right, double y) {
-  const double mm = nice_length(0.25 * (right - f.margin) / frame.scale());
+void draw_scale_bar(cairo_t* cr, const Frame& frame, const Furniture& f, double left, double right,
+                    double y) {
+  const double mm = nice_length(0.25 * (right - left - f.margin) / frame.scale());
   const double len = mm * frame.scale();
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   cairo_set_dash(cr, nullptr, 0, 0.0);
@@ -227,39 +230,36 @@ void draw_scale_bar(cairo_t* cr, const Frame& frame, const Furniture& f, double 
 void render(cairo_t* cr, const Drawing& drawing, double width, double height, double line_width) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
-  const Furniture f = furniture_for(width, height, line_width);
-  const Frame frame(finite_view_box(drawing), f.margin, f.margin, width - 2.0 * f.margin,
-                    height - 2.0 * f.margin - f.band);
-  const std::vector<Piece> pieces = pieces_of(drawing);
-  draw_pieces(cr, pieces, frame, f);
-  const double baseline = height - f.margin;
-  draw_legend(cr, pieces, f, baseline);
-  draw_scale_bar(cr, frame, f, width - f.margin, baseline);
+  render_drawing(cr, drawing, {0.0, 0.0, width, height}, line_width);
 }
 
 std::string status_text(cairo_status_t s) {
   return cairo_status_to_string(s);
 }
 
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
+}  // namespace
 
-struct ContextDeleter {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
+void render_drawing(cairo_t* cr, const Drawing& drawing, const Area& area, double line_width) {
+  cairo_save(cr);
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_rectangle(cr, area.left, area.top, area.width, area.height);
+  cairo_fill(cr);
+  const Furniture f = furniture_for(area.width, area.height, line_width);
+  const Frame frame(finite_view_box(drawing), area.left + f.margin, area.top + f.margin,
+                    area.width - 2.0 * f.margin, area.height - 2.0 * f.margin - f.band);
+  const std::vector<Piece> pieces = pieces_of(drawing);
+  draw_pieces(cr, pieces, frame, f);
+  const double baseline = area.top + area.height - f.margin;
+  draw_legend(cr, pieces, f, area.left, baseline);
+  draw_scale_bar(cr, frame, f, area.left, area.left + area.width - f.margin, baseline);
+  cairo_restore(cr);
+}
 
-using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using Context = std::unique_ptr<cairo_t, ContextDeleter>;
-
-// cairo's stream callback: the bytes to the FILE, whose error flag
-// OutputFile::commit() reads.
-cairo_status_t write_bytes(void* file, const unsigned char* data, unsigned int length) {
+// The bytes to the FILE, whose error flag OutputFile::commit() reads.
+cairo_status_t write_to_stream(void* file, const unsigned char* data, unsigned int length) {
   const std::size_t n = std::fwrite(data, 1, length, static_cast<std::FILE*>(file));
   return n == length ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
-
-}  // namespace
 
 WriteResult write_png(const Drawing& drawing, std::FILE* file, PixelSize size) {
   if (size.width < 1 || size.height < 1 ||
@@ -275,7 +275,7 @@ WriteResult write_png(const Drawing& drawing, std::FILE* file, PixelSize size) {
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
-  const cairo_status_t s = cairo_surface_write_to_png_stream(surface.get(), write_bytes, file);
+  const cairo_status_t s = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, file);
   if (s != CAIRO_STATUS_SUCCESS) return tl::unexpected(status_text(s));
   return {};
 }
@@ -285,7 +285,7 @@ WriteResult write_pdf(const Drawing& drawing, std::FILE* file) {
   const bool landscape = box.width() >= box.height();
   const double w = landscape ? kA4Long : kA4Short;
   const double h = landscape ? kA4Short : kA4Long;
-  Surface surface(cairo_pdf_surface_create_for_stream(write_bytes, file, w, h));
+  Surface surface(cairo_pdf_surface_create_for_stream(write_to_stream, file, w, h));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     return tl::unexpected(status_text(cairo_surface_status(surface.get())));
   {

@@ -3,8 +3,9 @@
 // needs at the machine before the first part. The part and its stock, the
 // work zero, the fixtures, each tool with the stick-out it needs, each
 // operation with its speeds, feeds and time on the machine's profile, the
-// cycle time and its cost. One HTML file with its picture inside, printable
-// (the browser's "print to PDF" gives the PDF).
+// cycle time and its cost. Its content is one core::Document
+// (sheet_document), written as HTML with its picture inside (sheet_html)
+// or as PDF (draw/document_pdf, through the raster module).
 #pragma once
 
 #include <functional>
@@ -14,6 +15,7 @@
 
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
+#include "core/document.hpp"
 #include "job/load.hpp"
 #include "sim/stats.hpp"
 
@@ -77,9 +79,21 @@ class SheetTimer final : public canon::Sink {
   sim::StatsReport report_;
 };
 
+// What the sheet says, in every format: its title, the part and stock,
+// the figure's place and caption, the tools, the operations, the cycle
+// time and cost, the checks. `program`: the program's file name.
+core::Document sheet_document(const LoadedJob& j, const SheetLog& log, const SheetTimer& timer,
+                              std::string_view program);
+
+// A document as one HTML page, every text escaped. `picture_svg`: an SVG
+// element put at the figure's place (nothing when empty).
+std::string document_html(const core::Document& doc, std::string_view picture_svg);
+
 // The sheet as HTML. `picture_svg`: the tool path seen from above (an SVG
-// element, written by the caller); `program`: the program's file name.
-std::string sheet_html(const LoadedJob& j, const SheetLog& log, const SheetTimer& timer,
-                       std::string_view picture_svg, std::string_view program);
+// element, written by the caller).
+inline std::string sheet_html(const LoadedJob& j, const SheetLog& log, const SheetTimer& timer,
+                              std::string_view picture_svg, std::string_view program) {
+  return document_html(sheet_document(j, log, timer, program), picture_svg);
+}
 
 }  // namespace usina::job

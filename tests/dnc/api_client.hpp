@@ -21,6 +21,8 @@ struct Reply {
   int status = 0;
   std::string body;
   std::string retry_after;
+  std::string content_type;
+  std::string content_security_policy;
 
   nlohmann::json json() const { return nlohmann::json::parse(body, nullptr, false); }
 };
@@ -51,6 +53,10 @@ Reply round_trip(Stream& stream, const bhttp::request<bhttp::string_body>& req) 
   r.body = parser.get().body();
   if (auto it = parser.get().find(bhttp::field::retry_after); it != parser.get().end())
     r.retry_after = std::string(it->value());
+  if (auto it = parser.get().find(bhttp::field::content_type); it != parser.get().end())
+    r.content_type = std::string(it->value());
+  if (auto it = parser.get().find("Content-Security-Policy"); it != parser.get().end())
+    r.content_security_policy = std::string(it->value());
   return r;
 }
 

@@ -211,10 +211,10 @@ TEST_P(StoreLibrary, AStoreOfAnOlderSchemaGetsItsRevisionsFactsWhenOpened) {
     auto db = raw();
     ASSERT_TRUE(db);
     // The store as version 5 left it: no facts, no tools.
-    ASSERT_TRUE(
-        db->script("DROP TABLE revision_tools; DROP TABLE revision_facts; "
-                   "DROP INDEX programs_by_class; DROP TABLE tool_resets; "
-                   "DELETE FROM schema_version WHERE version >= 6"));
+    ASSERT_TRUE(db->script(
+        "DROP TABLE revision_tools; DROP TABLE revision_facts; "
+        "DROP INDEX programs_by_class; DROP TABLE tool_resets; DROP TABLE revision_sheets; "
+        "DELETE FROM schema_version WHERE version >= 6"));
   }
   auto s = open();
   ASSERT_TRUE(s);

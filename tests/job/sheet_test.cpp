@@ -2,11 +2,15 @@
 // with its tool, stick-out, speeds and time, the times adding up to stats'
 // cycle time, the author's text escaped; and the sheet's file as safe as
 // the program's (never an input, never the program, nothing when the job
-// fails).
+// fails); the PDF sheet says what the HTML one says, on A4 pages, and its
+// format is its extension's.
 #include "job/sheet.hpp"
 
+#include <filesystem>
 #include <numbers>
+#include <regex>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "canon/sink.hpp"
@@ -14,6 +18,7 @@
 #include "job_test_util.hpp"
 #include "sim/stats.hpp"
 #include "support/files.hpp"
+#include "support/pdf.hpp"
 #include "support/usina_process.hpp"
 
 namespace usina::job {
@@ -131,8 +136,9 @@ TEST(SetupSheetCli, ThePlateExampleWritesTheProgramAndItsSheet) {
 
 TEST(SetupSheetCli, TheSheetIsNeverTheProgramNorAnInput) {
   const test::TempDir dir;
-  const std::string job = dir.write("job.toml", testing::job_text(kTwoOperations));
-  const std::string same = dir.path("same.out");
+  // Named as a sheet may be: the rule refused is the input's, not the extension's.
+  const std::string job = dir.write("job.html", testing::job_text(kTwoOperations));
+  const std::string same = dir.path("same.html");
   test::Run r = test::usina("job " + quote(job) + " --post rs274ngc -o " + quote(same) +
                             " --sheet " + quote(same));
   EXPECT_EQ(r.status, 2);
@@ -157,6 +163,127 @@ TEST(SetupSheetCli, AJobWithAnErrorLeavesNoSheet) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_FALSE(test::exists(dir.path("p.html")));
   EXPECT_FALSE(test::exists(dir.path("p.ngc")));
+}
+
+// `usina job JOB --post fanuc -o DIR/p.nc --sheet DIR/SHEET`.
+test::Run job_with_sheet(const std::string& job, const test::TempDir& dir,
+                         const std::string& sheet) {
+  return test::usina("job " + quote(job) + " --post fanuc -o " + quote(dir.path("p.nc")) +
+                     " --sheet " + quote(dir.path(sheet)));
+}
+
+TEST(SetupSheetCli, ThePdfSheetHoldsTheToolsAndTheCycleTimeOfTheHtmlOne) {
+  const test::TempDir dir;
+  const std::string job = testing::repo("examples/jobs/plate.toml");
+  test::Run r = job_with_sheet(job, dir, "plate.html");
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = job_with_sheet(job, dir, "plate.pdf");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string pdf = test::slurp(dir.path("plate.pdf"));
+  EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
+  // The title, the facts, the picture and the five tools on the first
+  // page; the operations' rows, with their reasons, and the totals on the
+  // second (measured: DejaVu Sans, Debian 12's cairo 1.16).
+  EXPECT_EQ(test::pdf_pages(pdf), 2u);
+  const std::string html = test::slurp(dir.path("plate.html"));
+  const auto text = test::pdf_text(dir.path("plate.pdf"));
+  if (!text) GTEST_SKIP() << "pdftotext (poppler-utils, scripts/setup.sh) is not installed";
+  const std::regex tool_row("<tr><td>(T[0-9]+)</td><td>([^<(]+) \\(");
+  std::size_t tools = 0;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), tool_row);
+       it != std::sregex_iterator(); ++it, ++tools) {
+    EXPECT_NE(text->find((*it)[1].str()), std::string::npos) << (*it)[1];
+    EXPECT_NE(text->find((*it)[2].str()), std::string::npos) << (*it)[2];
+  }
+  EXPECT_GE(tools, 4u) << html;
+  std::smatch cycle;
+  ASSERT_TRUE(std::regex_search(html, cycle, std::regex("Cycle time</th><td>([^(]+) \\(")));
+  EXPECT_NE(text->find("Cycle time"), std::string::npos);
+  EXPECT_NE(text->find(cycle[1].str()), std::string::npos) << cycle[1] << "\n" << *text;
+  EXPECT_NE(text->find("an hour of the machine"), std::string::npos);
+  EXPECT_NE(text->find("Setup sheet: plate — page 2"), std::string::npos);
+}
+
+TEST(SetupSheetCli, ALongSetupNoteCarriesOnToAnotherPage) {
+  const test::TempDir dir;
+  std::string note;
+  for (int i = 1; i <= 120; ++i)
+    note += fmt::format("clamp {} at the left jaw\\n", i);
+  std::string text = testing::job_text(kTwoOperations);
+  text.replace(text.find("name = \"test\""), 13, "name = \"test\"\nsetup_note = \"" + note + "\"");
+  const std::string job = dir.write("job.toml", text);
+  const std::string short_job = dir.write("short.toml", testing::job_text(kTwoOperations));
+  ASSERT_EQ(job_with_sheet(short_job, dir, "short.pdf").status, 0);
+  const test::Run r = job_with_sheet(job, dir, "long.pdf");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::size_t short_pages = test::pdf_pages(test::slurp(dir.path("short.pdf")));
+  EXPECT_GE(short_pages, 1u);
+  // 120 lines of 11 pt: more than a page of 758 pt on their own.
+  EXPECT_GE(test::pdf_pages(test::slurp(dir.path("long.pdf"))), short_pages + 2);
+  const auto pdf_text = test::pdf_text(dir.path("long.pdf"));
+  if (!pdf_text) GTEST_SKIP() << "pdftotext (poppler-utils, scripts/setup.sh) is not installed";
+  EXPECT_NE(pdf_text->find("clamp 1 at the left jaw"), std::string::npos);
+  EXPECT_NE(pdf_text->find("clamp 120 at the left jaw"), std::string::npos);
+}
+
+TEST(SetupSheetCli, TheExtensionChoosesTheFormatAndAnyOtherIsRefused) {
+  const test::TempDir dir;
+  const std::string job = dir.write("job.toml", testing::job_text(kTwoOperations));
+  for (const char* sheet : {"p.txt", "p", "p.pdf.bak", "p.svg"}) {
+    const test::Run r = job_with_sheet(job, dir, sheet);
+    EXPECT_EQ(r.status, 2) << sheet;
+    EXPECT_NE(r.err.find("the extension chooses the sheet's format"), std::string::npos) << r.err;
+    EXPECT_FALSE(test::exists(dir.path(sheet)));
+    EXPECT_FALSE(test::exists(dir.path("p.nc")));  // refused before anything was written
+  }
+  ASSERT_EQ(job_with_sheet(job, dir, "upper.PDF").status, 0);
+  EXPECT_EQ(test::slurp(dir.path("upper.PDF")).rfind("%PDF-", 0), 0u);
+  ASSERT_EQ(job_with_sheet(job, dir, "page.htm").status, 0);
+  EXPECT_EQ(test::slurp(dir.path("page.htm")).rfind("<!DOCTYPE html>", 0), 0u);
+}
+
+TEST(SetupSheetCli, AJobWithAnErrorLeavesAnOldPdfSheetAsItWas) {
+  const test::TempDir dir;
+  const std::string job = dir.write(
+      "job.toml", testing::job_text("[[operation]]\ntype = \"pocket\"\nlayer = \"NO_SUCH\"\n"
+                                    "depth = 4.0\ntool = \"auto\"\n"));
+  const std::string old = dir.write("p.pdf", "the sheet of yesterday");
+  const test::Run r = job_with_sheet(job, dir, "p.pdf");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(test::slurp(old), "the sheet of yesterday");
+  EXPECT_FALSE(test::exists(dir.path("p.nc")));
+  const test::Run fresh = job_with_sheet(job, dir, "new.pdf");
+  EXPECT_EQ(fresh.status, 1);
+  EXPECT_FALSE(test::exists(dir.path("new.pdf")));
+}
+
+TEST(SetupSheetCli, APdfSheetIsNeverAnInput) {
+  const test::TempDir dir;
+  const std::string job = dir.write("job.pdf", testing::job_text(kTwoOperations));
+  const std::string before = test::slurp(job);
+  const test::Run r = test::usina("job " + quote(job) + " --post fanuc -o " +
+                                  quote(dir.path("p.nc")) + " --sheet " + quote(job));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(test::slurp(job), before);
+  EXPECT_FALSE(test::exists(dir.path("p.nc")));
+}
+
+// docs/cli.md's rules for every output: a folder is refused before
+// anything is written; a character device is written in place, never
+// replaced.
+TEST(SetupSheetCli, APdfSheetFollowsTheOutputRulesForAFolderAndADevice) {
+  const test::TempDir dir;
+  const std::string job = dir.write("job.toml", testing::job_text(kTwoOperations));
+  std::filesystem::create_directory(dir.path("folder.pdf"));
+  test::Run r = job_with_sheet(job, dir, "folder.pdf");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_FALSE(test::exists(dir.path("p.nc")));
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path("folder.pdf")));
+  std::filesystem::create_symlink("/dev/null", dir.path("null.pdf"));
+  r = job_with_sheet(job, dir, "null.pdf");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path("null.pdf")));
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
 }
 
 }  // namespace
