@@ -1,8 +1,8 @@
 // The page's end-to-end test: a real `usina serve` with a fresh store, the
 // page built into a scratch folder, Debian's chromium driven headless by
 // playwright-core. Logs in, uploads the seed 000 program, checks its
-// diagnostics and its 3D view, a click on a move, its stock replayed
-// (stock.mjs), the machines page, a
+// diagnostics and its 3D view, a click on a move, its 2D drawing
+// (drawing.mjs), its stock replayed (stock.mjs), the machines page, a
 // program made from the elliptical pocket's form (forms.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
@@ -11,6 +11,7 @@
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { libraryFlow, listed, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
+import { drawingFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { replayFlow } from './replay.mjs';
@@ -59,7 +60,8 @@ async function run() {
   page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
   const formRefusal = (text) => /status of 400/.test(text) && formRefusals > 0 && formRefusals-- > 0;
   const elsewhere = [];
-  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
+  // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched.
+  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith(`blob:${base}/`) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
   page.setDefaultTimeout(20000);
 
   // Login.
@@ -127,6 +129,8 @@ async function run() {
   check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+\d+ min \d+ s(\s+\S+( min \d+)? s){3}\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[\d.]+( min \d+)? s/.test(figures), `the figures: cycle time, bounds, the time and distances of T1 and T2 (${JSON.stringify(figures)})`);
   await page.evaluate(() => document.getElementById('stats').scrollIntoView({ block: 'start' }));
   await shot(page, 'web-figures.png', false);
+  const seedRev = (await harness.api('boss', 'GET', '/api/programs/seed-000')).json.revisions[0].revision;
+  await drawingFlow(page, { check, shot }, seedRev); // the 2D drawing, SVG and DXF (drawing.mjs)
   await stockFlow(page, { check, shot }); // the stock and its replay (stock.mjs)
 
   // The library lists and finds it.
