@@ -3,7 +3,8 @@
 // playwright-core. Logs in, uploads the seed 000 program, checks its
 // diagnostics and its 3D view, a click on a move, its 2D drawing
 // (drawing.mjs), its stock replayed (stock.mjs), the machines page, a
-// program made from the elliptical pocket's form (forms.mjs), a library of
+// program made from the elliptical pocket's form (forms.mjs), a folder
+// imported (import.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
@@ -14,6 +15,7 @@ import { libraryFlow, listed, machineFlow, reviewFlow, zoomFlow } from './flows.
 import { drawingFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
+import { importFlow } from './import.mjs';
 import { replayFlow } from './replay.mjs';
 import { stockFlow } from './stock.mjs';
 import { usersFlow } from './users.mjs';
@@ -32,8 +34,10 @@ function check(ok, what) {
 }
 
 // The 409 of POST /api/users/boss (users.mjs): the only admin stays one.
-function lastAdminRefusal(m) {
-  return /status of 409/.test(m.text()) && /\/api\/users\/boss$/.test(m.location().url ?? '');
+// The 409 of POST /api/programs (import.mjs): a file named as a program of
+// another machine class.
+function askedConflict(m) {
+  return /status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(m.location().url ?? '');
 }
 
 async function shot(page, name, top = true) {
@@ -54,7 +58,7 @@ async function run() {
   page.on('pageerror', (e) => errors.push(String(e)));
   // The refusals the test asks for (a wrong password, an operator's
   // approval, demoting the only admin: users.mjs) are no errors of the page.
-  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !lastAdminRefusal(m) && errors.push(m.text()));
+  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !askedConflict(m) && errors.push(m.text()));
   // A form's field the server refuses (forms.mjs) is a 400 of /api/forms/ only.
   let formRefusals = 0;
   page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
@@ -155,6 +159,7 @@ async function run() {
   await machineFlow(page, harness, t, second);
   await libraryFlow(page, harness, t);
   await formsFlow(page, harness, t);
+  await importFlow(page, harness, t);
   await zoomFlow(page, harness, t, second);
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);
