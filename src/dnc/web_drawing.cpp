@@ -55,9 +55,9 @@ tl::expected<std::string, std::string> dxf_text(const draw::Drawing& drawing) {
   return std::string(data, size);
 }
 
-std::string stopped_note(const core::Diagnostic& d) {
-  return fmt::format("the program stops at line {} ({}: {}); the drawing shows what ran before",
-                     d.loc.line, core::code_name(d.code), d.message);
+std::string stop_of(const core::Diagnostic& d) {
+  return fmt::format("the program stops at line {} ({}: {})", d.loc.line, core::code_name(d.code),
+                     d.message);
 }
 
 // The run into `builder`; the first error, if the run stopped on one.
@@ -102,11 +102,12 @@ DrawingAnswer program_drawing(std::string_view text, const DrawingSettings& sett
   limits.max_polyline_points = settings.max_entities * 4;
   draw::DrawingBuilder builder(drawing, settings.view, {}, limits);
   const std::optional<core::Diagnostic> error = run_into(builder, *dialect, text, settings);
-  if (error && drawing.entity_count() == 0) return refused(422, stopped_note(*error));
+  if (error && drawing.entity_count() == 0)
+    return refused(422, "nothing to draw: " + stop_of(*error) + " before its first move");
   DrawingAnswer a;
   if (error) {
     a.complete = false;
-    a.note = stopped_note(*error);
+    a.note = stop_of(*error) + "; the drawing shows what ran before";
   } else if (auto full = builder.limit_note()) {
     a.complete = false;
     a.note = *full;

@@ -64,6 +64,7 @@ TEST(WebDrawing, AProgramStoppedByAnErrorIsDrawnUpToItWithANote) {
   ASSERT_EQ(a.status, 200u) << a.note;
   EXPECT_FALSE(a.complete);
   EXPECT_NE(a.note.find("stops at line 3"), std::string::npos) << a.note;
+  EXPECT_NE(a.note.find("the drawing shows what ran before"), std::string::npos) << a.note;
   EXPECT_NE(a.body.find("x2=\"20\""), std::string::npos) << a.body;
   // The move to Y70 after the error is not drawn: the picture is 20 mm wide, flat.
   EXPECT_EQ(a.body.find("70"), std::string::npos) << a.body;
@@ -72,7 +73,8 @@ TEST(WebDrawing, AProgramStoppedByAnErrorIsDrawnUpToItWithANote) {
 TEST(WebDrawing, AnErrorBeforeAnyMoveIs422WithItsLine) {
   const DrawingAnswer a = program_drawing("G999\nG1 X20 F100\n", DrawingSettings{});
   EXPECT_EQ(a.status, 422u);
-  EXPECT_NE(a.note.find("line 1"), std::string::npos) << a.note;
+  EXPECT_EQ(a.note.rfind("nothing to draw: the program stops at line 1 (", 0), 0u) << a.note;
+  EXPECT_NE(a.note.find("before its first move"), std::string::npos) << a.note;
   EXPECT_TRUE(a.body.empty());
 }
 
@@ -207,7 +209,8 @@ TEST_F(WebDrawingRoute, ARevisionWithAnErrorIsDrawnUpToItAndSaysSo) {
   const std::string nothing = upload("nothing", "G999\nG1 X20 F100\n");
   const test::Reply refused = drawing("nothing", nothing);
   EXPECT_EQ(refused.status, 422) << refused.body;
-  EXPECT_NE(refused.json().value("error", "").find("line 1"), std::string::npos) << refused.body;
+  EXPECT_NE(refused.json().value("error", "").find("nothing to draw"), std::string::npos)
+      << refused.body;
 }
 
 TEST_F(WebDrawingRoute, RefusalsBeforeAnythingRuns) {

@@ -63,3 +63,23 @@ export async function drawingFlow(page, t, rev) {
   await page.getByLabel('Drawing view').selectOption('part');
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer="CONTOUR"]'));
 }
+
+// A drawing that is not whole, and one that cannot be made, on their
+// program pages: the note of the first as an alert under a picture, the
+// server's 422 instead of a picture for the second.
+export async function drawingNotesFlow(page, h, t) {
+  const up = async (name, text) => (await h.api('boss', 'POST', '/api/programs', { name, text, dialect: 'rs274ngc' })).json.revision;
+  const broken = await up('draw-broken', 'G0 X0 Y0 Z0\nG1 X20 F100\nG999\nG1 Y70\nM2\n');
+  const nothing = await up('draw-nothing', 'G999\nG1 X20 F100\nM2\n');
+  await page.goto(`${h.base}/#/program/draw-broken/${broken}`);
+  await page.getByRole('heading', { name: 'Program draw-broken' }).waitFor();
+  await page.locator('#drawing-status[role="alert"]').waitFor();
+  const note = await page.locator('#drawing-status').innerText();
+  const img = await page.locator('#drawing img').count();
+  t.check(img === 1 && /^Not all of it is drawn: the program stops at line 3 \(/.test(note), `a drawing stopped by an error shows what ran, and says why ("${note}")`);
+  await page.goto(`${h.base}/#/program/draw-nothing/${nothing}`);
+  await page.getByRole('heading', { name: 'Program draw-nothing' }).waitFor();
+  await page.locator('#drawing-status[role="alert"]').waitFor();
+  const refused = await page.locator('#drawing-status').innerText();
+  t.check((await page.locator('#drawing img').count()) === 0 && /^No drawing \(422\): nothing to draw: the program stops at line 1 \(.*before its first move$/.test(refused) && (await page.locator('#drawing-svg').isHidden()), `nothing to draw: the server's reason instead of a picture ("${refused}")`);
+}

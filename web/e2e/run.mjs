@@ -12,7 +12,7 @@
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { libraryFlow, listed, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
-import { drawingFlow } from './drawing.mjs';
+import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { importFlow } from './import.mjs';
@@ -36,8 +36,10 @@ function check(ok, what) {
 // The 409 of POST /api/users/boss (users.mjs): the only admin stays one.
 // The 409 of POST /api/programs (import.mjs): a file named as a program of
 // another machine class.
-function askedConflict(m) {
-  return /status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(m.location().url ?? '');
+// The 422 of a drawing with nothing to draw (drawing.mjs).
+function askedRefusal(m) {
+  const url = m.location().url ?? '';
+  return (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) || (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url));
 }
 
 async function shot(page, name, top = true) {
@@ -58,7 +60,7 @@ async function run() {
   page.on('pageerror', (e) => errors.push(String(e)));
   // The refusals the test asks for (a wrong password, an operator's
   // approval, demoting the only admin: users.mjs) are no errors of the page.
-  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !askedConflict(m) && errors.push(m.text()));
+  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !askedRefusal(m) && errors.push(m.text()));
   // A form's field the server refuses (forms.mjs) is a 400 of /api/forms/ only.
   let formRefusals = 0;
   page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
@@ -160,6 +162,7 @@ async function run() {
   await libraryFlow(page, harness, t);
   await formsFlow(page, harness, t);
   await importFlow(page, harness, t);
+  await drawingNotesFlow(page, harness, t);
   await zoomFlow(page, harness, t, second);
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);

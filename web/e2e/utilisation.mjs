@@ -17,7 +17,7 @@ export async function utilisationFlow(page, h, t, rev) {
   const height = Number(await bar.getAttribute('height'));
   const labels = await page.locator('#util-romi-1-chart text').allTextContents();
   const title = await page.locator('#util-romi-1-chart > title').textContent();
-  t.check(today.running_seconds >= 83.5 && height > 0 && bars === 14 && labels.includes('Utilisation') && labels.includes('Day (UTC)') && /utilisation per day/.test(title), `the chart has a bar for today of the server's ${want.toFixed(4)} % (${today.running_seconds} s running; ${bars} days; axes labelled)`);
+  t.check(today.running_seconds >= 83.5 && height > 0 && bars === 14 && labels.includes('Utilisation') && labels.includes('Day (UTC)') && labels.includes('0.10 %') && labels.includes('0.02 %') && /utilisation per day/.test(title), `the chart has a bar for today of the server's ${want.toFixed(4)} % (${today.running_seconds} s running; ${bars} days; axes labelled, ticks ${labels.filter((l) => l.endsWith(' %')).join(', ')})`);
 
   await page.locator('#util-romi-1 summary').focus();
   await page.keyboard.press('Enter');
