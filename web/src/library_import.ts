@@ -75,70 +75,93 @@ function resultLine(p: Planned, result: string, kind: 'ok' | 'error' | 'skipped'
   return h('li', { class: kind, 'data-result': kind, 'data-file': p.path }, h('strong', { text: p.path }), ` → ${p.name}: ${result}`);
 }
 
-export function importForm(dialects: string[], imported: () => void): HTMLElement {
-  const folder = h('input', { type: 'file', multiple: true, webkitdirectory: true });
-  const files = h('input', { type: 'file', multiple: true });
-  const drop = h('p', { class: 'drop', text: 'or drop several files here' });
-  const dialect = h('select', {}, h('option', { value: '', text: 'guessed from each file' }), ...dialects.map((d) => h('option', { value: d, text: d })));
-  const machineClass = h('input', { autocomplete: 'off' });
-  const reason = h('input', { autocomplete: 'off' });
-  const go = h('button', { type: 'submit', text: 'Import', disabled: true });
-  const said = status('import-status');
-  const results = h('ol', { id: 'import-results', class: 'import-results', 'aria-label': 'Imported files' });
-  let chosen: File[] = [];
-  const choose = (list: File[]) => {
-    chosen = list;
-    results.replaceChildren();
+function plural(n: number): string {
+  return `${n} ${n === 1 ? 'file' : 'files'}`;
+}
+
+// The form's controls and the files chosen last.
+class FolderImport {
+  readonly folder = h('input', { type: 'file', multiple: true, webkitdirectory: true });
+  readonly files = h('input', { type: 'file', multiple: true });
+  readonly drop = h('p', { class: 'drop', text: 'or drop several files here' });
+  readonly dialect: HTMLSelectElement;
+  readonly machineClass = h('input', { autocomplete: 'off' });
+  readonly reason = h('input', { autocomplete: 'off' });
+  readonly go = h('button', { type: 'submit', text: 'Import', disabled: true });
+  readonly said = status('import-status');
+  readonly results = h('ol', { id: 'import-results', class: 'import-results', 'aria-label': 'Imported files' });
+  private chosen: File[] = [];
+
+  constructor(dialects: string[]) {
+    this.dialect = h('select', {}, h('option', { value: '', text: 'guessed from each file' }), ...dialects.map((d) => h('option', { value: d, text: d })));
+  }
+
+  private say(text: string, alert: boolean): void {
+    this.said.setAttribute('role', alert ? 'alert' : 'status');
+    this.said.textContent = text;
+  }
+
+  // A new selection: refused whole past the limits, else ready to import.
+  choose(list: File[]): void {
+    this.chosen = list;
+    this.results.replaceChildren();
     const why = refusal(list);
-    said.setAttribute('role', why ? 'alert' : 'status');
-    said.textContent = why || `${list.length} ${list.length === 1 ? 'file' : 'files'} chosen (${list.reduce((n, f) => n + f.size, 0)} bytes).`;
-    go.disabled = !!why || list.length === 0;
-    go.textContent = list.length && !why ? `Import ${list.length} ${list.length === 1 ? 'file' : 'files'}` : 'Import';
-  };
-  folder.addEventListener('change', () => choose([...(folder.files ?? [])]));
-  files.addEventListener('change', () => choose([...(files.files ?? [])]));
-  drop.addEventListener('dragover', (e) => e.preventDefault());
-  drop.addEventListener('drop', (e) => {
+    this.say(why || `${plural(list.length)} chosen (${list.reduce((n, f) => n + f.size, 0)} bytes).`, !!why);
+    this.go.disabled = !!why || list.length === 0;
+    this.go.textContent = list.length && !why ? `Import ${plural(list.length)}` : 'Import';
+  }
+
+  // Each file in turn, its result listed as it comes.
+  async run(): Promise<void> {
+    if (this.go.disabled) return;
+    this.go.disabled = true;
+    const planned = plan(this.chosen);
+    const o = { dialect: this.dialect.value, machineClass: this.machineClass.value, reason: this.reason.value };
+    let ok = 0;
+    this.results.replaceChildren();
+    for (const [i, p] of planned.entries()) {
+      this.said.textContent = `Importing ${i + 1} of ${planned.length}: ${p.path}…`;
+      if (p.skip) {
+        this.results.append(resultLine(p, `skipped: ${p.skip}`, 'skipped'));
+        continue;
+      }
+      const r = await upload(p, o);
+      if (r.ok) ok++;
+      this.results.append(resultLine(p, r.text, r.ok ? 'ok' : r.text.startsWith('skipped') ? 'skipped' : 'error'));
+    }
+    const missed = planned.length - ok;
+    this.say(`${ok} of ${plural(planned.length)} imported${missed ? `; ${missed} not (listed below)` : ''}.`, missed > 0);
+    this.go.disabled = false;
+  }
+}
+
+export function importForm(dialects: string[], imported: () => void): HTMLElement {
+  const f = new FolderImport(dialects);
+  f.folder.addEventListener('change', () => f.choose([...(f.folder.files ?? [])]));
+  f.files.addEventListener('change', () => f.choose([...(f.files.files ?? [])]));
+  f.drop.addEventListener('dragover', (e) => e.preventDefault());
+  f.drop.addEventListener('drop', (e) => {
     e.preventDefault();
-    choose([...(e.dataTransfer?.files ?? [])]);
+    f.choose([...(e.dataTransfer?.files ?? [])]);
   });
   const form = h(
     'form',
     { class: 'card', 'aria-labelledby': 'import-h' },
     h('h2', { id: 'import-h', text: 'Import a folder' }),
     h('p', { class: 'note', text: `Each file becomes a program named after it (or a new revision of the program of that name). At most ${MAX_FILES} files and ${MAX_TOTAL_BYTES >> 20} MiB at a time, ${MAX_FILE_BYTES >> 20} MiB a file.` }),
-    field('Folder', folder, 'import-folder'),
-    field('Files', files, 'import-files'),
-    drop,
-    field('Dialect of the files', dialect, 'import-dialect'),
-    field('Machine class of the files (optional)', machineClass, 'import-class'),
-    field('Reason of the import (optional)', reason, 'import-reason'),
-    go,
-    said,
-    results,
+    field('Folder', f.folder, 'import-folder'),
+    field('Files', f.files, 'import-files'),
+    f.drop,
+    field('Dialect of the files', f.dialect, 'import-dialect'),
+    field('Machine class of the files (optional)', f.machineClass, 'import-class'),
+    field('Reason of the import (optional)', f.reason, 'import-reason'),
+    f.go,
+    f.said,
+    f.results,
   );
-  form.addEventListener('submit', async (e) => {
+  form.addEventListener('submit', (e) => {
     e.preventDefault();
-    if (go.disabled) return;
-    go.disabled = true;
-    const planned = plan(chosen);
-    const o = { dialect: dialect.value, machineClass: machineClass.value, reason: reason.value };
-    let ok = 0;
-    results.replaceChildren();
-    for (const [i, p] of planned.entries()) {
-      said.textContent = `Importing ${i + 1} of ${planned.length}: ${p.path}…`;
-      if (p.skip) {
-        results.append(resultLine(p, `skipped: ${p.skip}`, 'skipped'));
-        continue;
-      }
-      const r = await upload(p, o);
-      if (r.ok) ok++;
-      results.append(resultLine(p, r.text, r.ok ? 'ok' : r.text.startsWith('skipped') ? 'skipped' : 'error'));
-    }
-    said.setAttribute('role', ok === planned.length ? 'status' : 'alert');
-    said.textContent = `${ok} of ${planned.length} ${planned.length === 1 ? 'file' : 'files'} imported${ok < planned.length ? `; ${planned.length - ok} not (listed below)` : ''}.`;
-    go.disabled = false;
-    imported();
+    void f.run().then(imported);
   });
   return form;
 }

@@ -47,86 +47,103 @@ function noteOf(headers: Headers): string {
   }
 }
 
-export function drawingPanel(base: string, name: string, rev: string): HTMLElement {
-  const view = h('select', {}, h('option', { value: 'part', text: 'Part: contour, holes, pockets' }), h('option', { value: 'toolpath', text: 'Tool path: every move by tool' }));
-  const said = status('drawing-status');
-  const picture = h('div', { class: 'drawing-picture', id: 'drawing' });
-  const layers = h('div');
-  const stem = `${name}-${rev.slice(0, 12)}`;
-  const svgLink = h('a', { id: 'drawing-svg', download: `${stem}.svg`, text: 'Download SVG', hidden: true });
-  const dxfLink = h('a', { id: 'drawing-dxf', href: '#', download: `${stem}.dxf`, text: 'Download DXF' });
-  const urls: string[] = [];
-  const objectUrl = (blob: Blob) => {
+// The panel's parts and its one drawing in flight at a time.
+class DrawingPanel {
+  readonly view = h('select', {}, h('option', { value: 'part', text: 'Part: contour, holes, pockets' }), h('option', { value: 'toolpath', text: 'Tool path: every move by tool' }));
+  readonly said = status('drawing-status');
+  readonly picture = h('div', { class: 'drawing-picture', id: 'drawing' });
+  readonly layers = h('div');
+  readonly svgLink = h('a', { id: 'drawing-svg', text: 'Download SVG', hidden: true });
+  readonly dxfLink = h('a', { id: 'drawing-dxf', href: '#', text: 'Download DXF' });
+  private urls: string[] = []; // the object URLs of the view shown
+  private asked = 0; // the newest request: older answers are dropped
+  private dxfView = ''; // the view whose DXF the link holds
+
+  constructor(
+    private readonly base: string,
+    private readonly name: string,
+    private readonly stem: string, // NAME-REV12
+  ) {}
+
+  private objectUrl(blob: Blob): string {
     const u = URL.createObjectURL(blob);
-    urls.push(u);
+    this.urls.push(u);
     return u;
-  };
-  let asked = 0;
-  let dxfView = '';
-  const load = async () => {
-    const n = ++asked;
-    const v = view.value as DrawingView;
-    said.textContent = 'Drawing…';
-    said.removeAttribute('role');
-    picture.setAttribute('aria-busy', 'true');
+  }
+
+  private alert(text: string): void {
+    this.said.setAttribute('role', 'alert');
+    this.said.textContent = text;
+  }
+
+  async load(): Promise<void> {
+    const n = ++this.asked;
+    const v = this.view.value as DrawingView;
+    this.said.textContent = 'Drawing…';
+    this.said.removeAttribute('role');
+    this.picture.setAttribute('aria-busy', 'true');
     try {
-      const { blob, headers } = await getFile(`${base}/drawing?view=${v}&format=svg`);
-      if (n !== asked) return;
-      while (urls.length) URL.revokeObjectURL(urls.pop() as string);
-      const src = objectUrl(blob);
-      const found = layersOf(await blob.text());
-      const img = h('img', { src, alt: `${v === 'part' ? 'Part drawing' : 'Tool path drawing'} of ${name} seen from above (layers ${found.map((l) => l.name).join(', ') || 'none'})` });
-      picture.replaceChildren(img);
-      layers.replaceChildren(legend(found));
-      svgLink.href = src;
-      svgLink.download = `${stem}-${v}.svg`;
-      svgLink.hidden = false;
-      dxfLink.href = '#';
-      dxfLink.download = `${stem}-${v}.dxf`;
-      dxfView = '';
-      const note = noteOf(headers);
-      const whole = headers.get('X-Drawing-Complete') !== 'false';
-      said.textContent = whole ? `Drawn: ${found.length} layers.` : `Not all of it is drawn: ${note}`;
-      if (!whole) said.setAttribute('role', 'alert');
+      const { blob, headers } = await getFile(`${this.base}/drawing?view=${v}&format=svg`);
+      if (n === this.asked) this.show(v, blob, layersOf(await blob.text()), headers);
     } catch (e) {
-      if (n !== asked) return;
-      picture.replaceChildren();
-      layers.replaceChildren();
-      svgLink.hidden = true;
-      said.setAttribute('role', 'alert');
-      said.textContent = e instanceof ApiError ? `No drawing (${e.status}): ${e.message}` : `No drawing: ${(e as Error).message}`;
+      if (n !== this.asked) return;
+      this.picture.replaceChildren();
+      this.layers.replaceChildren();
+      this.svgLink.hidden = true;
+      this.alert(e instanceof ApiError ? `No drawing (${e.status}): ${e.message}` : `No drawing: ${(e as Error).message}`);
     } finally {
-      if (n === asked) picture.setAttribute('aria-busy', 'false');
+      if (n === this.asked) this.picture.setAttribute('aria-busy', 'false');
     }
-  };
+  }
+
+  private show(v: DrawingView, blob: Blob, found: Layer[], headers: Headers): void {
+    while (this.urls.length) URL.revokeObjectURL(this.urls.pop() as string);
+    const src = this.objectUrl(blob);
+    const what = v === 'part' ? 'Part drawing' : 'Tool path drawing';
+    this.picture.replaceChildren(h('img', { src, alt: `${what} of ${this.name} seen from above (layers ${found.map((l) => l.name).join(', ') || 'none'})` }));
+    this.layers.replaceChildren(legend(found));
+    this.svgLink.href = src;
+    this.svgLink.download = `${this.stem}-${v}.svg`;
+    this.svgLink.hidden = false;
+    this.dxfLink.href = '#';
+    this.dxfLink.download = `${this.stem}-${v}.dxf`;
+    this.dxfView = '';
+    if (headers.get('X-Drawing-Complete') === 'false') this.alert(`Not all of it is drawn: ${noteOf(headers)}`);
+    else this.said.textContent = `Drawn: ${found.length} layers.`;
+  }
+
   // The DXF is asked for on the first click of its link (a second run on the
-  // server), then the link is the file.
-  dxfLink.addEventListener('click', async (e) => {
-    if (dxfView === view.value) return;
+  // server), then the link is the file and is clicked again.
+  async dxf(e: Event): Promise<void> {
+    const v = this.view.value;
+    if (this.dxfView === v) return;
     e.preventDefault();
-    const v = view.value;
-    dxfLink.setAttribute('aria-busy', 'true');
+    this.dxfLink.setAttribute('aria-busy', 'true');
     try {
-      const { blob } = await getFile(`${base}/drawing?view=${v}&format=dxf`);
-      dxfLink.href = objectUrl(blob);
-      dxfView = v;
-      dxfLink.click();
+      const { blob } = await getFile(`${this.base}/drawing?view=${v}&format=dxf`);
+      this.dxfLink.href = this.objectUrl(blob);
+      this.dxfView = v;
+      this.dxfLink.click();
     } catch (err) {
-      said.setAttribute('role', 'alert');
-      said.textContent = `No DXF: ${(err as Error).message}`;
+      this.alert(`No DXF: ${(err as Error).message}`);
     } finally {
-      dxfLink.setAttribute('aria-busy', 'false');
+      this.dxfLink.setAttribute('aria-busy', 'false');
     }
-  });
-  view.addEventListener('change', () => void load());
-  void load();
+  }
+}
+
+export function drawingPanel(base: string, name: string, rev: string): HTMLElement {
+  const p = new DrawingPanel(base, name, `${name}-${rev.slice(0, 12)}`);
+  p.dxfLink.addEventListener('click', (e) => void p.dxf(e));
+  p.view.addEventListener('change', () => void p.load());
+  void p.load();
   return h(
     'section',
     { 'aria-labelledby': 'drawing-h', class: 'drawing-panel' },
     h('h2', { id: 'drawing-h', text: 'Drawing' }),
-    h('div', { class: 'drawing-controls' }, field('Drawing view', view, 'drawing-view'), svgLink, dxfLink),
-    said,
-    picture,
-    layers,
+    h('div', { class: 'drawing-controls' }, field('Drawing view', p.view, 'drawing-view'), p.svgLink, p.dxfLink),
+    p.said,
+    p.picture,
+    p.layers,
   );
 }
