@@ -40,6 +40,9 @@ constexpr std::array kRoutes{
     // The stock the revision leaves, frame by frame, for the viewer (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/stock", A::Permission, P::ReadPrograms,
              api_stock, api_stock_later},
+    // The 2D drawing, SVG or DXF, as usina draw makes it (docs/web.md, "The drawing").
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/drawing", A::Permission, P::ReadPrograms,
+             api_drawing, api_drawing_later},
     // The forms' fields, ranges and defaults (docs/dnc-server.md, "Forms for cycles").
     ApiRoute{V::get, "/api/forms", A::Permission, P::UploadRevision, api_form_specs},
     // A cycle's form made into a program, previewed (docs/dnc-server.md, "Forms for cycles").

@@ -106,6 +106,8 @@ HttpResponse api_tool_figures(ApiCall& c);  // web_toolpath_tools.cpp
 void api_tool_figures_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_stock(ApiCall& c);  // web_stock_api.cpp
 void api_stock_later(ApiCall& c, HttpAnswer answer);
+HttpResponse api_drawing(ApiCall& c);  // api_drawing.cpp
+void api_drawing_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_form_specs(ApiCall& c);    // api_forms.cpp
 HttpResponse api_form_preview(ApiCall& c);  // api_forms.cpp
 void api_form_preview_later(ApiCall& c, HttpAnswer answer);

@@ -2,6 +2,8 @@
 // connection a request): what a shop's script would do with curl.
 #pragma once
 
+#include <cctype>
+#include <map>
 #include <string>
 
 #include <boost/asio/connect.hpp>
@@ -21,8 +23,13 @@ struct Reply {
   int status = 0;
   std::string body;
   std::string retry_after;
-  std::string content_type;
-  std::string content_security_policy;
+  std::map<std::string, std::string> headers;  // by lower-case name
+
+  // The header's value, empty when there is none; `name` in lower case.
+  std::string header(const std::string& name) const {
+    const auto it = headers.find(name);
+    return it == headers.end() ? "" : it->second;
+  }
 
   nlohmann::json json() const { return nlohmann::json::parse(body, nullptr, false); }
 };
@@ -53,10 +60,12 @@ Reply round_trip(Stream& stream, const bhttp::request<bhttp::string_body>& req) 
   r.body = parser.get().body();
   if (auto it = parser.get().find(bhttp::field::retry_after); it != parser.get().end())
     r.retry_after = std::string(it->value());
-  if (auto it = parser.get().find(bhttp::field::content_type); it != parser.get().end())
-    r.content_type = std::string(it->value());
-  if (auto it = parser.get().find("Content-Security-Policy"); it != parser.get().end())
-    r.content_security_policy = std::string(it->value());
+  for (const auto& field : parser.get()) {
+    std::string name(field.name_string());
+    for (char& ch : name)
+      ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    r.headers[name] = std::string(field.value());
+  }
   return r;
 }
 

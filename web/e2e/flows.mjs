@@ -1,10 +1,11 @@
 // The browser test's second part (run.mjs runs it after the first): the
 // review by role, the revisions' diffs, a send watched to 100 % while the
-// control counts every byte, a part count rising on the control's punch,
-// a start from a block.
+// control counts every byte, a part count rising on the control's punch
+// and today's utilisation with it (utilisation.mjs), a start from a block.
 import { readFileSync } from 'node:fs';
 import { Control, text } from './control.mjs';
 import { PASSWORD } from './harness.mjs';
+import { utilisationFlow } from './utilisation.mjs';
 
 export async function logInAs(page, user) {
   if (await page.getByRole('button', { name: 'Log out' }).isVisible()) {
@@ -212,6 +213,8 @@ export async function machineFlow(page, h, t, first) {
     await page.waitForFunction((n) => Number(document.querySelector('#machine-romi-1 dd.parts')?.textContent) > n, parts);
     const cycle = await page.locator('#machine-romi-1 dd.cycle').innerText();
     t.check(cycle === '83.5 s', `the part count rises when the control reports a part (from ${parts}; last cycle ${cycle})`);
+    await utilisationFlow(page, h, t, first);
+    await t.shot(page, 'web-utilisation.png', false);
 
     const mark = control.mark();
     const d2 = await startJob(page, first, 'Send', 'block', 'N0150');

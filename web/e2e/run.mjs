@@ -1,9 +1,10 @@
 // The page's end-to-end test: a real `usina serve` with a fresh store, the
 // page built into a scratch folder, Debian's chromium driven headless by
 // playwright-core. Logs in, uploads the seed 000 program, checks its
-// diagnostics and its 3D view, a click on a move, its stock replayed
-// (stock.mjs), the machines page, a
-// program made from the elliptical pocket's form (forms.mjs), a library of
+// diagnostics and its 3D view, a click on a move, its 2D drawing
+// (drawing.mjs), its stock replayed (stock.mjs), the machines page, a
+// program made from the elliptical pocket's form (forms.mjs), a folder
+// imported (import.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
@@ -11,8 +12,10 @@
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { libraryFlow, listed, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
+import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
+import { importFlow } from './import.mjs';
 import { replayFlow } from './replay.mjs';
 import { stockFlow } from './stock.mjs';
 import { usersFlow } from './users.mjs';
@@ -31,8 +34,12 @@ function check(ok, what) {
 }
 
 // The 409 of POST /api/users/boss (users.mjs): the only admin stays one.
-function lastAdminRefusal(m) {
-  return /status of 409/.test(m.text()) && /\/api\/users\/boss$/.test(m.location().url ?? '');
+// The 409 of POST /api/programs (import.mjs): a file named as a program of
+// another machine class.
+// The 422 of a drawing with nothing to draw (drawing.mjs).
+function askedRefusal(m) {
+  const url = m.location().url ?? '';
+  return (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) || (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url));
 }
 
 async function shot(page, name, top = true) {
@@ -53,13 +60,14 @@ async function run() {
   page.on('pageerror', (e) => errors.push(String(e)));
   // The refusals the test asks for (a wrong password, an operator's
   // approval, demoting the only admin: users.mjs) are no errors of the page.
-  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !lastAdminRefusal(m) && errors.push(m.text()));
+  page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !askedRefusal(m) && errors.push(m.text()));
   // A form's field the server refuses (forms.mjs) is a 400 of /api/forms/ only.
   let formRefusals = 0;
   page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
   const formRefusal = (text) => /status of 400/.test(text) && formRefusals > 0 && formRefusals-- > 0;
   const elsewhere = [];
-  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
+  // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched.
+  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith(`blob:${base}/`) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
   page.setDefaultTimeout(20000);
 
   // Login.
@@ -127,6 +135,8 @@ async function run() {
   check(/Cycle/.test(figures) && /X\s+-?[\d.]+ mm\s+-?[\d.]+ mm/.test(figures) && /T1\s+\d+ min \d+ s(\s+\S+( min \d+)? s){3}\s+[1-9][\d.]* mm/.test(figures) && /T2\s+[\d.]+( min \d+)? s/.test(figures), `the figures: cycle time, bounds, the time and distances of T1 and T2 (${JSON.stringify(figures)})`);
   await page.evaluate(() => document.getElementById('stats').scrollIntoView({ block: 'start' }));
   await shot(page, 'web-figures.png', false);
+  const seedRev = (await harness.api('boss', 'GET', '/api/programs/seed-000')).json.revisions[0].revision;
+  await drawingFlow(page, { check, shot }, seedRev); // the 2D drawing, SVG and DXF (drawing.mjs)
   await stockFlow(page, { check, shot }); // the stock and its replay (stock.mjs)
 
   // The library lists and finds it.
@@ -151,6 +161,8 @@ async function run() {
   await machineFlow(page, harness, t, second);
   await libraryFlow(page, harness, t);
   await formsFlow(page, harness, t);
+  await importFlow(page, harness, t);
+  await drawingNotesFlow(page, harness, t);
   await zoomFlow(page, harness, t, second);
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);

@@ -163,4 +163,11 @@ export async function getBytes(path: string): Promise<ArrayBuffer> {
   return (await call('GET', path)).arrayBuffer();
 }
 
+// A file of the API (a drawing) with its answer's headers: the page shows
+// it through an object URL, never as markup of its own.
+export async function getFile(path: string): Promise<{ blob: Blob; headers: Headers }> {
+  const res = await call('GET', path);
+  return { blob: await res.blob(), headers: res.headers };
+}
+
 export const enc = encodeURIComponent;

@@ -1,8 +1,9 @@
 // The library: a page of programs at a time, filtered, searched and counted
 // by the server (GET /api/programs, docs/dnc-server.md "The library's
-// list"), and the upload of a file.
+// list"), the upload of a file and the import of a folder (library_import.ts).
 import { ApiError, enc, getJson, postJson, type LibraryList, type ProgramSummary } from './api';
 import { field, h, show, status } from './dom';
+import { importForm } from './library_import';
 import { mayUpload, sessionUser } from './roles';
 
 const DIALECTS = ['rs274ngc', 'fanuc', 'grbl', 'romi'];
@@ -21,11 +22,14 @@ function choices(label: string, values: string[]): HTMLSelectElement {
 
 export async function libraryPage(main: HTMLElement): Promise<void> {
   const [first, who] = await Promise.all([getJson<LibraryList>(`/api/programs?limit=${PAGE}`), sessionUser()]);
+  const programs = programsSection(first);
   show(
     main,
     'Library',
-    programsSection(first),
-    mayUpload(who.role) ? uploadForm() : h('p', { class: 'note', text: `You are ${who.role}: uploading programs is for programmers and admins.` }),
+    programs.element,
+    ...(mayUpload(who.role)
+      ? [h('div', { class: 'cards' }, uploadForm(), importForm(DIALECTS, programs.reload))]
+      : [h('p', { class: 'note', text: `You are ${who.role}: uploading programs is for programmers and admins.` })]),
   );
 }
 
@@ -85,7 +89,7 @@ function setClasses(select: HTMLSelectElement, classes: string[]): void {
 // asks the server for one page; an answer to an older request is dropped
 // (and its request cancelled), so the table always shows the newest ask.
 // The table is aria-busy from a change until its page is shown.
-function programsSection(first: LibraryList): HTMLElement {
+function programsSection(first: LibraryList): { element: HTMLElement; reload: () => void } {
   const f: Filters = {
     search: h('input', { type: 'search', placeholder: 'O1234, a comment, a name', autocomplete: 'off', maxlength: 200 }),
     tool: h('input', { id: 'library-tool', type: 'text', inputmode: 'numeric', placeholder: 'T5', autocomplete: 'off', size: 8, 'aria-describedby': 'library-tool-error' }),
@@ -159,7 +163,7 @@ function programsSection(first: LibraryList): HTMLElement {
   prev.addEventListener('click', now((at) => at - PAGE));
   next.addEventListener('click', now((at) => at + PAGE));
   shown(first);
-  return h(
+  const element = h(
     'section',
     { 'aria-labelledby': 'search-h' },
     h('h2', { id: 'search-h', text: 'Programs' }),
@@ -176,6 +180,7 @@ function programsSection(first: LibraryList): HTMLElement {
     table,
     h('div', { class: 'pager', role: 'group', 'aria-label': 'Pages' }, prev, where, next),
   );
+  return { element, reload: () => void load() };
 }
 
 function uploadForm(): HTMLElement {

@@ -1,10 +1,12 @@
 // The machines, live from the server's event stream: each machine's state,
 // its job's progress (bytes sent of the total, the block), its part count
-// and last cycle time; and, for a role that may, the job buttons
-// (machine_jobs.ts).
-import { enc, getJson, token, type Job, type Machine } from './api';
+// and last cycle time against the estimate of the program last sent; its
+// utilisation per day (machine_utilisation.ts); and, for a role that may,
+// the job buttons (machine_jobs.ts).
+import { enc, getJson, token, type Job, type Machine, type Revision } from './api';
 import { h, show, status } from './dom';
 import { jobForm, type JobForm } from './machine_jobs';
+import { utilisationPanel, type UtilisationPanel } from './machine_utilisation';
 import { mayRunJobs, sessionUser } from './roles';
 
 let socket: WebSocket | null = null;
@@ -22,6 +24,39 @@ interface Shown {
   job: Job | null;
   status: HTMLElement;
   form: JobForm | null;
+  utilisation: UtilisationPanel;
+  estimate: Estimate | null; // of the last job's revision
+}
+
+// The check's cycle time of the revision a machine was last sent.
+interface Estimate {
+  program: string;
+  revision: string;
+  seconds: number | null;
+}
+
+const estimates = new Map<string, Promise<number | null>>();
+
+function checkedCycle(program: string, revision: string): Promise<number | null> {
+  const key = `${program}/${revision}`;
+  let e = estimates.get(key);
+  if (!e) {
+    e = getJson<Revision>(`/api/programs/${enc(program)}/revisions/${revision}`).then(
+      (r) => r.checks?.cycle_time_s ?? null,
+      () => null,
+    );
+    estimates.set(key, e);
+  }
+  return e;
+}
+
+// "7 min 59.9 s of seed-000 (revision abc…); the last cycle 17 % of it".
+function estimateText(s: Shown): string {
+  const e = s.estimate;
+  if (!e || e.seconds === null) return '—';
+  const last = s.machine.last_cycle_seconds;
+  const ratio = last && e.seconds > 0 ? `; the last cycle took ${Math.round((100 * last) / e.seconds)} % of it` : '';
+  return `${e.seconds.toFixed(1)} s for ${e.program} (${e.revision.slice(0, 12)}), the check's${ratio}`;
 }
 
 const ENDED = ['done', 'interrupted', 'failed'];
@@ -50,6 +85,7 @@ function statusOf(s: Shown): HTMLElement[] {
     ['State', m.state, `state ${m.state}`],
     ['Parts', String(m.part_count ?? 0), 'parts'],
     ['Last cycle', m.last_cycle_seconds ? `${m.last_cycle_seconds.toFixed(1)} s` : '—', 'cycle'],
+    ['Estimate', estimateText(s), 'estimate'],
     ['Link', `${m.dialect}, ${m.mode}, ${m.port}${m.link_error ? ` — ${m.link_error}` : ''}`, 'link'],
   ];
   return [
@@ -62,6 +98,16 @@ function statusOf(s: Shown): HTMLElement[] {
 function render(s: Shown): void {
   s.status.replaceChildren(...statusOf(s));
   s.form?.update(s.machine, s.job);
+  const j = s.job;
+  if (j && (s.estimate?.program !== j.program || s.estimate?.revision !== j.revision)) {
+    const wanted: Estimate = { program: j.program, revision: j.revision, seconds: null };
+    s.estimate = wanted;
+    void checkedCycle(j.program, j.revision).then((seconds) => {
+      if (s.estimate !== wanted) return;
+      wanted.seconds = seconds;
+      s.status.replaceChildren(...statusOf(s));
+    });
+  }
 }
 
 export async function machinesPage(main: HTMLElement): Promise<void> {
@@ -69,7 +115,7 @@ export async function machinesPage(main: HTMLElement): Promise<void> {
   const runs = mayRunJobs(who.role);
   const shown = new Map<string, Shown>();
   const sections = list.machines.map((m) => {
-    const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null };
+    const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), estimate: null };
     if (runs) s.form = jobForm(m, () => shown.get(m.name)?.job ?? null);
     shown.set(m.name, s);
     render(s);
@@ -79,6 +125,7 @@ export async function machinesPage(main: HTMLElement): Promise<void> {
       h('h2', { id: `machine-${m.name}-h`, text: m.name }),
       s.status,
       s.form ? s.form.element : null,
+      s.utilisation.element,
     );
   });
   const live = status('live-status');
@@ -125,11 +172,13 @@ function listen(shown: Map<string, Shown>, live: HTMLElement): void {
       if (!s.job || s.job.state !== 'running' || j.job === s.job.job || j.state === 'running') s.job = j;
       render(s);
       if (ev.type !== 'job.progress') void refresh(shown, name);
+      if (ENDED.some((e) => ev.type === `job.${e}`)) s.utilisation.refresh();
     } else if (ev.type === 'machine.part') {
       if (ev.part_count !== undefined) s.machine.part_count = ev.part_count;
       if (ev.last_cycle_seconds !== undefined) s.machine.last_cycle_seconds = ev.last_cycle_seconds;
       render(s);
       void refresh(shown, name); // the control's count and message, too
+      s.utilisation.refresh();
     } else {
       void refresh(shown, name);
     }

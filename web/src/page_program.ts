@@ -1,8 +1,10 @@
 // A program: its text with line numbers and the check's diagnostics inline,
-// and the 3D viewer of its tool path (a click on a move shows its line; a
-// line's moves can be highlighted; the cut replays in time).
+// the 3D viewer of its tool path (a click on a move shows its line; a
+// line's moves can be highlighted; the cut replays in time) and its 2D
+// drawing.
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
+import { drawingPanel } from './program_drawing';
 import { replayPanel } from './program_replay';
 import { reviewPanel, revisionsPanel } from './program_review';
 import { statsPanel, type Figures } from './program_stats';
@@ -29,13 +31,14 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   const code = codePanel(revision.checks?.diagnostics ?? []);
   const viewerHost = h('div', { class: 'viewer', id: 'viewer' }, h('p', { class: 'status', text: 'Loading the tool path…' }));
   const statsHost = h('p', { class: 'status', text: 'The figures follow the tool path…' });
+  const split = h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision, (line) => code.onSelect(line)), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked));
   const again = () => void programPage(main, name, revision.revision).catch((e) => console.error(e));
   show(
     main,
     `Program ${program.name}`,
     summary(program, revision),
     reviewPanel(program, revision, who, again),
-    h('div', { class: 'split' }, h('section', { 'aria-labelledby': 'code-h', class: 'code-panel' }, h('h2', { id: 'code-h', text: 'Text' }), diagnosticList(revision, (line) => code.onSelect(line)), code.element), h('section', { 'aria-labelledby': 'view-h' }, h('h2', { id: 'view-h', text: 'Tool path' }), viewerHost, picked)),
+    split,
     statsHost,
     revisionsPanel(program, revision),
   );
@@ -43,6 +46,8 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   viewerHost.replaceChildren();
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
+  // The drawing after the 3D picture, which the shop looks at first.
+  split.append(drawingPanel(base, program.name, revision.revision));
   void getJson<Figures>(`${base}/tools`).then(
     (f) => statsHost.replaceWith(statsPanel(revision.checks, f)),
     (e: Error) => statsHost.replaceWith(statsPanel(revision.checks, e.message)),

@@ -1,0 +1,85 @@
+// The program page's 2D drawing (run.mjs runs it on the seed 000 program):
+// the part view shows as a picture with its four layers, the SVG is an
+// <img> of an object URL (no markup of it in the page), the DXF downloads
+// from the keyboard, and the tool-path view has a layer per tool.
+import { readFileSync } from 'node:fs';
+
+async function layers(page) {
+  await page.locator('#drawing[aria-busy="false"]').waitFor();
+  return page.locator('.drawing-layers li').evaluateAll((li) => li.map((x) => x.dataset.layer));
+}
+
+// The pixels of the drawing's picture that are not white, read back
+// through a canvas (the picture is an object URL of the page's own origin).
+function drawnPixels(page) {
+  return page.locator('#drawing img').evaluate((img) => {
+    const c = document.createElement('canvas');
+    c.width = img.clientWidth;
+    c.height = img.clientHeight;
+    const g = c.getContext('2d');
+    g.fillStyle = '#fff';
+    g.fillRect(0, 0, c.width, c.height);
+    g.drawImage(img, 0, 0, c.width, c.height);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] < 3 * 235) n++;
+    return n;
+  });
+}
+
+export async function drawingFlow(page, t, rev) {
+  await page.getByRole('heading', { name: 'Drawing', exact: true }).waitFor();
+  const shown = await layers(page);
+  await page.waitForFunction(() => {
+    const img = document.querySelector('#drawing img');
+    return img && img.complete && img.naturalWidth > 0;
+  });
+  const img = page.locator('#drawing img');
+  const [src, alt, width] = [await img.getAttribute('src'), await img.getAttribute('alt'), await img.evaluate((i) => i.naturalWidth)];
+  const inline = await page.locator('#drawing svg, .drawing-panel svg').count();
+  const drawn = await drawnPixels(page);
+  const svg = await page.evaluate(async (rev) => {
+    const r = await fetch(`/api/programs/seed-000/revisions/${rev}/drawing`, { headers: { Authorization: `Bearer ${sessionStorage.getItem('usina.token')}` } });
+    return r.text();
+  }, rev);
+  const four = ['CONTOUR', 'RAPID', 'HOLES', 'POCKETS'].every((l) => shown.includes(l) && svg.includes(`<g id="${l}"`));
+  t.check(four && src.startsWith('blob:') && width > 100 && drawn > 1000 && inline === 0 && /^Part drawing of seed-000/.test(alt), `the part drawing shows as a picture with its layers (${shown.join(', ')}; ${width} px wide, ${drawn} pixels drawn; "${alt}")`);
+  t.check(/^Drawn: \d+ layers\.$/.test(await page.locator('#drawing-status').innerText()), 'the drawing is whole');
+  await page.locator('.drawing-panel').scrollIntoViewIfNeeded();
+  await t.shot(page, 'web-drawing.png', false);
+
+  // The DXF from the keyboard: Enter on its link.
+  const download = page.waitForEvent('download');
+  await page.locator('#drawing-dxf').focus();
+  await page.keyboard.press('Enter');
+  const dl = await download;
+  const dxf = readFileSync(await dl.path(), 'latin1');
+  t.check(/\.dxf$/.test(dl.suggestedFilename()) && /SECTION/.test(dxf) && /\nCONTOUR\r?\n/.test(dxf) && /\nHOLES\r?\n/.test(dxf), `the DXF downloads from the keyboard (${dl.suggestedFilename()}, ${dxf.length} bytes)`);
+
+  await page.getByLabel('Drawing view').selectOption('toolpath');
+  await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer^="TOOLPATH_T"]'));
+  const tools = await layers(page);
+  t.check(tools.includes('TOOLPATH_T1') && tools.includes('TOOLPATH_T2') && !tools.includes('CONTOUR'), `the tool-path view has a layer per tool (${tools.join(', ')})`);
+  await page.getByLabel('Drawing view').selectOption('part');
+  await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer="CONTOUR"]'));
+}
+
+// A drawing that is not whole, and one that cannot be made, on their
+// program pages: the note of the first as an alert under a picture, the
+// server's 422 instead of a picture for the second.
+export async function drawingNotesFlow(page, h, t) {
+  const up = async (name, text) => (await h.api('boss', 'POST', '/api/programs', { name, text, dialect: 'rs274ngc' })).json.revision;
+  const broken = await up('draw-broken', 'G0 X0 Y0 Z0\nG1 X20 F100\nG999\nG1 Y70\nM2\n');
+  const nothing = await up('draw-nothing', 'G999\nG1 X20 F100\nM2\n');
+  await page.goto(`${h.base}/#/program/draw-broken/${broken}`);
+  await page.getByRole('heading', { name: 'Program draw-broken' }).waitFor();
+  await page.locator('#drawing-status[role="alert"]').waitFor();
+  const note = await page.locator('#drawing-status').innerText();
+  const img = await page.locator('#drawing img').count();
+  t.check(img === 1 && /^Not all of it is drawn: the program stops at line 3 \(/.test(note), `a drawing stopped by an error shows what ran, and says why ("${note}")`);
+  await page.goto(`${h.base}/#/program/draw-nothing/${nothing}`);
+  await page.getByRole('heading', { name: 'Program draw-nothing' }).waitFor();
+  await page.locator('#drawing-status[role="alert"]').waitFor();
+  const refused = await page.locator('#drawing-status').innerText();
+  t.check((await page.locator('#drawing img').count()) === 0 && /^No drawing \(422\): nothing to draw: the program stops at line 1 \(.*before its first move$/.test(refused) && (await page.locator('#drawing-svg').isHidden()), `nothing to draw: the server's reason instead of a picture ("${refused}")`);
+}
