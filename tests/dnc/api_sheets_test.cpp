@@ -55,7 +55,8 @@ TEST(ApiSheets, ASheetPutWithItsRevisionIsReadBackWithItsType) {
   ASSERT_EQ(r.status, 200);
   EXPECT_EQ(r.body, kHtml);
   EXPECT_EQ(r.header("content-type"), "text/html; charset=utf-8");
-  EXPECT_EQ(r.header("content-security-policy").rfind("sandbox;", 0), 0u) << r.header("content-security-policy");
+  EXPECT_EQ(r.header("content-security-policy").rfind("sandbox;", 0), 0u)
+      << r.header("content-security-policy");
   const auto sheets = c.get(base, oper).json()["sheets"];
   ASSERT_EQ(sheets.size(), 2u);
   EXPECT_EQ(sheets[0]["format"], "html");
