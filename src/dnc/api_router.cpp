@@ -60,6 +60,9 @@ constexpr std::array kRoutes{
     // A tool's count starts again: its insert or cutter was changed (docs/dnc.md).
     ApiRoute{V::post, "/api/machines/{}/tools/{}/reset", A::Permission, P::ResetToolLife,
              api_reset_tool},
+    ApiRoute{V::post, "/api/machines/{}/quality", A::Permission, P::RecordQuality,
+             api_record_quality},
+    ApiRoute{V::get, "/api/machines/{}/quality", A::Permission, P::ReadMachines, api_quality},
     ApiRoute{V::post, "/api/machines/{}/jobs", A::Permission, P::StartJob, api_start_job},
     ApiRoute{V::get, "/api/jobs/{}", A::Permission, P::ReadMachines, api_job},
     ApiRoute{V::post, "/api/jobs/{}/stop", A::Permission, P::StartJob, api_stop_job},

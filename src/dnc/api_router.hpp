@@ -118,6 +118,8 @@ HttpResponse api_machine(ApiCall& c);
 HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
 HttpResponse api_tool_life(ApiCall& c);
 HttpResponse api_reset_tool(ApiCall& c);
+HttpResponse api_record_quality(ApiCall& c);  // api_quality.cpp
+HttpResponse api_quality(ApiCall& c);
 HttpResponse api_start_job(ApiCall& c);
 HttpResponse api_job(ApiCall& c);
 HttpResponse api_stop_job(ApiCall& c);

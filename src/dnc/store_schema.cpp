@@ -251,6 +251,41 @@ CREATE TABLE revision_sheets (
 );
 )SQL";
 
+// Version 10: quality records (store_quality.hpp), measurements entered
+// through the API for a machine's parts: append-only, as the audit log,
+// since a record is evidence.
+constexpr std::string_view kV10 = R"SQL(
+CREATE TABLE quality_records (
+  id @ID@,
+  machine TEXT NOT NULL,
+  at BIGINT NOT NULL,
+  by_user TEXT NOT NULL,
+  characteristic TEXT NOT NULL,
+  measured TEXT NOT NULL,
+  nominal TEXT NOT NULL,
+  min_value TEXT NOT NULL,
+  max_value TEXT NOT NULL,
+  unit TEXT NOT NULL,
+  part TEXT NOT NULL,
+  program TEXT NOT NULL,
+  job BIGINT NOT NULL,
+  note TEXT NOT NULL
+);
+CREATE INDEX quality_by_machine ON quality_records (machine, id);
+)SQL";
+
+constexpr std::string_view kV10Sqlite = R"SQL(
+CREATE TRIGGER quality_no_update BEFORE UPDATE ON quality_records
+  BEGIN SELECT RAISE(ABORT, 'quality records are append-only'); END;
+CREATE TRIGGER quality_no_delete BEFORE DELETE ON quality_records
+  BEGIN SELECT RAISE(ABORT, 'quality records are append-only'); END;
+)SQL";
+
+constexpr std::string_view kV10Postgres = R"SQL(
+CREATE TRIGGER quality_no_change BEFORE UPDATE OR DELETE ON quality_records
+  FOR EACH ROW EXECUTE FUNCTION usina_refuse();
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres, nullptr},
     {2, kV2, "SELECT 1", "SELECT 1", nullptr},
@@ -261,6 +296,7 @@ constexpr Migration kMigrations[] = {
     {7, kV7, "SELECT 1", "SELECT 1", nullptr},
     {8, "SELECT 1", "SELECT 1", kV8Postgres, nullptr},
     {9, kV9, "SELECT 1", "SELECT 1", nullptr},
+    {10, kV10, kV10Sqlite, kV10Postgres, nullptr},
 };
 
 std::string spelled(std::string_view sql, Backend b) {
