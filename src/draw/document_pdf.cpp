@@ -412,10 +412,6 @@ void block(Pages& p, const core::DocBlock& b, const Drawing& drawing) {
   }
 }
 
-std::string status_text(cairo_status_t s) {
-  return cairo_status_to_string(s);
-}
-
 }  // namespace
 
 WriteResult write_document_pdf(const core::Document& doc, const Drawing& figure, std::FILE* file) {
@@ -436,10 +432,7 @@ WriteResult write_document_pdf(const core::Document& doc, const Drawing& figure,
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
-  cairo_surface_finish(surface.get());
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    return tl::unexpected(status_text(cairo_surface_status(surface.get())));
-  return {};
+  return finish_surface(surface.get());
 }
 
 }  // namespace usina::draw

@@ -8,8 +8,10 @@
 
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "draw/drawing.hpp"
+#include "draw/write_result.hpp"
 
 namespace usina::draw {
 
@@ -27,6 +29,15 @@ void render_drawing(cairo_t* cr, const Drawing& drawing, const Area& area, doubl
 
 // cairo's write callback: `file` is a std::FILE*.
 cairo_status_t write_to_stream(void* file, const unsigned char* data, unsigned int length);
+
+// cairo's words for `s`.
+inline std::string status_text(cairo_status_t s) {
+  return cairo_status_to_string(s);
+}
+
+// Finishes `surface` (its last bytes go to the stream); the error cairo
+// reports then, if any.
+WriteResult finish_surface(cairo_surface_t* surface);
 
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }

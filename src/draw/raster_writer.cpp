@@ -233,11 +233,14 @@ void render(cairo_t* cr, const Drawing& drawing, double width, double height, do
   render_drawing(cr, drawing, {0.0, 0.0, width, height}, line_width);
 }
 
-std::string status_text(cairo_status_t s) {
-  return cairo_status_to_string(s);
-}
-
 }  // namespace
+
+WriteResult finish_surface(cairo_surface_t* surface) {
+  cairo_surface_finish(surface);
+  if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS)
+    return tl::unexpected(status_text(cairo_surface_status(surface)));
+  return {};
+}
 
 void render_drawing(cairo_t* cr, const Drawing& drawing, const Area& area, double line_width) {
   cairo_save(cr);
@@ -295,10 +298,7 @@ WriteResult write_pdf(const Drawing& drawing, std::FILE* file) {
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
-  cairo_surface_finish(surface.get());
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    return tl::unexpected(status_text(cairo_surface_status(surface.get())));
-  return {};
+  return finish_surface(surface.get());
 }
 
 WriteResult write_png_file(const Drawing& drawing, const std::string& path, PixelSize size,
