@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "cam/pocket.hpp"
+
 namespace usina::job {
 namespace {
 
@@ -74,6 +76,13 @@ double smallest_inside_radius(const cam::Path& contour, bool tool_inside) {
     if (cross * inward > 0.02) smallest = 0;  // sharp: no round tool reaches into it
   }
   return smallest;
+}
+
+double pocket_corner(const cam::PocketShape& shape) {
+  double corner = smallest_inside_radius(shape.outline, true);
+  for (const cam::Path& island : shape.islands)
+    corner = std::min(corner, smallest_inside_radius(island, false));
+  return corner;
 }
 
 double ellipse_smallest_radius(double rx, double ry) {

@@ -8,6 +8,10 @@
 
 #include "cam/path.hpp"
 
+namespace usina::cam {
+struct PocketShape;  // cam/pocket.hpp
+}  // namespace usina::cam
+
 namespace usina::job {
 
 struct HoleGroup {
@@ -25,6 +29,10 @@ std::vector<HoleGroup> holes_of(const std::vector<cam::Path>& paths, std::size_t
 // turns that way. Infinity when there is none (a convex outline cut
 // outside).
 double smallest_inside_radius(const cam::Path& contour, bool tool_inside);
+// The smallest corner a pocket's tool meets: the outline's inside corners,
+// and each island's, which the tool goes round from outside (an island's
+// re-entrant corners bound the tool; its outer corners do not).
+double pocket_corner(const cam::PocketShape& shape);
 
 // The smallest radius of curvature of an ellipse of semi-axes rx, ry: b²/a
 // at the ends of its major axis.

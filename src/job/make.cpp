@@ -116,7 +116,7 @@ bool run_pocket(Context& cx, const Operation& op, const std::string& title) {
   const auto shape = cam::pocket_shape(cam::chain(*paths), at);
   if (!shape || !check_pocket(cx.j.job.stock, op, shape->outline, cx.diags)) return false;
   std::string chosen;
-  const Tool* tool = mill_for(cx, op, smallest_inside_radius(shape->outline, true), chosen);
+  const Tool* tool = mill_for(cx, op, pocket_corner(*shape), chosen);
   if (tool == nullptr) return false;
   cam::PocketOptions o;
   o.depth = op.depth;

@@ -96,6 +96,43 @@ TEST(ToolChoice, ASharpInsideCornerIsRadiusZero) {
   EXPECT_EQ(smallest_inside_radius(cam::rectangle({0, 0}, 50, 30, 0), true), 0.0);
 }
 
+// An L-shaped island, counter-clockwise: five outer corners the tool goes
+// round, and its re-entrant corner at (10, 10), sharp or rounded with
+// `fillet` (an arc bending round the tool, which sits outside the island).
+cam::Path l_island(double fillet) {
+  cam::Path p;
+  p.start = {0, 0};
+  p.closed = true;
+  p.segs = {{{20, 0}, std::nullopt, 0}, {{20, 10}, std::nullopt, 0}};
+  if (fillet > 0) {
+    p.segs.push_back({{10 + fillet, 10}, std::nullopt, 0});
+    p.segs.push_back({{10, 10 + fillet}, cam::Vec2{10 + fillet, 10 + fillet}, -1});
+  } else {
+    p.segs.push_back({{10, 10}, std::nullopt, 0});
+  }
+  p.segs.push_back({{10, 20}, std::nullopt, 0});
+  p.segs.push_back({{0, 20}, std::nullopt, 0});
+  p.segs.push_back({{0, 0}, std::nullopt, 0});
+  return p;
+}
+
+TEST(ToolChoice, AnIslandsReentrantCornerBoundsThePocketsToolItsOuterCornersDoNot) {
+  cam::PocketShape shape;
+  shape.outline = cam::rectangle({0, 0}, 100, 80, 8);
+  EXPECT_NEAR(pocket_corner(shape), 8.0, 1e-9);
+  // A rectangular island: the tool goes round its sharp corners.
+  shape.islands.push_back(cam::rectangle({20, 0}, 20, 10, 0));
+  EXPECT_NEAR(pocket_corner(shape), 8.0, 1e-9);
+  // An L-shaped island's inner corner, rounded to 3 mm, bounds the tool,
+  // walked either way.
+  shape.islands.push_back(l_island(3));
+  EXPECT_NEAR(pocket_corner(shape), 3.0, 1e-9);
+  EXPECT_NEAR(smallest_inside_radius(cam::reversed(l_island(3)), false), 3.0, 1e-9);
+  // Sharp, no round tool reaches into it.
+  shape.islands.push_back(l_island(0));
+  EXPECT_EQ(pocket_corner(shape), 0.0);
+}
+
 TEST(ToolChoice, TheEllipsesTightestCurve) {
   EXPECT_DOUBLE_EQ(ellipse_smallest_radius(30, 15), 7.5);
   EXPECT_DOUBLE_EQ(ellipse_smallest_radius(15, 30), 7.5);
