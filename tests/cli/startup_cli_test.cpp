@@ -123,9 +123,9 @@ TEST(Startup, ThePicturesWithoutTheModuleAreAnErrorBeforeTheRun) {
   EXPECT_TRUE(contains(sim.err, "simulate: cannot load " + dir.path("usina-raster.so"))) << sim.err;
   EXPECT_TRUE(sim.out.empty()) << "the run went ahead: " << sim.out;
   // A PDF setup sheet needs the module; an HTML one does not.
-  const std::string job =
-      "job " + quote(std::string(USINA_TEST_DIR) + "/../examples/jobs/plate.toml") +
-      " --post fanuc -o " + quote(dir.path("j.nc")) + " --sheet ";
+  const std::string job = "job " +
+                          quote(std::string(USINA_TEST_DIR) + "/../examples/jobs/plate.toml") +
+                          " --post fanuc -o " + quote(dir.path("j.nc")) + " --sheet ";
   const Result pdf = lone_usina(dir, job + quote(dir.path("j.pdf")));
   EXPECT_EQ(pdf.status, 2);
   EXPECT_TRUE(contains(pdf.err, "cannot load " + dir.path("usina-raster.so"))) << pdf.err;
