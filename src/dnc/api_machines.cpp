@@ -8,7 +8,10 @@
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
 #include "dnc/resume.hpp"
+#include "dnc/store_check.hpp"
+#include "dnc/store_jobs.hpp"
 #include "dnc/store_revisions.hpp"
+#include "dnc/store_sheets.hpp"
 
 namespace usina::dnc {
 namespace {
@@ -25,6 +28,38 @@ HttpResponse no_machine(const ApiCall& c) {
   return error_response(c.req, http::status::not_found, fmt::format("no machine {}", c.params[0]));
 }
 
+// What goes down to the machine with a job (seed 004 table 7.3): the time
+// the revision's check expects, its tools in order with their times, and
+// its setup sheets. Null and empty for what the store does not hold.
+nlohmann::json with_downward(Store& store, const JobRecord& j) {
+  nlohmann::json out = job_json(j);
+  out["expected_cycle_s"] = nullptr;
+  out["tools"] = nlohmann::json::array();
+  out["sheets"] = nlohmann::json::array();
+  if (auto r = find_revision(store, j.program, j.revision)) {
+    if (const auto check = CheckResults::from_json(r->checks_json)) {
+      out["expected_cycle_s"] = check->cycle_time_s;
+      for (const CheckTool& t : check->tools)
+        out["tools"].push_back({{"tool", t.tool}, {"total_s", t.total_s}});
+    }
+  }
+  if (auto sheets = list_sheets(store, j.program, j.revision)) {
+    for (const Sheet& s : *sheets)
+      out["sheets"].push_back(sheet_json(s));
+  }
+  return out;
+}
+
+// The machine's newest job, when it ended in an alarm (the control's XOFF
+// never released, the link lost...): the page shows it until another job
+// runs. Null otherwise.
+nlohmann::json last_alarm(Store& store, const std::string& machine) {
+  auto newest = list_jobs(store, machine, 1);
+  if (!newest || newest->empty() || !newest->front().alarm) return nullptr;
+  const JobRecord& j = newest->front();
+  return {{"job", j.id}, {"reason", j.reason}, {"at_us", j.ended_at_us}};
+}
+
 nlohmann::json machine_json(ApiCall& c, MachineRuntime& m) {
   const LinkConfig& l = m.config.link;
   nlohmann::json out = {{"name", l.name},
@@ -38,8 +73,10 @@ nlohmann::json machine_json(ApiCall& c, MachineRuntime& m) {
                         {"queue", m.queue},
                         {"job", nullptr}};
   if (m.current) {
-    if (auto live = c.ctx.machines.job(m.current->id)) out["job"] = job_json(*live);
+    if (auto live = c.ctx.machines.job(m.current->id))
+      out["job"] = with_downward(c.ctx.store, *live);
   }
+  out["alarm"] = last_alarm(c.ctx.store, l.name);
   out.update(parts_json(c.ctx.store, m));  // server_mdc.cpp
   out["part_count_source"] = "drip feeds run to their end, and the control's part lines";
   return out;
@@ -156,7 +193,7 @@ HttpResponse api_job(ApiCall& c) {
   if (!id) return error_response(c.req, http::status::not_found, "no such job");
   auto job = c.ctx.machines.job(*id);
   if (!job) return store_failure(c, job.error());
-  return json_response(c.req, http::status::ok, job_json(*job));
+  return json_response(c.req, http::status::ok, with_downward(c.ctx.store, *job));
 }
 
 HttpResponse api_stop_job(ApiCall& c) {
