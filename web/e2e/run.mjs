@@ -6,7 +6,8 @@
 // program made from the elliptical pocket's form (forms.mjs), a folder
 // imported (import.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs),
-// setup sheets attached and downloaded (sheets.mjs).
+// setup sheets attached and downloaded (sheets.mjs), quality records
+// (quality.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
@@ -17,6 +18,7 @@ import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { importFlow } from './import.mjs';
+import { qualityFlow } from './quality.mjs';
 import { replayFlow } from './replay.mjs';
 import { sheetsFlow } from './sheets.mjs';
 import { stockFlow } from './stock.mjs';
@@ -39,13 +41,14 @@ function check(ok, what) {
 // The 409 of POST /api/programs (import.mjs): a file named as a program of
 // another machine class.
 // The 422 of a drawing with nothing to draw (drawing.mjs).
-// The 400 of a .pdf that is no PDF (sheets.mjs).
+// The 400 of a .pdf that is no PDF (sheets.mjs) and of a measured value
+// past the server's range (quality.mjs).
 function askedRefusal(m) {
   const url = m.location().url ?? '';
   return (
     (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) ||
     (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url)) ||
-    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet)$/.test(url))
+    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url))
   );
 }
 
@@ -174,6 +177,7 @@ async function run() {
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);
   await sheetsFlow(page, harness, t, seedRev);
+  await qualityFlow(page, harness, t);
 
   // No page file is fetched from elsewhere, and the page logged no error.
   check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);
