@@ -2,7 +2,7 @@
 // out-of-tolerance value from the form and sees it marked NOT OK in words;
 // the form says what is wrong as it is typed and shows the server's 400;
 // "More records" pages back through older records; a programmer reads the
-// records and has no form.
+// records, has no form, and sees a record made elsewhere come in live.
 import { logInAs } from './flows.mjs';
 
 const row = (page) => page.locator('#quality-romi-1-table tbody tr').first();
@@ -14,10 +14,10 @@ async function openMachines(page) {
 }
 
 // `n` records made by the API as `user`, one login for all.
-async function recordMany(h, user, n) {
+async function recordMany(h, user, n, what = 'length') {
   const token = await h.logIn(user);
   for (let i = 0; i < n; i++) {
-    const r = await fetch(`${h.base}/api/machines/romi-1/quality`, { method: 'POST', headers: { Authorization: `Bearer ${token}`, 'Content-Type': 'application/json' }, body: JSON.stringify({ characteristic: `length ${i}`, measured: 50 + i / 100, min: 49.9, max: 50.1, unit: 'mm' }) });
+    const r = await fetch(`${h.base}/api/machines/romi-1/quality`, { method: 'POST', headers: { Authorization: `Bearer ${token}`, 'Content-Type': 'application/json' }, body: JSON.stringify({ characteristic: `${what} ${i}`, measured: 50 + i / 100, min: 49.9, max: 50.1, unit: 'mm' }) });
     if (r.status !== 201) throw new Error(`quality record ${i}: ${r.status} ${await r.text()}`);
   }
 }
@@ -35,6 +35,11 @@ export async function qualityFlow(page, h, { check, shot }) {
   check(first === 20 && all === 25 && /^\S+ \S+\s+length 0\s/.test(oldest) && (await page.getByRole('button', { name: 'More records' }).isHidden()), `"More records" pages back to the oldest (${first}, then ${all}; no more after)`);
 
   const f = (label) => page.getByLabel(label, { exact: true });
+  await page.getByRole('button', { name: 'Record', exact: true }).click();
+  await page.locator('#q-romi-1-status[role="alert"]').waitFor();
+  const empty = [await page.locator('#q-romi-1-status').innerText(), await hint(page, 'characteristic'), await hint(page, 'measured')];
+  const focused = await f('Characteristic').evaluate((e) => e === document.activeElement);
+  check(empty.join(' / ') === 'Not recorded: see the fields marked. / Say what was measured. / Give the measured value.' && focused, `an empty form is not sent: its required fields are marked and the first focused (${empty.join(' / ')})`);
   await f('Characteristic').fill('bore A diameter');
   await f('Measured').fill('20,O3');
   await f('Min').fill('20.1');
@@ -44,7 +49,7 @@ export async function qualityFlow(page, h, { check, shot }) {
   await f('Measured').fill('1e10');
   await f('Min').fill('20');
   await page.getByRole('button', { name: 'Record', exact: true }).click();
-  await page.locator('#q-romi-1-status[role="alert"]').waitFor();
+  await page.locator('#q-romi-1-status[role="alert"]', { hasText: /^Refused/ }).waitFor();
   const refused = await page.locator('#q-romi-1-status').innerText();
   check(/^Refused \(400\): \S/.test(refused) && (await hint(page, 'max')) === '', `the server's 400 is shown as it says it ("${refused}")`);
 
@@ -72,4 +77,7 @@ export async function qualityFlow(page, h, { check, shot }) {
   const forms = await page.locator('form.quality-form').count();
   const note = await page.locator('#quality-note').innerText();
   check(forms === 0 && (await page.getByRole('button', { name: 'Record', exact: true }).count()) === 0 && /recording one is for operators, approvers and admins/.test(note), 'a programmer reads the records and sees no form');
+  await recordMany(h, 'appr', 1, 'live flatness');
+  await row(page).locator('th', { hasText: 'live flatness 0' }).waitFor();
+  check((await page.locator('#quality-romi-1-table tbody tr').count()) === 21, 'a record made elsewhere comes in live at the top, once');
 }

@@ -1,5 +1,6 @@
 // The program page's setup sheets (issue 14): a programmer's PDF attached
-// from the page is listed and downloads byte for byte; an HTML sheet
+// from the page is listed and downloads byte for byte (Attach without a
+// file says to choose one); an HTML sheet
 // downloads as a file (no tab of the page's origin shows it); a .pdf that
 // is no PDF gets the server's 400 in words; an operator sees the sheets
 // and no form to attach one.
@@ -41,6 +42,9 @@ export async function sheetsFlow(page, h, { check, shot }, rev) {
   await logInAs(page, 'boss');
   await openProgram(page, h, rev);
   check((await page.getByText('This revision has no setup sheet.').count()) === 1, 'a revision without sheets says so');
+  await page.getByRole('button', { name: 'Attach the sheet' }).click();
+  await page.locator('#sheets-status[role="alert"]', { hasText: 'Choose a PDF or HTML file first.' }).waitFor();
+  check(await page.getByLabel(FILE).evaluate((e) => e === document.activeElement), 'Attach without a file says to choose one and focuses the chooser');
   await attach(page, pdfPath);
   await page.locator('#sheet-pdf').waitFor();
   const row = await page.locator('#sheets-list tr[data-format="pdf"]').innerText();

@@ -108,7 +108,7 @@ class SheetsPanel {
   form(): HTMLElement {
     const file = h('input', { type: 'file', accept: '.pdf,.html,.htm,application/pdf,text/html', required: true });
     const reason = h('input', { autocomplete: 'off' });
-    const form = h('form', { class: 'sheet-form' }, field('Setup sheet file (PDF or HTML)', file, 'sheet-file'), field('Reason (optional)', reason, 'sheet-reason'), h('button', { type: 'submit', text: 'Attach the sheet' }));
+    const form = h('form', { class: 'sheet-form', novalidate: true }, field('Setup sheet file (PDF or HTML)', file, 'sheet-file'), field('Reason (optional)', reason, 'sheet-reason'), h('button', { type: 'submit', text: 'Attach the sheet' }));
     form.addEventListener('submit', (e) => {
       e.preventDefault();
       const f = file.files?.[0];
