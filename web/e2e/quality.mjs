@@ -69,6 +69,8 @@ export async function qualityFlow(page, h, { check, shot }) {
   check((await row(page).locator('.verdict').innerText()) === 'OK' && (await page.locator('#quality-romi-1-table tbody tr').count()) === 27, 'a value within its limits is marked OK, above the one before');
   await page.locator('#quality-romi-1').scrollIntoViewIfNeeded();
   await shot(page, 'web-quality.png', false);
+  const zoomed = await fitsAtZoom(page, 'the machines page with 27 quality records and the form');
+  check(zoomed.ok, zoomed.text);
 
   await h.addUser('progr', 'programmer');
   await logInAs(page, 'progr');
@@ -80,4 +82,12 @@ export async function qualityFlow(page, h, { check, shot }) {
   await recordMany(h, 'appr', 1, 'live flatness');
   await row(page).locator('th', { hasText: 'live flatness 0' }).waitFor();
   check((await page.locator('#quality-romi-1-table tbody tr').count()) === 21, 'a record made elsewhere comes in live at the top, once');
+}
+
+// At 200 % zoom (flows.mjs's zoomFlow) with records and the form shown.
+export async function fitsAtZoom(page, what) {
+  await page.setViewportSize({ width: 640, height: 430 });
+  const [scroll, client] = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
+  await page.setViewportSize({ width: 1280, height: 860 });
+  return { ok: scroll <= client, text: `at 200 % zoom ${what} fits its width (${scroll} of ${client} px)` };
 }

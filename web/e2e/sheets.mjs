@@ -7,6 +7,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { logInAs } from './flows.mjs';
+import { fitsAtZoom } from './quality.mjs';
 
 const FILE = 'Setup sheet file (PDF or HTML)';
 
@@ -41,6 +42,7 @@ export async function sheetsFlow(page, h, { check, shot }, rev) {
 
   await logInAs(page, 'boss');
   await openProgram(page, h, rev);
+  await page.locator('#sheets-list > *').first().waitFor(); // the list is read after the page shows
   check((await page.getByText('This revision has no setup sheet.').count()) === 1, 'a revision without sheets says so');
   await page.getByRole('button', { name: 'Attach the sheet' }).click();
   await page.locator('#sheets-status[role="alert"]', { hasText: 'Choose a PDF or HTML file first.' }).waitFor();
@@ -65,6 +67,8 @@ export async function sheetsFlow(page, h, { check, shot }, rev) {
   check(/^Refused \(400\): \S/.test(refused), `a .pdf that is no PDF gets the server's reason ("${refused}")`);
   await page.locator('section.sheets').scrollIntoViewIfNeeded();
   await shot(page, 'web-sheets.png', false);
+  const zoomed = await fitsAtZoom(page, 'the program page with two sheets and the form');
+  check(zoomed.ok, zoomed.text);
 
   await logInAs(page, 'oper');
   await openProgram(page, h, rev);

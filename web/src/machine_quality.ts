@@ -78,12 +78,14 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
   const shownIds = new Set<number>();
   const heads = ['When (UTC)', 'Characteristic', 'Measured', 'Limits', 'Verdict', 'Part, program, note', 'By'];
   const table = h('table', { id: `${id}-table`, class: 'quality' }, h('caption', { text: `Quality records of ${machine}, newest first` }), h('thead', {}, h('tr', {}, ...heads.map((t) => h('th', { scope: 'col', text: t })))), body);
+  // A narrow window scrolls the table, not the page (tabindex: by the keyboard too).
+  const scroller = h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': `Quality records of ${machine}` }, table);
   const empty = h('p', { class: 'note', text: 'No quality records yet.' });
   const more = h('button', { type: 'button', text: 'More records', hidden: true, 'aria-controls': `${id}-table` });
   const said = h('p', { class: 'status', 'aria-live': 'polite' });
   let before: number | null = null;
   const show = () => {
-    table.hidden = shownIds.size === 0;
+    scroller.hidden = shownIds.size === 0;
     empty.hidden = shownIds.size !== 0;
   };
   const load = async () => {
@@ -110,7 +112,7 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
   more.addEventListener('click', () => void load());
   void load();
   const panel: QualityPanel = {
-    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), table, empty, more, said),
+    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), scroller, empty, more, said),
     add(r: QualityRecord) {
       if (shownIds.has(r.id)) return;
       shownIds.add(r.id);
