@@ -17,7 +17,7 @@ async function openMachines(page) {
 async function recordMany(h, user, n, what = 'length') {
   const token = await h.logIn(user);
   for (let i = 0; i < n; i++) {
-    const r = await fetch(`${h.base}/api/machines/romi-1/quality`, { method: 'POST', headers: { Authorization: `Bearer ${token}`, 'Content-Type': 'application/json' }, body: JSON.stringify({ characteristic: `${what} ${i}`, measured: 50 + i / 100, min: 49.9, max: 50.1, unit: 'mm' }) });
+    const r = await fetch(`${h.base}/api/machines/romi-1/quality`, { method: 'POST', headers: { Authorization: `Bearer ${token}`, 'Content-Type': 'application/json' }, body: JSON.stringify({ characteristic: `${what} ${i}`, measured: 50 + ((i % 7) - 3) / 100, min: 49.9, max: 50.1, unit: 'mm' }) });
     if (r.status !== 201) throw new Error(`quality record ${i}: ${r.status} ${await r.text()}`);
   }
 }
@@ -66,8 +66,9 @@ export async function qualityFlow(page, h, { check, shot }) {
   await f('Measured').fill('20.012');
   await page.getByRole('button', { name: 'Record', exact: true }).click();
   await page.locator('#q-romi-1-status', { hasText: /20\.012 mm, OK\.$/ }).waitFor();
-  check((await row(page).locator('.verdict').innerText()) === 'OK' && (await page.locator('#quality-romi-1-table tbody tr').count()) === 27, 'a value within its limits is marked OK, above the one before');
-  await page.locator('#quality-romi-1').scrollIntoViewIfNeeded();
+  const counted = await page.locator('#quality-romi-1 > p.status').innerText();
+  check((await row(page).locator('.verdict').innerText()) === 'OK' && (await page.locator('#quality-romi-1-table tbody tr').count()) === 27 && counted === '27 records shown.', `a value within its limits is marked OK, above the one before ("${counted}")`);
+  await page.evaluate(() => document.getElementById('quality-romi-1').scrollIntoView({ block: 'start' }));
   await shot(page, 'web-quality.png', false);
   const zoomed = await fitsAtZoom(page, 'the machines page with 27 quality records and the form');
   check(zoomed.ok, zoomed.text);

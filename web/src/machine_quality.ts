@@ -80,11 +80,13 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
   const table = h('table', { id: `${id}-table`, class: 'quality' }, h('caption', { text: `Quality records of ${machine}, newest first` }), h('thead', {}, h('tr', {}, ...heads.map((t) => h('th', { scope: 'col', text: t })))), body);
   // A narrow window scrolls the table, not the page (tabindex: by the keyboard too).
   const scroller = h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': `Quality records of ${machine}` }, table);
-  const empty = h('p', { class: 'note', text: 'No quality records yet.' });
+  const empty = h('p', { class: 'note', text: 'No quality records yet.', hidden: true }); // shown once read
   const more = h('button', { type: 'button', text: 'More records', hidden: true, 'aria-controls': `${id}-table` });
   const said = h('p', { class: 'status', 'aria-live': 'polite' });
   let before: number | null = null;
   const show = () => {
+    const n = shownIds.size;
+    said.textContent = n ? `${n} ${n === 1 ? 'record' : 'records'} shown${more.hidden ? '' : '; more are older'}.` : '';
     scroller.hidden = shownIds.size === 0;
     empty.hidden = shownIds.size !== 0;
   };
@@ -101,7 +103,6 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
       before = page.next_before;
       // A short page is the last one.
       more.hidden = page.records.length < PAGE || before === null;
-      said.textContent = `${shownIds.size} ${shownIds.size === 1 ? 'record' : 'records'} shown${more.hidden ? '' : '; more are older'}.`;
       show();
     } catch (e) {
       said.textContent = `The quality records could not be read: ${(e as Error).message}`;
