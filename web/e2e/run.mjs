@@ -5,7 +5,9 @@
 // (drawing.mjs), its stock replayed (stock.mjs), the machines page, a
 // program made from the elliptical pocket's form (forms.mjs), a folder
 // imported (import.mjs), a library of
-// 10,000 programs searched by comment, tool and O number (library.mjs).
+// 10,000 programs searched by comment, tool and O number (library.mjs),
+// setup sheets attached and downloaded (sheets.mjs), quality records
+// (quality.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
@@ -16,7 +18,9 @@ import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { importFlow } from './import.mjs';
+import { qualityFlow } from './quality.mjs';
 import { replayFlow } from './replay.mjs';
+import { sheetsFlow } from './sheets.mjs';
 import { stockFlow } from './stock.mjs';
 import { usersFlow } from './users.mjs';
 import { arg, canvasPixels, Harness, PASSWORD, skipUnlessReady, web } from './harness.mjs';
@@ -37,9 +41,15 @@ function check(ok, what) {
 // The 409 of POST /api/programs (import.mjs): a file named as a program of
 // another machine class.
 // The 422 of a drawing with nothing to draw (drawing.mjs).
+// The 400 of a .pdf that is no PDF (sheets.mjs) and of a measured value
+// past the server's range (quality.mjs).
 function askedRefusal(m) {
   const url = m.location().url ?? '';
-  return (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) || (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url));
+  return (
+    (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) ||
+    (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url)) ||
+    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url))
+  );
 }
 
 async function shot(page, name, top = true) {
@@ -166,6 +176,8 @@ async function run() {
   await zoomFlow(page, harness, t, second);
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);
+  await sheetsFlow(page, harness, t, seedRev);
+  await qualityFlow(page, harness, t);
 
   // No page file is fetched from elsewhere, and the page logged no error.
   check(elsewhere.length === 0, `every request went to usina serve${elsewhere.length ? `; not: ${elsewhere.join(', ')}` : ''}`);

@@ -1,13 +1,15 @@
 // The machines, live from the server's event stream: each machine's state,
 // its job's progress (bytes sent of the total, the block), its part count
 // and last cycle time against the estimate of the program last sent; its
-// utilisation per day (machine_utilisation.ts); and, for a role that may,
-// the job buttons (machine_jobs.ts).
+// utilisation per day (machine_utilisation.ts); its quality records
+// (machine_quality.ts); and, for a role that may, the job buttons
+// (machine_jobs.ts) and the quality form.
 import { enc, getJson, token, type Job, type Machine, type Revision } from './api';
 import { h, show, status } from './dom';
 import { jobForm, type JobForm } from './machine_jobs';
+import { qualityPanel, type QualityPanel, type QualityRecord } from './machine_quality';
 import { utilisationPanel, type UtilisationPanel } from './machine_utilisation';
-import { mayRunJobs, sessionUser } from './roles';
+import { mayRecordQuality, mayRunJobs, sessionUser } from './roles';
 
 let socket: WebSocket | null = null;
 
@@ -25,6 +27,7 @@ interface Shown {
   status: HTMLElement;
   form: JobForm | null;
   utilisation: UtilisationPanel;
+  quality: QualityPanel;
   estimate: Estimate | null; // of the last job's revision
 }
 
@@ -113,9 +116,10 @@ function render(s: Shown): void {
 export async function machinesPage(main: HTMLElement): Promise<void> {
   const [list, who] = await Promise.all([getJson<{ machines: Machine[] }>('/api/machines'), sessionUser()]);
   const runs = mayRunJobs(who.role);
+  const records = mayRecordQuality(who.role);
   const shown = new Map<string, Shown>();
   const sections = list.machines.map((m) => {
-    const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), estimate: null };
+    const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), quality: qualityPanel(m.name, records), estimate: null };
     if (runs) s.form = jobForm(m, () => shown.get(m.name)?.job ?? null);
     shown.set(m.name, s);
     render(s);
@@ -126,12 +130,15 @@ export async function machinesPage(main: HTMLElement): Promise<void> {
       s.status,
       s.form ? s.form.element : null,
       s.utilisation.element,
+      s.quality.element,
     );
   });
   const live = status('live-status');
   live.textContent = 'Live updates: connecting…';
-  const note = runs ? null : h('p', { class: 'note', text: `You are ${who.role}: you may watch the machines; sending, drip feeding and stopping are for operators, programmers and admins.` });
-  show(main, 'Machines', live, ...(note ? [note] : []), ...(sections.length ? sections : [h('p', { text: 'No machines are configured (usina-serve.toml).' })]));
+  const notes: HTMLElement[] = [];
+  if (!runs) notes.push(h('p', { class: 'note', text: `You are ${who.role}: you may watch the machines; sending, drip feeding and stopping are for operators, programmers and admins.` }));
+  if (!records) notes.push(h('p', { class: 'note', id: 'quality-note', text: `You are ${who.role}: you may read the quality records; recording one is for operators, approvers and admins.` }));
+  show(main, 'Machines', live, ...notes, ...(sections.length ? sections : [h('p', { text: 'No machines are configured (usina-serve.toml).' })]));
   listen(shown, live);
 }
 
@@ -179,6 +186,8 @@ function listen(shown: Map<string, Shown>, live: HTMLElement): void {
       render(s);
       void refresh(shown, name); // the control's count and message, too
       s.utilisation.refresh();
+    } else if (ev.type === 'machine.quality') {
+      s.quality.add(ev as unknown as QualityRecord); // the event is the record
     } else {
       void refresh(shown, name);
     }

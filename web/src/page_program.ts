@@ -1,11 +1,12 @@
 // A program: its text with line numbers and the check's diagnostics inline,
 // the 3D viewer of its tool path (a click on a move shows its line; a
-// line's moves can be highlighted; the cut replays in time) and its 2D
-// drawing.
+// line's moves can be highlighted; the cut replays in time), its 2D
+// drawing and its setup sheets.
 import { enc, getBytes, getJson, getText, type CheckDiagnostic, type Program, type Revision } from './api';
 import { field, h, show, status } from './dom';
 import { drawingPanel } from './program_drawing';
 import { replayPanel } from './program_replay';
+import { sheetsPanel } from './program_sheets';
 import { reviewPanel, revisionsPanel } from './program_review';
 import { statsPanel, type Figures } from './program_stats';
 import { stockPanel } from './program_stock';
@@ -40,6 +41,7 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
     reviewPanel(program, revision, who, again),
     split,
     statsHost,
+    sheetsPanel(program.name, revision.revision, who),
     revisionsPanel(program, revision),
   );
   const path = decodeToolpath(await stream);

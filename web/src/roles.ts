@@ -23,6 +23,11 @@ export function mayRunJobs(role: Role): boolean {
   return role === 'operator' || role === 'programmer' || role === 'admin';
 }
 
+// Record a quality measurement (Permission::RecordQuality).
+export function mayRecordQuality(role: Role): boolean {
+  return role === 'operator' || role === 'approver' || role === 'admin';
+}
+
 export function mayUpload(role: Role): boolean {
   return role === 'programmer' || role === 'admin';
 }

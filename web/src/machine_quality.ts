@@ -1,0 +1,126 @@
+// A machine's quality records (docs/dnc-server.md, "Quality records"): the
+// newest first, a page at a time ("More" asks for the records `before` the
+// last shown), each out-of-tolerance value marked NOT OK in words, not
+// only in colour; and, for the roles that may record (operator, approver,
+// admin), a form checked as it is typed, with the server's 400 shown as it
+// says it.
+import { enc, getJson } from './api';
+import { h } from './dom';
+import { qualityForm } from './quality_form';
+
+export interface QualityRecord {
+  id: number;
+  machine: string;
+  at_us: number;
+  by: string;
+  characteristic: string;
+  measured: number;
+  nominal: number | null;
+  min: number | null;
+  max: number | null;
+  ok: boolean | null;
+  unit: string;
+  part: string;
+  program: string | null;
+  job: number | null;
+  note: string;
+}
+
+const PAGE = 20;
+
+function when(us: number): string {
+  return new Date(us / 1000).toISOString().replace('T', ' ').slice(0, 16);
+}
+
+function withUnit(v: number, unit: string): string {
+  return unit ? `${v} ${unit}` : String(v);
+}
+
+export function limitsText(r: QualityRecord): string {
+  const u = r.unit;
+  const range = r.min !== null && r.max !== null ? `${r.min} to ${withUnit(r.max, u)}` : r.min !== null ? `at least ${withUnit(r.min, u)}` : r.max !== null ? `at most ${withUnit(r.max, u)}` : 'no limits';
+  return r.nominal !== null ? `${range} (nominal ${withUnit(r.nominal, u)})` : range;
+}
+
+export function verdictText(ok: boolean | null): string {
+  return ok === true ? 'OK' : ok === false ? 'NOT OK' : '— (no limits)';
+}
+
+function row(r: QualityRecord): HTMLElement {
+  const verdict = ok(r.ok);
+  const what = [r.part && `part ${r.part}`, r.program && `program ${r.program}`, r.job && `job ${r.job}`, r.note].filter(Boolean).join('; ');
+  return h(
+    'tr',
+    { 'data-id': r.id, class: r.ok === false ? 'not-ok' : '' },
+    h('td', { text: when(r.at_us) }),
+    h('th', { scope: 'row', text: r.characteristic }),
+    h('td', { class: 'measured', text: withUnit(r.measured, r.unit) }),
+    h('td', { text: limitsText(r) }),
+    h('td', {}, verdict),
+    h('td', { text: what || '—' }),
+    h('td', { text: r.by }),
+  );
+}
+
+function ok(v: boolean | null): HTMLElement {
+  return h('strong', { class: `verdict ${v === true ? 'ok' : v === false ? 'not-ok' : 'none'}`, text: verdictText(v) });
+}
+
+export interface QualityPanel {
+  element: HTMLElement;
+  add(r: QualityRecord): void; // a record just made (the form's, or an event's)
+}
+
+// The records of `machine`, the form below them when `mayRecord`.
+export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel {
+  const id = `quality-${machine}`;
+  const body = h('tbody');
+  const shownIds = new Set<number>();
+  const heads = ['When (UTC)', 'Characteristic', 'Measured', 'Limits', 'Verdict', 'Part, program, note', 'By'];
+  const table = h('table', { id: `${id}-table`, class: 'quality' }, h('caption', { text: `Quality records of ${machine}, newest first` }), h('thead', {}, h('tr', {}, ...heads.map((t) => h('th', { scope: 'col', text: t })))), body);
+  // A narrow window scrolls the table, not the page (tabindex: by the keyboard too).
+  const scroller = h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': `Quality records of ${machine}` }, table);
+  const empty = h('p', { class: 'note', text: 'No quality records yet.', hidden: true }); // shown once read
+  const more = h('button', { type: 'button', text: 'More records', hidden: true, 'aria-controls': `${id}-table` });
+  const said = h('p', { class: 'status', 'aria-live': 'polite' });
+  let before: number | null = null;
+  const show = () => {
+    const n = shownIds.size;
+    said.textContent = n ? `${n} ${n === 1 ? 'record' : 'records'} shown${more.hidden ? '' : '; more are older'}.` : '';
+    scroller.hidden = shownIds.size === 0;
+    empty.hidden = shownIds.size !== 0;
+  };
+  const load = async () => {
+    more.setAttribute('aria-busy', 'true');
+    try {
+      const q = before === null ? '' : `&before=${before}`;
+      const page = await getJson<{ records: QualityRecord[]; next_before: number | null }>(`/api/machines/${enc(machine)}/quality?limit=${PAGE}${q}`);
+      for (const r of page.records) {
+        if (shownIds.has(r.id)) continue; // recorded while this page was read
+        shownIds.add(r.id);
+        body.append(row(r));
+      }
+      before = page.next_before;
+      // A short page is the last one.
+      more.hidden = page.records.length < PAGE || before === null;
+      show();
+    } catch (e) {
+      said.textContent = `The quality records could not be read: ${(e as Error).message}`;
+    } finally {
+      more.setAttribute('aria-busy', 'false');
+    }
+  };
+  more.addEventListener('click', () => void load());
+  void load();
+  const panel: QualityPanel = {
+    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), scroller, empty, more, said),
+    add(r: QualityRecord) {
+      if (shownIds.has(r.id)) return;
+      shownIds.add(r.id);
+      body.prepend(row(r));
+      show();
+    },
+  };
+  if (mayRecord) panel.element.append(qualityForm(machine, (r) => panel.add(r)));
+  return panel;
+}
