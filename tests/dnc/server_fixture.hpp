@@ -5,7 +5,9 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <future>
 #include <memory>
@@ -17,6 +19,7 @@
 
 #include "api_client.hpp"
 #include "dnc/server.hpp"
+#include "dnc/store_db.hpp"
 #include "dnc/store_users.hpp"
 
 namespace usina::test {
@@ -28,6 +31,22 @@ inline dnc::StoreOptions fast_store() {
   o.password_ops = 1;  // libsodium's minimum: the tests log in often
   o.password_memory = 8192;
   return o;
+}
+
+// A new database on ctest's shared PostgreSQL cluster (USINA_TEST_PG_DIR,
+// tests/CMakeLists.txt); its URL, empty when there is none.
+inline std::string fresh_pg_database() {
+  const char* dir = std::getenv("USINA_TEST_PG_DIR");
+  if (dir == nullptr) return {};
+  std::ifstream in(std::string(dir) + "/url");
+  std::string url;
+  std::getline(in, url);
+  auto admin = dnc::open_postgres(url);
+  if (!admin) return {};
+  static int made = 0;
+  const std::string name = "s" + std::to_string(::getpid()) + "_" + std::to_string(++made);
+  if (!(*admin)->script("CREATE DATABASE " + name)) return {};
+  return url.substr(0, url.rfind('/') + 1) + name;
 }
 
 class RunningServer {
@@ -58,6 +77,12 @@ class RunningServer {
 
   // Opens the store (users of every role on a new one) and starts serving.
   void start(dnc::ServerConfig config = {}, dnc::StoreOptions options = fast_store()) {
+    // ctest's dnc.http.postgres runs the HTTP suites again with the store
+    // in PostgreSQL (a fresh database each server), as a plant would.
+    if (where_.empty() && std::getenv("USINA_TEST_SERVER_STORE") != nullptr) {
+      where_ = fresh_pg_database();
+      ASSERT_FALSE(where_.empty()) << "no database on the cluster of USINA_TEST_PG_DIR";
+    }
     auto s = dnc::Server::open(io_, where_.empty() ? dir_ : where_, std::move(config), options);
     ASSERT_TRUE(s) << s.error();
     server_ = std::move(*s);
