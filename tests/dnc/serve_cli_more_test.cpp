@@ -137,6 +137,17 @@ std::vector<nlohmann::json> job_entries(const Api& c, const std::string& token,
   return found;
 }
 
+// mill-1 once its state is `state` (or after 20 s).
+nlohmann::json mill_when(const Api& c, const std::string& token, const std::string& state) {
+  nlohmann::json mill;
+  for (int i = 0; i < 400; ++i) {
+    mill = c.get("/api/machines/mill-1", token).json();
+    if (mill["state"] == state) break;
+    std::this_thread::sleep_for(50ms);
+  }
+  return mill;
+}
+
 // A simulated CNC on the control's end of socat's pair, on a loop of its own.
 class Control {
  public:
@@ -371,12 +382,7 @@ TEST(ServeCliMore, ALinkLostDuringAFeedEndsTheJobInterruptedAndNothingRestartsIt
   ASSERT_TRUE(again.start());
   Control back;
   ASSERT_TRUE(back.start(shop.dir / "control"));
-  nlohmann::json mill;
-  for (int i = 0; i < 400; ++i) {
-    mill = c.get("/api/machines/mill-1", token).json();
-    if (mill["state"] == "idle") break;
-    std::this_thread::sleep_for(50ms);
-  }
+  nlohmann::json mill = mill_when(c, token, "idle");
   ASSERT_EQ(mill["state"], "idle") << mill.dump();
   std::this_thread::sleep_for(2s);
   mill = c.get("/api/machines/mill-1", token).json();
