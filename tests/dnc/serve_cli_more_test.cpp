@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <future>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <string>
 #include <thread>
@@ -245,23 +246,45 @@ TEST(ServeCliMore, VerifyAuditCountsAGoodChainAndNamesTheTamperedEntry) {
   EXPECT_EQ(printed_entries(said), -1) << said;
 }
 
+// A shop's server drip-feeding O77 to a control over socat at 1200 baud:
+// where the SIGTERM and the lost-link tests start.
+struct FeedUnderWay {
+  explicit FeedUnderWay(const char* name) : shop(name), socat{shop.dir} {}
+
+  // Starts each part; a part that does not start fails the test.
+  void start() {
+    ASSERT_EQ(shop.init(shop.data()), 0) << slurp(shop.dir / "init.log");
+    ASSERT_TRUE(socat.start());
+    ASSERT_TRUE(control.start(shop.dir / "control"));
+    write(shop.dir / "usina-serve.toml", config_for(shop.dir / "machine", 1200));
+    server = shop.serve(shop.data(), "serve.log");
+    const unsigned short port = listening_port(shop.dir / "serve.log");
+    ASSERT_NE(port, 0) << slurp(shop.dir / "serve.log");
+    api.emplace(port);
+    token = api->log_in("boss", kPassword);
+    id = feeding(*api, token, "O77", released(*api, token, "O77", long_program()));
+    ASSERT_FALSE(id.empty());
+  }
+
+  const Shop shop;
+  SocatPair socat;
+  Control control;
+  pid_t server = -1;
+  std::optional<Api> api;
+  std::string token;
+  std::string id;
+};
+
 TEST(ServeCliMore, SigtermDuringADripFeedEndsItInterruptedWithItsAuditEntry) {
   if (!have_socat()) GTEST_SKIP() << "socat is not installed";
-  const Shop shop("sigterm");
-  ASSERT_EQ(shop.init(shop.data()), 0) << slurp(shop.dir / "init.log");
-  SocatPair socat{shop.dir};
-  ASSERT_TRUE(socat.start());
-  Control control;
-  ASSERT_TRUE(control.start(shop.dir / "control"));
-  write(shop.dir / "usina-serve.toml", config_for(shop.dir / "machine", 1200));
-  const pid_t first = shop.serve(shop.data(), "serve.log");
-  const unsigned short port = listening_port(shop.dir / "serve.log");
-  ASSERT_NE(port, 0) << slurp(shop.dir / "serve.log");
-  const Api c(port);
-  const std::string token = c.log_in("boss", kPassword);
-  const std::string rev = released(c, token, "O77", long_program());
-  const std::string id = feeding(c, token, "O77", rev);
-  ASSERT_FALSE(id.empty());
+  FeedUnderWay f("sigterm");
+  ASSERT_NO_FATAL_FAILURE(f.start());
+  const Shop& shop = f.shop;
+  const Api& c = *f.api;
+  const std::string& token = f.token;
+  const std::string& id = f.id;
+  Control& control = f.control;
+  const pid_t first = f.server;
   ASSERT_EQ(c.get("/api/jobs/" + id, token).json()["state"], "running");
   ASSERT_EQ(::kill(first, SIGTERM), 0);
   EXPECT_EQ(wait_exit(first), 0) << slurp(shop.dir / "serve.log");
@@ -342,21 +365,15 @@ INSTANTIATE_TEST_SUITE_P(Backends, ServeCliStore,
 
 TEST(ServeCliMore, ALinkLostDuringAFeedEndsTheJobInterruptedAndNothingRestartsIt) {
   if (!have_socat()) GTEST_SKIP() << "socat is not installed";
-  const Shop shop("lost");
-  ASSERT_EQ(shop.init(shop.data()), 0) << slurp(shop.dir / "init.log");
-  SocatPair socat{shop.dir};
-  ASSERT_TRUE(socat.start());
-  Control control;
-  ASSERT_TRUE(control.start(shop.dir / "control"));
-  write(shop.dir / "usina-serve.toml", config_for(shop.dir / "machine", 1200));
-  const pid_t server = shop.serve(shop.data(), "serve.log");
-  const unsigned short port = listening_port(shop.dir / "serve.log");
-  ASSERT_NE(port, 0) << slurp(shop.dir / "serve.log");
-  const Api c(port);
-  const std::string token = c.log_in("boss", kPassword);
-  const std::string rev = released(c, token, "O77", long_program());
-  const std::string id = feeding(c, token, "O77", rev);
-  ASSERT_FALSE(id.empty());
+  FeedUnderWay f("lost");
+  ASSERT_NO_FATAL_FAILURE(f.start());
+  const Shop& shop = f.shop;
+  const Api& c = *f.api;
+  const std::string& token = f.token;
+  const std::string& id = f.id;
+  Control& control = f.control;
+  SocatPair& socat = f.socat;
+  const pid_t server = f.server;
   // The cable is pulled: socat goes, and with it both ends of the pair.
   // (Closing only the control's end is not seen: socat keeps reading the
   // server's bytes and the feed runs to its end, as over a cable with no
