@@ -138,16 +138,18 @@ HttpResponse api_quality(ApiCall& c) {
   const auto limit = query_count(c, "limit");
   if (!before || !limit || *limit > kMaxPage)
     return bad(c, fmt::format("before and limit are whole numbers (limit at most {})", kMaxPage));
-  auto records =
-      quality_records(c.ctx.store, c.params[0], *before, *limit == 0 ? kDefaultPage : *limit);
+  // One record more than the page: whether there is a next page at all.
+  const std::int64_t page = *limit == 0 ? kDefaultPage : *limit;
+  auto records = quality_records(c.ctx.store, c.params[0], *before, page + 1);
   if (!records) return error_response(c.req, status_of(records.error()), records.error().message);
+  const bool more = static_cast<std::int64_t>(records->size()) > page;
+  if (more) records->pop_back();
   nlohmann::json list = nlohmann::json::array();
   for (const QualityRecord& r : *records)
     list.push_back(record_json(r));
   nlohmann::json answer = {{"machine", c.params[0]}, {"records", std::move(list)}};
-  // The next page: the records below the last one given.
-  answer["next_before"] =
-      records->empty() ? nlohmann::json(nullptr) : nlohmann::json(records->back().id);
+  // The next page: the records below the last one given; null on the last page.
+  answer["next_before"] = more ? nlohmann::json(records->back().id) : nlohmann::json(nullptr);
   return json_response(c.req, http::status::ok, answer);
 }
 

@@ -134,6 +134,11 @@ TEST(ApiQuality, AnOperatorRecordsAndAReaderPagesNewestFirst) {
       base + "?before=" + std::to_string(page.json()["next_before"].get<std::int64_t>()), oper);
   ASSERT_EQ(next.json()["records"].size(), 1u);
   EXPECT_EQ(next.json()["records"][0]["note"], "reworked");
+  EXPECT_TRUE(next.json()["next_before"].is_null());  // the last page says so
+  // A page that holds exactly what is left is the last one too.
+  const auto whole = c.get(base + "?limit=2", oper).json();
+  EXPECT_EQ(whole["records"].size(), 2u);
+  EXPECT_TRUE(whole["next_before"].is_null()) << whole.dump();
 }
 
 TEST(ApiQuality, BadBodiesAre400AnUnknownMachine404) {
