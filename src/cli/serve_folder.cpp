@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/text.hpp"
 #include "dnc/store_import.hpp"
 #include "dnc/store_users.hpp"
 #include "gcode/dialect.hpp"
@@ -36,14 +37,16 @@ tl::expected<dnc::Actor, std::string> actor_for(dnc::Store& store, const std::st
   return dnc::Actor{user->name, "cli"};
 }
 
+// A folder's file names are anyone's: printed with their control bytes escaped.
 void print_file(const dnc::ImportedFile& f) {
+  const std::string file = core::printable(f.file);
   if (!f.error.empty()) {
-    fmt::print("{}: skipped: {}\n", f.file, f.error);
+    fmt::print("{}: skipped: {}\n", file, core::printable(f.error));
   } else if (!f.created) {
-    fmt::print("{}: program {}, revision {} there already\n", f.file, f.program,
+    fmt::print("{}: program {}, revision {} there already\n", file, f.program,
                f.hash.substr(0, 12));
   } else {
-    fmt::print("{}: program {}, revision {} ({})\n", f.file, f.program, f.hash.substr(0, 12),
+    fmt::print("{}: program {}, revision {} ({})\n", file, f.program, f.hash.substr(0, 12),
                f.state);
   }
 }

@@ -56,11 +56,14 @@ TEST(ServeFolderCli, ASkippedFileIsSaidAndTheExitStatusIsOne) {
   const TempDir shop;
   shop.write("O1001.nc", "G0 X1\nM2\n");
   shop.write("bad name.nc", "G0 X1\nM2\n");
+  shop.write("esc\x1b[2Jape.nc", "G0 X1\nM2\n");  // a name that would clear a terminal
   const auto r = test::usina("serve --data " + quote(data) + " --import " + quote(shop.path()) +
                              " --user boss");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_TRUE(test::contains(r.out, "bad name.nc: skipped: ")) << r.out;
-  EXPECT_TRUE(test::contains(r.err, "1 imported, 0 there already, 1 skipped")) << r.err;
+  EXPECT_TRUE(test::contains(r.out, "esc\\x1b[2Jape.nc: skipped: ")) << r.out;
+  EXPECT_FALSE(test::contains(r.out, "\x1b")) << "a control byte reached the terminal";
+  EXPECT_TRUE(test::contains(r.err, "1 imported, 0 there already, 2 skipped")) << r.err;
 }
 
 TEST(ServeFolderCli, TheUserMustExistBeEnabledAndHaveTheRole) {
