@@ -4,7 +4,7 @@
 // groups in ascending order, the order a block runs them in); each handler
 // name is resolved to the runner's handler. Every runner reads its
 // dialect's table through this: the RS274NGC interpreter (interp/codes.hpp)
-// for rs274ngc and fanuc, romi's executor, grbl's block check.
+// for rs274ngc and fanuc, romi's handlers, grbl's block check.
 #pragma once
 
 #include <cstdint>

@@ -5,9 +5,10 @@
 // words), evaluates every value, and gives the interpreter numbers with the
 // places the user wrote them at; it never writes G-code text for the
 // interpreter to read again. From here on the road is the same for every
-// dialect: rs274ngc's own reader, fanuc and grbl hand it to the RS274NGC
-// interpreter, romi to its executor (romi/exec.hpp, its own handlers in its
-// groups' order); the front ends to come hand it over too.
+// dialect: rs274ngc's own reader, fanuc, grbl and romi hand it to the
+// RS274NGC interpreter (romi through its handlers, romi/translate.hpp, which
+// work its own forms into these words first); the front ends to come hand
+// it over too.
 #pragma once
 
 #include <cstdint>
@@ -30,9 +31,10 @@ struct EvaluatedWord {
   // diagnostics point at the block.
   std::uint32_t col = 0;
   // Written as an increment whatever G90/G91 say (romi's lower-case words,
-  // docs/romi.md): the word counts from where its move starts. The
-  // interpreter takes it on the axis words of a move to a point (G0-G3,
-  // G33, G38, splines, G28/G30's point) and refuses it elsewhere.
+  // docs/romi.md): the word counts from where its move starts. Romi's
+  // handlers resolve their own; the interpreter takes it on the axis words
+  // of a move to a point (G0-G3, G33, G38, splines, G28/G30's point) and
+  // refuses it elsewhere.
   bool incremental = false;
 };
 

@@ -20,6 +20,10 @@ double Interpreter::tool_diameter(int tool) const {
 bool Interpreter::comments(std::span<const CommentText> notes) {
   for (const CommentText& c : notes) {
     std::string_view t = c.text;
+    if (rules_.comments_as_written) {
+      in_order([this, text = std::string(t)] { machine_.emit(canon::Comment{text}); });
+      continue;
+    }
     while (!t.empty() && (t.front() == ' ' || t.front() == '\t'))
       t.remove_prefix(1);
     // (MSG, text) is an operator message; other comments are kept too, so a
@@ -179,7 +183,8 @@ bool Interpreter::change_tool(const BlockWords& w) {
     return error(core::Code::MissingWord, w.mcol[kMGroupToolChange],
                  "M6 with no tool selected: give T first");
   // LinuxCNC's M6 stops the spindle before the change.
-  if (tc == 6 && s.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
+  if (tc == 6 && rules_.tool_change_stops_spindle && s.spindle != canon::SpindleDir::Off)
+    machine_.spindle(canon::SpindleDir::Off);
   s.tool = tool;
   tool_changed_ = true;
   const double d = tool_diameter(tool);
@@ -395,7 +400,12 @@ bool Interpreter::stop(const BlockWords& w) {
   case 1:
   case 60:
     if (auto e = comp_.flush(machine_); !e) return error(e.error());
-    machine_.emit(canon::Comment{fmt::format("M{} (program stop)", w.m[kMGroupStop])});
+    {
+      const int m = w.m[kMGroupStop];
+      machine_.emit(canon::Comment{rules_.two_digit_stop_codes
+                                       ? fmt::format("M{:02} (program stop)", m)
+                                       : fmt::format("M{} (program stop)", m)});
+    }
     break;
   default: break;
   }

@@ -129,6 +129,25 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
   return true;
 }
 
+void Interpreter::hole(const core::SourceLoc& loc, const Vec3& top, double depth) {
+  machine_.set_source(loc);
+  machine_.hole(top, depth);
+}
+
+void Interpreter::pocket(const core::SourceLoc& loc, canon::Outline outline, double depth) {
+  machine_.set_source(loc);
+  const auto place = [this](Vec2 q) {
+    const Vec3 a = machine_.to_absolute({q.x, q.y, 0.0});
+    return Vec2{a.x, a.y};
+  };
+  outline.start = place(outline.start);
+  for (canon::OutlineSegment& s : outline.segs) {
+    s.to = place(s.to);
+    if (s.center) s.center = place(*s.center);
+  }
+  machine_.emit(canon::Pocket{std::move(outline), depth});
+}
+
 bool Interpreter::finish() {
   if (!run_.failed() && !ended_) {
     if (auto e = comp_.flush(machine_); !e) error(e.error());

@@ -70,6 +70,15 @@ struct DialectRules {
   // The order in which a block's parts run (execution_order.hpp). Null:
   // LinuxCNC's execute_block order.
   const ExecutionOrder* order = nullptr;
+  // M6 stops a running spindle before the change (LinuxCNC). Romi's M06
+  // changes the tool with the spindle as the program left it.
+  bool tool_change_stops_spindle = true;
+  // Comments go out as written: no blanks trimmed, no "(MSG," operator
+  // message (romi's `;` comments; its control has no messages).
+  bool comments_as_written = false;
+  // The stop comment names the code with two digits, "M00 (program stop)",
+  // as the control writes it (romi); LinuxCNC's trace says "M0".
+  bool two_digit_stop_codes = false;
 };
 
 struct BlockWords;
@@ -123,6 +132,17 @@ class Interpreter final : private ParameterSource {
   bool ended() const { return ended_; }
 
   bool failed() const { return run_.failed(); }
+
+  // For a front end whose control has cycles of its own (romi's G81, G24,
+  // G25, G26 and its M06 with a change position), made of blocks it hands
+  // over: the ops of those blocks are marked `origin`'s until it is set
+  // back to Program; and the features such a cycle leaves, which no block
+  // of words says (a hole, a pocket's outline, in program coordinates),
+  // sent at `loc` in order with the moves.
+  void set_origin(canon::Origin origin) { machine_.set_origin(origin); }
+
+  void hole(const core::SourceLoc& loc, const Vec3& top, double depth);
+  void pocket(const core::SourceLoc& loc, canon::Outline outline, double depth);
 
   const Parameters& parameters() const { return params_; }
 

@@ -1,6 +1,6 @@
 // The romi dialect's G/M table (romi/dialect.cpp: code → modal group → handler
 // name), resolved once (gcode/code_table.hpp): each code's handler is a
-// member function of the executor, its group a rank in the order of
+// member function of romi's translator, its group a rank in the order of
 // execution; and the codes of one block by rank.
 #pragma once
 
@@ -15,11 +15,11 @@
 
 namespace usina::gcode::romi {
 
-class Executor;
+class Translator;
 
 // Runs one code of the block (code in tenths); false after reporting an
 // error. Every handler has this signature.
-using Handler = bool (Executor::*)(int code);
+using Handler = bool (Translator::*)(int code);
 
 // One code of the table, resolved.
 using Code = ResolvedCode<Handler>;

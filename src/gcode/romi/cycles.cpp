@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "gcode/romi/exec.hpp"
+#include "gcode/romi/translate.hpp"
 
 namespace usina::gcode::romi {
 namespace {
@@ -17,12 +17,12 @@ constexpr long kMaxPatternPoints = 100'000;
 
 }  // namespace
 
-bool Executor::h_cycle(int code) {
+bool Translator::h_cycle(int code) {
   if (code == 800) {
     work_.drill.active = false;
     return true;
   }
-  if (work_.comp.active()) {
+  if (work_.comp_on) {
     return error(core::Code::CompNotAllowed, 0,
                  "G81 with cutter radius compensation on: G40 first");
   }
@@ -48,38 +48,49 @@ bool Executor::h_cycle(int code) {
 
 // One hole at the programmed point p: approach to the R plane, feed to the
 // depth, dwell, retract (G99: to the R plane; G98: to where it started).
-bool Executor::drill_at(Vec2 p) {
+bool Translator::drill_at(Vec2 p) {
+  // G81 refuses compensation; a G41/G42 after it would offset nothing of
+  // the hole but its approach.
+  if (work_.comp_on) {
+    return error(core::Code::CompNotAllowed, 0,
+                 "a G81 hole with cutter radius compensation on: G40 first");
+  }
   if (!require_feed("G81")) return false;
   if (work_.tool_diameter <= 0.0) {
     return error(core::Code::UnknownToolDiameter, 0,
                  "a drilled hole needs the tool's diameter: change the tool with T<n> M06 first");
   }
+  if (!hand()) return false;  // the block's words before its first hole
   const Vec2 m = work_.tf.apply(p);
-  const Vec3 now = xyz(work_.machine.pos);
+  const Vec3 now = machine_position();
   const double zr = work_.drill.r;
   const double clear = std::max(now.z, zr);
-  CycleOrigin origin(machine_);
-  if (now.z < zr) machine_.traverse({now.x, now.y, zr});
-  if (std::hypot(m.x - now.x, m.y - now.y) > 1e-9) machine_.traverse({m.x, m.y, clear});
-  if (clear > zr) machine_.traverse({m.x, m.y, zr});
-  machine_.hole({m.x, m.y, 0.0}, work_.drill.depth);
-  machine_.feed({m.x, m.y, -work_.drill.depth});
-  if (work_.drill.dwell > 0) machine_.dwell(work_.drill.dwell);
+  const OpOrigin origin(interp_, canon::Origin::Cycle);
+  if (now.z < zr && !hand_move(0, {now.x, now.y, zr})) return false;
+  if (std::hypot(m.x - now.x, m.y - now.y) > 1e-9 && !hand_move(0, {m.x, m.y, clear})) return false;
+  if (clear > zr && !hand_move(0, {m.x, m.y, zr})) return false;
+  interp_.hole(run_.loc(), {m.x, m.y, 0.0}, work_.drill.depth);
+  if (!hand_move(1, {m.x, m.y, -work_.drill.depth})) return false;
+  if (work_.drill.dwell > 0) {
+    give('G', 4);
+    give('P', work_.drill.dwell);
+    if (!hand()) return false;
+  }
   const double back = work_.machine.retract == RetractMode::RPlane ? zr : clear;
-  machine_.traverse({m.x, m.y, back});
+  if (!hand_move(0, {m.x, m.y, back})) return false;
   work_.pos = {p.x, p.y, back};
   return true;
 }
 
 // A pattern's point: drilled when G81 is on, else only reached. Each
 // counts against the run's iteration budget, so a loop of patterns ends.
-bool Executor::at_pattern_point(Vec2 p) {
+bool Translator::at_pattern_point(Vec2 p) {
   if (!run_.count_jump(kJumps)) return false;
   if (work_.drill.active) return drill_at(p);
   return emit_line({p.x, p.y, work_.pos.z}, true);
 }
 
-bool Executor::h_grid(int) {
+bool Translator::h_grid(int) {
   moved_by_handler_ = true;
   const auto dx = words_.take('X');
   const auto dy = words_.take('Y');
@@ -111,7 +122,7 @@ bool Executor::h_grid(int) {
   return true;
 }
 
-bool Executor::h_bolt_circle(int) {
+bool Translator::h_bolt_circle(int) {
   moved_by_handler_ = true;
   const auto xc = words_.take('I');
   const auto yc = words_.take('J');
@@ -167,7 +178,7 @@ canon::Outline rounded_rectangle(Vec2 c, double a, double b, double rr) {
 // A rounded rectangle about c, half sizes a × b, corner radius rr, run
 // counter-clockwise from the middle of its right side at height z, reached
 // by a feed move from where the tool is.
-bool Executor::ring(Vec2 c, double a, double b, double rr, double z) {
+bool Translator::ring(Vec2 c, double a, double b, double rr, double z) {
   if (a < 1e-9 && b < 1e-9) return true;
   const canon::Outline path = rounded_rectangle(c, a, b, rr);
   if (!emit_line({path.start.x, path.start.y, z}, false)) return false;

@@ -1,14 +1,14 @@
 // The romi dialect (ROMI MACH / Interact milling control of seed 000;
 // spec/romi.md): its lexical rules, its G/M table, the codes in force at
 // program start and its options. The handlers named here are the romi
-// executor's (romi/exec.hpp); code_table() resolves them once.
+// translator's (romi/translate.hpp); code_table() resolves them once.
 #include "gcode/romi/engine.hpp"
 
 namespace usina::gcode {
 namespace {
 
 // Groups in the order they run within a block: below romi::kAfterMoveGroup
-// before the block's move, the rest after it (romi/exec.cpp).
+// before the block's move, the rest after it (romi/translate.cpp).
 enum Group : int {
   ToolChange = 1,
   Spindle = 2,
@@ -113,7 +113,7 @@ std::unique_ptr<ProgramRunner> make(RunContext context) {
 }  // namespace
 
 const romi::CodeTable& romi::code_table() {
-  static const CodeTable kTable(romi_dialect(), &Executor::handler_named, kAfterMoveGroup);
+  static const CodeTable kTable(romi_dialect(), &Translator::handler_named, kAfterMoveGroup);
   return kTable;
 }
 

@@ -17,7 +17,8 @@ Engine::Engine(const Dialect& dialect, const CodeTable& codes, RunContext contex
       sink_(context.sink),
       diags_(context.diags),
       run_(context.diags, options_.max_total_iterations),
-      exec_(codes, run_, options_, dialect_options_, context.sink, context.diags) {}
+      interp_(context.sources, options_, context.sink, context.diags, nullptr, romi_rules()),
+      translator_(codes, run_, options_, dialect_options_, interp_) {}
 
 void Engine::set_parameter(int index, double value) {
   if (index >= 0 && index <= kMaxParam) params_[static_cast<std::size_t>(index)] = value;
@@ -45,24 +46,27 @@ bool Engine::run(std::uint32_t file) {
   const core::SourceFile* f = sources_.get(file);
   if (f == nullptr) return false;
   cursor_.offset = skip_byte_order_mark(f->text(), file, diags_);
-  exec_.start(dialect_.start_codes, {file, 1, 1, 0, 0});
-  while (!exec_.ended() && !run_.failed() && cursor_.offset < f->text().size()) {
+  translator_.start(dialect_.start_codes, {file, 1, 1, 0, 0});
+  while (!translator_.ended() && !run_.failed() && cursor_.offset < f->text().size()) {
     step();
     if (sink_.stopped()) run_.fail();  // the operation budget ran out
-    // The canonical machine refused an op for a number out of range (reported).
-    if (exec_.faulted()) run_.fail();
   }
   end_of_program();
-  sink_.finish();
   return !run_.failed();
 }
 
-// A program that ends without M02/M30: what compensation holds goes out,
-// and a warning says the end was taken.
+// The end of the run: what compensation holds goes out (the interpreter's
+// finish), and a program that ends without M02/M30 gets a warning that the
+// end was taken. After an error nothing more goes out.
 void Engine::end_of_program() {
-  if (!run_.failed() && !exec_.ended()) exec_.finish();
-  if (exec_.faulted()) run_.fail();
-  if (!run_.failed() && !exec_.ended()) {
+  const bool open = !run_.failed() && !translator_.ended();
+  if (open) translator_.finish();
+  if (run_.failed()) {
+    sink_.finish();
+    return;
+  }
+  if (!interp_.finish()) run_.fail();
+  if (open && !run_.failed()) {
     run_.at({file_, cursor_.line > 1 ? cursor_.line - 1 : 1, 0, 0, 0});
     run_.note(core::Code::NoProgramEnd, core::Severity::Warning, 0,
               "the program ends without M02 or M30; taken as its end");
@@ -99,10 +103,10 @@ void Engine::step() {
     run_.fail();
     return;
   }
-  if (!exec_.ended() && !run_.failed()) after_block_number();
+  if (!translator_.ended() && !run_.failed()) after_block_number();
 }
 
-// The block's steps around the executor's: the dashes read as minus signs,
+// The block's steps around the handlers': the dashes read as minus signs,
 // the assignments, the words evaluated and run, the jumps.
 bool Engine::block() {
   for (const std::uint32_t dash : block_.dashes) {
@@ -115,7 +119,7 @@ bool Engine::block() {
   }
   if (!statements(false) || !evaluate_words()) return false;
   const EvaluatedBlock evaluated{block_.base.loc, words_, {}, block_.base.comments};
-  return exec_.run_evaluated(evaluated, [this] { return statements(true); });
+  return translator_.run_evaluated(evaluated, [this] { return statements(true); });
 }
 
 // Step 1: every word's value, with its column, and lower-case words marked
@@ -138,9 +142,11 @@ bool Engine::evaluate_words() {
 }
 
 std::optional<RunModes> Engine::modes() const {
-  const Modal& m = exec_.state();
-  RunModes out = run_modes(m.machine);
-  if (m.drill.active) out.motion = 810;
+  const Modal& m = translator_.state();
+  RunModes out;
+  out.inch = m.machine.units == core::LengthUnit::Inch;
+  out.incremental = m.machine.incremental;
+  out.motion = m.drill.active ? 810 : m.machine.motion;
   const Transform& t = m.tf;
   out.frame_moved =
       t.mirror_x || t.mirror_y || t.scale_x != 1.0 || t.scale_y != 1.0 || t.rotation_deg != 0.0;

@@ -1,8 +1,9 @@
 // The front end of the romi dialect (spec/romi.md): cuts the text into
 // blocks (romi_syntax), runs the Fagor parametric statements (P parameters,
-// jumps, repeats, calls), evaluates each word and hands it to the executor
-// below the text (romi/exec.hpp), which checks and runs the block. The
-// front end never writes text for another part to read again.
+// jumps, repeats, calls), evaluates each word and hands the block to romi's
+// handlers (romi/translate.hpp), which check it by romi's table and hand the
+// RS274NGC interpreter the engine owns its words: the one road below the
+// text every dialect takes. No text is written for another part to read.
 #pragma once
 
 #include <array>
@@ -13,9 +14,9 @@
 #include "gcode/dialect.hpp"
 #include "gcode/expr.hpp"
 #include "gcode/romi/codes.hpp"
-#include "gcode/romi/exec.hpp"
 #include "gcode/romi/services.hpp"
 #include "gcode/romi/syntax.hpp"
+#include "gcode/romi/translate.hpp"
 
 namespace usina::gcode::romi {
 
@@ -30,7 +31,7 @@ class Engine final : public ProgramRunner, private ParameterSource {
   bool run(std::uint32_t file) override;
 
   // The modal state between blocks: after a failed block, as it was before.
-  const Modal& state() const { return exec_.state(); }
+  const Modal& state() const { return translator_.state(); }
 
   // Romi's modes as RS274NGC's words name them (G70/G71 are inch/mm, G81 a
   // canned cycle); a mirror, scale or rotation in force moves the frame.
@@ -39,7 +40,7 @@ class Engine final : public ProgramRunner, private ParameterSource {
   // Whether a handler of this name exists (every name in the dialect's
   // table must: a test checks).
   static bool knows_handler(std::string_view name) {
-    return Executor::handler_named(name) != nullptr;
+    return Translator::handler_named(name) != nullptr;
   }
 
  private:
@@ -94,7 +95,8 @@ class Engine final : public ProgramRunner, private ParameterSource {
   canon::Sink& sink_;
   core::DiagnosticSink& diags_;
   Services run_;
-  Executor exec_;
+  Interpreter interp_;  // runs the machine: what the handlers hand it
+  Translator translator_;
 
   RomiBlock block_;
   std::vector<EvaluatedWord> words_;  // the block's, evaluated (kept: no allocation a block)

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "gcode/romi/exec.hpp"
+#include "gcode/romi/translate.hpp"
 
 namespace usina::gcode::romi {
 
@@ -26,57 +26,54 @@ Vec2 Transform::apply(Vec2 p) const {
 }
 
 // G17 only: the table has no G18/G19. A member, as every handler is.
-bool Executor::h_plane(int) {  // NOLINT(readability-convert-member-functions-to-static)
+bool Translator::h_plane(int) {  // NOLINT(readability-convert-member-functions-to-static)
   return true;
 }
 
-bool Executor::h_distance(int code) {
+bool Translator::h_distance(int code) {
   work_.machine.incremental = code == 910;
   return true;
 }
 
-bool Executor::h_units(int code) {
+bool Translator::h_units(int code) {
   work_.machine.units = code == 700 ? core::LengthUnit::Inch : core::LengthUnit::Mm;
   return true;
 }
 
-bool Executor::h_retract(int code) {
+bool Translator::h_retract(int code) {
   work_.machine.retract = code == 990 ? RetractMode::RPlane : RetractMode::OldZ;
   return true;
 }
 
-bool Executor::h_motion(int code) {
+bool Translator::h_motion(int code) {
   work_.machine.motion = code;
   if (dialect_options_.motion_cancels_cycle) work_.drill.active = false;
   return true;
 }
 
-bool Executor::h_comp(int code) {
-  CutterComp& comp = work_.comp;
+bool Translator::h_comp(int code) {
   if (code == 400) {
-    const auto programmed = comp.programmed_position();
-    if (auto e = comp.stop(machine_); !e) return error(e.error());
-    if (programmed) set_xyz(work_.machine.pos, *programmed);
+    give('G', 40);
+    work_.comp_on = false;
     return true;
   }
-  if (comp.active()) {
+  if (work_.comp_on) {
     return error(core::Code::CompNotAllowed, 0, "cutter compensation is already on: G40 first");
   }
   double diameter = work_.tool_diameter;
   if (dialect_options_.comp_radius_from_register && work_.offset_register > 0) {
     if (const ToolEntry* t = options_.tools.find(work_.offset_register)) diameter = t->diameter;
   }
-  double radius = options_.ignore_cutter_comp ? 0.0 : diameter / 2.0;
   // With one axis mirrored the part is drawn the other way round: the
   // side swaps (spec/romi.md, "Transformations").
   const bool left = (code == 410) != work_.tf.flips();
-  if (auto e = comp.start(left ? CompSide::Left : CompSide::Right, radius, core::Plane::XY); !e) {
-    return error(e.error());
-  }
+  give('G', left ? 41.1 : 42.1);
+  give('D', diameter);
+  work_.comp_on = true;
   return true;
 }
 
-bool Executor::h_mirror(int code) {
+bool Translator::h_mirror(int code) {
   if (code == 300) {
     work_.tf.mirror_x = work_.tf.mirror_y = false;
     return true;
@@ -90,7 +87,7 @@ bool Executor::h_mirror(int code) {
   return true;
 }
 
-bool Executor::h_scale(int) {
+bool Translator::h_scale(int) {
   const auto k = words_.take('K');
   const auto x = words_.take('X');
   const auto y = words_.take('Y');
@@ -112,7 +109,7 @@ bool Executor::h_scale(int) {
   return true;
 }
 
-bool Executor::h_rotate(int) {
+bool Translator::h_rotate(int) {
   const auto c = words_.take('C');
   if (!c) return error(core::Code::MissingWord, 0, "G73 needs C: the angle (C0 cancels)");
   const auto i = words_.take('I');
@@ -122,7 +119,7 @@ bool Executor::h_rotate(int) {
   return true;
 }
 
-std::optional<double> Executor::tool_diameter_from_comments() const {
+std::optional<double> Translator::tool_diameter_from_comments() const {
   for (const CommentText& c : comments_) {
     const std::string_view t = c.text;
     for (std::size_t i = 0; i + 1 < t.size(); ++i) {
@@ -137,8 +134,8 @@ std::optional<double> Executor::tool_diameter_from_comments() const {
   return std::nullopt;
 }
 
-bool Executor::h_tool_change(int) {
-  if (work_.comp.active()) {
+bool Translator::h_tool_change(int) {
+  if (work_.comp_on) {
     return error(core::Code::CompNotAllowed, 0,
                  "a tool change with cutter radius compensation on: G40 first");
   }
@@ -147,10 +144,12 @@ bool Executor::h_tool_change(int) {
   }
   const int tool = work_.machine.selected_tool;
   std::optional<double> d;
+  bool from_comment = false;
   if (const ToolEntry* t = options_.tools.find(tool); t != nullptr && t->diameter > 0) {
     d = t->diameter;
   } else {
     d = tool_diameter_from_comments();
+    from_comment = true;
   }
   if (!d) {
     return error(core::Code::UnknownToolDiameter, 0,
@@ -160,52 +159,48 @@ bool Executor::h_tool_change(int) {
   }
   const auto x = words_.take('X');
   const auto y = words_.take('Y');
-  const Vec3 back = xyz(work_.machine.pos);
+  if (!hand()) return false;  // T and what came before it
+  const Vec3 back = machine_position();
   // The tool-change position is the machine's, not a programmed point:
   // no transformation, and the program goes on from where it was.
-  machine_.set_origin(canon::Origin::ToolChange);
-  if (x || y) machine_.traverse({x ? mm(*x) : back.x, y ? mm(*y) : back.y, back.z});
+  const OpOrigin origin(interp_, canon::Origin::ToolChange);
+  if ((x || y) && !hand_move(0, {x ? mm(*x) : back.x, y ? mm(*y) : back.y, back.z})) return false;
+  if (from_comment) {
+    // The comment's d<diameter> is the tool's as a G10 L1 would set it.
+    give('G', 10);
+    give('L', 1);
+    give('P', tool);
+    give('R', *d / 2.0);
+    if (!hand()) return false;
+  }
+  give('M', 6);
+  if (!hand()) return false;
   work_.machine.tool = tool;
   work_.tool_diameter = *d;
-  machine_.set_tool_diameter(*d);
-  machine_.emit(canon::ToolChange{tool, *d});
-  if (x || y) machine_.traverse(back);
-  machine_.set_origin(canon::Origin::Program);
+  return !(x || y) || hand_move(0, back);
+}
+
+bool Translator::h_spindle(int code) {
+  give('M', code / 10);
   return true;
 }
 
-bool Executor::h_spindle(int code) {
-  const auto dir = code == 30 ? canon::SpindleDir::Cw
-                              : (code == 40 ? canon::SpindleDir::Ccw : canon::SpindleDir::Off);
-  in_order([this, dir] { machine_.spindle(dir); });
+bool Translator::h_coolant(int code) {
+  give('M', code / 10);
   return true;
 }
 
-bool Executor::h_coolant(int code) {
-  ModalState& m = work_.machine;
-  if (code == 70) m.mist = true;
-  if (code == 80) m.flood = true;
-  if (code == 90) m.mist = m.flood = false;
-  in_order([this, c = canon::Coolant{m.mist, m.flood}] { machine_.emit(c); });
+bool Translator::h_stop(int code) {
+  give('M', code / 10);
   return true;
 }
 
-bool Executor::h_stop(int code) {
-  if (auto e = work_.comp.flush(machine_); !e) return error(e.error());
-  machine_.emit(canon::Comment{fmt::format("M{:02} (program stop)", code / 10)});
-  return true;
-}
-
-bool Executor::h_end(int) {
+bool Translator::h_end(int code) {
   if (work_.blend) {
     return error(core::Code::BlendNeedsMove, 0,
                  "an arc with only R blends into the next move, and the program ends");
   }
-  if (auto e = work_.comp.flush(machine_); !e) return error(e.error());
-  work_.comp.reset();
-  if (work_.machine.spindle != canon::SpindleDir::Off) machine_.spindle(canon::SpindleDir::Off);
-  machine_.emit(canon::ProgramEnd{});
-  ended_ = true;
+  give('M', code / 10);
   return true;
 }
 

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "gcode/romi/exec.hpp"
+#include "gcode/romi/translate.hpp"
 
 namespace usina::gcode::romi {
 namespace {
@@ -38,7 +38,7 @@ double positive_sweep(double a) {
 
 }  // namespace
 
-Vec3 Executor::cartesian_end(const Vec3& start) const {
+Vec3 Translator::cartesian_end(const Vec3& start) const {
   Vec3 end = start;
   for (int a = 0; a < 3; ++a) {
     const char letter = "XYZ"[a];
@@ -50,7 +50,7 @@ Vec3 Executor::cartesian_end(const Vec3& start) const {
 }
 
 // The end of a straight move (G00, G01, a drilling position) from `start`.
-std::optional<Vec3> Executor::line_end(const Vec3& start, Fail& fail) const {
+std::optional<Vec3> Translator::line_end(const Vec3& start, Fail& fail) const {
   const bool polar_words = words_.has('R') || words_.has('A') || words_.has('C');
   if (!polar_words) {
     if (words_.has('I') || words_.has('J')) {
@@ -77,7 +77,7 @@ std::optional<Vec3> Executor::line_end(const Vec3& start, Fail& fail) const {
 
 // The end of a polar straight move from p0: R A, R C, R or C, about the
 // polar centre I J (program zero when absent).
-std::optional<Vec2> Executor::polar_end(Vec2 p0, Fail& fail) const {
+std::optional<Vec2> Translator::polar_end(Vec2 p0, Fail& fail) const {
   const Vec2 o{words_.has('I') ? mm(words_.get('I')) : 0.0,
                words_.has('J') ? mm(words_.get('J')) : 0.0};
   const Vec2 d{p0.x - o.x, p0.y - o.y};
@@ -105,12 +105,12 @@ std::optional<Vec2> Executor::polar_end(Vec2 p0, Fail& fail) const {
   return Vec2{o.x + r * d.x / r0, o.y + r * d.y / r0};
 }
 
-bool Executor::require_feed(const char* what) {
+bool Translator::require_feed(const char* what) {
   if (work_.machine.feed > 0.0) return true;
   return error(core::Code::NoFeedRate, 0, fmt::format("{} with no feed rate: give F", what));
 }
 
-bool Executor::move() {
+bool Translator::move() {
   if (moved_by_handler_) return true;
   words_.forget_taken();  // G81's R and Z, G31's X Y...: not a position
   bool position = false;
@@ -160,14 +160,14 @@ bool Executor::move() {
   return emit_line(*end, work_.motion() == 0);
 }
 
-bool Executor::arc_block() {
+bool Translator::arc_block() {
   if (!require_feed(work_.motion() == 2 ? "G02" : "G03")) return false;
   if (words_.has('X') || words_.has('Y')) return arc_cartesian();
   return arc_polar();
 }
 
 // X Y I J (absolute centre) and X Y R (shorter arc; R < 0 the longer).
-bool Executor::arc_cartesian() {
+bool Translator::arc_cartesian() {
   const bool ccw = work_.motion() == 3;
   const Vec2 p0 = xy(work_.pos);
   const Vec3 end = cartesian_end(work_.pos);
@@ -212,7 +212,7 @@ bool Executor::arc_cartesian() {
 }
 
 // The polar forms: C I J, C, R C, R A, R A C, and R alone (a blend).
-bool Executor::arc_polar() {
+bool Translator::arc_polar() {
   const bool ccw = work_.motion() == 3;
   const Vec2 p0 = xy(work_.pos);
   if (words_.has('R')) return tangent_arc(p0, ccw);
@@ -230,7 +230,7 @@ bool Executor::arc_polar() {
 
 // R C, R A, R A C and R alone: radius R, tangent at p0 to the direction of
 // travel (R A C: to A). R alone holds a blend arc for the next block.
-bool Executor::tangent_arc(Vec2 p0, bool ccw) {
+bool Translator::tangent_arc(Vec2 p0, bool ccw) {
   const double r = mm(words_.get('R'));
   if (!(r > 0.0)) {
     return error(core::Code::BadWordValue, words_.col('R'), "arc radius must be positive");
@@ -266,7 +266,7 @@ bool Executor::tangent_arc(Vec2 p0, bool ccw) {
 
 // An arc from p0 about `center` through `sweep` degrees (more than 360:
 // whole turns and the rest) in the G02/G03 sense.
-bool Executor::swept_arc(Vec2 p0, Vec2 center, double sweep, bool ccw) {
+bool Translator::swept_arc(Vec2 p0, Vec2 center, double sweep, bool ccw) {
   if (!(sweep > 0.0) || sweep > 360.0 * 1000) {
     return error(core::Code::BadWordValue, words_.col('C'),
                  "the sweep C must be positive (G02 or G03 gives the direction)");
@@ -288,7 +288,7 @@ bool Executor::swept_arc(Vec2 p0, Vec2 center, double sweep, bool ccw) {
 
 // The R-only arc held from the previous block, now that the next move's end
 // is known: it runs on to where its tangent passes through that end.
-bool Executor::blend(const Vec3& next_end) {
+bool Translator::blend(const Vec3& next_end) {
   const PendingBlend b = *work_.blend;
   work_.blend.reset();
   const Vec2 q = xy(next_end);
@@ -309,6 +309,7 @@ bool Executor::blend(const Vec3& next_end) {
         b.ccw ? Vec2{-std::sin(cand), std::cos(cand)} : Vec2{std::sin(cand), -std::cos(cand)};
     if ((q.x - tp.x) * dir.x + (q.y - tp.y) * dir.y > 0) t = cand;
   }
+  if (!hand()) return false;  // the words before the move, at their own block
   const core::SourceLoc here = run_.loc();
   at(b.loc);
   const Vec3 end{b.center.x + b.radius * std::cos(t), b.center.y + b.radius * std::sin(t),
@@ -318,22 +319,15 @@ bool Executor::blend(const Vec3& next_end) {
   return ok;
 }
 
-bool Executor::emit_line(const Vec3& end, bool rapid) {
-  const Vec3 m = work_.tf.apply(end);
-  if (work_.comp.active() || !work_.comp.arc_allowed()) {
-    if (auto e = work_.comp.straight(m, rapid, run_.loc(), machine_); !e) return error(e.error());
-  } else if (rapid) {
-    machine_.traverse(m);
-  } else {
-    machine_.feed(m);
-  }
+bool Translator::emit_line(const Vec3& end, bool rapid) {
+  if (!hand_move(rapid ? 0 : 1, work_.tf.apply(end))) return false;
   const Vec2 d{end.x - work_.pos.x, end.y - work_.pos.y};
   if (std::hypot(d.x, d.y) > 1e-9) work_.direction = deg(std::atan2(d.y, d.x));
   work_.pos = end;
   return true;
 }
 
-bool Executor::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
+bool Translator::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
   if (!work_.tf.uniform()) {
     return error(core::Code::UnequalScaleArc, 0,
                  fmt::format("an arc under G72 with unequal factors (X {}, Y {}): it would be "
@@ -342,14 +336,19 @@ bool Executor::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
   }
   const Vec3 m = work_.tf.apply(end);
   const Vec2 mc = work_.tf.apply(center);
-  const bool machine_ccw = ccw != work_.tf.flips();
-  const int turn = machine_ccw ? turns : -turns;
-  const Vec3 c3{mc.x, mc.y, work_.machine.pos[2]};
-  if (work_.comp.active() || !work_.comp.arc_allowed()) {
-    if (auto e = work_.comp.arc(m, c3, turn, run_.loc(), machine_); !e) return error(e.error());
-  } else {
-    machine_.arc(m, c3, turn);
+  // The arc starts where the last move left the tool: after a new mirror,
+  // scale or rotation that is not the programmed point transformed.
+  const Vec2 from = xy(work_.machine_at);
+  const double off = std::fabs(core::distance(from, mc) - core::distance(xy(m), mc));
+  if (off > kOnCircle) {
+    return error(core::Code::ArcRadiusMismatch, 0,
+                 fmt::format("the arc starts where the last move left the tool, ({:.4f}, "
+                             "{:.4f}), {:.4f} mm off its circle: the mirror, scale or rotation "
+                             "changed since that move; move to a point first",
+                             from.x, from.y, off));
   }
+  const bool machine_ccw = ccw != work_.tf.flips();
+  if (!hand_arc(m, mc, machine_ccw, turns)) return false;
   const double ae = std::atan2(end.y - center.y, end.x - center.x);
   work_.direction = deg(ae) + (ccw ? 90.0 : -90.0);
   work_.pos = end;

@@ -7,13 +7,13 @@
 
 #include <fmt/format.h>
 
-#include "gcode/romi/exec.hpp"
+#include "gcode/romi/translate.hpp"
 
 namespace usina::gcode::romi {
 
 // The pocket's words, and the sizes the checks and the cut share (each
 // measured from the pocket's centre, in mm).
-struct Executor::Pocket {
+struct Translator::Pocket {
   Vec3 start;      // the current point: one corner, and where the tool returns
   Vec2 corner;     // X Y, the opposite corner
   double z = 0.0;  // Z as written: only its size counts
@@ -41,17 +41,16 @@ struct Executor::Pocket {
   double rough_y() const { return wall_y() - ay; }
 };
 
-bool Executor::h_pocket(int) {
+bool Translator::h_pocket(int) {
   moved_by_handler_ = true;
   if (!pocket_allowed()) return false;
   Pocket p;
   if (!read_pocket(p) || !check_pocket(p)) return false;
-  emit_pocket_outline(p);
-  return cut_pocket(p);
+  return emit_pocket_outline(p) && cut_pocket(p);
 }
 
-bool Executor::pocket_allowed() {
-  if (work_.comp.active()) {
+bool Translator::pocket_allowed() {
+  if (work_.comp_on) {
     return error(core::Code::CompNotAllowed, 0,
                  "G26 with cutter radius compensation on: G40 first");
   }
@@ -67,7 +66,7 @@ bool Executor::pocket_allowed() {
   return true;
 }
 
-bool Executor::read_pocket(Pocket& p) {
+bool Translator::read_pocket(Pocket& p) {
   p.start = work_.pos;
   p.corner = {incremental('X') ? p.start.x + mm(*words_.take('X')) : mm(*words_.take('X')),
               incremental('Y') ? p.start.y + mm(*words_.take('Y')) : mm(*words_.take('Y'))};
@@ -91,7 +90,7 @@ bool Executor::read_pocket(Pocket& p) {
   return true;
 }
 
-bool Executor::check_pocket(const Pocket& p) {
+bool Translator::check_pocket(const Pocket& p) {
   const double rt = p.tool_radius;
   const double half_side = std::min(p.half_w(), p.half_h());
   if (p.radius < rt - 1e-9) {
@@ -124,29 +123,28 @@ bool Executor::check_pocket(const Pocket& p) {
   return true;
 }
 
-// The feature: the pocket's own outline, after the transformation.
-void Executor::emit_pocket_outline(const Pocket& p) {
+// The feature: the pocket's own outline, after the transformation, before
+// its moves (and after the block's words that come before them).
+bool Translator::emit_pocket_outline(const Pocket& p) {
+  if (!hand()) return false;
   canon::Outline outline = rounded_rectangle(p.centre(), p.half_w(), p.half_h(), p.radius);
-  auto place = [&](Vec2 q) {
-    const Vec3 a = machine_.to_absolute({work_.tf.apply(q).x, work_.tf.apply(q).y, 0.0});
-    return Vec2{a.x, a.y};
-  };
-  outline.start = place(outline.start);
+  outline.start = work_.tf.apply(outline.start);
   for (canon::OutlineSegment& s : outline.segs) {
-    s.to = place(s.to);
+    s.to = work_.tf.apply(s.to);
     if (s.center) {
-      s.center = place(*s.center);
+      s.center = work_.tf.apply(*s.center);
       s.turn = work_.tf.flips() ? -1 : 1;
     }
   }
-  machine_.emit(canon::Pocket{std::move(outline), p.depth});
+  interp_.pocket(run_.loc(), std::move(outline), p.depth);
+  return true;
 }
 
 // Plunges at the centre to each depth step and roughs in rings outwards,
 // leaving the allowances; then the floor and the wall at full depth, and
 // back to the start.
-bool Executor::cut_pocket(const Pocket& p) {
-  CycleOrigin origin(machine_);
+bool Translator::cut_pocket(const Pocket& p) {
+  const OpOrigin origin(interp_, canon::Origin::Cycle);
   const Vec2 c = p.centre();
   const Vec3 p0 = p.start;
   if (!emit_line({c.x, c.y, p0.z}, true)) return false;

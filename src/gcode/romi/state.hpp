@@ -12,7 +12,6 @@
 
 #include "core/diagnostic.hpp"
 #include "core/units.hpp"
-#include "gcode/interp/cutter_comp.hpp"
 #include "gcode/interp/state.hpp"
 
 namespace usina::gcode::romi {
@@ -60,26 +59,37 @@ struct PendingBlend {
   Vec3 start;
 };
 
-// The modes romi shares with the RS274NGC interpreter (motion, distance,
-// units, retract, F, T, and what the canonical machine reads) are the
-// interpreter's ModalState (`machine`); the rest is romi's own.
+// The modes a romi program reads its words by, in the interpreter's words
+// (GCode tenths, RetractMode): romi's own, since the interpreter is handed
+// absolute millimetres.
+struct Modes {
+  GCode motion = 0;                               // G00-G03 in tenths
+  bool incremental = false;                       // G91
+  core::LengthUnit units = core::LengthUnit::Mm;  // G70/G71
+  RetractMode retract = RetractMode::RPlane;      // G98/G99
+  double feed = 0.0;                              // mm/min
+  double speed = 0.0;                             // rpm
+  int selected_tool = -1;                         // T
+  int tool = 0;                                   // in the spindle
+};
+
+// The RS274NGC interpreter below the front end runs the machine (its
+// position, tool, spindle, coolant and cutter compensation, its own state a
+// value too); this is romi's part.
 struct Modal {
   // Program coordinates.
   DrillCycle drill;
   Transform tf;
   int offset_register = 0;          // O
   Vec3 pos;                         // the programmed point
+  Vec3 machine_at;                  // where the last move handed over ended (transformed)
   std::optional<double> direction;  // of travel at pos, degrees
   double tool_diameter = 0.0;       // of the tool in the spindle
   std::optional<PendingBlend> blend;
 
-  // The interpreter's modes: motion (G00-G03 in tenths), G90/G91, G70/G71
-  // (inch/mm), G98/G99, F (mm/min), T; and what the canonical machine reads
-  // and updates: the machine position, the tool in the spindle, S, spindle
-  // and coolant.
-  ModalState machine;
-  // Cutter compensation: its side and radius, and the moves it holds.
-  CutterComp comp;
+  Modes machine;
+  // G41/G42 in force (the interpreter holds the compensation itself).
+  bool comp_on = false;
 
   // G00..G03: 0..3.
   int motion() const { return machine.motion / 10; }

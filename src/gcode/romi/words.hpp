@@ -1,5 +1,5 @@
 // A romi block's words other than G and M, evaluated: what the front end
-// hands the executor (with the block's codes, romi/codes.hpp). A handler
+// hands its handlers (with the block's codes, romi/codes.hpp). A handler
 // takes the letters it uses; a letter nobody took is an error.
 #pragma once
 

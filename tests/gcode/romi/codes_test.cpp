@@ -21,7 +21,7 @@ TEST(RomiCodes, EveryCodeOfTheTableIsFoundWithItsHandler) {
     const Code* c = t.find(e.letter, e.code);
     ASSERT_NE(c, nullptr) << code_name(e.letter, e.code);
     EXPECT_EQ(c->entry, d.find_code(e.letter, e.code)) << code_name(e.letter, e.code);
-    EXPECT_EQ(c->handler, Executor::handler_named(e.handler)) << e.handler;
+    EXPECT_EQ(c->handler, Translator::handler_named(e.handler)) << e.handler;
   }
 }
 
@@ -72,9 +72,9 @@ TEST(RomiCodes, AHandlerNameNobodyHasIsRefusedWhenTheTableIsMade) {
   Dialect d;
   d.name = "romi-test";
   d.codes = {{'G', 10, 50, "motion"}, {'G', 20, 50, "no_such_handler"}};
-  EXPECT_THROW(CodeTable(d, &Executor::handler_named, kAfterMoveGroup), std::logic_error);
+  EXPECT_THROW(CodeTable(d, &Translator::handler_named, kAfterMoveGroup), std::logic_error);
   d.codes.pop_back();
-  EXPECT_NO_THROW(CodeTable(d, &Executor::handler_named, kAfterMoveGroup));
+  EXPECT_NO_THROW(CodeTable(d, &Translator::handler_named, kAfterMoveGroup));
 }
 
 TEST(RomiCodes, CodeNames) {

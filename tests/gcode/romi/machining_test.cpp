@@ -117,6 +117,16 @@ TEST(RomiDrill, G98RetractsToTheStartingHeight) {
   expect_near(r->ends().back(), {20, 0, 2});
 }
 
+// G81 refuses compensation when it starts; a G41 given while it is on
+// would offset the approach of its holes and nothing of them.
+TEST(RomiDrill, AHoleWithCompensationOnIsAnError) {
+  auto r = run_romi("T2 M06;d20#G81 R2 Z5 F100#G41 X10 Y10#M02#");
+  EXPECT_EQ(r->first_error(), Code::CompNotAllowed);
+  EXPECT_NE(r->first_error_text().find("G40 first"), std::string::npos);
+  EXPECT_TRUE(r->all<canon::Hole>().empty());
+  EXPECT_TRUE(run_romi("T2 M06;d2#G81 R2 Z5 F100#X10 Y10#G80#G41 X20#G40 X30#M02#")->ok);
+}
+
 TEST(RomiDrill, HoleWithNoToolIsAnError) {
   auto r = run_romi("G81 R2 Z5 F100 X10#M02#");
   EXPECT_EQ(r->first_error(), Code::UnknownToolDiameter);
@@ -260,6 +270,23 @@ TEST(RomiTransform, ScaleAndItsLimits) {
 TEST(RomiTransform, PocketUnderUnequalScaleIsAnError) {
   auto r = run_romi("T1 M06;d10#G72 X2 Y1#G26 X40 Y40 Z5 F100#M02#");
   EXPECT_EQ(r->first_error(), Code::UnequalScaleArc);
+}
+
+// An arc starts where the last move left the tool. A rotation (mirror,
+// scale) given since then moves the programmed point, not the tool: the
+// arc's start is off its circle, and romi says why, as the control would
+// refuse the arc.
+TEST(RomiTransform, AnArcAfterANewTransformationStartsWhereTheToolIs) {
+  auto r = run_romi("G00 X10 Y0#G73 C90#G03 X0 Y0 I5 J0 F100#M02#");
+  EXPECT_EQ(r->first_error(), Code::ArcRadiusMismatch);
+  EXPECT_NE(r->first_error_text().find("changed since that move"), std::string::npos)
+      << r->first_error_text();
+  // A move to a point first: the arc is whole.
+  auto ok = run_romi("G00 X10 Y0#G73 C90#G00 X10 Y0#G03 X0 Y0 I5 J0 F100#M02#");
+  ASSERT_TRUE(ok->ok) << ok->first_error_text();
+  expect_near(ok->ends().back(), {0, 0, 0});
+  // A rotation about the tool's own point changes nothing of its start.
+  EXPECT_TRUE(run_romi("G00 X10 Y0#G73 C90 I10 J0#G03 X0 Y0 I5 J0 F100#M02#")->ok);
 }
 
 TEST(RomiTransform, RotationAboutIJ) {

@@ -116,7 +116,7 @@ TEST(RomiState, AFailedCompensationBlockLeavesCompensationOff) {
   // G41 starts compensation, then the G01 has no feed rate.
   auto r = run("T1 M06 ;fresa d10#G41 G01 X10 Y10#M02#");
   EXPECT_EQ(r->first_error(), Code::NoFeedRate);
-  EXPECT_FALSE(r->state().comp.active());
+  EXPECT_FALSE(r->state().comp_on);
   EXPECT_EQ(r->state().machine.tool, 1);  // the tool change's block succeeded
 }
 
@@ -151,7 +151,7 @@ TEST(RomiState, TheStartCodesAreTheStateBeforeTheFirstBlock) {
   EXPECT_FALSE(m.machine.incremental);
   EXPECT_EQ(m.machine.retract, RetractMode::RPlane);
   EXPECT_FALSE(m.drill.active);
-  EXPECT_FALSE(m.comp.active());
+  EXPECT_FALSE(m.comp_on);
   EXPECT_EQ(m.machine.units, core::LengthUnit::Mm);
 }
 

@@ -1,4 +1,4 @@
-#include "gcode/romi/exec.hpp"
+#include "gcode/romi/translate.hpp"
 
 #include <array>
 #include <cmath>
@@ -15,27 +15,27 @@ struct NamedHandler {
 
 }  // namespace
 
-Handler Executor::handler_named(std::string_view name) {
+Handler Translator::handler_named(std::string_view name) {
   // The names the dialect's table uses (romi/dialect.cpp).
   static constexpr std::array kHandlers = {
-      NamedHandler{"motion", &Executor::h_motion},
-      NamedHandler{"plane", &Executor::h_plane},
-      NamedHandler{"distance", &Executor::h_distance},
-      NamedHandler{"units", &Executor::h_units},
-      NamedHandler{"retract", &Executor::h_retract},
-      NamedHandler{"comp", &Executor::h_comp},
-      NamedHandler{"cycle", &Executor::h_cycle},
-      NamedHandler{"mirror", &Executor::h_mirror},
-      NamedHandler{"scale", &Executor::h_scale},
-      NamedHandler{"rotate", &Executor::h_rotate},
-      NamedHandler{"grid", &Executor::h_grid},
-      NamedHandler{"bolt_circle", &Executor::h_bolt_circle},
-      NamedHandler{"pocket", &Executor::h_pocket},
-      NamedHandler{"tool_change", &Executor::h_tool_change},
-      NamedHandler{"spindle", &Executor::h_spindle},
-      NamedHandler{"coolant", &Executor::h_coolant},
-      NamedHandler{"stop", &Executor::h_stop},
-      NamedHandler{"end", &Executor::h_end},
+      NamedHandler{"motion", &Translator::h_motion},
+      NamedHandler{"plane", &Translator::h_plane},
+      NamedHandler{"distance", &Translator::h_distance},
+      NamedHandler{"units", &Translator::h_units},
+      NamedHandler{"retract", &Translator::h_retract},
+      NamedHandler{"comp", &Translator::h_comp},
+      NamedHandler{"cycle", &Translator::h_cycle},
+      NamedHandler{"mirror", &Translator::h_mirror},
+      NamedHandler{"scale", &Translator::h_scale},
+      NamedHandler{"rotate", &Translator::h_rotate},
+      NamedHandler{"grid", &Translator::h_grid},
+      NamedHandler{"bolt_circle", &Translator::h_bolt_circle},
+      NamedHandler{"pocket", &Translator::h_pocket},
+      NamedHandler{"tool_change", &Translator::h_tool_change},
+      NamedHandler{"spindle", &Translator::h_spindle},
+      NamedHandler{"coolant", &Translator::h_coolant},
+      NamedHandler{"stop", &Translator::h_stop},
+      NamedHandler{"end", &Translator::h_end},
   };
   for (const NamedHandler& h : kHandlers) {
     if (h.name == name) return h.handler;
@@ -43,55 +43,66 @@ Handler Executor::handler_named(std::string_view name) {
   return nullptr;
 }
 
-Executor::Executor(const CodeTable& codes, Services& run, const InterpOptions& options,
-                   const Options& dialect_options, canon::Sink& sink, core::DiagnosticSink& diags)
+Translator::Translator(const CodeTable& codes, Services& run, const InterpOptions& options,
+                       const Options& dialect_options, Interpreter& interp)
     : codes_(codes),
       run_(run),
       options_(options),
       dialect_options_(dialect_options),
-      machine_(sink, work_.machine, diags) {}
+      interp_(interp) {
+  pending_.reserve(16);
+  work_.pos = options.start;
+  work_.machine_at = options.start;
+}
 
-void Executor::start(const std::vector<CodeEntry>& start_codes, const core::SourceLoc& loc) {
+// The dialect's start codes set romi's modes; the interpreter is set to
+// read what it is handed: millimetres, absolute, arc centres absolute.
+void Translator::start(const std::vector<CodeEntry>& start_codes, const core::SourceLoc& loc) {
   at(loc);
   for (const CodeEntry& e : start_codes) {
     if (const Code* c = codes_.find(e.letter, e.code)) (this->*(c->handler))(e.code);
   }
+  pending_.clear();
+  give('G', 21);
+  give('G', 90);
+  give('G', 90.1);
+  hand();
   modal_ = work_;
 }
 
-bool Executor::run_evaluated(const EvaluatedBlock& block, const std::function<bool()>& after) {
+bool Translator::run_evaluated(const EvaluatedBlock& block, const std::function<bool()>& after) {
   begin_block(block);
-  comments();
-  bool ok = true;
+  bool ok = hand_comments();
   for (const EvaluatedWord& w : block.words) {
-    if (!(ok = import(w))) break;
+    if (!(ok = ok && import(w))) break;
   }
   ok = ok && execute() && (!after || after());
+  // The words given before romi refused the block (F, M03...) ran on the
+  // control before the error, as the moves before it did.
+  if (!interp_failed_) {
+    at(block.loc);  // an error of a held blend arc pointed at the blend's block
+    ok = hand() && ok;
+  }
   end_block(ok);
   return ok;
 }
 
-void Executor::begin_block(const EvaluatedBlock& block) {
+void Translator::begin_block(const EvaluatedBlock& block) {
   at(block.loc);
   words_.reset();
   block_codes_.clear();
   comments_ = block.comments;
+  pending_.clear();
 }
 
-void Executor::comments() {
-  for (const CommentText& c : comments_) {
-    in_order([this, text = std::string(c.text)] { machine_.emit(canon::Comment{text}); });
-  }
-}
-
-bool Executor::import(const EvaluatedWord& w) {
+bool Translator::import(const EvaluatedWord& w) {
   if (w.letter == 'G' || w.letter == 'M') return import_code(w.letter, w.value, w.col);
   return import_word(w);
 }
 
 // A G or M code as written (G01: 1, G38.2 would be 38.2) into its group:
 // romi's codes are whole numbers, looked up in tenths.
-bool Executor::import_code(char letter, double value, std::uint32_t col) {
+bool Translator::import_code(char letter, double value, std::uint32_t col) {
   const double tenths = std::round(value * 10.0);
   if (!(value >= 0 && tenths <= CodeTable::kMaxTenths) || std::fabs(value * 10.0 - tenths) > 1e-6) {
     return error(letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode, col,
@@ -112,7 +123,7 @@ bool Executor::import_code(char letter, double value, std::uint32_t col) {
   return true;
 }
 
-bool Executor::import_word(const EvaluatedWord& w) {
+bool Translator::import_word(const EvaluatedWord& w) {
   if (words_.has(w.letter)) {
     return error(core::Code::RepeatedWord, w.col,
                  fmt::format("{} word appears twice in the block", w.letter));
@@ -121,7 +132,7 @@ bool Executor::import_word(const EvaluatedWord& w) {
   return true;
 }
 
-bool Executor::execute() {
+bool Translator::execute() {
   if (!values()) return false;
   moved_by_handler_ = false;
   const auto run = [this](const Code& c) { return (this->*(c.handler))(c.entry->code); };
@@ -134,27 +145,25 @@ bool Executor::execute() {
   return block_codes_.each(codes_.first_after_move(), codes_.ranks(), run);
 }
 
-void Executor::end_block(bool ok) {
+void Translator::end_block(bool ok) {
   comments_ = {};
-  if (ok && !machine_.faulted()) {
+  if (ok) {
     modal_ = work_;
   } else {
     work_ = modal_;
   }
 }
 
-bool Executor::finish() {
+bool Translator::finish() {
   if (work_.blend) {
     at(work_.blend->loc);
     return error(core::Code::BlendNeedsMove, 0,
                  "an arc with only R blends into the next move, and the program ends");
   }
-  if (auto e = work_.comp.flush(machine_); !e) return error(e.error());
-  modal_ = work_;
   return true;
 }
 
-std::optional<double> Executor::take_whole(char letter, int lo, int hi) {
+std::optional<double> Translator::take_whole(char letter, int lo, int hi) {
   const auto v = words_.take(letter);
   if (!v) return std::nullopt;
   const double r = std::round(*v);
@@ -167,20 +176,22 @@ std::optional<double> Executor::take_whole(char letter, int lo, int hi) {
 }
 
 // F, S, T and O: values every block may carry.
-bool Executor::values() {
+bool Translator::values() {
   if (auto f = words_.take('F')) {
     if (*f < 0) return error(core::Code::BadWordValue, words_.col('F'), "negative feed rate");
     work_.machine.feed = mm(*f);
-    in_order([this, f = work_.machine.feed] { machine_.set_feed(f, FeedMode::UnitsPerMinute); });
+    give('F', work_.machine.feed);
   }
   if (auto s = words_.take('S')) {
     if (*s < 0) return error(core::Code::BadWordValue, words_.col('S'), "negative spindle speed");
     work_.machine.speed = *s;
+    give('S', *s);
   }
   if (words_.has('T')) {
     auto t = take_whole('T', 0, kMaxToolNumber);
     if (!t) return false;
     work_.machine.selected_tool = static_cast<int>(*t);
+    give('T', *t);
   }
   if (words_.has('O')) {
     auto o = take_whole('O', 0, 999);
@@ -188,16 +199,6 @@ bool Executor::values() {
     work_.offset_register = static_cast<int>(*o);
   }
   return true;
-}
-
-// Work that must come out in order with the moves compensation holds.
-void Executor::in_order(std::function<void()> effect) {
-  if (!work_.comp.holding()) {
-    effect();
-    return;
-  }
-  work_.comp.defer(
-      run_.loc(), [effect = std::move(effect)](MotionTarget&) { effect(); }, machine_);
 }
 
 }  // namespace usina::gcode::romi
