@@ -79,7 +79,7 @@ void Engine::step() {
   // goes back to it (then it is read again from the file): memory stays
   // flat however long the program (issue 19).
   f->release_before(cursor_.line_start);
-  const BlockText bt = block_at(f->text(), cursor_.offset);
+  const BlockText bt = block_at(f->text(), cursor_.offset, line_end_);
   const auto col = static_cast<std::uint32_t>(cursor_.offset - cursor_.line_start + 1);
   const LinePos where{file_, cursor_.line, cursor_.line_start};
   cursor_.offset = bt.next;

@@ -102,6 +102,7 @@ class Engine final : public ProgramRunner, private ParameterSource {
   std::vector<EvaluatedWord> words_;  // the block's, evaluated (kept: no allocation a block)
   std::uint32_t file_ = 0;
   Cursor cursor_;
+  LineEnd line_end_;  // of the line the cursor is on, when known (block_at)
   std::vector<Frame> frames_;
   std::optional<std::unordered_map<long, IndexEntry>> numbers_;
   std::unordered_map<long, Cursor> subs_;

@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -94,6 +95,7 @@ class Parser {
   bool keyword(std::string_view k);
   std::optional<std::size_t> dash_length(std::size_t at) const;
   std::optional<double> number();
+  ExprRef number_node(double value, std::uint32_t at_col);
   std::optional<int> param_index();
   ExprRef node(ExprNode n);
   ExprRef word_value();
@@ -127,6 +129,17 @@ class Parser {
   friend bool parse_romi_block(std::string_view, const LinePos&, std::uint32_t, RomiBlock&,
                                core::DiagnosticSink&);
 };
+
+// A plain number's node, built where it is stored: a node built apart and
+// copied in is read back before all its fields are written (a stalled
+// store per value; rs274ngc's Parser::number_node, issue 19).
+ExprRef Parser::number_node(double value, std::uint32_t at_col) {
+  if (b_.base.exprs.size() >= kMaxNodes) return node({});
+  ExprNode& n = b_.base.exprs.emplace_back();
+  n.value = value;
+  n.col = at_col;
+  return static_cast<ExprRef>(b_.base.exprs.size() - 1);
+}
 
 ExprRef Parser::node(ExprNode n) {
   if (b_.base.exprs.size() >= kMaxNodes) {
@@ -169,7 +182,11 @@ std::optional<double> Parser::number() {
   const Decimal d = scan_decimal(s_.substr(0, end_), start);
   if (d.digits == 0) return std::nullopt;
   i_ = d.end;
-  if (const auto ok = exponent_out_of_range(s_.substr(0, end_), start, i_); !ok) {
+  // Asked only when an E follows the digits (the call builds a result).
+  const bool exponent = i_ < end_ && (s_[i_] == 'e' || s_[i_] == 'E');
+  if (const auto ok = exponent ? exponent_out_of_range(s_.substr(0, end_), start, i_)
+                               : tl::expected<void, std::string>{};
+      !ok) {
     fail(core::Code::NumberOutOfRange, start, ok.error());
     return std::nullopt;
   }
@@ -212,9 +229,7 @@ ExprRef Parser::word_value() {
     i_ += *n;
   }
   skip();
-  if (auto v = number()) {
-    return node({ExprKind::Number, 0, kNoExpr, kNoExpr, negative ? -*v : *v, {}, col(at)});
-  }
+  if (auto v = number()) return number_node(negative ? -*v : *v, col(at));
   if (error) return kNoExpr;
   if (i_ + 1 < end_ && upper(s_[i_]) == 'P' && is_digit(s_[i_ + 1])) {
     const std::size_t p = i_;
@@ -336,7 +351,7 @@ ExprRef Parser::primary(int depth) {
     ++i_;
     return e;
   }
-  if (auto v = number()) return node({ExprKind::Number, 0, kNoExpr, kNoExpr, *v, {}, col(at)});
+  if (auto v = number()) return number_node(*v, col(at));
   if (error) return kNoExpr;
   if (c == 'P' && i_ + 1 < end_ && is_digit(s_[i_ + 1])) {
     if (!param_index()) return kNoExpr;
@@ -554,12 +569,21 @@ void RomiBlock::clear() {
   dashes.clear();
 }
 
-BlockText block_at(std::string_view text, std::uint64_t offset) {
+BlockText block_at(std::string_view text, std::uint64_t offset, LineEnd& known) {
   if (offset >= text.size()) return {{}, text.size(), true};
-  std::size_t end = offset;
-  while (end < text.size() && text[end] != '#' && text[end] != '\n')
-    ++end;
-  const bool newline = end >= text.size() || text[end] == '\n';
+  // The line's end once a line (memchr), then a '#' before it: a line of
+  // several blocks is not scanned again for each (issue 19).
+  const char* start = text.data() + offset;
+  if (!known.known || offset < known.from || offset > known.end || known.end > text.size()) {
+    const auto* nl = static_cast<const char*>(std::memchr(start, '\n', text.size() - offset));
+    known = {offset, nl != nullptr ? static_cast<std::uint64_t>(nl - text.data()) : text.size(),
+             true};
+  }
+  const std::size_t line = known.end - offset;
+  const auto* hash = static_cast<const char*>(std::memchr(start, '#', line));
+  const std::size_t end =
+      offset + (hash != nullptr ? static_cast<std::size_t>(hash - start) : line);
+  const bool newline = hash == nullptr;
   std::string_view t = text.substr(offset, end - offset);
   if (!t.empty() && t.back() == '\r') t.remove_suffix(1);
   return {t, std::min<std::uint64_t>(end + 1, text.size()), newline};

@@ -54,7 +54,21 @@ struct BlockText {
   bool ends_line = false;  // ended by a newline or the end of the file (not '#')
 };
 
-BlockText block_at(std::string_view text, std::uint64_t offset);
+// A stretch of text known to hold no newline, [from, end), with the
+// newline or the text's end at `end`: where a line of several blocks ends,
+// kept between calls so that the line is scanned once.
+struct LineEnd {
+  std::uint64_t from = 0;
+  std::uint64_t end = 0;
+  bool known = false;
+};
+
+BlockText block_at(std::string_view text, std::uint64_t offset, LineEnd& line);
+
+inline BlockText block_at(std::string_view text, std::uint64_t offset) {
+  LineEnd unknown;
+  return block_at(text, offset, unknown);
+}
 
 // Parses a block whose first character is at column `first_col` of its line.
 // Returns false after reporting a syntax error.

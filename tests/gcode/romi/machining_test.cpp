@@ -77,6 +77,17 @@ TEST(RomiComp, RadiusOfTheToolInTheSpindleWithoutATableEntry) {
   expect_near(tool->all<canon::Feed>()[0].to, {-5, 10, 0});
 }
 
+// The words reach the interpreter in millimetres: a concave corner gets
+// LinuxCNC's metric slack (its G21 rule). This corner after an arc is a
+// hair too tight for the 10 mm tool by the inch rule, within the metric one.
+TEST(RomiComp, AConcaveCornerWithinTheMetricSlackIsNoGouge) {
+  auto r = run_romi(
+      "F605#T1 M06 ;tool d10#G00 X-36.546 Z20.686#G42 O3 G01 X5.532 Y8.815#"
+      "G00 X-43.191 Y19.469#G3 X-18.473 Y-5.974 R-31.478#G00 Y-17.05#G40 X-18.473 Y-40#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  EXPECT_FALSE(r->has(Code::CutterGouge));
+}
+
 TEST(RomiDrill, G81IsModalUntilG80AndMakesHoles) {
   auto r = run_romi("T2 M06;d20#G81 R2 Z-40 D1.5 F150#X100 Y0#X200#G80#X300#M02#");
   ASSERT_TRUE(r->ok) << r->first_error_text();
