@@ -3,7 +3,8 @@
 // the restart the store holds only whole revisions (each one's bytes hash to
 // its name), every upload the server acknowledged, and an audit chain that
 // holds. store_crash_test.cpp kills the store's own transaction; this kills
-// the whole server with its HTTP reader, checker and store.
+// the whole server with its HTTP reader, checker and store, on SQLite and
+// on PostgreSQL.
 #include <signal.h>
 #include <unistd.h>
 
@@ -24,6 +25,7 @@
 #include "api_client.hpp"
 #include "dnc/sha256.hpp"
 #include "serve_cli.hpp"
+#include "store_fixture.hpp"
 
 namespace usina::dnc {
 namespace {
@@ -36,19 +38,23 @@ using Reply = usina::test::Reply;
 
 const std::string kPassword = "a long password";
 
+// A scratch folder, and the store's flags: SQLite in the folder, or a fresh
+// database on the test's PostgreSQL cluster (tests/dnc/pg_cluster.sh).
 struct Shop {
   fs::path dir = fs::temp_directory_path() / ("usina_kill_upload_" + std::to_string(::getpid()));
+  std::vector<std::string> flags;
 
   Shop() {
     fs::remove_all(dir);
     fs::create_directories(dir);
     write(dir / "pw", kPassword + "\n");
     write(dir / "usina-serve.toml", "");
+    flags = {"--data", (dir / "data").string()};
   }
 
   ~Shop() { fs::remove_all(dir); }
 
-  std::vector<std::string> store() const { return {"--data", (dir / "data").string()}; }
+  const std::vector<std::string>& store() const { return flags; }
 
   pid_t serve(const std::string& log) const {
     std::vector<std::string> args{"serve", "--config", (dir / "usina-serve.toml").string(),
@@ -132,12 +138,21 @@ std::set<std::pair<std::string, std::string>> whole_revisions(const Api& c,
   return found;
 }
 
-TEST(ServeKillUpload, Kill9AmongUploadsLeavesWholeRevisionsAndEveryAcknowledgedOne) {
-  const Shop shop;
-  const pid_t init =
-      spawn_usina({"serve", "--init", "--admin", "boss", "--password-file",
-                   (shop.dir / "pw").string(), "--data", (shop.dir / "data").string()},
-                  shop.dir / "init.log");
+class ServeKillUpload : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(ServeKillUpload, Kill9AmongUploadsLeavesWholeRevisionsAndEveryAcknowledgedOne) {
+  Shop shop;
+  if (GetParam() == Backend::Postgres) {
+    test::PgServer& pg = test::PgServer::get();
+    if (!pg.ok()) GTEST_SKIP() << pg.why_not();
+    const std::string url = pg.fresh_database();
+    ASSERT_FALSE(url.empty()) << "cannot create a database on the test cluster";
+    shop.flags = {"--store", url};
+  }
+  std::vector<std::string> init_args{"serve", "--init",          "--admin",
+                                     "boss",  "--password-file", (shop.dir / "pw").string()};
+  init_args.insert(init_args.end(), shop.store().begin(), shop.store().end());
+  const pid_t init = spawn_usina(init_args, shop.dir / "init.log");
   ASSERT_EQ(wait_exit(init), 0) << slurp(shop.dir / "init.log");
   const pid_t first = shop.serve("serve.log");
   const unsigned short port = listening_port(shop.dir / "serve.log");
@@ -176,6 +191,9 @@ TEST(ServeKillUpload, Kill9AmongUploadsLeavesWholeRevisionsAndEveryAcknowledgedO
   ::kill(second, SIGTERM);
   EXPECT_EQ(wait_exit(second), 0) << slurp(shop.dir / "serve2.log");
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, ServeKillUpload,
+                         ::testing::Values(Backend::Sqlite, Backend::Postgres), test::backend_name);
 
 }  // namespace
 }  // namespace usina::dnc
