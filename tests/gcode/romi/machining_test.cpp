@@ -58,6 +58,18 @@ TEST(RomiToolChange, XYIsTheChangePositionAndTheProgramGoesOn) {
   EXPECT_EQ(excursion, 3);  // there, the change, back
 }
 
+// usina draw --start: the tool starts there, and a lower-case increment or
+// an omitted axis counts from it (romi's own point once ignored it).
+TEST(RomiStart, TheToolStartsWhereTheRunSays) {
+  InterpOptions o;
+  o.start = {5, 5, 5};
+  auto r = run_romi("G00 x10#G01 Y0 F100#M02#", o);
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  ASSERT_EQ(r->ends().size(), 2u);
+  expect_near(r->ends()[0], {15, 5, 5});
+  expect_near(r->ends()[1], {15, 0, 5});
+}
+
 TEST(RomiToolChange, M06WithoutTIsAnError) {
   auto r = run_romi("M06#M02#");
   EXPECT_EQ(r->first_error(), Code::MissingWord);
