@@ -7,8 +7,14 @@
 namespace usina::apt {
 namespace {
 
+// At most 9 decimals (a nanometre in mm), without trailing zeros: what a
+// post reads, not 17 digits of a rounding residue.
 std::string number(double v) {
-  return fmt::format("{}", v == 0.0 ? 0.0 : v);
+  std::string t = fmt::format("{:.9f}", v);
+  while (t.back() == '0')
+    t.pop_back();
+  if (t.back() == '.') t.pop_back();
+  return t == "-0" ? "0" : t;
 }
 
 // Text as a statement may hold it: no line break or control character, no

@@ -11,7 +11,7 @@
 
 namespace usina::apt {
 
-// The text of `records`. `units` ("MM", "INCHES" or empty) writes a UNITS
+// The text of `records`, numbers with at most 9 decimals. `units` ("MM", "INCHES" or empty) writes a UNITS
 // statement first. A circle's record is written as CIRCLE/ when its motion
 // is one point (an arc to it), as a $$ comment before its chords when the
 // motion is several (IBM's segmented circles: the chords are the path).
