@@ -1,6 +1,5 @@
 #include "apt/cl_text.hpp"
 
-#include <cmath>
 #include <optional>
 
 #include <fmt/format.h>
@@ -39,7 +38,7 @@ bool ClTextReader::statement(const ClStatement& st) {
   return !stop_;
 }
 
-bool ClTextReader::flush(const ClStatement& st) {
+void ClTextReader::flush(const ClStatement& st) {
   ClRecord isn{cls::kSource,
                static_cast<int>(st.loc.line),
                {ClWord::number(0.0), ClWord::chars("")},
@@ -47,7 +46,6 @@ bool ClTextReader::flush(const ClStatement& st) {
   if (out_.record && !out_.record(std::move(isn))) stop_ = true;
   for (ClRecord& r : recs_)
     if (!stop_ && out_.record && !out_.record(std::move(r))) stop_ = true;
-  return true;
 }
 
 bool ClTextReader::dispatch(const ClStatement& st) {

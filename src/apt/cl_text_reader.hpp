@@ -29,7 +29,10 @@ class ClTextReader {
   ClTextReader(ClDialect d, core::DiagnosticSink& diags, const ClConsumer& out)
       : dialect_(d), diags_(diags), out_(out) {}
 
+  // Reads one statement and hands on its records; false once reading ends
+  // (FINI, or the consumer said stop).
   bool statement(const ClStatement& st);
+  // The end of the file: a CIRCLE still waiting for its GOTO is an error.
   void end();
 
  private:
@@ -44,6 +47,9 @@ class ClTextReader {
     return false;
   }
 
+  // Each statement's reader adds its records with add() and returns true;
+  // false: nothing to hand on (an error, reported, or a statement that
+  // writes no record).
   bool dispatch(const ClStatement& st);
   bool post_word(const ClStatement& st, int code);
   bool text(const ClStatement& st, int code, std::string text);
@@ -55,7 +61,7 @@ class ClTextReader {
   bool arc_to(const ClStatement& st, Vec p, std::optional<Vec> from);
   bool cycle(const ClStatement& st);
   bool circle_left_out(const char* why);
-  bool flush(const ClStatement& st);
+  void flush(const ClStatement& st);
 
   ClDialect dialect_;
   core::DiagnosticSink& diags_;
