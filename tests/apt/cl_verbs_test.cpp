@@ -84,6 +84,26 @@ TEST(AptClVerbs, Iso4343AndCldataAreNotWrittenWhenTheProgramHasAnError) {
   EXPECT_EQ(self.status, 2);
 }
 
+TEST(AptClVerbs, EveryFormatGoesToTheFileOfO) {
+  const TempDir dir;
+  const std::string f = dir.write("p.apt", kApt);
+  for (const char* format : {"cldump", "jsonl", "iso4343"}) {
+    const std::string out = dir.path(std::string("p.") + format);
+    const auto to_file =
+        usina::test::usina("apt " + quote(f) + " --format " + format + " -o " + quote(out));
+    EXPECT_EQ(to_file.status, 0) << to_file.err;
+    EXPECT_TRUE(to_file.out.empty());
+    EXPECT_EQ(usina::test::slurp(out),
+              usina::test::usina("apt " + quote(f) + " --format " + format).out);
+  }
+  const std::string canon = dir.path("p.json");
+  EXPECT_EQ(usina::test::usina("apt " + quote(f) + " --canonical -o " + quote(canon)).status, 0);
+  const auto nowhere = usina::test::usina("apt " + quote(f) + " --format cldata -o " +
+                                          quote(dir.path("no/such/folder/p.cldata")));
+  EXPECT_EQ(nowhere.status, 2);
+  EXPECT_NE(nowhere.err.find("usina: error:"), std::string::npos) << nowhere.err;
+}
+
 TEST(AptClVerbs, ClsfByItsExtensionThroughConvertCheckStatsAndDraw) {
   const TempDir dir;
   const std::string f = dir.write("part.cls", kClsf);
