@@ -155,7 +155,8 @@ void ClToCanon::motion(const ClRecord& r) {
   for (std::size_t i = 2; i + 2 < r.words.size(); i += 3) {
     const canon::Vec3 p{r.words[i].real * scale_, r.words[i + 1].real * scale_,
                         r.words[i + 2].real * scale_};
-    if (cycle_ && r.sub == 5) {
+    // A RAPID motion in a cycle positions: it drills nothing.
+    if (cycle_ && r.sub == 5 && !rapid_) {
       drill(p, r);  // leaves the tool above the hole
       continue;
     }

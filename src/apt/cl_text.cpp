@@ -88,6 +88,11 @@ bool ClTextReader::post_word(const ClStatement& st, int code) {
     words.push_back(word_of(a));
   }
   if (code == 1009) {  // FEDRAT/f[,MMPM] or /MMPM,f: kept for a cycle without a feed
+    // A feed rate ends a drilling cycle: SolidWorks CAM writes no CYCLE/OFF
+    // before a milling operation that follows one (its cycle carries its own
+    // feed and lasts across a tool change).
+    if (cycle_on_) add(cls::kPost, 1054, {ClWord::vocabulary(kOff)}, st.loc);
+    cycle_on_ = false;
     for (const ClArg& a : st.args) {
       if (a.kind == ClArg::Kind::Number) feed_ = a.value;
       if (a.kind == ClArg::Kind::Word && (a.text == "IPM" || a.text == "MMPM"))

@@ -157,6 +157,7 @@ bool ClTextReader::circle_left_out(const char* why) {
 // (CYCLE/OFF, IBM's CYCLE/DRILL,depth,IPM,f,clearance) are post words.
 bool ClTextReader::cycle(const ClStatement& st) {
   const std::optional<double> fedto = after(st, "FEDTO");
+  cycle_on_ = false;
   if (!fedto) return post_word(st, 1054);
   std::optional<double> f = feed_;
   int unit = feed_unit_;
@@ -169,6 +170,7 @@ bool ClTextReader::cycle(const ClStatement& st) {
   if (!f)
     return fail(core::Code::ClBadArgument, st.loc,
                 "CYCLE/ gives no feed rate (MMPM or IPM) and no FEDRAT came before it");
+  cycle_on_ = true;
   return add(
       cls::kPost, 1054,
       {ClWord::vocabulary(kDrill), ClWord::number(std::fabs(*fedto)), ClWord::vocabulary(unit),

@@ -11,7 +11,7 @@
 
 namespace usina::apt::detail {
 
-inline constexpr int kDrill = 163, kMmpm = 171, kIpm = 73;
+inline constexpr int kDrill = 163, kMmpm = 171, kIpm = 73, kOff = 72;
 
 struct Vec {
   double x = 0, y = 0, z = 0;
@@ -72,6 +72,7 @@ class ClTextReader {
   std::optional<PendingCircle> circle_;
   std::optional<double> feed_;  // the last FEDRAT's, for a cycle that gives none
   int feed_unit_ = kMmpm;
+  bool cycle_on_ = false;  // a drilling cycle read from FEDTO is on
   bool stop_ = false;
 };
 

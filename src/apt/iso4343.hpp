@@ -11,10 +11,10 @@
 
 namespace usina::apt {
 
-// The text of `records`, numbers with at most 9 decimals. `units` ("MM", "INCHES" or empty) writes a UNITS
-// statement first. A circle's record is written as CIRCLE/ when its motion
-// is one point (an arc to it), as a $$ comment before its chords when the
-// motion is several (IBM's segmented circles: the chords are the path).
+// The text of `records`, numbers with at most 9 decimals. `units` ("MM", "INCHES" or empty) writes
+// a UNITS statement first. A circle's record is written as CIRCLE/ when its motion is one point (an
+// arc to it), as a $$ comment before its chords when the motion is several (IBM's segmented
+// circles: the chords are the path).
 std::string write_iso4343(const std::vector<ClRecord>& records, std::string_view units = {});
 
 }  // namespace usina::apt

@@ -117,6 +117,22 @@ TEST(AptClText, NxCycleTakesTheLastFeedAndANegativeDepth) {
   EXPECT_EQ(r.ops[2], R"({"op":"feed","to":[1,2,-12],"f":250})");
 }
 
+TEST(AptClText, AFeedRateEndsACycleThatAToolChangeDoesNot) {
+  // SolidWorks CAM: the cycle lasts across LOAD/TOOL; a RAPID GOTO positions
+  // above the next holes; a milling operation after it sets its FEDRAT with
+  // no CYCLE/OFF before.
+  const ClRun r = read(
+      "GOTO/0,0,50\nCYCLE/DRILL,FEDTO,5.,MMPM,100.,RAPTO,3.\nGOTO/0,0,0\nLOAD/TOOL,2\n"
+      "GOTO/1,0,0\nRAPID/\nGOTO/2,0,50\nFEDRAT/300.,MMPM\nGOTO/2,0,0\n",
+      ClDialect::AptCl);
+  EXPECT_FALSE(r.diags.has_errors()) << r.first_error();
+  int holes = 0;
+  for (const std::string& op : r.ops)
+    holes += op.find("\"hole\"") != std::string::npos ? 1 : 0;
+  EXPECT_EQ(holes, 2);  // a RAPID motion in a cycle positions, drills nothing
+  EXPECT_EQ(r.ops.back(), R"({"op":"feed","to":[2,0,0],"f":300})");
+}
+
 TEST(AptClText, UnitsInchesScaleWhatFollows) {
   const ClRun r =
       read("GOTO/1,0,0\nUNITS/INCHES\nGOTO/1,0,0\nFEDRAT/10,IPM\nGOTO/2,0,0\n", ClDialect::AptCl);
