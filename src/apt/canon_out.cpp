@@ -30,6 +30,13 @@ std::optional<double> first_number(const ClRecord& r) {
   return std::nullopt;
 }
 
+// LOADTL's number as a tool number: a number no tool has (beyond 10^9, not
+// finite: a binary file's) is tool 0, never an int out of range.
+int tool_number(const ClRecord& r) {
+  const double n = first_number(r).value_or(0.0);
+  return std::isfinite(n) && std::fabs(n) < 1e9 ? static_cast<int>(n) : 0;
+}
+
 std::string trimmed(std::string t) {
   while (!t.empty() && t.back() == ' ')
     t.pop_back();
@@ -79,9 +86,7 @@ void ClToCanon::post(const ClRecord& r) {
     return;
   case 1031: spindle(r); return;
   case 1054: cycle(r); return;
-  case 1055:
-    emit(canon::ToolChange{static_cast<int>(first_number(r).value_or(0.0)), diameter_}, r);
-    return;
+  case 1055: emit(canon::ToolChange{tool_number(r), diameter_}, r); return;
   default: post_motion_words(r);
   }
 }

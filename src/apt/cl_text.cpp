@@ -1,5 +1,6 @@
 #include "apt/cl_text.hpp"
 
+#include <cmath>
 #include <optional>
 
 #include <fmt/format.h>
@@ -20,6 +21,16 @@ bool is_silent(const std::string& w) {
 std::string unquoted(const std::string& t) {
   if (t.size() >= 2 && t.front() == '\'' && t.back() == '\'') return t.substr(1, t.size() - 2);
   return t;
+}
+
+constexpr double kMostToolNumber = 999999;
+
+// LOADTL/n, LOAD/TOOL,n: n a whole number a control can hold.
+bool tool_number(const ClStatement& st) {
+  for (const ClArg& a : st.args)
+    if (a.kind == ClArg::Kind::Number)
+      return a.value >= 0 && a.value <= kMostToolNumber && a.value == std::floor(a.value);
+  return false;
 }
 
 ClWord word_of(const ClArg& a) {
@@ -82,6 +93,10 @@ bool ClTextReader::dispatch(const ClStatement& st) {
 }
 
 bool ClTextReader::post_word(const ClStatement& st, int code) {
+  if (code == 1055 && !tool_number(st))
+    return fail(core::Code::ClBadArgument, st.loc,
+                fmt::format("{}/ takes a tool number, a whole number from 0 to {}", st.major,
+                            kMostToolNumber));
   std::vector<ClWord> words;
   for (const ClArg& a : st.args) {
     if (code == 1055 && a.kind == ClArg::Kind::Word && a.text == "TOOL") continue;

@@ -180,6 +180,9 @@ TEST(AptClText, EveryErrorAtItsLineAndColumn) {
   expect_error("CYCLE/DRILL,FEDTO,-5\n", "1:1 E_CL_BAD_ARGUMENT CYCLE/ gives no feed");
   expect_error("UNITS/FEET\n", "1:1 E_CL_BAD_ARGUMENT UNITS/ takes MM or INCHES");
   expect_error("CUTTER/D\n", "1:1 E_CL_BAD_ARGUMENT CUTTER has no number");
+  expect_error("LOAD/TOOL,1e12\n", "1:1 E_CL_BAD_ARGUMENT LOAD/ takes a tool number");
+  expect_error("LOADTL/2.5\n", "1:1 E_CL_BAD_ARGUMENT LOADTL/ takes a tool number");
+  expect_error("LOAD/TOOL\n", "1:1 E_CL_BAD_ARGUMENT LOAD/ takes a tool number");
   expect_error("GOTO/1,2,1e13\n", "1:10 E_CL_TOO_LARGE the number 1e13 is beyond 1e+12");
   expect_error("GOTO/1,2,1e999\n", "1:10 E_CL_TOO_LARGE the number 1e999 is out of range");
   expect_error("GOTO/" + std::string(70000, '1') + "\n", "1:1 E_CL_TOO_LARGE the statement");

@@ -4,6 +4,7 @@
 
 #include <cstring>
 
+#include "apt/canon_out.hpp"
 #include "apt_run.hpp"
 
 namespace usina::apt::test {
@@ -85,6 +86,23 @@ TEST(AptCldata, EveryBrokenLayoutIsAnErrorAtItsRecord) {
   std::string nan = bytes_of(1, 1, 6000, 6);
   nan += std::string("\x00\x00\x00\x00\x00\x00\xf8\x7f", 8);
   expect_broken(nan, 0, "word 1 is not a finite number");
+}
+
+// A binary file's LOADTL of no tool a control has is tool 0, never an int
+// out of range (fuzz_cl found it: regressions/cl/cldata_loadtl_int_overflow).
+TEST(AptCldata, AToolNumberBeyondAnyToolIsToolZero) {
+  struct Tools final : canon::Sink {
+    void on(const canon::Op& op) override {
+      if (const auto* t = std::get_if<canon::ToolChange>(&op.kind)) tools.push_back(t->tool);
+    }
+
+    std::vector<int> tools;
+  } sink;
+
+  to_canon({ClRecord{cls::kPost, 1055, {ClWord::number(1e12)}, {}},
+            ClRecord{cls::kPost, 1055, {ClWord::number(7.0)}, {}}},
+           1.0, sink);
+  EXPECT_EQ(sink.tools, (std::vector<int>{0, 7}));
 }
 
 TEST(AptCldata, ReadingStopsWhenTheTakerSaysSo) {
