@@ -339,7 +339,8 @@ EXPLAIN = {
     "E_CL_BAD_ARGUMENT": (
         "A CL statement has the wrong kind or number of arguments: GOTO without x,y,z, "
         "CIRCLE without its centre and axis, GODLTA before any position, a CYCLE with no feed "
-        "rate, UNITS that is not MM or INCHES. The statement is left out and reading goes on.",
+        "rate, UNITS that is not MM or INCHES, a LOADTL whose tool number is not a whole "
+        "number from 0 to 999999. The statement is left out and reading goes on.",
         "Give the statement the arguments the message names."),
     "E_CL_BAD_ARC": (
         "A CIRCLE of a CL file cannot be cut: the GOTO after it ends off the circle, the "
