@@ -331,8 +331,8 @@ EXPLAIN = {
     # CL files (issue 15): binary CLDATA, NX CLSF, APT CL (docs/apt.md)
     "E_CL_BAD_RECORD": (
         "A binary CLDATA file breaks the record layout of docs/apt.md: it ends inside a record, "
-        "a record is numbered out of order, holds more than 4,096 words, or a word that should "
-        "be a number is not finite. The location's line is the record's number. Reading stops "
+        "a record is numbered out of order, holds more than 4,096 words, or a real word is "
+        "not finite or beyond 1e12. The location's line is the record's number. Reading stops "
         "there; what came before is used.",
         "Check that the file is CLDATA as usina writes it (`usina apt --format cldata`) and was "
         "copied whole, as bytes."),

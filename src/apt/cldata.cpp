@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "apt/cl_text.hpp"
+
 namespace usina::apt {
 namespace {
 
@@ -112,8 +114,13 @@ bool Reader::next(ClRecord& r) {
   r.words.clear();
   for (std::uint32_t i = 0; i < nwords; ++i) {
     r.words.push_back(get_word(b_, at + kHeaderBytes + kWordBytes * i));
-    if (r.words.back().kind == ClWord::Kind::Real && !std::isfinite(r.words.back().real))
+    const ClWord& w = r.words.back();
+    if (w.kind == ClWord::Kind::Real && !std::isfinite(w.real))
       return fail(at, fmt::format("word {} is not a finite number", i + 1));
+    // As in a CL text file: no coordinate or feed is this large, and a
+    // larger one scaled to mm could overflow.
+    if (w.kind == ClWord::Kind::Real && std::fabs(w.real) > kLargestClNumber)
+      return fail(at, fmt::format("word {} is {:g}, beyond {:g}", i + 1, w.real, kLargestClNumber));
   }
   r.src = loc(at);
   at_ = at + kHeaderBytes + kWordBytes * nwords;

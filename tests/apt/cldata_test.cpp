@@ -86,6 +86,9 @@ TEST(AptCldata, EveryBrokenLayoutIsAnErrorAtItsRecord) {
   std::string nan = bytes_of(1, 1, 6000, 6);
   nan += std::string("\x00\x00\x00\x00\x00\x00\xf8\x7f", 8);
   expect_broken(nan, 0, "word 1 is not a finite number");
+  std::string huge = bytes_of(1, 1, 6000, 6);
+  huge += std::string("\x00\x00\x00\x00\x00\x00\xf0\x7e", 8);  // 2^1007
+  expect_broken(huge, 0, "word 1 is 2.74306e+303, beyond 1e+12");
 }
 
 // A binary file's LOADTL of no tool a control has is tool 0, never an int
