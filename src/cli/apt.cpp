@@ -130,6 +130,11 @@ int run_apt(const AptOptions& o) {
   const apt::AptResult result = apt::process(sources.get(id)->text(), id, diags);
   const int status = diags.errors() > 0 ? 1 : 0;
   if (status != 0 && whole_only(o)) return status;
+  if (!o.canonical && o.format == "jsonl" && o.output.out == "-") {
+    canon::TraceWriter writer(stdout, canon::TraceFormat::Jsonl);  // streamed, not held
+    apt::to_canon(result.records, scale_of(o), writer);
+    return status;
+  }
   const int written = write_out(o, formatted(o, result));
   return written != 0 ? written : status;
 }
