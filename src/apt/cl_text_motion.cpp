@@ -84,7 +84,11 @@ bool ClTextReader::godlta(const ClStatement& st) {
                 "GODLTA/ moves from where the tool is, and no motion has said it yet");
   const Vec d = n == 1 ? Vec{0, 0, st.args[0].value}
                        : Vec{st.args[0].value, st.args[1].value, st.args[2].value};
-  at_ = Vec{at_->x + d.x, at_->y + d.y, at_->z + d.z};
+  const Vec to{at_->x + d.x, at_->y + d.y, at_->z + d.z};
+  if (std::max({std::fabs(to.x), std::fabs(to.y), std::fabs(to.z)}) > kLargestClNumber)
+    return fail(core::Code::ClTooLarge, st.loc,
+                fmt::format("GODLTA/ goes to {}, beyond {:g}", at_text(to), kLargestClNumber));
+  at_ = to;
   return add(cls::kMotion, 5,
              {ClWord::number(0.0), ClWord::number(0.0), ClWord::number(at_->x),
               ClWord::number(at_->y), ClWord::number(at_->z)},
@@ -129,7 +133,7 @@ bool ClTextReader::arc_to(const ClStatement& st, Vec p, std::optional<Vec> from)
   const double r = c.radius.value_or(r0);
   const double r1 = off_axis(p, c.center, c.axis);
   const double tol = std::max(0.002, 0.001 * r);
-  if (!(r > tol) || std::fabs(r0 - r) > tol || std::fabs(r1 - r) > tol) {
+  if (!(r > tol) || r > kLargestClNumber || std::fabs(r0 - r) > tol || std::fabs(r1 - r) > tol) {
     fail(core::Code::ClBadArc, st.loc,
          fmt::format("the arc of CIRCLE/ (line {}) does not fit: radius {:g} about {}, its start "
                      "{} at {:g}, its end {} at {:g}; the move is taken straight",

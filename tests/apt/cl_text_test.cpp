@@ -185,6 +185,8 @@ TEST(AptClText, EveryErrorAtItsLineAndColumn) {
   expect_error("LOAD/TOOL\n", "1:1 E_CL_BAD_ARGUMENT LOAD/ takes a tool number");
   expect_error("GOTO/1,2,1e13\n", "1:10 E_CL_TOO_LARGE the number 1e13 is beyond 1e+12");
   expect_error("GOTO/1,2,1e999\n", "1:10 E_CL_TOO_LARGE the number 1e999 is out of range");
+  expect_error("GOTO/0,0,1e12\nGODLTA/5\n", "2:1 E_CL_TOO_LARGE GODLTA/ goes to (0, 0, 1e+12)");
+  expect_error("GOTO/-1e12,0,0\nCIRCLE/1e12,0,0,0,0,1\nGOTO/1e12,1e12,0\n", "3:1 E_CL_BAD_ARC");
   expect_error("GOTO/" + std::string(70000, '1') + "\n", "1:1 E_CL_TOO_LARGE the statement");
   std::string many = "SPINDL/";
   for (int i = 0; i < 1100; ++i)
