@@ -29,9 +29,8 @@ std::string write_cldata(const std::vector<ClRecord>& records);
 // Reads the records of `bytes` (file `file` of a SourceManager) in order,
 // handing each to `take` until it returns false. A record that breaks the
 // layout (cut short, a word count beyond kMostCldataWords, a number out of
-// order, a real that is not finite or beyond kLargestClNumber) is an error (E_CL_BAD_RECORD) located
-// at line = its record number; reading stops there. Returns the number of
-// records read.
+// order, a real that is not finite or beyond kLargestClNumber) is an error (E_CL_BAD_RECORD)
+// located at line = its record number; reading stops there. Returns the number of records read.
 std::size_t read_cldata(std::string_view bytes, std::uint32_t file, core::DiagnosticSink& diags,
                         const std::function<bool(ClRecord&&)>& take);
 
