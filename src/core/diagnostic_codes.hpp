@@ -145,7 +145,7 @@
   X(AptBadArgument, E_APT_BAD_ARGUMENT)                          \
   X(AptNotSupported, E_APT_NOT_SUPPORTED)                        \
   X(AptNoFini, W_APT_NO_FINI)                                    \
-  /* CL files: CLDATA, NX CLSF, APT CL */                         \
+  /* CL files: CLDATA, NX CLSF, APT CL */                        \
   X(ClBadRecord, E_CL_BAD_RECORD)                                \
   X(ClBadArgument, E_CL_BAD_ARGUMENT)                            \
   X(ClBadArc, E_CL_BAD_ARC)                                      \
