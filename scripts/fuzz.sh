@@ -30,7 +30,7 @@ jobs="${FUZZ_JOBS:-$(nproc)}"
 out="${FUZZ_OUT:-$root/build-fuzz}"
 fuzz="$root/tests/fuzz"
 targets=(parser interpreter romi fanuc grbl dxf remote_request)
-targets+=(apt)
+targets+=(apt cl)
 targets+=(job_toml)
 targets+=(config)
 targets+=(forms)
@@ -44,7 +44,7 @@ cam_targets=" dxf "
 # request files (no event loop, no Boost).
 dnc_targets=" remote_request "
 # The targets of APT part programs link the apt module (core and canon under it).
-apt_targets=" apt "
+apt_targets=" apt cl "
 # The target of the job's TOML files links the job module's readers (toml++).
 job_targets=" job_toml "
 # The target of the configuration files and option values links their readers

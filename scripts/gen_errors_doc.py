@@ -328,6 +328,41 @@ EXPLAIN = {
         "The APT program has no FINI statement; the processor takes its end as FINI and "
         "writes no FINI record.",
         "End the program with FINI."),
+    # CL files (issue 15): binary CLDATA, NX CLSF, APT CL (docs/apt.md)
+    "E_CL_BAD_RECORD": (
+        "A binary CLDATA file breaks the record layout of docs/apt.md: it ends inside a record, "
+        "a record is numbered out of order, holds more than 4,096 words, or a real word is "
+        "not finite or beyond 1e12. The location's line is the record's number. Reading stops "
+        "there; what came before is used.",
+        "Check that the file is CLDATA as usina writes it (`usina apt --format cldata`) and was "
+        "copied whole, as bytes."),
+    "E_CL_BAD_ARGUMENT": (
+        "A CL statement has the wrong kind or number of arguments: GOTO without x,y,z, "
+        "CIRCLE without its centre and axis, GODLTA before any position, a CYCLE with no feed "
+        "rate, UNITS that is not MM or INCHES, a LOADTL whose tool number is not a whole "
+        "number from 0 to 999999. The statement is left out and reading goes on.",
+        "Give the statement the arguments the message names."),
+    "E_CL_BAD_ARC": (
+        "A CIRCLE of a CL file cannot be cut: the GOTO after it ends off the circle, the "
+        "start is off it (beyond 0.002 or 0.1 % of the radius), the circle comes before any "
+        "position, or no GOTO follows it. The move is taken straight (or the circle left out), "
+        "so the path goes on.",
+        "Check the CL file against the CAM system's output and the dialect: `--from clsf` for "
+        "NX (a +k axis runs clockwise), `--from aptcl` for SolidWorks CAM and Creo."),
+    "E_CL_NOT_SUPPORTED": (
+        "The CL statement is one usina does not turn into motion: a multi-axis GOTO (a tool "
+        "axis other than +Z), a NURBS spline. The statement is left out, never skipped in "
+        "silence.",
+        "Post the operation as 3-axis, or with lines and circles instead of splines."),
+    "E_CL_TOO_LARGE": (
+        "A CL statement is beyond the limits that keep hostile input finite: longer than "
+        "64 KiB with its continuations, more than 1,024 arguments, a number beyond 1e12 or out "
+        "of range.",
+        "Split the statement; check the file is a CL file."),
+    "W_CL_IGNORED": (
+        "A CL file's statement whose major word usina does not know (neither a motion nor "
+        "a word of the IBM vocabulary nor one of the display words it skips). It is left out.",
+        "Nothing, if the word does not move the tool; otherwise report it with a sample."),
     "E_DXF_MALFORMED": (
         "The drawing's lines are not a DXF file's groups: a group code that is not a whole "
         "number, a value line missing at the end, a line longer than 1,023 characters, no "

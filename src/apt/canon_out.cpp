@@ -1,5 +1,6 @@
 #include "apt/canon_out.hpp"
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -29,10 +30,14 @@ std::optional<double> first_number(const ClRecord& r) {
   return std::nullopt;
 }
 
-std::string text_of(const ClRecord& r) {
-  std::string t;
-  for (const ClWord& w : r.words)
-    t += w.text;
+// LOADTL's number as a tool number: a number no tool has (beyond 10^9, not
+// finite: a binary file's) is tool 0, never an int out of range.
+int tool_number(const ClRecord& r) {
+  const double n = first_number(r).value_or(0.0);
+  return std::isfinite(n) && std::fabs(n) < 1e9 ? static_cast<int>(n) : 0;
+}
+
+std::string trimmed(std::string t) {
   while (!t.empty() && t.back() == ' ')
     t.pop_back();
   while (!t.empty() && t.front() == ' ')
@@ -40,49 +45,25 @@ std::string text_of(const ClRecord& r) {
   return t;
 }
 
-// Walks the records in order; what post words set applies to the motions after.
-class Converter {
- public:
-  Converter(double scale, canon::Sink& sink) : scale_(scale), sink_(sink) {}
+std::string text_of(const ClRecord& r) {
+  std::string t;
+  for (const ClWord& w : r.words)
+    t += w.text;
+  return trimmed(std::move(t));
+}
 
-  void record(const ClRecord& r);
+}  // namespace
 
- private:
-  void emit(canon::OpKind k, const ClRecord& r, canon::Origin o = canon::Origin::Program) {
-    sink_.on(canon::Op{std::move(k), r.src, o});
-  }
-
-  void post(const ClRecord& r);
-  void post_motion_words(const ClRecord& r);
-  void motion(const ClRecord& r);
-  void move(const canon::Vec3& p, const ClRecord& r);
-  void drill(const canon::Vec3& p, const ClRecord& r);
-  void spindle(const ClRecord& r);
-  void cycle(const ClRecord& r);
-
-  double scale_;
-  canon::Sink& sink_;
-  bool rapid_ = false;       // RAPID: the next motion statement traverses
-  bool rapid_used_ = false;  // ... and it has begun
-  std::optional<double> feed_;
-  std::optional<canon::ProgrammedFeed> per_rev_;
-  std::optional<double> diameter_;
-  canon::Spindle spindle_{};
-  // CYCLE/DRILL,depth,IPM,f,clearance: each GOTO point drills.
-  bool cycle_ = false;
-  double depth_ = 0.0;
-  double clearance_ = 0.0;
-};
-
-void Converter::record(const ClRecord& r) {
+void ClToCanon::record(const ClRecord& r) {
   if (r.cls == cls::kSource && rapid_used_) rapid_ = rapid_used_ = false;
   if (r.cls == cls::kPost) post(r);
+  if (r.cls == cls::kSurface) surface(r);
   if (r.cls == cls::kMotion) motion(r);
   if (r.cls == cls::kControl && r.sub == 6 && !r.words.empty())
     diameter_ = r.words[0].real * scale_;
 }
 
-void Converter::post(const ClRecord& r) {
+void ClToCanon::post(const ClRecord& r) {
   switch (r.sub) {
   case 1: emit(canon::ProgramEnd{}, r); return;
   case 2: emit(canon::MachineCode{'M', 0, {}, {}}, r); return;
@@ -105,16 +86,14 @@ void Converter::post(const ClRecord& r) {
     return;
   case 1031: spindle(r); return;
   case 1054: cycle(r); return;
-  case 1055:
-    emit(canon::ToolChange{static_cast<int>(first_number(r).value_or(0.0)), diameter_}, r);
-    return;
+  case 1055: emit(canon::ToolChange{tool_number(r), diameter_}, r); return;
   default: post_motion_words(r);
   }
 }
 
 // The words that reach the stream as text: PARTNO, PPRINT, INSERT, and a
 // post word the canon stream has no op for (MACHIN/..., SEQNO/...).
-void Converter::post_motion_words(const ClRecord& r) {
+void ClToCanon::post_motion_words(const ClRecord& r) {
   if (r.sub == 1044 || r.sub == 1045 || r.sub == 1046) {
     emit(canon::Comment{text_of(r)}, r);
     return;
@@ -124,12 +103,12 @@ void Converter::post_motion_words(const ClRecord& r) {
     words += words.empty() ? "/" : ",";
     if (w.kind == ClWord::Kind::Real) words += fmt_number(w.real);
     if (w.kind == ClWord::Kind::Code) words += std::string(minor_word_name(w.code));
-    if (w.kind == ClWord::Kind::Text) words += w.text;
+    if (w.kind == ClWord::Kind::Text) words += trimmed(w.text);
   }
   emit(canon::Comment{"APT " + std::string(post_word_name(r.sub)) + words}, r);
 }
 
-void Converter::spindle(const ClRecord& r) {
+void ClToCanon::spindle(const ClRecord& r) {
   if (const auto rpm = first_number(r)) spindle_.rpm = *rpm;
   if (has_code(r, kOff)) {
     emit(canon::Spindle{spindle_.rpm, canon::SpindleDir::Off}, r);
@@ -143,7 +122,7 @@ void Converter::spindle(const ClRecord& r) {
   emit(spindle_, r);
 }
 
-void Converter::cycle(const ClRecord& r) {
+void ClToCanon::cycle(const ClRecord& r) {
   if (has_code(r, kOff)) {
     cycle_ = false;
     return;
@@ -162,19 +141,55 @@ void Converter::cycle(const ClRecord& r) {
   clearance_ = nums[2] * scale_;
 }
 
-void Converter::motion(const ClRecord& r) {
+void ClToCanon::surface(const ClRecord& r) {
+  arc_.reset();
+  // 0, #4 (CIRCLE), #9, name, 0, then xc,yc,zc, i,j,k, r.
+  if (r.sub != 2 || r.words.size() != 12) return;
+  for (std::size_t i = 5; i < 12; ++i)
+    if (r.words[i].kind != ClWord::Kind::Real) return;
+  const canon::Vec3 axis{r.words[8].real, r.words[9].real, r.words[10].real};
+  const double n = std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+  if (!(n > 1e-9) || !std::isfinite(n)) return;
+  arc_ = PendingArc{{r.words[5].real * scale_, r.words[6].real * scale_, r.words[7].real * scale_},
+                    {axis.x / n, axis.y / n, axis.z / n}};
+}
+
+void ClToCanon::motion(const ClRecord& r) {
+  const bool arc = arc_ && r.sub == 5 && r.words.size() == 5 && at_ && !cycle_;
+  if (!arc) arc_.reset();
   for (std::size_t i = 2; i + 2 < r.words.size(); i += 3) {
     const canon::Vec3 p{r.words[i].real * scale_, r.words[i + 1].real * scale_,
                         r.words[i + 2].real * scale_};
-    if (cycle_ && r.sub == 5) {
-      drill(p, r);
+    // A RAPID motion in a cycle positions: it drills nothing.
+    if (cycle_ && r.sub == 5 && !rapid_) {
+      drill(p, r);  // leaves the tool above the hole
+      continue;
+    }
+    if (arc) {
+      this->arc(p, r);
     } else {
       move(p, r);
     }
+    at_ = p;
   }
 }
 
-void Converter::move(const canon::Vec3& p, const ClRecord& r) {
+// About the circle's axis, its centre moved into the plane of the start.
+void ClToCanon::arc(const canon::Vec3& p, const ClRecord& r) {
+  const PendingArc a = *arc_;
+  arc_.reset();
+  const canon::Vec3 s = *at_;
+  const double along =
+      (s.x - a.center.x) * a.axis.x + (s.y - a.center.y) * a.axis.y + (s.z - a.center.z) * a.axis.z;
+  const canon::Vec3 c{a.center.x + a.axis.x * along, a.center.y + a.axis.y * along,
+                      a.center.z + a.axis.z * along};
+  canon::Arc op{p, c, a.axis, 1, feed_, {}, {}};
+  if (per_rev_) op.programmed = *per_rev_;
+  rapid_used_ = rapid_used_ || rapid_;
+  emit(op, r);
+}
+
+void ClToCanon::move(const canon::Vec3& p, const ClRecord& r) {
   // FROM sets the start: a traverse there, as a post's first positioning.
   if (r.sub == 3 || rapid_) {
     rapid_used_ = rapid_used_ || rapid_;
@@ -186,19 +201,18 @@ void Converter::move(const canon::Vec3& p, const ClRecord& r) {
   emit(f, r);
 }
 
-void Converter::drill(const canon::Vec3& p, const ClRecord& r) {
+void ClToCanon::drill(const canon::Vec3& p, const ClRecord& r) {
   const canon::Vec3 top{p.x, p.y, p.z + clearance_};
   const canon::Vec3 bottom{p.x, p.y, p.z - depth_};
   emit(canon::Traverse{top, {}}, r, canon::Origin::Cycle);
   emit(canon::Feed{bottom, feed_, {}, {}}, r, canon::Origin::Cycle);
   emit(canon::Traverse{top, {}}, r, canon::Origin::Cycle);
+  at_ = top;
   emit(canon::Hole{p, diameter_.value_or(0.0), depth_}, r);
 }
 
-}  // namespace
-
 void to_canon(const std::vector<ClRecord>& records, double scale, canon::Sink& sink) {
-  Converter c(scale, sink);
+  ClToCanon c(scale, sink);
   for (const ClRecord& r : records)
     c.record(r);
   sink.finish();

@@ -1,6 +1,7 @@
 // CL data: the records the processor writes (research/apt.md §6.1, the
 // layout of IBM's CLTAPE that ISO 3592 descends from), one model for every
-// writer: the record print of the conformance files and the canon stream.
+// writer (the record print of the conformance files, binary CLDATA, ISO 4343
+// text, the canon stream) and every reader (CLDATA, NX CLSF, APT CL).
 #pragma once
 
 #include <string>

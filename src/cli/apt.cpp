@@ -1,19 +1,27 @@
 // usina apt PART.apt: an APT part program processed into CL records, printed
-// as the record print of the conformance files (--format cldump) or as the
-// canon trace (--format jsonl); --canonical lists the geometry definitions;
-// --post writes the program for a control through the posts of `convert`.
+// as the record print of the conformance files (--format cldump), as the
+// canon trace (--format jsonl), as binary CLDATA (--format cldata) or as
+// ISO 4343 text (--format iso4343); --canonical lists the geometry
+// definitions; --post writes the program for a control through the posts of
+// `convert`.
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "apt/canon_out.hpp"
+#include "apt/cldata.hpp"
+#include "apt/iso4343.hpp"
 #include "apt/processor.hpp"
 #include "canon/trace_writer.hpp"
 #include "cli/diagnostic_printer.hpp"
 #include "cli/post_output.hpp"
 #include "cli/verbs.hpp"
+#include "core/output_file.hpp"
 #include "core/source.hpp"
 
 namespace usina::cli {
@@ -25,7 +33,7 @@ struct AptOptions {
   std::string units = "mm";
   bool canonical = false;
   DiagnosticOptions diagnostics;
-  PostOutput output;  // --post, -o and the post's options
+  PostOutput output;  // --post, -o (of every format too) and the post's options
 };
 
 // A number of a canonical form: -0 and rounding residues below 1e-12 as 0.
@@ -34,14 +42,16 @@ std::string canon_number(double v) {
   return fmt::format("{}", v);
 }
 
-void print_definitions(const std::vector<apt::Definition>& defs) {
+std::string definitions(const std::vector<apt::Definition>& defs) {
+  std::string out;
   for (const apt::Definition& d : defs) {
     std::string nums;
     for (std::size_t i = 0; i < apt::canon_size(d.geom.type); ++i)
       nums += (i ? "," : "") + canon_number(d.geom.c[i]);
-    fmt::print("{{\"name\":\"{}\",\"type\":\"{}\",\"canon\":[{}]}}\n", d.name,
-               apt::type_name(d.geom.type), nums);
+    out += fmt::format("{{\"name\":\"{}\",\"type\":\"{}\",\"canon\":[{}]}}\n", d.name,
+                       apt::type_name(d.geom.type), nums);
   }
+  return out;
 }
 
 double scale_of(const AptOptions& o) {
@@ -60,22 +70,73 @@ bool read_program(const AptOptions& o, core::SourceManager& sources, std::uint32
   return true;
 }
 
+// The canon trace, as `usina trace` writes it (docs/trace.md).
+class JsonlText final : public canon::Sink {
+ public:
+  void on(const canon::Op& op) override { text += canon::to_jsonl(op) + "\n"; }
+
+  std::string text;
+};
+
+// cldata and iso4343 feed a post or a machine: written only when the program
+// has no error. cldump, jsonl and --canonical show what was read, errors and all.
+bool whole_only(const AptOptions& o) {
+  return !o.canonical && (o.format == "cldata" || o.format == "iso4343");
+}
+
+std::string formatted(const AptOptions& o, const apt::AptResult& result) {
+  if (o.canonical) return definitions(result.definitions);
+  if (o.format == "cldata") return apt::write_cldata(result.records);
+  if (o.format == "iso4343")
+    return apt::write_iso4343(result.records, o.units == "inch" ? "INCHES" : "MM");
+  if (o.format == "cldump") return apt::record_print(result.records);
+  JsonlText trace;
+  apt::to_canon(result.records, scale_of(o), trace);
+  return std::move(trace.text);
+}
+
+// Standard output or -o FILE (core::OutputFile: replaced only when whole).
+int write_out(const AptOptions& o, const std::string& bytes) {
+  if (o.output.out == "-") {
+    std::fwrite(bytes.data(), 1, bytes.size(), stdout);
+    return 0;
+  }
+  if (auto written = core::write_file(o.output.out, bytes, {o.file}); !written) {
+    fmt::print(stderr, "usina: error: {}\n", written.error());
+    return 2;
+  }
+  return 0;
+}
+
 int run_apt(const AptOptions& o) {
+  // Bytes are no text: a terminal would show them as noise, or obey them.
+  if (!o.canonical && o.format == "cldata" && o.output.out == "-" && ::isatty(STDOUT_FILENO) != 0) {
+    fmt::print(stderr,
+               "usina: error: apt: --format cldata is binary; give -o FILE or send standard "
+               "output to a file or a pipe\n");
+    return 2;
+  }
+  if (o.output.out != "-") {
+    if (auto ok = core::check_not_input(o.output.out, o.file); !ok) {
+      fmt::print(stderr, "usina: error: {}\n", ok.error());
+      return 2;
+    }
+  }
   core::SourceManager sources;
   std::uint32_t id = 0;
   if (!read_program(o, sources, id)) return 2;
   DiagnosticPrinter diags(o.diagnostics);
   diags.set_sources(&sources);
   const apt::AptResult result = apt::process(sources.get(id)->text(), id, diags);
-  if (o.canonical) {
-    print_definitions(result.definitions);
-  } else if (o.format == "cldump") {
-    fmt::print("{}", apt::record_print(result.records));
-  } else {
-    canon::TraceWriter writer(stdout, canon::TraceFormat::Jsonl);
+  const int status = diags.errors() > 0 ? 1 : 0;
+  if (status != 0 && whole_only(o)) return status;
+  if (!o.canonical && o.format == "jsonl" && o.output.out == "-") {
+    canon::TraceWriter writer(stdout, canon::TraceFormat::Jsonl);  // streamed, not held
     apt::to_canon(result.records, scale_of(o), writer);
+    return status;
   }
-  return diags.errors() > 0 ? 1 : 0;
+  const int written = write_out(o, formatted(o, result));
+  return written != 0 ? written : status;
 }
 
 // --post: the canon stream into the post; nothing is written when the
@@ -103,8 +164,8 @@ bool settle_output(CLI::App& cmd, const AptOptions& o) {
                "usina: error: apt: --post writes a program; give it or --format/--canonical\n");
     return false;
   }
-  for (const char* opt : {"--output", "--program-number", "--program-name", "--decimals",
-                          "--line-numbers", "--tool-change", "--peck"})
+  for (const char* opt : {"--program-number", "--program-name", "--decimals", "--line-numbers",
+                          "--tool-change", "--peck"})
     if (!post && cmd.count(opt) > 0) {
       fmt::print(stderr, "usina: error: apt: {} goes with --post\n", opt);
       return false;
@@ -120,10 +181,12 @@ void add_apt(CLI::App& app) {
       app.add_subcommand("apt", "process an APT part program into CL data (docs/apt.md)");
   cmd->add_option("file", opts->file, "the APT program")->required();
   cmd->add_option("--format", opts->format,
-                  "cldump (the CL records, one a line) or jsonl (the canon trace)")
-      ->check(CLI::IsMember({"cldump", "jsonl"}))
+                  "cldump (the CL records, one a line), jsonl (the canon trace), cldata (binary "
+                  "CLDATA records) or iso4343 (CL text); -o FILE writes it to a file")
+      ->check(CLI::IsMember({"cldump", "jsonl", "cldata", "iso4343"}))
       ->capture_default_str();
-  cmd->add_option("--units", opts->units, "the program's unit, for jsonl: mm or inch")
+  cmd->add_option("--units", opts->units,
+                  "the program's unit, mm or inch: jsonl in mm, iso4343's UNITS statement")
       ->check(CLI::IsMember({"mm", "inch"}))
       ->capture_default_str();
   cmd->add_flag("--canonical", opts->canonical,

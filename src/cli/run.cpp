@@ -28,7 +28,17 @@ void add_run_options(CLI::App& app, RunOptions& o, RunInput input) {
   dialects.emplace_back("auto");
   app.add_option("--dialect", o.dialect, "the control's language (auto: guessed from the text)")
       ->check(CLI::IsMember(dialects))
+      ->each([&o](const std::string&) { o.dialect_given = true; })
       ->capture_default_str();
+  std::vector<std::string> languages = dialects;
+  for (const std::string_view l : kClLanguages)
+    languages.emplace_back(l);
+  app.add_option("--from", o.from,
+                 "the language of the file: a dialect (as --dialect), apt (an APT part program), "
+                 "clsf (NX CLSF), aptcl (APT CL of SolidWorks CAM, Creo), cldata (binary CLDATA); "
+                 "default: the file's extension says (.apt, .cls, .clsf, .ncl, .cldata), else "
+                 "--dialect")
+      ->check(CLI::IsMember(languages));
   app.add_option("--dialect-option", o.dialect_options,
                  "name=value: an open choice of the dialect (repeatable; docs/dialects.md)");
   app.add_option("--tool-table", o.tool_table, "LinuxCNC tool table (lengths in machine units)");
@@ -123,6 +133,12 @@ std::string folder_of(const std::string& path) {
 int run_program(const RunOptions& o, canon::Sink& sink,
                 const std::function<void(const core::SourceManager&)>& on_sources,
                 core::DiagnosticSink* observer) {
+  // --from names a dialect as --dialect does: both given must agree, never one silently win.
+  if (!o.from.empty() && o.dialect_given && o.from != o.dialect) {
+    fmt::print(stderr, "usina: error: --from {} and --dialect {} disagree; give one\n", o.from,
+               o.dialect);
+    return 2;
+  }
   if (!o.save_vars.empty()) {
     for (const std::string& input : save_vars_inputs(o)) {
       if (auto ok = core::check_not_input(o.save_vars, input); !ok) {
@@ -138,11 +154,12 @@ int run_program(const RunOptions& o, canon::Sink& sink,
   auto program = open_input(o.file);
   if (!program) return 2;
   const std::uint32_t main_id = sources.add(std::move(program));
-  // An APT part program (issue 15, docs/apt.md): the APT processor's road.
-  if (is_apt_file(o.file))
-    return run_apt_program(sources, main_id, o.machine_units == "inch" ? 25.4 : 1.0, sink, diags,
-                           static_cast<std::uint64_t>(o.max_ops));
-  std::string name = o.dialect;
+  // An APT part program or a CL file (issue 15, docs/apt.md): their readers' road.
+  const ProgramLanguage language = program_language(o.from, o.file == "-" ? "" : o.file);
+  if (language != ProgramLanguage::Gcode)
+    return run_apt_program(sources, main_id, language, o.machine_units == "inch" ? 25.4 : 1.0, sink,
+                           diags, static_cast<std::uint64_t>(o.max_ops));
+  std::string name = o.from.empty() ? o.dialect : o.from;
   if (name == "auto") {
     const gcode::DialectGuess guess =
         gcode::guess_dialect(sources.get(main_id)->text(), o.file == "-" ? "" : o.file);

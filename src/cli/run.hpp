@@ -18,6 +18,10 @@ namespace usina::cli {
 struct RunOptions {
   std::string file;
   std::string dialect = "rs274ngc";
+  bool dialect_given = false;  // --dialect was on the command line
+  // --from: a G-code dialect (as --dialect), or apt, clsf, aptcl, cldata
+  // (docs/apt.md); empty: the file's extension says (.apt, .cls ...).
+  std::string from;
   std::vector<std::string> dialect_options;  // name=value
   std::string tool_table;
   std::string machine_units = "mm";

@@ -145,6 +145,13 @@
   X(AptBadArgument, E_APT_BAD_ARGUMENT)                          \
   X(AptNotSupported, E_APT_NOT_SUPPORTED)                        \
   X(AptNoFini, W_APT_NO_FINI)                                    \
+  /* CL files: CLDATA, NX CLSF, APT CL */                        \
+  X(ClBadRecord, E_CL_BAD_RECORD)                                \
+  X(ClBadArgument, E_CL_BAD_ARGUMENT)                            \
+  X(ClBadArc, E_CL_BAD_ARC)                                      \
+  X(ClNotSupported, E_CL_NOT_SUPPORTED)                          \
+  X(ClTooLarge, E_CL_TOO_LARGE)                                  \
+  X(ClIgnored, W_CL_IGNORED)                                     \
   /* simulate: the stock model, its tools, its checks */         \
   X(StockGridTooLarge, E_STOCK_GRID_TOO_LARGE)                   \
   X(RapidCutsStock, E_RAPID_CUTS_STOCK)                          \

@@ -44,14 +44,15 @@ TEST(AptPost, ProgramWithAnErrorWritesNothing) {
   EXPECT_FALSE(usina::test::exists(dir.path("p.nc")));
 }
 
-TEST(AptPost, PostAndFormatOrOutputWithoutPostAreUsageErrors) {
+TEST(AptPost, PostAndFormatOrPostOptionsWithoutPostAreUsageErrors) {
   const TempDir dir;
   const std::string f = dir.write("p.apt", kContour);
   EXPECT_EQ(usina::test::usina("apt " + quote(f) + " --post fanuc --format jsonl").status, 2);
   EXPECT_EQ(usina::test::usina("apt " + quote(f) + " --post fanuc --canonical").status, 2);
-  const auto r = usina::test::usina("apt " + quote(f) + " -o " + quote(dir.path("x.nc")));
+  const auto r =
+      usina::test::usina("apt " + quote(f) + " --decimals 3 -o " + quote(dir.path("x.nc")));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--output goes with --post"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--decimals goes with --post"), std::string::npos) << r.err;
   EXPECT_FALSE(usina::test::exists(dir.path("x.nc")));
 }
 

@@ -168,6 +168,33 @@ APT = {
     "contour": lambda n: "L1=LINE/0,0,0,10\nL2=LINE/0,5,10,5\nC=CIRCLE/-3,5,3\nCUTTER/2\n"
     + repeat_to("GOTO/-5,-5,0\nGO/TO,L1\nTLLFT,GOLFT/L1,TANTO,C\nGOFWD/C,PAST,L2\n", n) + "FINI\n",
 }
+# --- CL files (the first byte picks the reader: 0 NX CLSF, 1 APT CL)
+
+
+def clsf_program(n):
+    """NX CLSF: GOTO, CIRCLE and its end, PAINT, FEDRAT, to about n bytes."""
+    out = ["0TOOL PATH/LONG,TOOL,D10\nTLDATA/MILL,10,0,50,0,0\nRAPID\nGOTO/0,-10,0,0,0,1\n"]
+    size = len(out[0])
+    while size < n:
+        out.append("PAINT/COLOR,31\nFEDRAT/MMPM,500\nCIRCLE/0,0,0,0,0,-1,10,0.06,0.5\n"
+                   "GOTO/-10,0,0\nCIRCLE/0,0,0,0,0,-1,10\nGOTO/0,-10,0\n")
+        size += len(out[-1])
+    return "".join(out) + "END-OF-PATH\n"
+
+
+CL = {
+    # One statement of 200 KB (beyond the 64 KiB bound).
+    "statement": lambda n: "1GOTO/1" + repeat_to(",1", n) + "\n",
+    # A comment of 100 KB after $$.
+    "comment": lambda n: "0$$" + "c" * n + "\nGOTO/0,0,0\n",
+    # One statement continued over many lines with $.
+    "continuation": lambda n: "1PPRINT/A" + repeat_to("$\nB", n) + "\nFINI\n",
+    # A file of 1 MB.
+    "program": clsf_program,
+}
+CL_SIZES = {"statement": 200_000, "comment": 100_000, "continuation": 200_000,
+            "program": 1_000_000}
+
 APT_SIZES = {"statement": 200_000, "comment": 100_000, "nesting": 20_000,
              "continuation": 200_000, "program": 1_000_000,
              "contour": 1_000_000}
@@ -314,6 +341,7 @@ TARGETS = {
     "dxf": (DXF, DXF_SIZES, "dxf"),
     "remote_request": (REQUEST, REQUEST_SIZES, "tape"),
     "apt": (APT, APT_SIZES, "apt"),
+    "cl": (CL, CL_SIZES, "cls"),
     "job_toml": (JOB_TOML, JOB_TOML_SIZES, "toml"),
     "config": (CONFIG, CONFIG_SIZES, "txt"),
     "forms": (FORMS, FORMS_SIZES, "json"),
