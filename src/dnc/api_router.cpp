@@ -54,6 +54,11 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/programs/{}/diff", A::Permission, P::ReadPrograms, api_diff},
     ApiRoute{V::get, "/api/machines", A::Permission, P::ReadMachines, api_list_machines},
     ApiRoute{V::get, "/api/machines/{}", A::Permission, P::ReadMachines, api_machine},
+    // An admin's machines besides the file's (docs/dnc-server.md, "Machines added from the page").
+    ApiRoute{V::post, "/api/machines", A::Permission, P::ManageMachines, api_add_machine},
+    ApiRoute{V::post, "/api/machines/{}", A::Permission, P::ManageMachines, api_change_machine},
+    ApiRoute{V::post, "/api/machines/{}/retire", A::Permission, P::ManageMachines,
+             api_retire_machine},
     ApiRoute{V::get, "/api/machines/{}/utilisation", A::Permission, P::ReadMachines,
              api_utilisation},
     ApiRoute{V::get, "/api/machines/{}/tools", A::Permission, P::ReadMachines, api_tool_life},

@@ -115,6 +115,13 @@ HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);
 HttpResponse api_machine(ApiCall& c);
+HttpResponse api_add_machine(ApiCall& c);  // api_machine_admin.cpp
+HttpResponse api_change_machine(ApiCall& c);
+HttpResponse api_retire_machine(ApiCall& c);
+// A machine as GET /api/machines/{machine} answers (api_machines.cpp), and
+// the retired ones of the store (api_machine_admin.cpp).
+nlohmann::json machine_json(ApiCall& c, MachineRuntime& m);
+nlohmann::json retired_machines(ApiCall& c);
 HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
 HttpResponse api_tool_life(ApiCall& c);
 HttpResponse api_reset_tool(ApiCall& c);

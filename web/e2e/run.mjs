@@ -7,7 +7,7 @@
 // imported (import.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs),
 // setup sheets attached and downloaded (sheets.mjs), quality records
-// (quality.mjs).
+// (quality.mjs), the admin's machine settings (machine_settings.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
@@ -18,6 +18,7 @@ import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { importFlow } from './import.mjs';
+import { machineSettingsFlow } from './machine_settings.mjs';
 import { qualityFlow } from './quality.mjs';
 import { replayFlow } from './replay.mjs';
 import { sheetsFlow } from './sheets.mjs';
@@ -43,12 +44,15 @@ function check(ok, what) {
 // The 422 of a drawing with nothing to draw (drawing.mjs).
 // The 400 of a .pdf that is no PDF (sheets.mjs) and of a measured value
 // past the server's range (quality.mjs).
+// The 400s of a machine EIA cannot carry and of a retirement without a
+// reason (machine_settings.mjs).
 function askedRefusal(m) {
   const url = m.location().url ?? '';
   return (
     (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) ||
     (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url)) ||
-    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url))
+    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url)) ||
+    (/status of 400/.test(m.text()) && /\/api\/machines(\/mill-9\/retire)?$/.test(url))
   );
 }
 
@@ -176,6 +180,7 @@ async function run() {
   await zoomFlow(page, harness, t, second);
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);
+  await machineSettingsFlow(page, harness, t);
   await sheetsFlow(page, harness, t, seedRev);
   await qualityFlow(page, harness, t);
 
