@@ -31,6 +31,12 @@ constexpr std::array kRoutes{
              api_put_sheet},
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/sheet", A::Permission, P::ReadPrograms,
              api_get_sheet},
+    // A link to show the sheet in a frame, which sends no token: signed, it
+    // is its own permission for a few minutes (sheet_links.hpp).
+    ApiRoute{V::post, "/api/programs/{}/revisions/{}/sheet/link", A::Permission, P::ReadPrograms,
+             api_sheet_link},
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/sheet/view", A::Public, P::ReadPrograms,
+             api_sheet_view},
     // The viewer's binary tool path (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/toolpath", A::Permission, P::ReadPrograms,
              api_toolpath, api_toolpath_later},

@@ -90,7 +90,7 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
   machines_->use_calendar(config_.calendar);
   toolpaths_ = std::make_unique<ToolpathService>(io_);
   api_ = std::make_unique<Api>(
-      ApiContext{*store_, *machines_, events_, config_.profiles, toolpaths_.get()});
+      ApiContext{*store_, *machines_, events_, config_.profiles, toolpaths_.get(), &sheet_links_});
   web_ = std::make_unique<WebFiles>(WebFilesConfig{
       config_.web_root.empty() ? default_web_root() : std::filesystem::path(config_.web_root),
       config_.web_max_file_bytes});

@@ -6,7 +6,7 @@
 // program made from the elliptical pocket's form (forms.mjs), a folder
 // imported (import.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs),
-// setup sheets attached and downloaded (sheets.mjs), quality records
+// setup sheets attached, downloaded and shown (sheets.mjs), quality records
 // (quality.mjs), the admin's machine settings (machine_settings.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
@@ -46,13 +46,15 @@ function check(ok, what) {
 // past the server's range (quality.mjs).
 // The 400s of a machine EIA cannot carry and of a retirement without a
 // reason (machine_settings.mjs).
+// The sandbox of a setup sheet's frame stopping its script (sheets.mjs).
 function askedRefusal(m) {
   const url = m.location().url ?? '';
   return (
     (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) ||
     (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url)) ||
     (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url)) ||
-    (/status of 400/.test(m.text()) && /\/api\/machines(\/mill-9\/retire)?$/.test(url))
+    (/status of 400/.test(m.text()) && /\/api\/machines(\/mill-9\/retire)?$/.test(url)) ||
+    /^Blocked script execution in '.*\/sheet\/view\?.*sandboxed/.test(m.text())
   );
 }
 
