@@ -64,9 +64,10 @@ export async function drawingFlow(page, t, rev) {
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer="CONTOUR"]'));
 }
 
-// A drawing that is not whole, and one that cannot be made, on their
-// program pages: the note of the first as an alert under a picture, the
-// server's 422 instead of a picture for the second.
+// A drawing that is not whole (an error, or past its entities), and one
+// that cannot be made, on their program pages: the note of the first two
+// as an alert under a picture, the server's 422 instead of a picture for
+// the last.
 export async function drawingNotesFlow(page, h, t) {
   const up = async (name, text) => (await h.api('boss', 'POST', '/api/programs', { name, text, dialect: 'rs274ngc' })).json.revision;
   const broken = await up('draw-broken', 'G0 X0 Y0 Z0\nG1 X20 F100\nG999\nG1 Y70\nM2\n');
@@ -77,6 +78,16 @@ export async function drawingNotesFlow(page, h, t) {
   const note = await page.locator('#drawing-status').innerText();
   const img = await page.locator('#drawing img').count();
   t.check(img === 1 && /^Not all of it is drawn: the program stops at line 3 \(/.test(note), `a drawing stopped by an error shows what ran, and says why ("${note}")`);
+  // Past the drawing's 100,000 entities: random moves, so no two merge.
+  let seed = 12345;
+  const next = () => ((seed = (seed * 16807) % 2147483647) / 2147483647) * 4000; // exact in doubles
+  const moves = Array.from({ length: 100050 }, () => `G1 X${next().toFixed(1)} Y${next().toFixed(1)}`);
+  const full = await up('draw-full', `G0 X0 Y0 Z0\nF1000\n${moves.join('\n')}\nM2\n`);
+  await page.goto(`${h.base}/#/program/draw-full/${full}`);
+  await page.getByRole('heading', { name: 'Program draw-full' }).waitFor();
+  await page.locator('#drawing-status[role="alert"]').waitFor({ timeout: 60000 });
+  const past = await page.locator('#drawing-status').innerText();
+  t.check(/^Not all of it is drawn: the drawing holds 100000 entities, .* moves from line \d+ on are not drawn \(the 3D viewer shows every move\)$/.test(past) && !/usina /.test(past), `a drawing past its entities says where the rest is seen, on the page ("${past}")`);
   await page.goto(`${h.base}/#/program/draw-nothing/${nothing}`);
   await page.getByRole('heading', { name: 'Program draw-nothing' }).waitFor();
   await page.locator('#drawing-status[role="alert"]').waitFor();
