@@ -21,7 +21,7 @@ async function machines(h) {
 }
 
 async function audited(h, name) {
-  const log = (await h.api('boss', 'GET', '/api/audit')).json.entries;
+  const log = (await h.api('boss', 'GET', '/api/audit?limit=100000')).json.entries; // after the big library's
   return log.filter((e) => e.subject === name).map((e) => `${e.action}:${e.reason}`);
 }
 

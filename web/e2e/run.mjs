@@ -82,8 +82,11 @@ async function run() {
   page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
   const formRefusal = (text) => /status of 400/.test(text) && formRefusals > 0 && formRefusals-- > 0;
   const elsewhere = [];
-  // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched.
-  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith(`blob:${base}/`) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
+  // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched;
+  // the browser's own PDF viewer (a setup sheet shown, sheets.mjs) loads its
+  // files from chrome:// and chrome-extension://, never the network.
+  const browsers = (u) => u.startsWith('chrome://') || u.startsWith('chrome-extension://');
+  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith(`blob:${base}/`) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && !browsers(r.url()) && elsewhere.push(r.url()));
   page.setDefaultTimeout(20000);
 
   // Login.

@@ -114,5 +114,9 @@ async function showFlow(page, h, check, { html, pdf }) {
   const got = await fetch(`${h.base}${pdfSrc}`);
   const bytes = Buffer.from(await got.arrayBuffer());
   check(got.status === 200 && got.headers.get('content-type') === 'application/pdf' && bytes.equals(pdf), `the PDF sheet shows in a frame through its own link (${bytes.length} bytes)`);
+  // The HTML sheet again, for the picture (this PDF of every byte value is no document to draw).
+  await page.getByRole('button', { name: 'Close the PDF sheet' }).click();
+  await page.getByRole('button', { name: 'Show the HTML sheet' }).click();
+  await page.frameLocator('#sheet-view iframe').getByText('Vice, jaw 2').waitFor();
   await page.locator('section.sheets').scrollIntoViewIfNeeded();
 }
