@@ -56,6 +56,8 @@ export async function drawingFlow(page, t, rev) {
   const dxf = readFileSync(await dl.path(), 'latin1');
   t.check(/\.dxf$/.test(dl.suggestedFilename()) && /SECTION/.test(dxf) && /\nCONTOUR\r?\n/.test(dxf) && /\nHOLES\r?\n/.test(dxf), `the DXF downloads from the keyboard (${dl.suggestedFilename()}, ${dxf.length} bytes)`);
 
+  await zoomDrawing(page, t);
+
   await page.getByLabel('Drawing view').selectOption('toolpath');
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer^="TOOLPATH_T"]'));
   const tools = await layers(page);
@@ -93,4 +95,35 @@ export async function drawingNotesFlow(page, h, t) {
   await page.locator('#drawing-status[role="alert"]').waitFor();
   const refused = await page.locator('#drawing-status').innerText();
   t.check((await page.locator('#drawing img').count()) === 0 && /^No drawing \(422\): nothing to draw: the program stops at line 1 \(.*before its first move$/.test(refused) && (await page.locator('#drawing-svg').isHidden()), `nothing to draw: the server's reason instead of a picture ("${refused}")`);
+}
+
+// The drawing zoomed from the keyboard, the wheel and the buttons, and
+// moved with the arrow keys.
+async function zoomDrawing(page, t) {
+  const width = () => page.locator('#drawing img').evaluate((i) => i.getBoundingClientRect().width);
+  const level = () => page.locator('#drawing .drawing-zoom-level').innerText();
+  const box = page.locator('#drawing .drawing-zoom-box');
+  const whole = await width();
+  await box.focus();
+  await page.keyboard.press('+');
+  await page.keyboard.press('+');
+  const zoomed = await width();
+  const said = await level();
+  const before = await box.evaluate((b) => b.scrollLeft);
+  for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
+  const moved = (await box.evaluate((b) => b.scrollLeft)) - before;
+  t.check(Math.abs(zoomed / whole - 1.5625) < 0.01 && said === 'Zoom 156 %' && moved > 0, `+ twice zooms the drawing to ${said} (${Math.round(whole)} → ${Math.round(zoomed)} px) and the arrow keys move it (${moved} px)`);
+  const r = await box.boundingBox();
+  await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
+  await page.mouse.wheel(0, 120);
+  await page.locator('#drawing .drawing-zoom-level', { hasText: 'Zoom 125 %' }).waitFor();
+  await page.mouse.wheel(0, -120);
+  await page.locator('#drawing .drawing-zoom-level', { hasText: 'Zoom 156 %' }).waitFor();
+  await page.getByRole('button', { name: 'Zoom out' }).click();
+  const out = await level();
+  await page.getByRole('button', { name: 'Show the whole drawing' }).click();
+  const back = await width();
+  await box.focus();
+  await page.keyboard.press('-');
+  t.check(out === 'Zoom 125 %' && Math.abs(back - whole) < 1 && (await level()) === 'Zoom 100 %', `the wheel zooms out and in about the pointer, Zoom out and Show the whole drawing go back (${Math.round(back)} px), and - stops at the whole`);
 }
