@@ -111,7 +111,11 @@ async function zoomDrawing(page, t) {
   const said = await level();
   const before = await box.evaluate((b) => b.scrollLeft);
   for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
-  const moved = (await box.evaluate((b) => b.scrollLeft)) - before;
+  // The box scrolls smoothly: its position is read once it has moved.
+  const moved = await page
+    .waitForFunction((b) => document.querySelector('#drawing .drawing-zoom-box').scrollLeft - b, before, { timeout: 5000 })
+    .then((r) => r.jsonValue())
+    .catch(() => 0);
   t.check(Math.abs(zoomed / whole - 1.5625) < 0.01 && said === 'Zoom 156 %' && moved > 0, `+ twice zooms the drawing to ${said} (${Math.round(whole)} → ${Math.round(zoomed)} px) and the arrow keys move it (${moved} px)`);
   const r = await box.boundingBox();
   await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
