@@ -3,6 +3,11 @@
 // kept in the store with its audit entry (store_machines.hpp) and put to
 // work at once (server_machine_admin.cpp). The machines of usina-serve.toml
 // are the file's: the API reads them and changes none.
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <system_error>
+
 #include <fmt/format.h>
 
 #include "dnc/api_json.hpp"
@@ -28,6 +33,32 @@ tl::expected<std::string, std::string> take_reason(nlohmann::json& body, bool re
   if (!reason) return tl::unexpected(reason.error());
   body.erase("reason");
   return reason->value_or("");
+}
+
+// A device a machine added here may open: a serial line or a pty, by its
+// path and, when it is there, by the path it resolves to. Opening any other
+// device has effects of its own (a watchdog starts when opened), so those
+// are named in usina-serve.toml by whoever keeps the server's files.
+constexpr std::array<std::string_view, 4> kSerialDevices{"/dev/tty", "/dev/pts/", "/dev/serial/",
+                                                         "/dev/rfcomm"};
+
+bool serial_path(std::string_view path) {
+  if (path.find("/..") != std::string_view::npos || path.find("/./") != std::string_view::npos)
+    return false;
+  return std::any_of(kSerialDevices.begin(), kSerialDevices.end(),
+                     [&](std::string_view d) { return path.starts_with(d); });
+}
+
+std::optional<std::string> device_refused(const ServerMachine& m) {
+  const std::string& port = m.link.port;
+  if (port.starts_with("tcp://") || port.starts_with("tcp-listen://")) return std::nullopt;
+  std::error_code ec;
+  const auto real = std::filesystem::canonical(port, ec);
+  if (serial_path(port) && (ec || serial_path(real.string()))) return std::nullopt;
+  return fmt::format(
+      "port {}: a machine added here is on a serial device (/dev/tty*, /dev/pts/*, "
+      "/dev/serial/*, /dev/rfcomm*) or tcp://host:port; name any other in usina-serve.toml",
+      port);
 }
 
 // Another machine in service on the same port: two stations cannot share one.
@@ -90,6 +121,7 @@ HttpResponse api_add_machine(ApiCall& c) {
   if (!reason) return failure(c, http::status::bad_request, reason.error());
   auto m = machine_from_settings(*body);
   if (!m) return failure(c, http::status::bad_request, m.error());
+  if (auto refused = device_refused(*m)) return failure(c, http::status::bad_request, *refused);
   const std::string name = m->link.name;
   if (MachineRuntime* there = c.ctx.machines.find(name); there != nullptr)
     return failure(c, http::status::conflict, fmt::format("there is a machine {} already", name));
@@ -128,6 +160,7 @@ HttpResponse api_change_machine(ApiCall& c) {
   settings.merge_patch(*body);  // null removes a key: its default again
   auto m = machine_from_settings(settings);
   if (!m) return failure(c, http::status::bad_request, m.error());
+  if (auto refused = device_refused(*m)) return failure(c, http::status::bad_request, *refused);
   const nlohmann::json changed = changes(machine_settings(runtime->config), machine_settings(*m));
   if (changed.empty()) return json_response(c.req, http::status::ok, machine_json(c, *runtime));
   if (auto ok = c.ctx.machines.may_change(*runtime); !ok) return store_failure(c, ok.error());

@@ -109,6 +109,10 @@ TEST(ApiMachineAdmin, BadSettingsAre400WithTheConfigurationsMessage) {
   refused(with(m, {{"code", "eia"}, {"data_bits", 7}}), 400, "needs data_bits = 8");
   refused(with(m, {{"name", "a b"}}), 400, "a machine's name");
   refused({{"port", "tcp://127.0.0.1:9"}}, 400, "name is missing");
+  // Only serial lines and ptys: opening another device does something of its own.
+  refused(with(m, {{"port", "/dev/watchdog"}}), 400, "on a serial device");
+  refused(with(m, {{"port", "/dev/pts/../sda"}}), 400, "on a serial device");
+  refused(with(m, {{"port", "/tmp/cnc"}}), 400, "name any other in usina-serve.toml");
   refused(ascii_machine("mill-1", "tcp://127.0.0.1:9"), 409, "there is a machine mill-1");
   const std::string mill1_port = c.get("/api/machines/mill-1", boss).json()["port"];
   refused(ascii_machine("mill-3", mill1_port), 409, "is machine mill-1's");
