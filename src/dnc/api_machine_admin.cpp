@@ -103,12 +103,12 @@ nlohmann::json retired_json(const StoredMachine& m) {
 }  // namespace
 
 // The retired machines, for `GET /api/machines?retired=1`.
-nlohmann::json retired_machines(ApiCall& c) {
+StoreResult<nlohmann::json> retired_machines(ApiCall& c) {
+  auto all = stored_machines(c.ctx.store);
+  if (!all) return tl::unexpected(all.error());
   nlohmann::json out = nlohmann::json::array();
-  if (auto all = stored_machines(c.ctx.store)) {
-    for (const StoredMachine& m : *all) {
-      if (m.retired_at_us != 0) out.push_back(retired_json(m));
-    }
+  for (const StoredMachine& m : *all) {
+    if (m.retired_at_us != 0) out.push_back(retired_json(m));
   }
   return out;
 }

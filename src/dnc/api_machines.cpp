@@ -157,9 +157,12 @@ HttpResponse api_list_machines(ApiCall& c) {
   for (const auto& m : c.ctx.machines.all())
     out.push_back(machine_json(c, *m));
   nlohmann::json answer = {{"machines", std::move(out)}};
-  if (const auto it = c.target.query.find("retired");
-      it != c.target.query.end() && it->second == "1")
-    answer["retired"] = retired_machines(c);
+  const auto it = c.target.query.find("retired");
+  if (it != c.target.query.end() && it->second == "1") {
+    auto retired = retired_machines(c);
+    if (!retired) return error_response(c.req, status_of(retired.error()), retired.error().message);
+    answer["retired"] = std::move(*retired);
+  }
   return json_response(c.req, http::status::ok, answer);
 }
 

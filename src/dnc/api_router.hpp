@@ -127,7 +127,7 @@ HttpResponse api_retire_machine(ApiCall& c);
 // A machine as GET /api/machines/{machine} answers (api_machines.cpp), and
 // the retired ones of the store (api_machine_admin.cpp).
 nlohmann::json machine_json(ApiCall& c, MachineRuntime& m);
-nlohmann::json retired_machines(ApiCall& c);
+StoreResult<nlohmann::json> retired_machines(ApiCall& c);
 HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
 HttpResponse api_tool_life(ApiCall& c);
 HttpResponse api_reset_tool(ApiCall& c);

@@ -184,6 +184,29 @@ TEST(ApiMachineAdmin, AMachineUnderAJobIsNeitherChangedNorRetired) {
   EXPECT_EQ(c.get("/api/machines/mill-2", boss).json()["settings"]["baud"], 1200);
 }
 
+TEST(ApiMachineAdmin, AMachineReceivingAPunchIsNeitherChangedNorRetired) {
+  RunningServer s;
+  PtyControl pty = pty_control(s);
+  s.start();
+  const ApiClient c = s.client();
+  const std::string boss = c.log_in("boss", test::kPassword);
+  ASSERT_EQ(
+      c.post("/api/machines", with(ascii_machine("mill-2", pty.port), {{"receive_idle", 30}}), boss)
+          .status,
+      201);
+  machine_once(c, boss, "mill-2", "idle");
+  punch(s, pty.control, "%\nO1234\nG0 X1\n");  // no end: the punch goes on
+  EXPECT_EQ(machine_once(c, boss, "mill-2", "receiving")["state"], "receiving");
+  const test::Reply change = c.post("/api/machines/mill-2", {{"baud", 9600}}, boss);
+  EXPECT_EQ(change.status, 409) << change.body;
+  EXPECT_NE(change.body.find("mill-2 is receiving; wait until it is idle"), std::string::npos)
+      << change.body;
+  EXPECT_EQ(c.post("/api/machines/mill-2/retire", {{"reason", "x"}}, boss).status, 409);
+  punch(s, pty.control, "M2\n%\n");
+  EXPECT_EQ(machine_once(c, boss, "mill-2", "idle")["state"], "idle");
+  EXPECT_EQ(c.post("/api/machines/mill-2", {{"baud", 9600}}, boss).status, 200);
+}
+
 TEST(ApiMachineAdmin, ARetiredMachineLeavesTheListAndKeepsItsName) {
   RunningServer s;
   PtyControl pty = pty_control(s);
