@@ -190,7 +190,8 @@ int draw_program(DrawOptions& o) {
   const int status = run_program(o.run, builder);
   if (status == kBadInput) return status;
   builder.finish();
-  if (auto note = builder.limit_note()) fmt::print(stderr, "usina: warning: {}\n", *note);
+  if (auto note = builder.limit_note("usina trace lists them"))
+    fmt::print(stderr, "usina: warning: {}\n", *note);
   // What was drawn before an error is written all the same.
   if (auto written = write(drawing, *format, o.output, size, inputs, raster); !written)
     return fail(written.error());

@@ -7,6 +7,7 @@
 
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/machine_settings.hpp"
 #include "dnc/resume.hpp"
 #include "dnc/store_check.hpp"
 #include "dnc/store_jobs.hpp"
@@ -58,28 +59,6 @@ nlohmann::json last_alarm(Store& store, const std::string& machine) {
   if (!newest || newest->empty() || !newest->front().alarm) return nullptr;
   const JobRecord& j = newest->front();
   return {{"job", j.id}, {"reason", j.reason}, {"at_us", j.ended_at_us}};
-}
-
-nlohmann::json machine_json(ApiCall& c, MachineRuntime& m) {
-  const LinkConfig& l = m.config.link;
-  nlohmann::json out = {{"name", l.name},
-                        {"dialect", l.dialect},
-                        {"machine_class", m.config.machine_class},
-                        {"mode", mode_name(l.mode)},
-                        {"code", code_name(l.code)},
-                        {"port", l.port},
-                        {"state", m.station ? station_state_name(m.station->state()) : "offline"},
-                        {"link_error", m.link_error},
-                        {"queue", m.queue},
-                        {"job", nullptr}};
-  if (m.current) {
-    if (auto live = c.ctx.machines.job(m.current->id))
-      out["job"] = with_downward(c.ctx.store, *live);
-  }
-  out["alarm"] = last_alarm(c.ctx.store, l.name);
-  out.update(parts_json(c.ctx.store, m));  // server_mdc.cpp
-  out["part_count_source"] = "drip feeds run to their end, and the control's part lines";
-  return out;
 }
 
 tl::expected<JobOrder, std::string> read_order(const HttpRequest& req) {
@@ -147,11 +126,44 @@ std::optional<std::int64_t> job_id(const std::string& s) {
 
 }  // namespace
 
+nlohmann::json machine_json(ApiCall& c, MachineRuntime& m) {
+  const LinkConfig& l = m.config.link;
+  nlohmann::json out = {{"name", l.name},
+                        {"dialect", l.dialect},
+                        {"machine_class", m.config.machine_class},
+                        {"mode", mode_name(l.mode)},
+                        {"code", code_name(l.code)},
+                        {"port", l.port},
+                        {"state", m.station ? station_state_name(m.station->state()) : "offline"},
+                        {"link_error", m.link_error},
+                        {"queue", m.queue},
+                        {"job", nullptr}};
+  if (m.current) {
+    if (auto live = c.ctx.machines.job(m.current->id))
+      out["job"] = with_downward(c.ctx.store, *live);
+  }
+  out["alarm"] = last_alarm(c.ctx.store, l.name);
+  out.update(parts_json(c.ctx.store, m));  // server_mdc.cpp
+  out["part_count_source"] = "drip feeds run to their end, and the control's part lines";
+  // Where it is set: the file's machines are changed in the file, the
+  // page's from the page (api_machine_admin.cpp).
+  out["source"] = m.config.from_store ? "api" : "file";
+  out["settings"] = machine_settings(m.config);
+  return out;
+}
+
 HttpResponse api_list_machines(ApiCall& c) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& m : c.ctx.machines.all())
     out.push_back(machine_json(c, *m));
-  return json_response(c.req, http::status::ok, {{"machines", std::move(out)}});
+  nlohmann::json answer = {{"machines", std::move(out)}};
+  const auto it = c.target.query.find("retired");
+  if (it != c.target.query.end() && it->second == "1") {
+    auto retired = retired_machines(c);
+    if (!retired) return error_response(c.req, status_of(retired.error()), retired.error().message);
+    answer["retired"] = std::move(*retired);
+  }
+  return json_response(c.req, http::status::ok, answer);
 }
 
 HttpResponse api_machine(ApiCall& c) {

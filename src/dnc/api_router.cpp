@@ -31,6 +31,12 @@ constexpr std::array kRoutes{
              api_put_sheet},
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/sheet", A::Permission, P::ReadPrograms,
              api_get_sheet},
+    // A link to show the sheet in a frame, which sends no token: signed, it
+    // is its own permission for a few minutes (sheet_links.hpp).
+    ApiRoute{V::post, "/api/programs/{}/revisions/{}/sheet/link", A::Permission, P::ReadPrograms,
+             api_sheet_link},
+    ApiRoute{V::get, "/api/programs/{}/revisions/{}/sheet/view", A::Public, P::ReadPrograms,
+             api_sheet_view},
     // The viewer's binary tool path (docs/web.md).
     ApiRoute{V::get, "/api/programs/{}/revisions/{}/toolpath", A::Permission, P::ReadPrograms,
              api_toolpath, api_toolpath_later},
@@ -54,6 +60,11 @@ constexpr std::array kRoutes{
     ApiRoute{V::get, "/api/programs/{}/diff", A::Permission, P::ReadPrograms, api_diff},
     ApiRoute{V::get, "/api/machines", A::Permission, P::ReadMachines, api_list_machines},
     ApiRoute{V::get, "/api/machines/{}", A::Permission, P::ReadMachines, api_machine},
+    // An admin's machines besides the file's (docs/dnc-server.md, "Machines added from the page").
+    ApiRoute{V::post, "/api/machines", A::Permission, P::ManageMachines, api_add_machine},
+    ApiRoute{V::post, "/api/machines/{}", A::Permission, P::ManageMachines, api_change_machine},
+    ApiRoute{V::post, "/api/machines/{}/retire", A::Permission, P::ManageMachines,
+             api_retire_machine},
     ApiRoute{V::get, "/api/machines/{}/utilisation", A::Permission, P::ReadMachines,
              api_utilisation},
     ApiRoute{V::get, "/api/machines/{}/tools", A::Permission, P::ReadMachines, api_tool_life},

@@ -21,6 +21,7 @@
 namespace usina::dnc {
 
 class ToolpathService;  // web_toolpath_service.hpp
+class SheetLinks;       // sheet_links.hpp
 using HttpAnswer = HttpHandlers::Answer;
 
 struct ApiContext {
@@ -29,6 +30,7 @@ struct ApiContext {
   EventHub& events;
   const std::map<std::string, sim::MachineProfile>& profiles;  // by machine class
   ToolpathService* toolpaths = nullptr;  // the tool-path route's pool and cache; none: on the loop
+  const SheetLinks* sheet_links = nullptr;  // the sheets' signed links; none: refused
 };
 
 // One request on its way through a handler.
@@ -98,9 +100,13 @@ HttpResponse api_upload(ApiCall& c);
 HttpResponse api_program(ApiCall& c);
 HttpResponse api_revision(ApiCall& c);
 HttpResponse api_revision_text(ApiCall& c);
-HttpResponse api_put_sheet(ApiCall& c);  // api_sheets.cpp
-HttpResponse api_get_sheet(ApiCall& c);  // api_sheets.cpp
-HttpResponse api_toolpath(ApiCall& c);   // web_toolpath_api.cpp
+HttpResponse api_put_sheet(ApiCall& c);   // api_sheets.cpp
+HttpResponse api_get_sheet(ApiCall& c);   // api_sheets.cpp
+HttpResponse api_sheet_link(ApiCall& c);  // api_sheet_links.cpp
+HttpResponse api_sheet_view(ApiCall& c);
+// The sheet's bytes as GET .../sheet answers them (api_sheets.cpp).
+HttpResponse sheet_answer(ApiCall& c, std::optional<std::string_view> format);
+HttpResponse api_toolpath(ApiCall& c);  // web_toolpath_api.cpp
 void api_toolpath_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_tool_figures(ApiCall& c);  // web_toolpath_tools.cpp
 void api_tool_figures_later(ApiCall& c, HttpAnswer answer);
@@ -115,6 +121,13 @@ HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);
 HttpResponse api_machine(ApiCall& c);
+HttpResponse api_add_machine(ApiCall& c);  // api_machine_admin.cpp
+HttpResponse api_change_machine(ApiCall& c);
+HttpResponse api_retire_machine(ApiCall& c);
+// A machine as GET /api/machines/{machine} answers (api_machines.cpp), and
+// the retired ones of the store (api_machine_admin.cpp).
+nlohmann::json machine_json(ApiCall& c, MachineRuntime& m);
+StoreResult<nlohmann::json> retired_machines(ApiCall& c);
 HttpResponse api_utilisation(ApiCall& c);  // api_utilisation.cpp
 HttpResponse api_tool_life(ApiCall& c);
 HttpResponse api_reset_tool(ApiCall& c);

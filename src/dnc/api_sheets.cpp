@@ -76,6 +76,10 @@ HttpResponse api_get_sheet(ApiCall& c) {
   std::optional<std::string_view> format;
   if (const auto it = c.target.query.find("format"); it != c.target.query.end())
     format = it->second;
+  return sheet_answer(c, format);
+}
+
+HttpResponse sheet_answer(ApiCall& c, std::optional<std::string_view> format) {
   auto sheet = read_sheet(c.ctx.store, c.params[0], c.params[1], format);
   if (!sheet) return error_response(c.req, status_of(sheet.error()), sheet.error().message);
   const bool pdf = sheet->first.format == "pdf";

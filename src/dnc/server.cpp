@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 
 #include "dnc/http_tls.hpp"
+#include "dnc/machine_settings.hpp"
 #include "dnc/store_jobs.hpp"
+#include "dnc/store_machines.hpp"
 #include "dnc/store_utilisation.hpp"
 
 namespace usina::dnc {
@@ -28,6 +30,36 @@ std::optional<boost::asio::ip::tcp::endpoint> parse_listen(std::string_view text
   return boost::asio::ip::tcp::endpoint(address, static_cast<unsigned short>(port));
 }
 
+namespace {
+
+// The machines an admin added through the API and has not retired, after
+// the file's. A name in both, or settings this usina no longer reads, stop
+// the start with the reason: which one to run is the admin's choice.
+tl::expected<void, std::string> add_stored_machines(Store& store, ServerConfig& config) {
+  auto stored = stored_machines(store);
+  if (!stored) return tl::unexpected(stored.error().message);
+  for (const StoredMachine& s : *stored) {
+    if (s.retired_at_us != 0) continue;
+    for (const ServerMachine& m : config.machines) {
+      if (m.link.name == s.name)
+        return tl::unexpected(fmt::format(
+            "machine {} is in the configuration file and was added through the API too; "
+            "remove or rename the file's",
+            s.name));
+    }
+    auto m = machine_from_settings(nlohmann::json::parse(s.settings, nullptr, false));
+    if (!m)
+      return tl::unexpected(
+          fmt::format("machine {} of the store cannot be read: {}", s.name, m.error()));
+    m->from_store = true;
+    if (!m->calendar) m->calendar = config.calendar;
+    config.machines.push_back(std::move(*m));
+  }
+  return {};
+}
+
+}  // namespace
+
 tl::expected<std::unique_ptr<Server>, std::string> Server::open(asio::io_context& io,
                                                                 const std::string& where,
                                                                 ServerConfig config,
@@ -46,6 +78,8 @@ tl::expected<std::unique_ptr<Server>, std::string> Server::open(asio::io_context
   if (!cut) return tl::unexpected(cut.error().message);
   if (auto off = close_activity_of_dead_server(**store); !off)
     return tl::unexpected(off.error().message);
+  if (auto added = add_stored_machines(**store, config); !added)
+    return tl::unexpected(added.error());
   return std::unique_ptr<Server>(new Server(io, std::move(*store), std::move(config)));
 }
 
@@ -53,9 +87,10 @@ Server::Server(asio::io_context& io, std::unique_ptr<Store> store, ServerConfig 
     : io_(io), store_(std::move(store)), config_(std::move(config)) {
   machines_ = std::make_unique<Machines>(io_, *store_, events_, config_.machines);
   machines_->use_profiles(&config_.profiles);
+  machines_->use_calendar(config_.calendar);
   toolpaths_ = std::make_unique<ToolpathService>(io_);
   api_ = std::make_unique<Api>(
-      ApiContext{*store_, *machines_, events_, config_.profiles, toolpaths_.get()});
+      ApiContext{*store_, *machines_, events_, config_.profiles, toolpaths_.get(), &sheet_links_});
   web_ = std::make_unique<WebFiles>(WebFilesConfig{
       config_.web_root.empty() ? default_web_root() : std::filesystem::path(config_.web_root),
       config_.web_max_file_bytes});

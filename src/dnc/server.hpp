@@ -20,6 +20,7 @@
 #include "dnc/mtconnect_adapter.hpp"
 #include "dnc/server_config.hpp"
 #include "dnc/server_machines.hpp"
+#include "dnc/sheet_links.hpp"
 #include "dnc/store.hpp"
 #include "dnc/web_static.hpp"
 #include "dnc/web_toolpath_service.hpp"
@@ -68,6 +69,7 @@ class Server {
   std::unique_ptr<Store> store_;
   ServerConfig config_;
   EventHub events_;
+  SheetLinks sheet_links_;  // a key of this server's life
   std::unique_ptr<Machines> machines_;
   std::unique_ptr<Api> api_;
   std::unique_ptr<WebFiles> web_;  // the page: every path outside /api/

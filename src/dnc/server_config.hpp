@@ -45,6 +45,9 @@ struct ServerMachine {
   // Its shifts (shift_calendar.hpp): its own `calendar` table, else the
   // server's [calendar]; none: utilisation per 24 h day only.
   std::optional<ShiftCalendar> calendar = std::nullopt;
+  // Added by an admin through the API (store_machines.hpp), not set in the
+  // file: the page may change or retire it.
+  bool from_store = false;
 };
 
 struct ServerConfig {

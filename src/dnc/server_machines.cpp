@@ -47,12 +47,16 @@ Machines::Machines(asio::io_context& io, Store& store, EventHub& events,
 }
 
 void Machines::start() {
-  for (auto& m : machines_) {
-    m->station = std::make_shared<Station>(io_, m->config.link, station_events(*m));
-    m->station->start();
-    note_activity(*m);
-  }
+  started_ = true;
+  for (auto& m : machines_)
+    open_station(*m);
   tick();
+}
+
+void Machines::open_station(MachineRuntime& m) {
+  m.station = std::make_shared<Station>(io_, m.config.link, station_events(m));
+  m.station->start();
+  note_activity(m);
 }
 
 StationEvents Machines::station_events(MachineRuntime& m) {

@@ -78,6 +78,21 @@ class Machines {
 
   const std::vector<std::unique_ptr<MachineRuntime>>& all() const { return machines_; }
 
+  // The calendar of a machine added without one (the server's [calendar]).
+  void use_calendar(std::optional<ShiftCalendar> calendar) { calendar_ = std::move(calendar); }
+
+  // An admin's changes (server_machine_admin.cpp). A machine added, its
+  // port opened; a machine's settings replaced, its port opened again; a
+  // machine retired, its port closed and it is no longer listed (its
+  // runtime is kept: its old station's handlers still name it). Change and
+  // retire only a machine `may_change` allows.
+  MachineRuntime& add(ServerMachine config);
+  // Refused while the machine has a job queued or running, or is receiving
+  // or answering a punch: what is on its wire is left alone.
+  StoreResult<void> may_change(const MachineRuntime& m) const;
+  void replace(MachineRuntime& m, ServerMachine config);
+  void retire(MachineRuntime& m);
+
   // Queues a job (and starts it when the machine is idle). NotFound for an
   // unknown program or revision; Refused when the machine may not take it.
   StoreResult<JobRecord> submit(MachineRuntime& m, const JobOrder& order, const Actor& actor);
@@ -114,6 +129,7 @@ class Machines {
   void publish_job(const JobRecord& job);
   void tick();
   void finish_stop();
+  void open_station(MachineRuntime& m);
 
   asio::io_context& io_;
   Store& store_;
@@ -123,6 +139,9 @@ class Machines {
   std::function<void()> stopped_;
   const std::map<std::string, sim::MachineProfile>* profiles_ = nullptr;
   bool stopping_ = false;
+  bool started_ = false;
+  std::optional<ShiftCalendar> calendar_;
+  std::vector<std::unique_ptr<MachineRuntime>> retired_;
   unsigned ticks_since_heartbeat_ = 0;
   // The restart programs of queued restart jobs, by job id (a job queued
   // before a restart of the server is interrupted, so memory is enough).

@@ -25,7 +25,7 @@ struct Grant {
   std::uint8_t roles;
 };
 
-constexpr std::array<Grant, 10> kGrants{{
+constexpr std::array<Grant, 11> kGrants{{
     {Permission::ReadPrograms, kEveryone},
     {Permission::UploadRevision, kProgrammer | kAdmin},
     {Permission::ImportPrograms, kAdmin},
@@ -37,6 +37,7 @@ constexpr std::array<Grant, 10> kGrants{{
     {Permission::ResetToolLife, kOperator | kProgrammer | kAdmin},
     {Permission::ReadAudit, kApprover | kAdmin},
     {Permission::ManageUsers, kAdmin},
+    {Permission::ManageMachines, kAdmin},
 }};
 
 struct StateGrant {

@@ -8,7 +8,7 @@
 //               rejected), exports the released set (and resets tool counts)
 //   approver    reads, approves or rejects checked revisions, releases
 //               approved ones, moves drafts; reads the audit log
-//   admin       everything, users and imports included
+//   admin       everything, users, machines and imports included
 //
 // Four eyes: a revision is approved and released by someone other than its
 // author, unless that someone is an admin (a one-person shop has one).
@@ -41,6 +41,7 @@ enum class Permission {
   ResetToolLife,   // a tool's count starts again (its insert was changed)
   ReadAudit,       // the audit log and its verification
   ManageUsers,     // accounts, roles, passwords
+  ManageMachines,  // machines added, changed, retired from the API
 };
 
 bool role_may(Role role, Permission p);

@@ -286,6 +286,24 @@ CREATE TRIGGER quality_no_change BEFORE UPDATE OR DELETE ON quality_records
   FOR EACH ROW EXECUTE FUNCTION usina_refuse();
 )SQL";
 
+// Version 11: machines an admin added through the API (store_machines.hpp),
+// beside the configuration file's: each one's settings as the API took them
+// (JSON with the [[machine]] table's keys), and when it was retired. A
+// retired machine's row stays, so its name keeps its history (jobs,
+// utilisation, quality records) and is not given to another machine.
+constexpr std::string_view kV11 = R"SQL(
+CREATE TABLE machines (
+  name TEXT PRIMARY KEY,
+  settings TEXT NOT NULL,
+  created_at BIGINT NOT NULL,
+  created_by TEXT NOT NULL,
+  changed_at BIGINT NOT NULL,
+  retired_at BIGINT NOT NULL DEFAULT 0,
+  retired_by TEXT NOT NULL DEFAULT '',
+  retire_reason TEXT NOT NULL DEFAULT ''
+);
+)SQL";
+
 constexpr Migration kMigrations[] = {
     {1, kV1, kV1Sqlite, kV1Postgres, nullptr},
     {2, kV2, "SELECT 1", "SELECT 1", nullptr},
@@ -297,6 +315,7 @@ constexpr Migration kMigrations[] = {
     {8, "SELECT 1", "SELECT 1", kV8Postgres, nullptr},
     {9, kV9, "SELECT 1", "SELECT 1", nullptr},
     {10, kV10, kV10Sqlite, kV10Postgres, nullptr},
+    {11, kV11, "SELECT 1", "SELECT 1", nullptr},
 };
 
 std::string spelled(std::string_view sql, Backend b) {

@@ -21,6 +21,10 @@
 namespace usina::dnc {
 namespace {
 
+// Where the page's reader sees the moves a full drawing leaves out: on the
+// same page, not at a command line.
+constexpr std::string_view kWebNotDrawn = "the 3D viewer shows every move";
+
 // The first error of the run, for the note (the check lists them all).
 class FirstError final : public core::DiagnosticSink {
  public:
@@ -108,7 +112,7 @@ DrawingAnswer program_drawing(std::string_view text, const DrawingSettings& sett
   if (error) {
     a.complete = false;
     a.note = stop_of(*error) + "; the drawing shows what ran before";
-  } else if (auto full = builder.limit_note()) {
+  } else if (auto full = builder.limit_note(kWebNotDrawn)) {
     a.complete = false;
     a.note = *full;
   }

@@ -221,12 +221,12 @@ bool DrawingBuilder::room(const canon::Op& op) {
   return false;
 }
 
-std::optional<std::string> DrawingBuilder::limit_note() const {
+std::optional<std::string> DrawingBuilder::limit_note(std::string_view where_listed) const {
   if (not_drawn_ == 0) return std::nullopt;
   return fmt::format(
       "the drawing holds {} entities, more than a picture shows: the {} moves from line {} on "
-      "are not drawn (usina trace lists them)",
-      drawing_.entity_count(), not_drawn_, first_not_drawn_line_);
+      "are not drawn ({})",
+      drawing_.entity_count(), not_drawn_, first_not_drawn_line_, where_listed);
 }
 
 void DrawingBuilder::line(Layer& layer, Vec2 from, Vec2 to) {

@@ -60,8 +60,10 @@ class DrawingBuilder final : public canon::Sink {
   // Moves not drawn because the drawing was full.
   std::uint64_t moves_not_drawn() const { return not_drawn_; }
 
-  // A warning for the user when moves were not drawn, else nullopt.
-  std::optional<std::string> limit_note() const;
+  // A warning for the user when moves were not drawn, else nullopt;
+  // `where_listed` tells the user where to see the moves left out, in the
+  // words of the front end ("usina trace lists them" on the command line).
+  std::optional<std::string> limit_note(std::string_view where_listed) const;
 
  private:
   // Whether the drawing has room for one more entity; counts the move when not.

@@ -75,6 +75,9 @@ class RunningServer {
 
   const std::string& dir() const { return dir_; }
 
+  // Where the store is: the scratch folder, or the PostgreSQL URL.
+  const std::string& where() const { return where_.empty() ? dir_ : where_; }
+
   // Opens the store (users of every role on a new one) and starts serving.
   void start(dnc::ServerConfig config = {}, dnc::StoreOptions options = fast_store()) {
     // ctest's dnc.http.postgres runs the HTTP suites again with the store

@@ -214,7 +214,7 @@ TEST_P(StoreLibrary, AStoreOfAnOlderSchemaGetsItsRevisionsFactsWhenOpened) {
     ASSERT_TRUE(db->script(
         "DROP TABLE revision_tools; DROP TABLE revision_facts; "
         "DROP INDEX programs_by_class; DROP TABLE tool_resets; DROP TABLE revision_sheets; "
-        "DROP TABLE quality_records; "
+        "DROP TABLE quality_records; DROP TABLE machines; "
         "DELETE FROM schema_version WHERE version >= 6"));
   }
   auto s = open();

@@ -100,7 +100,11 @@ TEST(WebDrawing, MovesPastTheEntityBoundAreLeftOutAndCounted) {
   const DrawingAnswer a = program_drawing(zigzag(), s);
   ASSERT_EQ(a.status, 200u) << a.note;
   EXPECT_FALSE(a.complete);
-  EXPECT_NE(a.note.find("not drawn"), std::string::npos) << a.note;
+  EXPECT_NE(a.note.find("on are not drawn (the 3D viewer shows every move)"), std::string::npos)
+      << a.note;
+  // Advice for the page's reader, not for a command line.
+  EXPECT_NE(a.note.find("3D viewer"), std::string::npos) << a.note;
+  EXPECT_EQ(a.note.find("usina "), std::string::npos) << a.note;
   const DrawingAnswer whole = program_drawing(zigzag(), DrawingSettings{});
   EXPECT_TRUE(whole.complete) << whole.note;
   EXPECT_GT(whole.body.size(), 2 * a.body.size());

@@ -39,7 +39,7 @@ TEST(BuilderLimits, ALoopRetracingOnePathDrawsItOnce) {
   b.finish();
   EXPECT_EQ(d.entity_count(), 1u);
   EXPECT_EQ(b.moves_not_drawn(), 0u);
-  EXPECT_FALSE(b.limit_note().has_value());
+  EXPECT_FALSE(b.limit_note("usina trace lists them").has_value());
 }
 
 TEST(BuilderLimits, RetracingAtAnotherDepthOrOnAnotherLayerCounts) {
@@ -98,10 +98,11 @@ TEST(BuilderLimits, PastTheEntityLimitMovesAreCountedNotDrawn) {
   b.finish();
   EXPECT_EQ(d.entity_count(), 10u);
   EXPECT_EQ(b.moves_not_drawn(), 15u);
-  const auto note = b.limit_note();
+  const auto note = b.limit_note("usina trace lists them");
   ASSERT_TRUE(note.has_value());
   EXPECT_NE(note->find("10 entities"), std::string::npos) << *note;
   EXPECT_NE(note->find("15 moves from line 11"), std::string::npos) << *note;
+  EXPECT_NE(note->find("are not drawn (usina trace lists them)"), std::string::npos) << *note;
 }
 
 TEST(BuilderLimits, PolylinePointsCountTowardsTheLimit) {

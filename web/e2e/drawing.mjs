@@ -56,6 +56,8 @@ export async function drawingFlow(page, t, rev) {
   const dxf = readFileSync(await dl.path(), 'latin1');
   t.check(/\.dxf$/.test(dl.suggestedFilename()) && /SECTION/.test(dxf) && /\nCONTOUR\r?\n/.test(dxf) && /\nHOLES\r?\n/.test(dxf), `the DXF downloads from the keyboard (${dl.suggestedFilename()}, ${dxf.length} bytes)`);
 
+  await zoomDrawing(page, t);
+
   await page.getByLabel('Drawing view').selectOption('toolpath');
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer^="TOOLPATH_T"]'));
   const tools = await layers(page);
@@ -64,9 +66,10 @@ export async function drawingFlow(page, t, rev) {
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer="CONTOUR"]'));
 }
 
-// A drawing that is not whole, and one that cannot be made, on their
-// program pages: the note of the first as an alert under a picture, the
-// server's 422 instead of a picture for the second.
+// A drawing that is not whole (an error, or past its entities), and one
+// that cannot be made, on their program pages: the note of the first two
+// as an alert under a picture, the server's 422 instead of a picture for
+// the last.
 export async function drawingNotesFlow(page, h, t) {
   const up = async (name, text) => (await h.api('boss', 'POST', '/api/programs', { name, text, dialect: 'rs274ngc' })).json.revision;
   const broken = await up('draw-broken', 'G0 X0 Y0 Z0\nG1 X20 F100\nG999\nG1 Y70\nM2\n');
@@ -77,9 +80,54 @@ export async function drawingNotesFlow(page, h, t) {
   const note = await page.locator('#drawing-status').innerText();
   const img = await page.locator('#drawing img').count();
   t.check(img === 1 && /^Not all of it is drawn: the program stops at line 3 \(/.test(note), `a drawing stopped by an error shows what ran, and says why ("${note}")`);
+  // Past the drawing's 100,000 entities: random moves, so no two merge.
+  let seed = 12345;
+  const next = () => ((seed = (seed * 16807) % 2147483647) / 2147483647) * 4000; // exact in doubles
+  const moves = Array.from({ length: 100050 }, () => `G1 X${next().toFixed(1)} Y${next().toFixed(1)}`);
+  const full = await up('draw-full', `G0 X0 Y0 Z0\nF1000\n${moves.join('\n')}\nM2\n`);
+  await page.goto(`${h.base}/#/program/draw-full/${full}`);
+  await page.getByRole('heading', { name: 'Program draw-full' }).waitFor();
+  await page.locator('#drawing-status[role="alert"]').waitFor({ timeout: 60000 });
+  const past = await page.locator('#drawing-status').innerText();
+  t.check(/^Not all of it is drawn: the drawing holds 100000 entities, .* moves from line \d+ on are not drawn \(the 3D viewer shows every move\)$/.test(past) && !/usina /.test(past), `a drawing past its entities says where the rest is seen, on the page ("${past}")`);
   await page.goto(`${h.base}/#/program/draw-nothing/${nothing}`);
   await page.getByRole('heading', { name: 'Program draw-nothing' }).waitFor();
   await page.locator('#drawing-status[role="alert"]').waitFor();
   const refused = await page.locator('#drawing-status').innerText();
   t.check((await page.locator('#drawing img').count()) === 0 && /^No drawing \(422\): nothing to draw: the program stops at line 1 \(.*before its first move$/.test(refused) && (await page.locator('#drawing-svg').isHidden()), `nothing to draw: the server's reason instead of a picture ("${refused}")`);
+}
+
+// The drawing zoomed from the keyboard, the wheel and the buttons, and
+// moved with the arrow keys.
+async function zoomDrawing(page, t) {
+  const width = () => page.locator('#drawing img').evaluate((i) => i.getBoundingClientRect().width);
+  const level = () => page.locator('#drawing .drawing-zoom-level').innerText();
+  const box = page.locator('#drawing .drawing-zoom-box');
+  const whole = await width();
+  await box.focus();
+  await page.keyboard.press('+');
+  await page.keyboard.press('+');
+  const zoomed = await width();
+  const said = await level();
+  const before = await box.evaluate((b) => b.scrollLeft);
+  for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
+  // The box scrolls smoothly: its position is read once it has moved.
+  const moved = await page
+    .waitForFunction((b) => document.querySelector('#drawing .drawing-zoom-box').scrollLeft - b, before, { timeout: 5000 })
+    .then((r) => r.jsonValue())
+    .catch(() => 0);
+  t.check(Math.abs(zoomed / whole - 1.5625) < 0.01 && said === 'Zoom 156 %' && moved > 0, `+ twice zooms the drawing to ${said} (${Math.round(whole)} → ${Math.round(zoomed)} px) and the arrow keys move it (${moved} px)`);
+  const r = await box.boundingBox();
+  await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
+  await page.mouse.wheel(0, 120);
+  await page.locator('#drawing .drawing-zoom-level', { hasText: 'Zoom 125 %' }).waitFor();
+  await page.mouse.wheel(0, -120);
+  await page.locator('#drawing .drawing-zoom-level', { hasText: 'Zoom 156 %' }).waitFor();
+  await page.getByRole('button', { name: 'Zoom out' }).click();
+  const out = await level();
+  await page.getByRole('button', { name: 'Show the whole drawing' }).click();
+  const back = await width();
+  await box.focus();
+  await page.keyboard.press('-');
+  t.check(out === 'Zoom 125 %' && Math.abs(back - whole) < 1 && (await level()) === 'Zoom 100 %', `the wheel zooms out and in about the pointer, Zoom out and Show the whole drawing go back (${Math.round(back)} px), and - stops at the whole`);
 }

@@ -2,7 +2,8 @@
 // a folder chosen with its sub-folder, each file's result listed (new, a
 // name twice skipped, a binary file skipped, the server's 409 for a program
 // of another machine class shown), submitted from the keyboard; several
-// files dropped; too many files refused before anything is sent.
+// files dropped; a folder dropped walked into, sub-folders too; too many
+// files refused before anything is sent.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { logInAs, listed } from './flows.mjs';
@@ -31,6 +32,38 @@ async function dropFiles(page, files) {
     return dt;
   }, files);
   await page.locator('form[aria-labelledby="import-h"] .drop').dispatchEvent('drop', { dataTransfer: data });
+}
+
+// A folder dropped on the import's drop zone: the browser hands it as one
+// item whose webkitGetAsEntry() is a directory entry. A test cannot make a
+// real one (DataTransfer takes files only), so the entries are made in the
+// page with Chromium's interface: readEntries in batches of 2, then none.
+// `tree`: {name: text, folder: {...}}.
+async function dropFolder(page, name, tree) {
+  await page.evaluate(
+    ([top, spec]) => {
+      const entry = (path, key, value) => {
+        if (typeof value === 'string')
+          return { isFile: true, isDirectory: false, name: key, fullPath: `${path}/${key}`, file: (ok) => ok(new File([value], key, { type: 'text/plain' })) };
+        const children = Object.entries(value).map(([k, v]) => entry(`${path}/${key}`, k, v));
+        return {
+          isFile: false,
+          isDirectory: true,
+          name: key,
+          fullPath: `${path}/${key}`,
+          createReader: () => {
+            let at = 0;
+            return { readEntries: (ok) => setTimeout(() => ok(children.slice(at, (at += 2))), 1) };
+          },
+        };
+      };
+      const root = entry('', top, spec);
+      const ev = new Event('drop', { bubbles: true, cancelable: true });
+      Object.defineProperty(ev, 'dataTransfer', { value: { items: [{ kind: 'file', webkitGetAsEntry: () => root, getAsFile: () => null }], files: [] } });
+      document.querySelector('form[aria-labelledby="import-h"] .drop').dispatchEvent(ev);
+    },
+    [name, tree],
+  );
 }
 
 export async function importFlow(page, h, t) {
@@ -62,7 +95,18 @@ export async function importFlow(page, h, t) {
   const big = (await results(page))['imp-big.nc'] ?? '';
   t.check((await h.api('boss', 'GET', '/api/programs/imp-d')).status === 200 && /^skipped: .*16777217 bytes, more than the 16777216 of one file here/.test(big) && (await h.api('boss', 'GET', '/api/programs/imp-big')).status === 404, `files dropped are imported, one too large skipped ("${big}")`);
 
+  await dropFolder(page, 'dropped', { 'imp-e.nc': 'G0 X5\nM2\n', deep: { 'imp-f.nc': 'G0 X6\nM2\n', deeper: { 'imp-g.nc': 'G0 X7\nM2\n' }, '.hidden.nc': 'M2\n' }, 'imp-h.nc': 'G0 X8\nM2\n' });
+  await page.getByRole('button', { name: 'Import 5 files' }).click();
+  await page.locator('#import-status', { hasText: /^4 of 5 files imported; 1 not/ }).waitFor();
+  const walked = await page.locator('#import-results li').evaluateAll((li) => li.map((x) => `${x.dataset.file} ${x.dataset.result}`));
+  const found = await Promise.all(['imp-e', 'imp-f', 'imp-g', 'imp-h'].map(async (n) => (await h.api('boss', 'GET', `/api/programs/${n}`)).status));
+  t.check(found.every((s) => s === 200) && walked.join() === 'dropped/deep/.hidden.nc skipped,dropped/deep/deeper/imp-g.nc ok,dropped/deep/imp-f.nc ok,dropped/imp-e.nc ok,dropped/imp-h.nc ok', `a folder dropped is walked into, its sub-folders too (${walked.join(', ')})`);
+  await dropFolder(page, 'huge', Object.fromEntries(Array.from({ length: 600 }, (_, i) => [`huge-${i}.nc`, 'M2\n'])));
+  await page.locator('#import-status[role="alert"]', { hasText: 'More than 500 files' }).waitFor();
+  t.check(await page.locator('form[aria-labelledby="import-h"] button[type="submit"]').isDisabled(), `a folder dropped with more than 500 files is refused before anything is sent ("${await page.locator('#import-status').innerText()}")`);
+
   await dropFiles(page, Array.from({ length: 501 }, (_, i) => [`many-${i}.nc`, 'M2\n']));
+  await page.locator('#import-status[role="alert"]', { hasText: /^501 files/ }).waitFor(); // a drop is read before it is chosen
   const limit = await page.locator('#import-status[role="alert"]').innerText();
   const disabled = await page.locator('form[aria-labelledby="import-h"] button[type="submit"]').isDisabled();
   t.check(/^501 files: at most 500 at a time/.test(limit) && disabled && (await h.api('boss', 'GET', '/api/programs/many-0')).status === 404, `too many files are refused before anything is sent ("${limit}")`);

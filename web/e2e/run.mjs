@@ -6,8 +6,8 @@
 // program made from the elliptical pocket's form (forms.mjs), a folder
 // imported (import.mjs), a library of
 // 10,000 programs searched by comment, tool and O number (library.mjs),
-// setup sheets attached and downloaded (sheets.mjs), quality records
-// (quality.mjs).
+// setup sheets attached, downloaded and shown (sheets.mjs), quality records
+// (quality.mjs), the admin's machine settings (machine_settings.mjs).
 //   node e2e/run.mjs --usina BUILD/usina --seed tests/programs/romi/seed-000-example.nc
 //                    [--screenshots DIR]
 // Exit 0 passed, 1 failed, 77 skipped (no chromium or no node_modules).
@@ -18,6 +18,7 @@ import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { importFlow } from './import.mjs';
+import { machineSettingsFlow } from './machine_settings.mjs';
 import { qualityFlow } from './quality.mjs';
 import { replayFlow } from './replay.mjs';
 import { sheetsFlow } from './sheets.mjs';
@@ -43,12 +44,17 @@ function check(ok, what) {
 // The 422 of a drawing with nothing to draw (drawing.mjs).
 // The 400 of a .pdf that is no PDF (sheets.mjs) and of a measured value
 // past the server's range (quality.mjs).
+// The 400s of a machine EIA cannot carry and of a retirement without a
+// reason (machine_settings.mjs).
+// The sandbox of a setup sheet's frame stopping its script (sheets.mjs).
 function askedRefusal(m) {
   const url = m.location().url ?? '';
   return (
     (/status of 409/.test(m.text()) && /\/api\/(users\/boss|programs)$/.test(url)) ||
     (/status of 422/.test(m.text()) && /\/api\/programs\/draw-nothing\/revisions\/\w+\/drawing\?/.test(url)) ||
-    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url))
+    (/status of 400/.test(m.text()) && /\/api\/(programs\/seed-000\/revisions\/\w+\/sheet|machines\/romi-1\/quality)$/.test(url)) ||
+    (/status of 400/.test(m.text()) && /\/api\/machines(\/mill-9\/retire)?$/.test(url)) ||
+    /^Blocked script execution in '.*\/sheet\/view\?.*sandboxed/.test(m.text())
   );
 }
 
@@ -76,8 +82,11 @@ async function run() {
   page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
   const formRefusal = (text) => /status of 400/.test(text) && formRefusals > 0 && formRefusals-- > 0;
   const elsewhere = [];
-  // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched.
-  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith(`blob:${base}/`) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && elsewhere.push(r.url()));
+  // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched;
+  // the browser's own PDF viewer (a setup sheet shown, sheets.mjs) loads its
+  // files from chrome:// and chrome-extension://, never the network.
+  const browsers = (u) => u.startsWith('chrome://') || u.startsWith('chrome-extension://');
+  page.on('request', (r) => !r.url().startsWith(base) && !r.url().startsWith(`blob:${base}/`) && !r.url().startsWith('ws://127.0.0.1') && !r.url().startsWith('data:') && !browsers(r.url()) && elsewhere.push(r.url()));
   page.setDefaultTimeout(20000);
 
   // Login.
@@ -176,6 +185,7 @@ async function run() {
   await zoomFlow(page, harness, t, second);
   await bigLibraryFlow(page, harness, t);
   await usersFlow(page, harness, t);
+  await machineSettingsFlow(page, harness, t);
   await sheetsFlow(page, harness, t, seedRev);
   await qualityFlow(page, harness, t);
 

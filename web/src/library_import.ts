@@ -12,6 +12,13 @@ export const MAX_FILE_BYTES = 16 << 20;
 export const MAX_TOTAL_BYTES = 128 << 20;
 const NAME_BYTES = 64;
 
+// A file chosen, and where it was: in the folder chosen or dropped, or
+// its name alone.
+interface Picked {
+  file: File;
+  path: string;
+}
+
 interface Planned {
   file: File;
   path: string; // in the folder, or the file's name
@@ -26,10 +33,9 @@ export function programName(fileName: string): string {
   return stem.replace(/[^A-Za-z0-9_.+-]/g, '_').slice(0, NAME_BYTES);
 }
 
-function plan(files: File[]): Planned[] {
+function plan(files: Picked[]): Planned[] {
   const seen = new Map<string, string>();
-  return files.map((file) => {
-    const path = file.webkitRelativePath || file.name;
+  return files.map(({ file, path }) => {
     const name = programName(file.name);
     let skip = '';
     if (file.name.startsWith('.')) skip = 'a hidden file';
@@ -41,9 +47,11 @@ function plan(files: File[]): Planned[] {
   });
 }
 
-// Why a whole selection is refused, '' when it may go.
-function refusal(files: File[]): string {
-  const total = files.reduce((n, f) => n + f.size, 0);
+// Why a whole selection is refused, '' when it may go; `more`: a folder
+// dropped had more files than were walked.
+function refusal(files: Picked[], more: boolean): string {
+  const total = files.reduce((n, f) => n + f.file.size, 0);
+  if (more) return `More than ${MAX_FILES} files: at most ${MAX_FILES} at a time. Choose a smaller folder.`;
   if (files.length > MAX_FILES) return `${files.length} files: at most ${MAX_FILES} at a time. Choose a smaller folder.`;
   if (total > MAX_TOTAL_BYTES) return `${total} bytes: at most ${MAX_TOTAL_BYTES} at a time. Choose fewer files.`;
   return '';
@@ -79,34 +87,88 @@ function plural(n: number): string {
   return `${n} ${n === 1 ? 'file' : 'files'}`;
 }
 
+// The files of a list chosen in a file input: the folder chooser gives
+// each its path in the folder.
+export function pickedOf(list: FileList | null): Picked[] {
+  return [...(list ?? [])].map((file) => ({ file, path: file.webkitRelativePath || file.name }));
+}
+
+// The entries of a folder, by name: readEntries gives them in batches (a
+// hundred in Chromium) until it gives none.
+function entriesOf(dir: FileSystemDirectoryEntry): Promise<FileSystemEntry[]> {
+  const reader = dir.createReader();
+  const all: FileSystemEntry[] = [];
+  return new Promise((resolve, reject) => {
+    const next = (): void =>
+      reader.readEntries((batch) => {
+        if (!batch.length) resolve(all.sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0)));
+        else {
+          all.push(...batch);
+          next();
+        }
+      }, reject);
+    next();
+  });
+}
+
+// Every file under `e`, depth first, in the order of the names; stops once
+// more than `limit` are found (the selection is refused then anyway).
+async function walk(e: FileSystemEntry, out: Picked[], limit: number): Promise<void> {
+  if (out.length > limit) return;
+  if (e.isFile) {
+    const file = await new Promise<File>((ok, fail) => (e as FileSystemFileEntry).file(ok, fail));
+    out.push({ file, path: e.fullPath.replace(/^\//, '') });
+  } else if (e.isDirectory) {
+    for (const child of await entriesOf(e as FileSystemDirectoryEntry)) await walk(child, out, limit);
+  }
+}
+
+// What a drop holds: its files, and every file under a folder dropped (the
+// browser hands a folder as one entry of the drop, with no file of its own).
+// The entries are taken before anything is awaited: after the drop event
+// its DataTransfer is empty.
+export async function droppedFiles(dt: DataTransfer): Promise<{ picked: Picked[]; more: boolean }> {
+  const roots = [...dt.items].filter((i) => i.kind === 'file').map((i) => i.webkitGetAsEntry() ?? i.getAsFile());
+  const picked: Picked[] = [];
+  for (const r of roots) {
+    if (r instanceof File) {
+      picked.push({ file: r, path: r.name }); // counted whole: "501 files"
+    } else if (r) {
+      await walk(r, picked, MAX_FILES);
+      if (picked.length > MAX_FILES) return { picked, more: true }; // a folder walked in part
+    }
+  }
+  return { picked, more: false };
+}
+
 // The form's controls and the files chosen last.
 class FolderImport {
   readonly folder = h('input', { type: 'file', multiple: true, webkitdirectory: true });
   readonly files = h('input', { type: 'file', multiple: true });
-  readonly drop = h('p', { class: 'drop', text: 'or drop several files here' });
+  readonly drop = h('p', { class: 'drop', text: 'or drop a folder or several files here' });
   readonly dialect: HTMLSelectElement;
   readonly machineClass = h('input', { autocomplete: 'off' });
   readonly reason = h('input', { autocomplete: 'off' });
   readonly go = h('button', { type: 'submit', text: 'Import', disabled: true });
   readonly said = status('import-status');
   readonly results = h('ol', { id: 'import-results', class: 'import-results', 'aria-label': 'Imported files' });
-  private chosen: File[] = [];
+  private chosen: Picked[] = [];
 
   constructor(dialects: string[]) {
     this.dialect = h('select', {}, h('option', { value: '', text: 'guessed from each file' }), ...dialects.map((d) => h('option', { value: d, text: d })));
   }
 
-  private say(text: string, alert: boolean): void {
+  say(text: string, alert: boolean): void {
     this.said.setAttribute('role', alert ? 'alert' : 'status');
     this.said.textContent = text;
   }
 
   // A new selection: refused whole past the limits, else ready to import.
-  choose(list: File[]): void {
+  choose(list: Picked[], more = false): void {
     this.chosen = list;
     this.results.replaceChildren();
-    const why = refusal(list);
-    this.say(why || `${plural(list.length)} chosen (${list.reduce((n, f) => n + f.size, 0)} bytes).`, !!why);
+    const why = refusal(list, more);
+    this.say(why || `${plural(list.length)} chosen (${list.reduce((n, f) => n + f.file.size, 0)} bytes).`, !!why);
     this.go.disabled = !!why || list.length === 0;
     this.go.textContent = list.length && !why ? `Import ${plural(list.length)}` : 'Import';
   }
@@ -137,12 +199,17 @@ class FolderImport {
 
 export function importForm(dialects: string[], imported: () => void): HTMLElement {
   const f = new FolderImport(dialects);
-  f.folder.addEventListener('change', () => f.choose([...(f.folder.files ?? [])]));
-  f.files.addEventListener('change', () => f.choose([...(f.files.files ?? [])]));
+  f.folder.addEventListener('change', () => f.choose(pickedOf(f.folder.files)));
+  f.files.addEventListener('change', () => f.choose(pickedOf(f.files.files)));
   f.drop.addEventListener('dragover', (e) => e.preventDefault());
   f.drop.addEventListener('drop', (e) => {
     e.preventDefault();
-    f.choose([...(e.dataTransfer?.files ?? [])]);
+    if (!e.dataTransfer) return;
+    f.say('Reading what was dropped…', false);
+    droppedFiles(e.dataTransfer).then(
+      ({ picked, more }) => f.choose(picked, more),
+      (err: Error) => f.say(`What was dropped cannot be read: ${err.message}`, true),
+    );
   });
   const form = h(
     'form',

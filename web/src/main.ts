@@ -1,4 +1,5 @@
-// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines, #/new, #/users.
+// The page's router: #/login, #/library, #/program/NAME[/REV], #/machines, #/new, #/users,
+// #/machine-settings.
 import { ApiError, getJson, postJson, setToken, token } from './api';
 import { h, show } from './dom';
 import { loginPage } from './page_login';
@@ -7,6 +8,7 @@ import { programPage } from './page_program';
 import { machinesPage, leaveMachines } from './page_machines';
 import { formsPage } from './page_forms';
 import { usersPage } from './page_users';
+import { machineSettingsPage } from './page_machine_settings';
 
 const main = document.getElementById('main') as HTMLElement;
 
@@ -25,6 +27,7 @@ async function route(): Promise<void> {
     else if (parts[0] === 'machines') await machinesPage(main);
     else if (parts[0] === 'new') await formsPage(main);
     else if (parts[0] === 'users') await usersPage(main);
+    else if (parts[0] === 'machine-settings') await machineSettingsPage(main);
     else await libraryPage(main);
   } catch (e) {
     if (e instanceof ApiError && e.status === 401) {
@@ -37,15 +40,15 @@ async function route(): Promise<void> {
 
 async function whoAmI(): Promise<void> {
   const who = document.getElementById('who') as HTMLElement;
-  const usersLink = document.getElementById('nav-users') as HTMLElement;
+  const adminLinks = ['nav-users', 'nav-machine-settings'].map((id) => document.getElementById(id) as HTMLElement);
   if (!token()) return;
   try {
     const s = await getJson<{ user: string; role: string }>('/api/session');
     who.textContent = `${s.user} (${s.role})`;
-    usersLink.hidden = s.role !== 'admin'; // the server refuses the others anyway
+    for (const a of adminLinks) a.hidden = s.role !== 'admin'; // the server refuses the others anyway
   } catch {
     who.textContent = '';
-    usersLink.hidden = true;
+    for (const a of adminLinks) a.hidden = true;
   }
 }
 

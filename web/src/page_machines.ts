@@ -113,33 +113,56 @@ function render(s: Shown): void {
   }
 }
 
+// Who is looking: what the page offers them.
+interface Viewer {
+  runs: boolean;
+  records: boolean;
+}
+
+function machineSection(m: Machine, shown: Map<string, Shown>, v: Viewer): HTMLElement {
+  const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), quality: qualityPanel(m.name, v.records), estimate: null };
+  if (v.runs) s.form = jobForm(m, () => shown.get(m.name)?.job ?? null);
+  shown.set(m.name, s);
+  render(s);
+  return h(
+    'section',
+    { class: 'machine', id: `machine-${m.name}`, 'aria-labelledby': `machine-${m.name}-h`, 'data-state': m.state },
+    h('h2', { id: `machine-${m.name}-h`, text: m.name }),
+    s.status,
+    s.form ? s.form.element : null,
+    s.utilisation.element,
+    s.quality.element,
+  );
+}
+
 export async function machinesPage(main: HTMLElement): Promise<void> {
   const [list, who] = await Promise.all([getJson<{ machines: Machine[] }>('/api/machines'), sessionUser()]);
-  const runs = mayRunJobs(who.role);
-  const records = mayRecordQuality(who.role);
+  const v: Viewer = { runs: mayRunJobs(who.role), records: mayRecordQuality(who.role) };
   const shown = new Map<string, Shown>();
-  const sections = list.machines.map((m) => {
-    const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), quality: qualityPanel(m.name, records), estimate: null };
-    if (runs) s.form = jobForm(m, () => shown.get(m.name)?.job ?? null);
-    shown.set(m.name, s);
-    render(s);
-    return h(
-      'section',
-      { class: 'machine', id: `machine-${m.name}`, 'aria-labelledby': `machine-${m.name}-h`, 'data-state': m.state },
-      h('h2', { id: `machine-${m.name}-h`, text: m.name }),
-      s.status,
-      s.form ? s.form.element : null,
-      s.utilisation.element,
-      s.quality.element,
-    );
-  });
+  const sections = h('div', { id: 'machine-sections' }, ...list.machines.map((m) => machineSection(m, shown, v)));
+  const none = h('p', { id: 'no-machines', text: 'No machines are configured (usina-serve.toml, or Machine settings for an admin).', hidden: list.machines.length > 0 });
   const live = status('live-status');
   live.textContent = 'Live updates: connecting…';
   const notes: HTMLElement[] = [];
-  if (!runs) notes.push(h('p', { class: 'note', text: `You are ${who.role}: you may watch the machines; sending, drip feeding and stopping are for operators, programmers and admins.` }));
-  if (!records) notes.push(h('p', { class: 'note', id: 'quality-note', text: `You are ${who.role}: you may read the quality records; recording one is for operators, approvers and admins.` }));
-  show(main, 'Machines', live, ...notes, ...(sections.length ? sections : [h('p', { text: 'No machines are configured (usina-serve.toml).' })]));
-  listen(shown, live);
+  if (!v.runs) notes.push(h('p', { class: 'note', text: `You are ${who.role}: you may watch the machines; sending, drip feeding and stopping are for operators, programmers and admins.` }));
+  if (!v.records) notes.push(h('p', { class: 'note', id: 'quality-note', text: `You are ${who.role}: you may read the quality records; recording one is for operators, approvers and admins.` }));
+  const changes = status('machines-changed');
+  show(main, 'Machines', live, ...notes, changes, none, sections);
+  // An admin adds or retires a machine while the page is open (page_machine_settings.ts).
+  const roster = async (ev: ServerEvent) => {
+    const name = ev.machine ?? '';
+    if (ev.type === 'machine.retired') {
+      shown.delete(name);
+      document.getElementById(`machine-${name}`)?.remove();
+      changes.textContent = `${name} was retired by ${ev.user ?? 'an admin'}.`;
+    } else if (!shown.has(name)) {
+      const m = await getJson<Machine>(`/api/machines/${enc(name)}`);
+      if (!shown.has(name)) sections.append(machineSection(m, shown, v));
+      changes.textContent = `${name} was added by ${ev.user ?? 'an admin'}.`;
+    }
+    none.hidden = shown.size > 0;
+  };
+  listen(shown, live, roster);
 }
 
 async function refresh(shown: Map<string, Shown>, name: string): Promise<void> {
@@ -157,9 +180,10 @@ interface ServerEvent {
   name?: string;
   part_count?: number;
   last_cycle_seconds?: number | null;
+  user?: string;
 }
 
-function listen(shown: Map<string, Shown>, live: HTMLElement): void {
+function listen(shown: Map<string, Shown>, live: HTMLElement, roster: (ev: ServerEvent) => Promise<void>): void {
   leaveMachines();
   const proto = location.protocol === 'https:' ? 'wss' : 'ws';
   const ws = new WebSocket(`${proto}://${location.host}/api/events?token=${enc(token())}`);
@@ -168,6 +192,10 @@ function listen(shown: Map<string, Shown>, live: HTMLElement): void {
   ws.addEventListener('close', () => socket === ws && (live.textContent = 'Live updates: disconnected (reload the page)'));
   ws.addEventListener('message', (e) => {
     const ev = JSON.parse(String(e.data)) as ServerEvent;
+    if (ev.type === 'machine.added' || ev.type === 'machine.retired') {
+      roster(ev).catch(() => undefined); // a machine retired as soon as added: the next event says so
+      return;
+    }
     const name = ev.machine ?? (ev.type.startsWith('machine.') ? ev.name : undefined);
     const s = name ? shown.get(name) : undefined;
     if (!s || !name) return;

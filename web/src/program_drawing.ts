@@ -2,9 +2,11 @@
 // .../drawing, docs/web.md "The drawing"): the part view or the tool path
 // as an SVG picture, with its layers named, and the SVG and DXF files to
 // download. The SVG is shown as an <img> of an object URL, never put into
-// the page as markup, so nothing in it can run.
+// the page as markup, so nothing in it can run. It zooms and pans
+// (drawing_zoom.ts).
 import { ApiError, getFile } from './api';
 import { field, h, status } from './dom';
+import { DrawingZoom } from './drawing_zoom';
 
 type DrawingView = 'part' | 'toolpath';
 
@@ -52,6 +54,7 @@ class DrawingPanel {
   readonly view = h('select', {}, h('option', { value: 'part', text: 'Part: contour, holes, pockets' }), h('option', { value: 'toolpath', text: 'Tool path: every move by tool' }));
   readonly said = status('drawing-status');
   readonly picture = h('div', { class: 'drawing-picture', id: 'drawing' });
+  readonly zoom = new DrawingZoom();
   readonly layers = h('div');
   readonly svgLink = h('a', { id: 'drawing-svg', text: 'Download SVG', hidden: true });
   readonly dxfLink = h('a', { id: 'drawing-dxf', href: '#', text: 'Download DXF' });
@@ -100,7 +103,8 @@ class DrawingPanel {
     while (this.urls.length) URL.revokeObjectURL(this.urls.pop() as string);
     const src = this.objectUrl(blob);
     const what = v === 'part' ? 'Part drawing' : 'Tool path drawing';
-    this.picture.replaceChildren(h('img', { src, alt: `${what} of ${this.name} seen from above (layers ${found.map((l) => l.name).join(', ') || 'none'})` }));
+    this.zoom.show(h('img', { src, alt: `${what} of ${this.name} seen from above (layers ${found.map((l) => l.name).join(', ') || 'none'})` }));
+    this.picture.replaceChildren(this.zoom.controls, this.zoom.box);
     this.layers.replaceChildren(legend(found));
     this.svgLink.href = src;
     this.svgLink.download = `${this.stem}-${v}.svg`;

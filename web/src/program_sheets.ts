@@ -1,11 +1,13 @@
 // The revision's setup sheets (docs/dnc-server.md, "Setup sheets"): each
-// listed with its format, size, author and date, and downloaded as a file.
-// The API wants the login's bearer token, which a plain link does not
-// carry, so the page fetches the sheet and hands it over as an object URL
-// to download. An HTML sheet is someone's upload: it is never shown in a
-// tab or frame of the page's origin (the server's CSP sandbox holds only
-// when the server's own answer is shown), so it is handed over as a file
-// of no type a browser renders. Who may upload a revision attaches a sheet.
+// listed with its format, size, author and date, shown in the page and
+// downloaded as a file. The API wants the login's bearer token, which a
+// frame's request does not carry: to show a sheet the page asks the server
+// for a signed link good for a few minutes (POST .../sheet/link) and opens
+// it in a frame. An HTML sheet is someone's upload: its frame is sandboxed
+// (no script, an origin of its own), as the server's CSP sandbox makes it
+// too. A download is fetched with the token and handed over as an object
+// URL, an HTML sheet as a file of no type a browser renders. Who may upload
+// a revision attaches a sheet.
 import { ApiError, enc, getFile, getJson, postJson } from './api';
 import { field, h, status } from './dom';
 import { mayUpload, type SessionUser } from './roles';
@@ -42,6 +44,7 @@ export function formatOf(f: File): 'pdf' | 'html' {
 class SheetsPanel {
   readonly said = status('sheets-status');
   readonly list = h('div', { id: 'sheets-list' });
+  readonly view = h('div', { id: 'sheet-view' });
   private urls: string[] = [];
 
   constructor(
@@ -75,8 +78,38 @@ class SheetsPanel {
       return;
     }
     const heads = ['Format', 'Size', 'Author', 'Attached (UTC)', 'File'];
-    const rows = sheets.map((s) => h('tr', { 'data-format': s.format }, h('th', { scope: 'row', text: s.format.toUpperCase() }), h('td', { text: sizeText(s.size) }), h('td', { text: s.author }), h('td', { text: when(s.created_at_us) }), h('td', {}, this.link(s))));
+    const rows = sheets.map((s) => h('tr', { 'data-format': s.format }, h('th', { scope: 'row', text: s.format.toUpperCase() }), h('td', { text: sizeText(s.size) }), h('td', { text: s.author }), h('td', { text: when(s.created_at_us) }), h('td', {}, this.showButton(s), ' ', this.link(s))));
     this.list.replaceChildren(h('table', { 'aria-label': 'Setup sheets' }, h('thead', {}, h('tr', {}, ...heads.map((t) => h('th', { scope: 'col', text: t })))), h('tbody', {}, ...rows)));
+  }
+
+  private showButton(s: Sheet): HTMLButtonElement {
+    const b = h('button', { type: 'button', id: `show-sheet-${s.format}`, text: `Show the ${s.format.toUpperCase()} sheet` });
+    b.addEventListener('click', () => void this.open(s.format));
+    return b;
+  }
+
+  // The sheet in a frame, through a signed link (it expires in minutes:
+  // Show asks for a new one each time).
+  private async open(format: string): Promise<void> {
+    const label = format.toUpperCase();
+    try {
+      const link = await postJson<{ url: string; expires_at_us: number }>(`${this.base}/sheet/link`, { format });
+      const title = `${label} setup sheet of ${this.stem}`;
+      // HTML: no script, an origin of its own. A PDF is drawn by the
+      // browser's viewer, which a sandboxed frame does not load.
+      const frame = h('iframe', { src: link.url, title, class: `sheet-frame ${format}`, referrerpolicy: 'no-referrer', sandbox: format === 'html' ? '' : undefined });
+      const close = h('button', { type: 'button', text: `Close the ${label} sheet` });
+      close.addEventListener('click', () => {
+        this.view.replaceChildren();
+        document.getElementById(`show-sheet-${format}`)?.focus();
+      });
+      const heading = h('h3', { id: 'sheet-view-h', tabindex: '-1', text: `The ${label} sheet` });
+      this.view.replaceChildren(h('div', { class: 'sheet-view-bar' }, heading, close), frame);
+      heading.focus();
+      this.tell(`Showing the ${label} sheet (its link expires at ${when(link.expires_at_us)} UTC).`);
+    } catch (e) {
+      this.alert(e instanceof ApiError ? `The ${label} sheet cannot be shown (${e.status}): ${e.message}` : String(e));
+    }
   }
 
   // The link fetches the sheet on its first use, then is the file and is
@@ -146,6 +179,7 @@ export function sheetsPanel(name: string, rev: string, who: SessionUser): HTMLEl
     { 'aria-labelledby': 'sheets-h', class: 'sheets' },
     h('h2', { id: 'sheets-h', text: 'Setup sheets' }),
     p.list,
+    p.view,
     mayUpload(who.role) ? p.form() : h('p', { class: 'note', text: `You are ${who.role}: attaching a sheet is for programmers and admins.` }),
     p.said,
   );
