@@ -18,34 +18,8 @@
 #include "apt/processor.hpp"
 #include "canon/sink.hpp"
 #include "core/source.hpp"
+#include "finite_sink.hpp"
 #include "render_and_discard.hpp"
-
-namespace {
-
-// Discards the canon stream after checking that each op's fields are finite:
-// a NaN reaching a post would be written to a part program.
-class FiniteSink final : public usina::canon::Sink {
- public:
-  void on(const usina::canon::Op& op) override {
-    using namespace usina::canon;
-    if (const auto* t = std::get_if<Traverse>(&op.kind)) check(t->to);
-    if (const auto* f = std::get_if<Feed>(&op.kind)) {
-      check(f->to);
-      if (f->f && !std::isfinite(*f->f)) __builtin_trap();
-    }
-    if (const auto* a = std::get_if<Arc>(&op.kind)) {
-      check(a->to);
-      check(a->center);
-    }
-  }
-
- private:
-  static void check(const usina::core::Vec3& v) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) __builtin_trap();
-  }
-};
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace usina;
@@ -62,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!std::isfinite(d.geom.c[i])) __builtin_trap();  // a canonical form not finite
     }
   }
-  FiniteSink sink;
+  fuzz::FiniteSink sink;
   apt::to_canon(result.records, (bits & 1u) != 0 ? 25.4 : 1.0, sink);
   sink.finish();
   return 0;

@@ -18,33 +18,8 @@
 #include "apt/iso4343.hpp"
 #include "canon/sink.hpp"
 #include "core/source.hpp"
+#include "finite_sink.hpp"
 #include "render_and_discard.hpp"
-
-namespace {
-
-class FiniteSink final : public usina::canon::Sink {
- public:
-  void on(const usina::canon::Op& op) override {
-    using namespace usina::canon;
-    if (const auto* t = std::get_if<Traverse>(&op.kind)) check(t->to);
-    if (const auto* f = std::get_if<Feed>(&op.kind)) {
-      check(f->to);
-      if (f->f && !std::isfinite(*f->f)) __builtin_trap();
-    }
-    if (const auto* a = std::get_if<Arc>(&op.kind)) {
-      check(a->to);
-      check(a->center);
-      check(a->normal);
-    }
-  }
-
- private:
-  static void check(const usina::core::Vec3& v) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) __builtin_trap();
-  }
-};
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace usina;
@@ -56,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint32_t id = sources.add(core::SourceFile::from_string("<fuzz>", std::move(text)));
   const std::string_view file = sources.get(id)->text();
   std::vector<apt::ClRecord> records;
-  FiniteSink sink;
+  fuzz::FiniteSink sink;
   apt::ClToCanon canon(1.0, sink);
   const auto take = [&](apt::ClRecord&& r) {
     canon.record(r);
