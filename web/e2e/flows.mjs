@@ -15,7 +15,13 @@ export async function logInAs(page, user) {
   await page.getByLabel('User').fill(user);
   await page.getByLabel('Password').fill(PASSWORD);
   await page.getByLabel('Password').press('Enter');
-  await page.getByRole('heading', { name: 'Library' }).waitFor();
+  try {
+    await page.getByRole('heading', { name: 'Library' }).waitFor();
+  } catch (e) {
+    // Say what the page showed instead, so a failure here can be read.
+    const shown = await page.locator('#main').innerText().catch(() => '?');
+    throw new Error(`${user} logged in but no Library at ${page.url()}: "${shown.slice(0, 300)}" (${e.message.split('\n')[0]})`);
+  }
   await page.locator('#who', { hasText: user }).waitFor();
 }
 

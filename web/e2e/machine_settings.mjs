@@ -95,7 +95,28 @@ export async function machineSettingsFlow(page, h, { check, shot }) {
   const retiredSaid = await page.locator('#machines-changed').innerText();
   check(addedSaid === 'lathe-9 was added by boss.' && retiredSaid === 'lathe-9 was retired by boss.', `the machines page shows a machine added and takes away one retired, live ("${addedSaid}", "${retiredSaid}")`);
 
+  // An answer to the last session's request, arriving after the next login,
+  // does not log the new session out (a 401 ends only the session it was for).
+  let release;
+  const gate = new Promise((r) => (release = r));
+  let held = 0;
+  await page.route('**/api/machines', async (route) => (held++ === 0 ? gate.then(() => route.continue()) : route.continue()));
+  await page.getByRole('link', { name: 'Library', exact: true }).click();
+  await page.getByRole('heading', { name: 'Library' }).waitFor();
+  await page.getByRole('link', { name: 'Machines', exact: true }).click();
+  while (held === 0) await page.waitForTimeout(50);
   await logInAs(page, 'oper');
+  const late = page.waitForResponse((r) => r.url().endsWith('/api/machines'));
+  release();
+  const lateStatus = (await late).status();
+  await page.unroute('**/api/machines');
+  await page.waitForTimeout(200); // the page's handling of the late 401
+  const still = await page.evaluate(() => sessionStorage.getItem('usina.token') !== null);
+  await page.evaluate(() => (location.hash = '#/library'));
+  await page.getByRole('heading', { name: 'Library' }).waitFor({ timeout: 5000 }).catch(() => undefined);
+  const onLibrary = await page.getByRole('heading', { name: 'Library' }).isVisible();
+  check(lateStatus === 401 && still && onLibrary, `a late 401 for the last session leaves the next one logged in (status ${lateStatus}, token kept ${still}, library shown ${onLibrary})`);
+
   const link = await page.getByRole('link', { name: 'Machine settings' }).isVisible();
   await page.goto(`${h.base}/#/machine-settings`);
   await page.getByText("the machines' settings are for admins").waitFor();

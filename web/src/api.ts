@@ -123,7 +123,8 @@ export function setToken(t: string): void {
 
 async function call(method: string, path: string, body?: unknown, signal?: AbortSignal): Promise<Response> {
   const headers: Record<string, string> = {};
-  if (token()) headers['Authorization'] = `Bearer ${token()}`;
+  const sent = token();
+  if (sent) headers['Authorization'] = `Bearer ${sent}`;
   if (body !== undefined) headers['Content-Type'] = 'application/json';
   const res = await fetch(path, {
     method,
@@ -140,7 +141,10 @@ async function call(method: string, path: string, body?: unknown, signal?: Abort
     } catch {
       /* not JSON: keep the status line */
     }
-    if (res.status === 401) setToken('');
+    // Only the session this request was sent with has ended: an answer to a
+    // request of the last session, arriving after the next login, must not
+    // log the new session out.
+    if (res.status === 401 && token() === sent) setToken('');
     throw new ApiError(res.status, message, j);
   }
   return res;

@@ -31,7 +31,7 @@ async function route(): Promise<void> {
     else await libraryPage(main);
   } catch (e) {
     if (e instanceof ApiError && e.status === 401) {
-      location.hash = '#/login';
+      if (!token()) location.hash = '#/login'; // else a newer session already routed on
       return;
     }
     show(main, 'Something went wrong', h('p', { role: 'alert', text: String((e as Error).message ?? e) }));

@@ -36,12 +36,15 @@ export async function usersPage(main: HTMLElement): Promise<void> {
 }
 
 // Runs a change and says what came of it; the table is read again either way.
-async function change(said: HTMLElement, what: string, name: string, body: object, refresh: () => Promise<void>): Promise<void> {
+// `undo` puts a refused change's control back before the refusal is said, so
+// the row never shows what the server did not take.
+async function change(said: HTMLElement, what: string, name: string, body: object, refresh: () => Promise<void>, undo?: () => void): Promise<void> {
   try {
     await postJson(`/api/users/${enc(name)}`, body);
     said.setAttribute('role', 'status');
     said.textContent = `${name}: ${what}.`;
   } catch (e) {
+    undo?.();
     said.setAttribute('role', 'alert');
     said.textContent = `${name}: ${(e as ApiError).message}`;
   }
@@ -51,7 +54,7 @@ async function change(said: HTMLElement, what: string, name: string, body: objec
 function row(u: Account, me: string, said: HTMLElement, refresh: () => Promise<void>): HTMLElement {
   const role = h('select', { 'aria-label': `Role of ${u.name}` }, ...ROLES.map((r) => h('option', { value: r, text: r })));
   role.value = u.role;
-  role.addEventListener('change', () => void change(said, `now ${role.value}`, u.name, { role: role.value }, refresh));
+  role.addEventListener('change', () => void change(said, `now ${role.value}`, u.name, { role: role.value }, refresh, () => (role.value = u.role)));
   const toggle = h('button', { type: 'button', text: u.disabled ? 'Enable' : 'Disable', 'aria-label': `${u.disabled ? 'Enable' : 'Disable'} ${u.name}` });
   toggle.addEventListener('click', async () => {
     if (!u.disabled) {
