@@ -15,6 +15,7 @@ import { mkdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { libraryFlow, listed, machineFlow, reviewFlow, zoomFlow } from './flows.mjs';
 import { drawingFlow, drawingNotesFlow } from './drawing.mjs';
+import { matchesGolden, MOST_DIFFERING } from './golden.mjs';
 import { bigLibraryFlow } from './library.mjs';
 import { formsFlow } from './forms.mjs';
 import { importFlow } from './import.mjs';
@@ -63,6 +64,18 @@ async function shot(page, name, top = true) {
   mkdirSync(shots, { recursive: true });
   if (top) await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: join(shots, name), fullPage: false });
+}
+
+// The top view against its golden picture; the front view against the same
+// golden must not pass, or the comparison could pass anything.
+async function goldenViews(page) {
+  const canvas = page.locator('#viewer canvas');
+  const top = await matchesGolden(page, await canvas.screenshot(), 'viewer-top-seed-000.png');
+  check(top.ok, `the 3D top view matches its golden picture (${top.text})`);
+  await page.getByRole('button', { name: 'Front view' }).click();
+  const front = await matchesGolden(page, await canvas.screenshot(), 'viewer-top-seed-000.png', { control: true });
+  check(front.share > 4 * MOST_DIFFERING, `the front view does not pass for the top view (${front.text})`);
+  await page.getByRole('button', { name: 'Top view' }).click();
 }
 
 async function run() {
@@ -127,6 +140,7 @@ async function run() {
   await page.getByRole('button', { name: 'Top view' }).click();
   const top = await canvasPixels(page);
   check(top.feed !== null, 'the top view shows a feed of tool 1');
+  await goldenViews(page);
   if (top.feed) {
     await page.locator('#viewer canvas').click({ position: top.feed });
     const said = await page.locator('#picked-line').innerText();
