@@ -93,8 +93,24 @@ std::vector<ShdrItem> MtconnectItems::update(const std::string& name, MachineIte
   return changed;
 }
 
+// A machine an admin added: offline until its port opens (a name is never
+// reused, so it has no parts yet). A machine retired: every item
+// UNAVAILABLE, and out of the list an agent gets on connect.
+std::vector<ShdrItem> MtconnectItems::roster(std::string_view type, const std::string& name) {
+  const bool known = machines_.contains(name);
+  if (type == "machine.added") {
+    if (known) return {};
+    machines_[name] = MachineItems{};
+    return render(name, machines_[name]);
+  }
+  if (!known) return {};
+  machines_.erase(name);
+  return render(name, MachineItems{});
+}
+
 std::vector<ShdrItem> MtconnectItems::apply(std::string_view type, const nlohmann::json& event) {
   const std::string name = text_of(event, "machine");
+  if (type == "machine.added" || type == "machine.retired") return roster(type, name);
   const auto it = machines_.find(name);
   if (it == machines_.end()) return {};
   MachineItems m = it->second;

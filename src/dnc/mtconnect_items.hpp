@@ -2,7 +2,8 @@
 // keys `MACHINE:avail`, `:execution`, `:program`, `:part_count`, `:line`,
 // `:message`), kept from the server's events. A machine whose link is lost
 // has every item UNAVAILABLE, as an agent expects; its last values come
-// back with the link.
+// back with the link. A machine added or retired while the server runs is
+// in or out of the list at once (`machine.added`, `machine.retired`).
 #pragma once
 
 #include <cstdint>
@@ -40,6 +41,7 @@ class MtconnectItems {
  private:
   std::vector<ShdrItem> render(const std::string& name, const MachineItems& m) const;
   std::vector<ShdrItem> update(const std::string& name, MachineItems next);
+  std::vector<ShdrItem> roster(std::string_view type, const std::string& name);
 
   std::map<std::string, MachineItems> machines_;
 };

@@ -21,19 +21,28 @@ struct Shop {
   boost::asio::ip::tcp::endpoint shdr;
 };
 
+// A simulated control on a pty; `port` is the machine's end of it.
+Control simulated_control(RunningServer& s, std::string& port) {
+  auto pair = open_pty_pair(s.io());
+  EXPECT_TRUE(pair) << pair.error();
+  Control control;
+  control.link = std::move(pair->master);
+  SimCncConfig sc;
+  sc.keep_data = true;
+  control.sim = std::make_shared<SimCnc>(s.io(), *control.link, sc);
+  control.sim->start();
+  port = pair->slave_path;
+  return control;
+}
+
 // A server with `mill-1` on a pty (its control simulated), `lathe-2` on a
 // port that never opens, and the adapter on a free port.
 Shop start_shop(RunningServer& s) {
-  auto pair = open_pty_pair(s.io());
-  EXPECT_TRUE(pair) << pair.error();
   Shop shop;
-  shop.control.link = std::move(pair->master);
-  SimCncConfig sc;
-  sc.keep_data = true;
-  shop.control.sim = std::make_shared<SimCnc>(s.io(), *shop.control.link, sc);
-  shop.control.sim->start();
+  std::string port;
+  shop.control = simulated_control(s, port);
   ServerConfig config;
-  config.machines.push_back(pty_machine("mill-1", pair->slave_path, 115200));
+  config.machines.push_back(pty_machine("mill-1", port, 115200));
   config.machines.push_back(pty_machine("lathe-2", "/nonexistent/usina-tty", 9600));
   config.mtconnect.enabled = true;
   config.mtconnect.listen = "127.0.0.1:0";
@@ -136,6 +145,38 @@ TEST(Mtconnect, ALostLinkMakesEveryItemOfTheMachineUnavailable) {
   for (const char* key : {"avail", "execution", "program", "part_count", "line"})
     EXPECT_NE(now.find(std::string("|mill-1:") + key + "|UNAVAILABLE"), std::string::npos) << now;
   EXPECT_TRUE(late.wait_for_text("|mill-1:message||UNAVAILABLE"));
+}
+
+// An admin adds a machine while an agent is connected: its items come at
+// once, unavailable until its port opens, then available; retired, they are
+// all unavailable and an agent connecting after does not get it.
+TEST(Mtconnect, AMachineAddedOrRetiredOverTheApiIsInOrOutAtOnce) {
+  RunningServer s;
+  Shop shop = start_shop(s);
+  std::string port;
+  Control mill3 = simulated_control(s, port);
+  LineClient agent(shop.shdr);
+  ASSERT_TRUE(agent.wait_for_text("|mill-1:avail|AVAILABLE"));
+  EXPECT_EQ(agent.lines().front().find("|mill-3:"), std::string::npos);
+  const ApiClient c = s.client();
+  const std::string boss = c.log_in("boss", test::kPassword);
+  const nlohmann::json m = {{"name", "mill-3"}, {"port", port},   {"baud", 115200},
+                            {"code", "ascii"},  {"data_bits", 8}, {"parity", "none"}};
+  ASSERT_EQ(c.post("/api/machines", m, boss).status, 201);
+  ASSERT_TRUE(agent.wait_for_text("|mill-3:avail|UNAVAILABLE"));
+  EXPECT_NE(agent.last_match().find("|mill-3:part_count|UNAVAILABLE"), std::string::npos);
+  ASSERT_TRUE(agent.wait_for_text("|mill-3:avail|AVAILABLE"));
+  EXPECT_NE(agent.last_match().find("|mill-3:part_count|0"), std::string::npos)
+      << agent.last_match();
+  LineClient second(shop.shdr);
+  ASSERT_TRUE(second.wait_for_text("|mill-3:avail|AVAILABLE"));
+
+  ASSERT_EQ(c.post("/api/machines/mill-3/retire", {{"reason", "sold"}}, boss).status, 200);
+  ASSERT_TRUE(agent.wait_for_text("|mill-3:avail|UNAVAILABLE|mill-3:execution|UNAVAILABLE"));
+  EXPECT_NE(agent.last_match().find("|mill-3:part_count|UNAVAILABLE"), std::string::npos);
+  LineClient late(shop.shdr);
+  ASSERT_TRUE(late.wait_for_text("|mill-1:"));
+  EXPECT_EQ(late.lines().front().find("|mill-3:"), std::string::npos) << late.lines().front();
 }
 
 }  // namespace
