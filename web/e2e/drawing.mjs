@@ -62,8 +62,53 @@ export async function drawingFlow(page, t, rev) {
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer^="TOOLPATH_T"]'));
   const tools = await layers(page);
   t.check(tools.includes('TOOLPATH_T1') && tools.includes('TOOLPATH_T2') && !tools.includes('CONTOUR'), `the tool-path view has a layer per tool (${tools.join(', ')})`);
+  await clickDrawing(page, t);
   await page.getByLabel('Drawing view').selectOption('part');
   await page.waitForFunction(() => document.querySelector('.drawing-layers li[data-layer="CONTOUR"]'));
+}
+
+// A drawn pixel of the tool-path view and one with nothing drawn within 16
+// pixels (the picture read back at its size on the page).
+async function drawnAndEmpty(page) {
+  return page.evaluate(async () => {
+    const img = document.querySelector('#drawing img');
+    await img.decode();
+    const r = img.getBoundingClientRect();
+    const [w, h] = [Math.floor(r.width), Math.floor(r.height)];
+    const c = new OffscreenCanvas(w, h);
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0, w, h);
+    const d = g.getImageData(0, 0, w, h).data;
+    const inked = (x, y) => d[(y * w + x) * 4 + 3] > 40;
+    let drawn = null;
+    let empty = null;
+    for (let y = 20; y < h - 20 && !(drawn && empty); y += 4) {
+      for (let x = 20; x < w - 20 && !(drawn && empty); x += 4) {
+        if (!drawn && inked(x, y)) drawn = { x, y };
+        if (empty) continue;
+        let clear = true;
+        for (let v = -16; v <= 16 && clear; v++) for (let u = -16; u <= 16 && clear; u++) clear = !inked(x + u, y + v);
+        if (clear) empty = { x, y };
+      }
+    }
+    return { drawn, empty };
+  });
+}
+
+// A click on a move of the drawing picks its line, as the 3D viewer's does;
+// a click where nothing is drawn says no move is there.
+async function clickDrawing(page, t) {
+  await page.waitForFunction(() => document.querySelector('#drawing img')?.complete);
+  const { drawn, empty } = await drawnAndEmpty(page);
+  const img = page.locator('#drawing img');
+  if (!drawn || !empty) return t.check(false, `the drawing has a drawn and an empty place to click (${JSON.stringify({ drawn, empty })})`);
+  await img.click({ position: drawn });
+  const picked = await page.locator('#picked-line').innerText();
+  const line = /^Line (\d+): [1-9]\d* moves? highlighted$/.exec(picked)?.[1];
+  const marked = line ? await page.locator(`#L${line}.selected`).count() : 0;
+  await img.click({ position: empty });
+  const none = await page.locator('#picked-line').innerText();
+  t.check(line && marked === 1 && /^No move within [\d.]+ mm of X-?[\d.]+ Y-?[\d.]+$/.test(none), `a click on the drawing picks the move's line and marks it ("${picked}"); a click on nothing says so ("${none}")`);
 }
 
 // A drawing that is not whole (an error, or past its entities), and one

@@ -11,7 +11,7 @@ import { reviewPanel, revisionsPanel } from './program_review';
 import { statsPanel, type Figures } from './program_stats';
 import { stockPanel } from './program_stock';
 import { sessionUser } from './roles';
-import { decodeToolpath, Kind } from './toolpath';
+import { decodeToolpath, Kind, nearestLine } from './toolpath';
 import { toolColour, Viewer, type View } from './viewer';
 
 // Lines shown in the text panel; a longer program shows its start (the
@@ -48,8 +48,14 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   viewerHost.replaceChildren();
   const viewer = new Viewer(viewerHost);
   viewer.load(path);
-  // The drawing after the 3D picture, which the shop looks at first.
-  split.append(drawingPanel(base, program.name, revision.revision));
+  // The drawing after the 3D picture, which the shop looks at first. A click
+  // on it picks the move within 6 pixels there, as a click in the viewer does.
+  const drawingClick = (x: number, y: number, pixel: number) => {
+    const line = nearestLine(path, x, y, 6 * pixel);
+    if (line !== null) select(line);
+    else picked.textContent = `No move within ${(6 * pixel).toPrecision(2)} mm of X${x.toFixed(2)} Y${y.toFixed(2)}`;
+  };
+  split.append(drawingPanel(base, program.name, revision.revision, drawingClick));
   void getJson<Figures>(`${base}/tools`).then(
     (f) => statsHost.replaceWith(statsPanel(revision.checks, f)),
     (e: Error) => statsHost.replaceWith(statsPanel(revision.checks, e.message)),

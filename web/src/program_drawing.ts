@@ -10,6 +10,25 @@ import { DrawingZoom } from './drawing_zoom';
 
 type DrawingView = 'part' | 'toolpath';
 
+// Where a click on the drawing is, in the program's millimetres (y up), and
+// how far a pixel reaches there: the page names the move's line.
+export type DrawingClick = (x: number, y: number, pixel: number) => void;
+
+interface ViewBox {
+  x: number;
+  y: number;
+  w: number;
+  h: number;
+}
+
+// The SVG's viewBox ("minx -maxy width height": y is written negated).
+function viewBoxOf(svg: string): ViewBox | null {
+  const m = /<svg [^>]*viewBox="([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+)"/.exec(svg);
+  if (!m) return null;
+  const [x, y, w, h] = m.slice(1).map(Number);
+  return [x, y, w, h].every(Number.isFinite) && w > 0 && h > 0 ? { x, y, w, h } : null;
+}
+
 interface Layer {
   name: string;
   colour: string;
@@ -66,6 +85,7 @@ class DrawingPanel {
     private readonly base: string,
     private readonly name: string,
     private readonly stem: string, // NAME-REV12
+    private readonly onClick?: DrawingClick,
   ) {}
 
   private objectUrl(blob: Blob): string {
@@ -87,7 +107,8 @@ class DrawingPanel {
     this.picture.setAttribute('aria-busy', 'true');
     try {
       const { blob, headers } = await getFile(`${this.base}/drawing?view=${v}&format=svg`);
-      if (n === this.asked) this.show(v, blob, layersOf(await blob.text()), headers);
+      const svg = await blob.text();
+      if (n === this.asked) this.show(v, blob, layersOf(svg), headers, viewBoxOf(svg));
     } catch (e) {
       if (n !== this.asked) return;
       this.picture.replaceChildren();
@@ -99,11 +120,22 @@ class DrawingPanel {
     }
   }
 
-  private show(v: DrawingView, blob: Blob, found: Layer[], headers: Headers): void {
+  private show(v: DrawingView, blob: Blob, found: Layer[], headers: Headers, box: ViewBox | null): void {
     while (this.urls.length) URL.revokeObjectURL(this.urls.pop() as string);
     const src = this.objectUrl(blob);
     const what = v === 'part' ? 'Part drawing' : 'Tool path drawing';
-    this.zoom.show(h('img', { src, alt: `${what} of ${this.name} seen from above (layers ${found.map((l) => l.name).join(', ') || 'none'})` }));
+    const img = h('img', { src, alt: `${what} of ${this.name} seen from above (layers ${found.map((l) => l.name).join(', ') || 'none'}); a click names the line of the move there` });
+    const onClick = this.onClick;
+    if (box && onClick) {
+      img.addEventListener('click', (e) => {
+        const r = img.getBoundingClientRect();
+        if (r.width <= 0 || r.height <= 0) return;
+        const x = box.x + ((e.clientX - r.left) / r.width) * box.w;
+        const y = -(box.y + ((e.clientY - r.top) / r.height) * box.h);
+        onClick(x, y, box.w / r.width);
+      });
+    }
+    this.zoom.show(img);
     this.picture.replaceChildren(this.zoom.controls, this.zoom.box);
     this.layers.replaceChildren(legend(found));
     this.svgLink.href = src;
@@ -136,8 +168,8 @@ class DrawingPanel {
   }
 }
 
-export function drawingPanel(base: string, name: string, rev: string): HTMLElement {
-  const p = new DrawingPanel(base, name, `${name}-${rev.slice(0, 12)}`);
+export function drawingPanel(base: string, name: string, rev: string, onClick?: DrawingClick): HTMLElement {
+  const p = new DrawingPanel(base, name, `${name}-${rev.slice(0, 12)}`, onClick);
   p.dxfLink.addEventListener('click', (e) => void p.dxf(e));
   p.view.addEventListener('change', () => void p.load());
   void p.load();

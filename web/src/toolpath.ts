@@ -54,3 +54,25 @@ export function decodeToolpath(buf: ArrayBuffer): Toolpath {
     totalSeconds: v.getFloat64(48, true),
   };
 }
+
+// The source line of the move nearest (x, y) seen from above, in the
+// stream's millimetres, when one passes within `tolerance`; null when none.
+// A move is the segment from the vertex before it to its own.
+export function nearestLine(p: Toolpath, x: number, y: number, tolerance: number): number | null {
+  let best = tolerance * tolerance;
+  let line: number | null = null;
+  const q = p.positions;
+  for (let i = 1; i < p.count; i++) {
+    const [ax, ay, bx, by] = [q[i * 3 - 3], q[i * 3 - 2], q[i * 3], q[i * 3 + 1]];
+    const [dx, dy] = [bx - ax, by - ay];
+    const len2 = dx * dx + dy * dy;
+    const t = len2 > 0 ? Math.min(1, Math.max(0, ((x - ax) * dx + (y - ay) * dy) / len2)) : 0;
+    const [ex, ey] = [ax + t * dx - x, ay + t * dy - y];
+    const d2 = ex * ex + ey * ey;
+    if (d2 <= best) {
+      best = d2;
+      line = p.lines[i];
+    }
+  }
+  return line;
+}
