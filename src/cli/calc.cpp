@@ -49,6 +49,7 @@
 
 #include "cli/deprecated_option.hpp"
 #include "cli/verbs.hpp"
+#include "sim/calc_json.hpp"
 
 namespace usina::cli {
 namespace {
@@ -225,21 +226,7 @@ void run_open_loop(const OpenLoopFlags& f) {
   const auto r = sim::open_loop(in);
   if (!checked("open-loop", r)) return;
   if (f.format == "text") return print_open_loop(in, *r);
-  print_json("open_loop",
-             {{"pitch_mm", in.drive.pitch_mm},
-              {"gear_ratio", in.drive.gear_ratio},
-              {"steps_per_rev", in.steps_per_rev},
-              {"distance_mm", in.distance_mm},
-              {"feed_mm_per_min", in.feed_mm_per_min}},
-             {{"step_angle_deg", r->step_angle_deg},
-              {"screw_angle_deg", r->screw_angle_deg},
-              {"motor_angle_deg", r->motor_angle_deg},
-              {"pulses", r->pulses},
-              {"whole_pulses", r->whole_pulses},
-              {"distance_reached_mm", r->distance_reached_mm},
-              {"screw_rpm", r->screw_rpm},
-              {"motor_rpm", r->motor_rpm},
-              {"pulse_frequency_hz", r->pulse_frequency_hz}});
+  fmt::print("{}\n", sim::calc_json(in, *r).dump(2));
 }
 
 void add_open_loop(CLI::App& calc) {
@@ -291,20 +278,7 @@ void run_closed_loop(const ClosedLoopFlags& f) {
   const auto r = sim::closed_loop(in);
   if (!checked("closed-loop", r)) return;
   if (f.format == "text") return print_closed_loop(in, *r);
-  print_json("closed_loop",
-             {{"pitch_mm", in.drive.pitch_mm},
-              {"gear_ratio", in.drive.gear_ratio},
-              {"encoder_slots", in.encoder_slots},
-              {"distance_mm", in.distance_mm},
-              {"feed_mm_per_min", in.feed_mm_per_min}},
-             {{"slot_angle_deg", r->slot_angle_deg},
-              {"screw_angle_deg", r->screw_angle_deg},
-              {"pulses", r->pulses},
-              {"whole_pulses", r->whole_pulses},
-              {"distance_reached_mm", r->distance_reached_mm},
-              {"pulse_frequency_hz", r->pulse_frequency_hz},
-              {"screw_rpm", r->screw_rpm},
-              {"motor_rpm", r->motor_rpm}});
+  fmt::print("{}\n", sim::calc_json(in, *r).dump(2));
 }
 
 void add_closed_loop(CLI::App& calc) {
@@ -360,19 +334,7 @@ void run_precision(const PrecisionFlags& f) {
   const auto r = sim::precision(in);
   if (!checked("precision", r)) return;
   if (f.format == "text") return print_precision(in, *r);
-  print_json("precision",
-             {{"pitch_mm", in.drive.pitch_mm},
-              {"gear_ratio", in.drive.gear_ratio},
-              {"steps_per_rev", in.steps_per_rev},
-              {"travel_mm", in.travel_mm},
-              {"bits", in.bits},
-              {"sigma_mm", in.sigma_mm}},
-             {{"cr1_mm", r->cr1_mm},
-              {"cr2_mm", r->cr2_mm},
-              {"control_resolution_mm", r->control_resolution_mm},
-              {"limited_by", r->limited_by_register ? "register" : "mechanics"},
-              {"accuracy_mm", r->accuracy_mm},
-              {"repeatability_mm", r->repeatability_mm}});
+  fmt::print("{}\n", sim::calc_json(in, *r).dump(2));
 }
 
 void add_precision(CLI::App& calc) {
@@ -421,13 +383,7 @@ void run_cutting(const CuttingFlags& f) {
   const auto r = sim::cutting(in);
   if (!checked("cutting", r)) return;
   if (f.format == "text") return print_cutting(in, *r);
-  const auto or_null = [](const auto& v) { return v ? json(*v) : json(nullptr); };
-  print_json("cutting",
-             {{"speed_m_per_min", in.speed_m_per_min},
-              {"diameter_mm", in.diameter_mm},
-              {"teeth", or_null(in.teeth)},
-              {"chip_load_mm", or_null(in.chip_load_mm)}},
-             {{"spindle_rpm", r->spindle_rpm}, {"feed_mm_per_min", or_null(r->feed_mm_per_min)}});
+  fmt::print("{}\n", sim::calc_json(in, *r).dump(2));
 }
 
 void add_cutting(CLI::App& calc) {

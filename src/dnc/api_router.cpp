@@ -54,6 +54,8 @@ constexpr std::array kRoutes{
     // A cycle's form made into a program, previewed (docs/dnc-server.md, "Forms for cycles").
     ApiRoute{V::post, "/api/forms/{}/preview", A::Permission, P::UploadRevision, api_form_preview,
              api_form_preview_later},
+    // Seed 004's calculators, as `usina calc --format json` answers them (docs/dnc-server.md).
+    ApiRoute{V::post, "/api/calc/{}", A::AnyUser, P::ReadPrograms, api_calc},
     // Who may make which move is the state table's (may_change_state).
     ApiRoute{V::post, "/api/programs/{}/revisions/{}/state", A::AnyUser, P::ReadPrograms,
              api_change_state},

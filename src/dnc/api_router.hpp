@@ -117,6 +117,7 @@ void api_drawing_later(ApiCall& c, HttpAnswer answer);
 HttpResponse api_form_specs(ApiCall& c);    // api_forms.cpp
 HttpResponse api_form_preview(ApiCall& c);  // api_forms.cpp
 void api_form_preview_later(ApiCall& c, HttpAnswer answer);
+HttpResponse api_calc(ApiCall& c);  // api_calc.cpp
 HttpResponse api_change_state(ApiCall& c);
 HttpResponse api_diff(ApiCall& c);
 HttpResponse api_list_machines(ApiCall& c);

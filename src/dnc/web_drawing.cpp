@@ -124,8 +124,10 @@ DrawingAnswer program_drawing(std::string_view text, const DrawingSettings& sett
     a.body = std::move(*dxf);
   }
   if (a.body.size() > settings.max_bytes) {
+    // Said to the page and to a script alike: where to see it instead, both ways.
     return refused(413, fmt::format("the drawing is {} bytes, more than the {} the server sends: "
-                                    "draw it with usina draw",
+                                    "the 3D viewer shows every move, and `usina draw` on the "
+                                    "program's file draws all of it",
                                     a.body.size(), settings.max_bytes));
   }
   return a;

@@ -116,6 +116,7 @@ TEST(WebDrawing, ADrawingPastTheByteBoundIs413) {
   const DrawingAnswer a = program_drawing(zigzag(), s);
   EXPECT_EQ(a.status, 413u);
   EXPECT_NE(a.note.find("more than the 1000"), std::string::npos) << a.note;
+  EXPECT_NE(a.note.find("the 3D viewer shows every move"), std::string::npos) << a.note;
   EXPECT_TRUE(a.body.empty());
 }
 

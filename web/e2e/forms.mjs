@@ -89,4 +89,26 @@ export async function formsFlow(page, h, t) {
   await page.getByLabel('Tool diameter D (mm)').fill('8');
   await page.getByRole('button', { name: 'Use in the form' }).click();
   t.check((await page.getByLabel('Spindle speed (rev/min)').inputValue()) === '7958', 'the cutting calculator puts N = 7958 rev/min into the form');
+  await axisCalculators(page, t);
+}
+
+// Seed 004's §7.5 calculators, computed by the server: example 7.1 as the
+// page opens, example 7.3's precision, the register made the limit by a
+// short one, and a bad input's message from the server.
+async function axisCalculators(page, t) {
+  const result = (key) => page.locator(`.calc-results tr[data-result="${key}"] td`).first().innerText();
+  await page.locator('.calc-results tr[data-result="pulse_frequency_hz"]').waitFor();
+  const fp = await result('pulse_frequency_hz');
+  const pulses = await result('whole_pulses');
+  await page.getByLabel('Calculator', { exact: true }).selectOption('precision');
+  await page.locator('.calc-results tr[data-result="control_resolution_mm"]').waitFor();
+  const cr = await result('control_resolution_mm');
+  const accuracy = await result('accuracy_mm');
+  await page.getByLabel('Register bits B').fill('8');
+  await page.locator('.calc-results tr[data-result="limited_by"] td', { hasText: 'register' }).waitFor();
+  const cr8 = await result('control_resolution_mm');
+  await page.getByLabel('Register bits B').fill('8.5');
+  await page.locator('#positioning-status[role="alert"]').waitFor();
+  const said = await page.locator('#positioning-status').innerText();
+  t.check(fp === '333.333' && pulses === '10000' && cr === '0.025' && accuracy === '0.0275' && cr8 === '3.92157' && said === 'bits: 8.5 is not a whole number', `the axis calculators give seed 004's examples 7.1 and 7.3 (f_p ${fp} Hz, ${pulses} pulses; CR ${cr} mm, accuracy ${accuracy} mm; 8 bits: CR ${cr8} mm, the register's) and the server's message ("${said}")`);
 }

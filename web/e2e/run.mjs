@@ -90,9 +90,10 @@ async function run() {
   // The refusals the test asks for (a wrong password, an operator's
   // approval, demoting the only admin: users.mjs) are no errors of the page.
   page.on('console', (m) => m.type() === 'error' && !/status of 40[13]/.test(m.text()) && !formRefusal(m.text()) && !askedRefusal(m) && errors.push(m.text()));
-  // A form's field the server refuses (forms.mjs) is a 400 of /api/forms/ only.
+  // A form's field or a calculator's input the server refuses (forms.mjs) is
+  // a 400 of /api/forms/ or /api/calc/ only.
   let formRefusals = 0;
-  page.on('response', (r) => r.status() === 400 && r.url().includes('/api/forms/') && formRefusals++);
+  page.on('response', (r) => r.status() === 400 && /\/api\/(forms|calc)\//.test(r.url()) && formRefusals++);
   const formRefusal = (text) => /status of 400/.test(text) && formRefusals > 0 && formRefusals-- > 0;
   const elsewhere = [];
   // Object URLs of the page's own origin (the drawing's blob:) hold what it fetched;

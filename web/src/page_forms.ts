@@ -6,6 +6,7 @@
 import { enc, getJson, postJson, ApiError, type CheckDiagnostic, type Checks, type Machine } from './api';
 import { field, h, show, status } from './dom';
 import { calculatorsPanel } from './form_calc';
+import { positioningPanel } from './positioning_calc';
 import { checkField, cyclesOf, type CycleDef, type FieldDef, type FormSpecs } from './form_cycles';
 import { mayUpload, sessionUser } from './roles';
 import { decodeToolpath } from './toolpath';
@@ -122,12 +123,12 @@ function body(inputs: Inputs, dialect: string, machineClass: string): Record<str
 export async function formsPage(main: HTMLElement): Promise<void> {
   const [who, { machines: list }] = await Promise.all([sessionUser(), getJson<{ machines: Machine[] }>('/api/machines')]);
   if (!mayUpload(who.role)) {
-    show(main, 'New program', h('p', { class: 'note', text: `You are ${who.role}: new programs are for programmers and admins.` }), calculatorsPanel());
+    show(main, 'New program', h('p', { class: 'note', text: `You are ${who.role}: new programs are for programmers and admins.` }), calculatorsPanel(), positioningPanel());
     return;
   }
   // The fields' ranges and defaults are the server's (GET /api/forms).
   const page = new FormsPage(list, cyclesOf(await getJson<FormSpecs>('/api/forms')));
-  show(main, 'New program', page.element, calculatorsPanel());
+  show(main, 'New program', page.element, calculatorsPanel(), positioningPanel());
   page.start();
 }
 
