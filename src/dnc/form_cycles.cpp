@@ -23,7 +23,7 @@ constexpr Cycle kCycles[] = {
     {"ellipse_pocket", read_ellipse},      {"rect_pocket", read_rect_pocket},
     {"circle_pocket", read_circle_pocket}, {"drill_grid", read_drill_grid},
     {"bolt_circle", read_bolt_circle},     {"engrave", read_engrave},
-    {"profile_dxf", read_profile_dxf},
+    {"profile_dxf", read_profile_dxf},     {"pocket_dxf", read_pocket_dxf},
 };
 
 std::string read_dialect(FormFields& f) {

@@ -1,9 +1,12 @@
-// The rectangular and circular pockets' forms: usina gen pocket's fields
-// with --rect W,H (and --corner-radius) or --circle R.
+// The pockets' forms: usina gen pocket's fields with --rect W,H (and
+// --corner-radius), --circle R, or --dxf (a drawing's closed outline with
+// its islands, the drawing's text in the body as the profile's form has it).
 #include <algorithm>
 
 #include <fmt/format.h>
 
+#include "cam/chain.hpp"
+#include "cam/dxf_import.hpp"
 #include "cam/pocket.hpp"
 #include "dnc/form_reading.hpp"
 
@@ -22,16 +25,20 @@ cam::PocketOptions read_pocket_options(FormFields& f) {
   return o;
 }
 
+// The phrases of the pocket generator's messages, and the field each is about.
+std::vector<Phrase> pocket_phrases() {
+  return {{"stepover", "stepover"},
+          {"finish allowance", "finish_allowance"},
+          {"step down", "step_down"},
+          {"passes", "step_down"},
+          {"contour's point", "center_x"}};
+}
+
 Reading pocket_reading(cam::PocketShape shape, cam::PocketOptions o) {
   return {[shape = std::move(shape), o](canon::Sink& sink, core::DiagnosticSink& diags) {
             return cam::generate_pocket(shape, o, sink, diags);
           },
-          {{"stepover", "stepover"},
-           {"finish allowance", "finish_allowance"},
-           {"step down", "step_down"},
-           {"passes", "step_down"},
-           {"contour's point", "center_x"}},
-          "stepover"};
+          pocket_phrases(), "stepover"};
 }
 
 }  // namespace
@@ -55,6 +62,26 @@ Reading read_circle_pocket(FormFields& f, post::PostOptions&) {
   const double r = f.number("radius", "the circle's radius", cam::kLength, std::nullopt);
   const cam::Vec2 c = read_point(f, "center_x", "center_y", "the centre");
   return pocket_reading({cam::circle(c, r), {}}, read_pocket_options(f));
+}
+
+// The outline and islands of a drawing: the closed contours of its layer
+// (all layers when none is named), the outermost the pocket's wall.
+Reading read_pocket_dxf(FormFields& f, post::PostOptions&) {
+  const std::string dxf = f.text("dxf", "the drawing", cam::kMaxDxfBytes, std::nullopt);
+  cam::DxfOptions d;
+  const std::string layer = f.text("layer", "the layer", 255, std::string());
+  if (!layer.empty()) d.layer = layer;
+  d.spline_tolerance = f.number("spline_tolerance", "the spline tolerance", cam::kTolerance, 0.01);
+  const cam::PocketOptions o = read_pocket_options(f);
+  auto phrases = pocket_phrases();
+  phrases.back() = {"spline", "spline_tolerance"};  // a drawing has no centre field
+  return {[dxf, d, o](canon::Sink& sink, core::DiagnosticSink& diags) {
+            auto entities = cam::read_dxf_text(dxf, "the drawing", d, diags);
+            if (!entities) return false;
+            const auto shape = cam::pocket_shape(cam::chain(std::move(*entities)), diags);
+            return shape && cam::generate_pocket(*shape, o, sink, diags);
+          },
+          std::move(phrases), "stepover", "dxf"};
 }
 
 }  // namespace usina::dnc

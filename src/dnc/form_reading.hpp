@@ -42,5 +42,6 @@ Reading read_drill_grid(FormFields& f, post::PostOptions& post);
 Reading read_bolt_circle(FormFields& f, post::PostOptions& post);
 Reading read_engrave(FormFields& f, post::PostOptions& post);
 Reading read_profile_dxf(FormFields& f, post::PostOptions& post);
+Reading read_pocket_dxf(FormFields& f, post::PostOptions& post);  // form_pockets.cpp
 
 }  // namespace usina::dnc

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -44,6 +45,13 @@ json form_of(std::string_view cycle) {
   if (cycle == "bolt_circle") {
     return {{"radius", 40}, {"count", 6},           {"start_angle", 15},
             {"depth", 12},  {"tool_diameter", 8.5}, {"peck", 3}};
+  }
+  if (cycle == "pocket_dxf") {  // docs/cam.md's cover: an outline and two islands
+    std::ifstream in(std::string(USINA_TEST_DIR) + "/../examples/cover.dxf");
+    std::stringstream dxf;
+    dxf << in.rdbuf();
+    return {{"dxf", dxf.str()}, {"layer", "POCKET"},  {"depth", 4},
+            {"stepover", 1.5},  {"tool_diameter", 4}, {"step_down", 2}};
   }
   if (cycle == "profile_dxf") {
     // docs/cam.md's profile of the plate, its drawing as the page uploads it.
@@ -112,6 +120,50 @@ TEST_F(FormsRoute, TheEllipseIsSeed002sPocketAsUsinaGenMakesIt) {
   EXPECT_EQ(r.json()["toolpath"].get<std::string>().substr(0, 6), "VVNUUA");
 }
 
+// The XY end of every move of an rs274ngc program (X and Y are modal).
+std::vector<std::pair<double, double>> move_ends(const std::string& text) {
+  std::vector<std::pair<double, double>> out;
+  double x = 0;
+  double y = 0;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("(")) continue;
+    const auto word = [&](char c, double& v) {
+      const auto at = line.find(c);
+      if (at != std::string::npos) v = std::stod(line.substr(at + 1));
+      return at != std::string::npos;
+    };
+    if (word('X', x) | word('Y', y)) out.emplace_back(x, y);
+  }
+  return out;
+}
+
+// docs/cam.md's cover: the tool (D4) clears the pocket 80 x 50 from (10,10)
+// around the boss (a circle of radius 6 about (30,35)) and the block
+// (60,28)-(75,42), and comes near both.
+TEST_F(FormsRoute, APocketFromADrawingLeavesItsIslandsStanding) {
+  const test::Reply r = preview("pocket_dxf", form_of("pocket_dxf"));
+  ASSERT_EQ(r.status, 200) << r.body;
+  const auto ends = move_ends(r.json()["text"].get<std::string>());
+  ASSERT_GT(ends.size(), 100u);
+  double near_boss = 1e9;
+  double near_block = 1e9;
+  for (const auto& [x, y] : ends) {
+    const double boss = std::hypot(x - 30, y - 35) - 6;
+    const double dx = std::max({60 - x, 0.0, x - 75});
+    const double dy = std::max({28 - y, 0.0, y - 42});
+    const double block = std::hypot(dx, dy);
+    EXPECT_GE(boss, 2 - 1e-3) << x << "," << y;  // the tool's radius: the boss stands
+    EXPECT_GE(block, 2 - 1e-3) << x << "," << y;
+    EXPECT_TRUE(x >= 12 - 1e-3 && x <= 88 + 1e-3 && y >= 12 - 1e-3 && y <= 58 + 1e-3)
+        << x << "," << y;
+    near_boss = std::min(near_boss, boss);
+    near_block = std::min(near_block, block);
+  }
+  EXPECT_LT(near_boss, 2.5) << "the rings go round the boss";
+  EXPECT_LT(near_block, 2.5) << "the rings go round the block";
+}
+
 TEST_F(FormsRoute, EveryBadFieldIsNamed) {
   json bad = form_of("ellipse_pocket");
   bad["feed"] = 0;
@@ -147,6 +199,8 @@ TEST_F(FormsRoute, EachCyclesOwnBadFieldIsNamedWithUsinaGensMessage) {
       {"profile_dxf", "dxf", "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n", "E_DXF_MALFORMED"},
       {"profile_dxf", "tab_height", 6, "E_GEN_BAD_VALUE"},
       {"profile_dxf", "side", "around", "E_GEN_BAD_VALUE"},
+      {"pocket_dxf", "dxf", "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n", "E_DXF_MALFORMED"},
+      {"pocket_dxf", "stepover", 5, "E_GEN_BAD_VALUE"},
   };
   for (const auto& [cycle, field, value, code] : cases) {
     json body = form_of(cycle);

@@ -84,6 +84,16 @@ export async function formsFlow(page, h, t) {
   const profile = await previewShown(page);
   t.check(/the check passed/.test(profile) && (await page.locator('#preview-h').innerText()) === 'Preview (rs274ngc)', `a profile of an uploaded drawing is previewed ("${profile}")`);
 
+  // A pocket with islands from a drawing: docs/cam.md's cover, layer POCKET.
+  await page.getByLabel('Cycle', { exact: true }).selectOption('pocket_dxf');
+  await page.getByLabel('Drawing (DXF)').setInputFiles(join(web, '..', 'examples', 'cover.dxf'));
+  await page.getByLabel('Layer (optional)').fill('POCKET');
+  await page.getByLabel('Depth (mm)', { exact: true }).fill('4');
+  await page.getByLabel('Stepover (mm)', { exact: true }).fill('1.5');
+  await page.getByLabel('Tool diameter (mm)', { exact: true }).fill('4');
+  const pocket = await previewShown(page);
+  t.check(/the check passed/.test(pocket), `a pocket with islands from an uploaded drawing is previewed ("${pocket}")`);
+
   // The cutting calculator fills the spindle speed (1000 × 200 / (π × 8) = 7958).
   await page.getByLabel('Cutting speed v (m/min)').fill('200');
   await page.getByLabel('Tool diameter D (mm)').fill('8');

@@ -53,6 +53,7 @@ const TITLES: Record<string, string> = {
   bolt_circle: 'Drilling: a bolt circle',
   engrave: 'Engraving text',
   profile_dxf: 'Profile from a DXF drawing',
+  pocket_dxf: 'Pocket with islands from a DXF drawing',
 };
 
 // The page's words for a field, by its name (the same in every cycle).
