@@ -75,7 +75,9 @@ export async function machineSettingsFlow(page, h, { check, shot }) {
   const stillThere = (await machines(h)).machines.some((m) => m.name === 'mill-9');
   await page.getByRole('button', { name: 'Retire mill-9' }).click();
   await page.getByRole('dialog').getByRole('button', { name: 'Retire' }).click();
-  await page.locator('#retired-mill-9').waitFor();
+  await page.locator('#retired-mill-9').waitFor().catch(async (e) => {
+    throw new Error(`mill-9 not listed as retired; the page said "${await said(page)}" (${e.message.split('\n')[0]})`);
+  });
   const after = await machines(h);
   const gone = (await h.api('boss', 'GET', '/api/machines/mill-9')).status;
   check(stillThere && gone === 404 && after.retired.some((m) => m.name === 'mill-9' && m.retire_reason === 'sold') && (await page.locator('#settings-mill-9').count()) === 0, `retired after the confirmation (Escape kept it; without a reason: "${noReason}")`);

@@ -29,6 +29,27 @@ function changed(a, b) {
 
 const frameNow = (page) => page.evaluate(() => Number(document.getElementById('viewer').dataset.stockFrame));
 
+// The replay of the cut in time moves the stock with it: its start is the
+// uncut stock, a time in the middle a frame made by then, its end the last.
+async function replayMovesTheStock(page, check, frames) {
+  const time = page.getByLabel('Replay, time');
+  await time.focus();
+  await time.press('Home');
+  const atStart = await frameNow(page);
+  for (let k = 0; k < 5; k++) await time.press('PageUp');
+  const replaySeconds = await page.evaluate(() => Number(document.getElementById('viewer').dataset.replayTime));
+  const middle = await frameNow(page);
+  const said = await page.locator('#stock-status').innerText();
+  const at = /, at (\d+):(\d\d\.\d) of /.exec(said);
+  const frameSeconds = at ? Number(at[1]) * 60 + Number(at[2]) : NaN;
+  await time.press('End');
+  const atEnd = await frameNow(page);
+  check(
+    atStart === 0 && middle > 0 && middle < frames && frameSeconds <= replaySeconds + 0.05 && atEnd === frames,
+    `the replay in time moves the stock (its start: frame ${atStart}; at ${replaySeconds.toFixed(1)} s: frame ${middle} of ${frames}, made by ${frameSeconds} s; its end: frame ${atEnd})`,
+  );
+}
+
 export async function stockFlow(page, { check, shot }) {
   const before = await canvasPixels(page);
   await page.getByRole('checkbox', { name: 'Stock', exact: true }).check();
@@ -66,6 +87,7 @@ export async function stockFlow(page, { check, shot }) {
   await page.waitForFunction((n) => Number(document.getElementById('viewer').dataset.stockFrame) === n, frames, { timeout: 60000 });
   const played = await picture(page);
   check(changed(played, last) < 0.001 && (await stock.getByRole('button', { name: 'Play' }).getAttribute('aria-pressed')) === 'false', 'Play replays the removal to the last frame and stops');
+  await replayMovesTheStock(page, check, frames);
   await page.getByLabel('Colour the stock by').selectOption('tool');
   const byTool = await picture(page);
   check(changed(byTool, last) > 0.005, `coloured by the tool that cut last, the picture changes (${(100 * changed(byTool, last)).toFixed(1)} %)`);

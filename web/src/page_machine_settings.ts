@@ -108,18 +108,23 @@ function retiredRow(r: Retired): HTMLElement {
 
 // Runs a request and says what came of it (the server's message when it
 // refused); the tables are read again either way. True when it was done.
+// The list is read again after a change, or a refusal of what the server
+// holds (409, 404: someone else changed it); not after a 400, which changed
+// nothing and would wipe what the admin typed (a reason to retire).
 async function said(page: Page, done: string, request: () => Promise<unknown>): Promise<boolean> {
   let ok = false;
+  let refresh = true;
   try {
     await request();
     page.said.setAttribute('role', 'status');
     page.said.textContent = done;
     ok = true;
   } catch (e) {
+    refresh = !(e instanceof ApiError && e.status === 400);
     page.said.setAttribute('role', 'alert');
     page.said.textContent = (e as ApiError).message;
   }
-  await page.refresh();
+  if (refresh) await page.refresh();
   return ok;
 }
 

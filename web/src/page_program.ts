@@ -67,8 +67,9 @@ export async function programPage(main: HTMLElement, name: string, rev?: string)
   };
   const feedTools: number[] = [];
   for (let i = 1; i < path.count; i++) if (path.kinds[i] !== Kind.Rapid) feedTools.push(path.tools[i]);
-  viewerHost.before(viewControls(viewer, feedTools, select, picked), stockPanel(viewer, base, viewerHost));
-  viewerHost.after(replayPanel(viewer, path, viewerHost, (line) => code.mark(line, false)));
+  const stock = stockPanel(viewer, base, viewerHost);
+  viewerHost.before(viewControls(viewer, feedTools, select, picked), stock.element);
+  viewerHost.after(replayPanel(viewer, path, viewerHost, (line) => code.mark(line, false), (s) => stock.atTime(s)));
   viewer.onPick = select;
   code.onSelect = select;
   viewerHost.dataset.vertices = String(path.count);

@@ -14,7 +14,8 @@ const SPEEDS = [1, 10, 60, 600, 3600];
 const PLAY_WHOLE_S = 30;
 const STEPS = 2000; // the slider's positions: fine enough for a long program
 
-export function replayPanel(viewer: Viewer, path: Toolpath, viewerHost: HTMLElement, markLine: (line: number) => void): HTMLElement {
+// `atTime` hears every time the replay shows (the stock follows it).
+export function replayPanel(viewer: Viewer, path: Toolpath, viewerHost: HTMLElement, markLine: (line: number) => void, atTime: (seconds: number) => void = () => {}): HTMLElement {
   const total = path.totalSeconds;
   const slider = h('input', { type: 'range', min: 0, max: STEPS, step: 1, value: STEPS, 'aria-valuetext': `${clock(total)}, the end` });
   const speed = h('select', {}, ...SPEEDS.map((s) => h('option', { value: s, text: `×${s}` })));
@@ -33,6 +34,7 @@ export function replayPanel(viewer: Viewer, path: Toolpath, viewerHost: HTMLElem
     now = Math.min(Math.max(seconds, 0), total);
     slider.value = String(Math.round((now / total) * STEPS));
     viewerHost.dataset.replayTime = now.toFixed(3);
+    atTime(now);
     if (now >= total) {
       viewer.endReplay();
       viewerHost.dataset.replayVertex = String(path.count - 1);

@@ -3,7 +3,7 @@
 // shaded mesh with or instead of the tool path, coloured by depth or by the
 // tool that cut last, and replays the removal frame by frame with a slider
 // and a play button (every control a labelled form control: the keyboard
-// drives them all).
+// drives them all). The replay of the cut in time moves it too.
 import { getBytes } from './api';
 import { field, h, status } from './dom';
 import { StockMesh, StockReplay, type StockColour } from './stock';
@@ -14,7 +14,14 @@ import type { Viewer } from './viewer';
 const PLAY_STEP_MS = 400;
 const MIN_STEP_MS = 60;
 
-export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement): HTMLElement {
+export interface StockPanel {
+  element: HTMLElement;
+  // The replay of the cut moved to `seconds`: the stock shown, when it is,
+  // as the frames made by then leave it (program_replay.ts).
+  atTime(seconds: number): void;
+}
+
+export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement): StockPanel {
   const show = h('input', { type: 'checkbox' });
   const path = h('input', { type: 'checkbox', checked: true });
   const colour = h('select', {}, h('option', { value: 'depth', text: 'depth' }), h('option', { value: 'tool', text: 'the tool that cut last' }));
@@ -100,7 +107,26 @@ export function stockPanel(viewer: Viewer, base: string, viewerHost: HTMLElement
     };
     step();
   });
-  return panel;
+  const atTime = (seconds: number) => {
+    if (!replay || !show.checked) return;
+    stop();
+    frameTo(framesBy(replay, seconds));
+  };
+  return { element: panel, atTime };
+}
+
+// How many frames are done by `seconds` of the program (each frame's time
+// is when its last move ends).
+export function framesBy(r: StockReplay, seconds: number): number {
+  const f = r.header.frames;
+  let lo = 0;
+  let hi = Math.min(f.length, r.frames);
+  while (lo < hi) {
+    const mid = (lo + hi) >>> 1;
+    if (f[mid].time_s <= seconds) lo = mid + 1;
+    else hi = mid;
+  }
+  return seconds >= r.header.time_s ? r.frames : lo;
 }
 
 // How long frame n stays before the next: its share of the program's time.
