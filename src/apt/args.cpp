@@ -13,12 +13,14 @@ namespace {
 constexpr std::string_view kMoreMinorWords[] = {
     "XLARGE", "XSMALL", "YLARGE", "YSMALL", "ZLARGE", "ZSMALL", "XYPLAN", "YZPLAN",
     "ZXPLAN", "RTHETA", "THETAR", "INTERC", "SLOPE",  "DSTAN",  "TANTO",  "ADJUST",
-    "FEDTO",  "RAPTO",  "RTRCTO", "SFM",    "SMM",    "THRU",   "NOPOST", "ZAXIS"};
+    "FEDTO",  "RAPTO",  "RTRCTO", "SFM",    "SMM",    "THRU",   "NOPOST", "ZAXIS",
+    "ARC",    "RANDOM", "AVOID",  "OMIT",   "RETAIN"};
 
 }  // namespace
 
 bool is_geometry_word(std::string_view w) {
-  return w == "POINT" || w == "LINE" || w == "CIRCLE" || w == "PLANE" || w == "VECTOR";
+  return w == "POINT" || w == "LINE" || w == "CIRCLE" || w == "PLANE" || w == "VECTOR" ||
+         w == "PATERN";
 }
 
 bool is_minor_word(std::string_view w) {

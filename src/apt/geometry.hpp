@@ -1,7 +1,7 @@
 // APT geometry in IBM's canonical forms (research/apt.md §4): a point
 // (x,y,z), a line (a,b,0,d) with a·x+b·y = d and (a,b) a unit normal (a
 // vertical plane), a plane (a,b,c,d), a circle (xc,yc,zc,0,0,1,r) (a
-// vertical cylinder), a vector (i,j,k).
+// vertical cylinder), a vector (i,j,k); a pattern (PATERN) is its points.
 #pragma once
 
 #include <array>
@@ -13,18 +13,24 @@
 #include <tl/expected.hpp>
 
 #include "core/diagnostic.hpp"
+#include "core/vec3.hpp"
 
 namespace usina::apt {
 
-enum class GeomType : unsigned char { Point, Line, Circle, Plane, Vector };
+enum class GeomType : unsigned char { Point, Line, Circle, Plane, Vector, Pattern };
 
 std::string_view type_name(GeomType t);  // "POINT", ...
-std::size_t canon_size(GeomType t);      // 3, 4, 7, 4, 3
+std::size_t canon_size(GeomType t);      // 3, 4, 7, 4, 3; 0 for a pattern (its points)
 
 struct Geom {
   GeomType type = GeomType::Point;
   std::array<double, 7> c{};
+  std::vector<core::Vec3> points;  // a pattern's points, in its order
 };
+
+// The numbers `--canonical` prints: the canonical form, or a pattern's
+// points x1,y1,z1, x2,y2,z2, ...
+std::vector<double> canonical(const Geom& g);
 
 // An argument of a statement after the slash, evaluated.
 struct Arg {
@@ -46,7 +52,7 @@ struct GeomError {
 
 using GeomResult = tl::expected<Geom, GeomError>;
 
-// The definition `major/args` (POINT, LINE, CIRCLE, PLANE, VECTOR); `zsurf`
+// The definition `major/args` (POINT, LINE, CIRCLE, PLANE, VECTOR, PATERN); `zsurf`
 // is the z of points given by two coordinates.
 GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf);
 

@@ -90,6 +90,7 @@ void StatementRunner::words(const std::vector<Token>& t, std::size_t i, int isn,
   }
   pending_.clear();
   writes_ = false;
+  isn_ = isn;
   if (deferred_) resolve_deferred(major_word, args);
   defer_now_ = false;
   if (!modifiers(ws, major_word) || !major(major_word, args)) {

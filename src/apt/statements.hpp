@@ -40,6 +40,8 @@ class StatementRunner {
   bool major(const Token& word, const std::vector<Arg>& args);
   bool motion(const Token& word, const std::vector<Arg>& args);
   bool godlta(const Token& word, const std::vector<Arg>& args);
+  bool goto_pattern(const Token& word, const std::vector<Arg>& args);
+  void write_run(const ClWord& name, const std::vector<core::Vec3>& points);
   bool control(const Token& word, const std::vector<Arg>& args);
   bool post(const Token& word, int code, const std::vector<Arg>& args);
   bool modifiers(const std::vector<Token>& mods, const Token& major);
@@ -94,6 +96,7 @@ class StatementRunner {
   SymbolTable symbols_;
   std::vector<ClRecord> pending_;  // the records of the statement being read
   bool writes_ = false;            // whether the statement has a 1000 record
+  int isn_ = 0;                    // the statement's number
   core::Vec3 at_{};                // the tool end's position
   int lost_at_ = 0;  // the line of a motion not run, after which at_ is unknown (0: known)
   double zsurf_ = 0.0;

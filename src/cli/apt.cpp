@@ -46,8 +46,8 @@ std::string definitions(const std::vector<apt::Definition>& defs) {
   std::string out;
   for (const apt::Definition& d : defs) {
     std::string nums;
-    for (std::size_t i = 0; i < apt::canon_size(d.geom.type); ++i)
-      nums += (i ? "," : "") + canon_number(d.geom.c[i]);
+    for (double v : apt::canonical(d.geom))
+      nums += (nums.empty() ? "" : ",") + canon_number(v);
     out += fmt::format("{{\"name\":\"{}\",\"type\":\"{}\",\"canon\":[{}]}}\n", d.name,
                        apt::type_name(d.geom.type), nums);
   }
