@@ -58,7 +58,7 @@ TEST(AptPrograms, GrooverContourPath) {
   const AptRun r = run(program("groover_contour.apt"));
   EXPECT_EQ(r.diags.all().size(), 0u);
   Moves m;
-  to_canon(r.result.records, 1.0, m);
+  to_canon(r.result.records, 1.0, m, Circles::Chords);
   // The corners worked by hand in the README (the arc's points between
   // (170,60) and (130,100) are checked by their distance to (130,60)).
   const std::vector<core::Vec3> corners = {
@@ -81,6 +81,32 @@ TEST(AptPrograms, GrooverContourPath) {
     EXPECT_LE(d, 40.05 + 1e-9);
   }
   EXPECT_EQ(k, corners.size());
+}
+
+class Arcs final : public canon::Sink {
+ public:
+  void on(const canon::Op& op) override {
+    if (const auto* a = std::get_if<canon::Arc>(&op.kind)) arcs.push_back(*a);
+    if (std::holds_alternative<canon::Feed>(op.kind)) ++feeds;
+  }
+
+  std::vector<canon::Arc> arcs;
+  int feeds = 0;
+};
+
+TEST(AptPrograms, GrooverContourCircleIsOneArc) {
+  // GOFWD/C1,TANTO,L3 by hand (README): from (170,60) counter-clockwise
+  // about C1's centre (130,60), radius 40, a quarter turn to (130,100).
+  const AptRun r = run(program("groover_contour.apt"));
+  Arcs a;
+  to_canon(r.result.records, 1.0, a);
+  ASSERT_EQ(a.arcs.size(), 1u);
+  EXPECT_NEAR(a.arcs[0].to.x, 130, 1e-9);
+  EXPECT_NEAR(a.arcs[0].to.y, 100, 1e-9);
+  EXPECT_EQ(a.arcs[0].center, (canon::Vec3{130, 60, 0}));
+  EXPECT_EQ(a.arcs[0].normal, (canon::Vec3{0, 0, 1}));
+  EXPECT_EQ(a.arcs[0].turn, 1);
+  EXPECT_EQ(a.feeds, 6);  // the straight sides: L1 start, L1, L2, L3, L4, back to P0
 }
 
 }  // namespace
