@@ -258,7 +258,9 @@ void ClToCanon::drill(const canon::Vec3& p, const ClRecord& r) {
   emit(canon::Feed{bottom, feed_, {}, {}}, r, canon::Origin::Cycle);
   emit(canon::Traverse{top, {}}, r, canon::Origin::Cycle);
   at_ = top;
-  emit(canon::Hole{p, diameter_.value_or(0.0), depth_}, r);
+  // The moves above drill it: the hole is their feature, not one more for a
+  // post to drill (post/writer_hole.cpp).
+  emit(canon::Hole{p, diameter_.value_or(0.0), depth_}, r, canon::Origin::Cycle);
 }
 
 void to_canon(const std::vector<ClRecord>& records, double scale, canon::Sink& sink,
