@@ -111,3 +111,52 @@ TEST(AptPrograms, GrooverContourCircleIsOneArc) {
 
 }  // namespace
 }  // namespace usina::apt::test
+
+namespace usina::apt::test {
+namespace {
+
+class Drilled final : public canon::Sink {
+ public:
+  void on(const canon::Op& op) override {
+    if (const auto* h = std::get_if<canon::Hole>(&op.kind)) holes.push_back(h->at);
+    if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) traverses.push_back(t->to);
+  }
+
+  std::vector<canon::Vec3> holes;
+  std::vector<canon::Vec3> traverses;
+};
+
+void expect_xyz(const canon::Vec3& p, const canon::Vec3& want, const std::string& what) {
+  EXPECT_NEAR(p.x, want.x, 1e-9) << what;
+  EXPECT_NEAR(p.y, want.y, 1e-9) << what;
+  EXPECT_NEAR(p.z, want.z, 1e-9) << what;
+}
+
+TEST(AptPrograms, BoltCircleDrilledByGotoPattern) {
+  // README.md: 6 holes on r 40 about (50,40) at 30°, 90° ... 330°; 40 sin 60°
+  // = 34.6410162, 40 cos 60° = 20.
+  const AptRun r = run(program("bolt_circle.apt"));
+  EXPECT_EQ(r.diags.all().size(), 0u);
+  const double s = 20.0 * std::sqrt(3.0);
+  const std::vector<canon::Vec3> want = {{50 + s, 60, 0}, {50, 80, 0}, {50 - s, 60, 0},
+                                         {50 - s, 20, 0}, {50, 0, 0},  {50 + s, 20, 0}};
+  const Geom bolt = r.def("BOLT");
+  ASSERT_EQ(bolt.points.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i)
+    expect_xyz(bolt.points[i], want[i], "point " + std::to_string(i + 1));
+  expect_canon(r.def("H4"), {50 - s, 20, 0});
+  Drilled d;
+  to_canon(r.result.records, 1.0, d);
+  ASSERT_EQ(d.holes.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i)
+    expect_xyz(d.holes[i], want[i], "hole " + std::to_string(i + 1));
+  // FROM, then per hole a traverse to 3 above it and one back up; before
+  // the 4th, up to 20 over the 3rd and across at 20 (AVOID), then down to 3.
+  ASSERT_EQ(d.traverses.size(), 1u + 12u + 2u + 1u);
+  expect_xyz(d.traverses[7], {50 - s, 60, 20}, "AVOID: up");
+  expect_xyz(d.traverses[8], {50 - s, 20, 20}, "AVOID: across");
+  expect_xyz(d.traverses[9], {50 - s, 20, 3}, "the 4th hole's clearance");
+}
+
+}  // namespace
+}  // namespace usina::apt::test
