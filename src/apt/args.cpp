@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "apt/patern.hpp"
 #include "apt/vocabulary.hpp"
 
 namespace usina::apt {
@@ -137,6 +138,15 @@ std::optional<Geom> ArgReader::definition(bool nested_def) {
   auto g = define(major.text, *args, zsurf_);
   if (!g) {
     fail(major, g.error().code, g.error().message);
+    return std::nullopt;
+  }
+  // Each definition is kept (symbols, --canonical): the points of all
+  // patterns are bounded as a program's circles are.
+  pattern_points_ += g->points.size();
+  if (pattern_points_ > kMostProgramPatternPoints) {
+    fail(major, core::Code::AptBadArgument,
+         "the program's patterns hold more than " + std::to_string(kMostProgramPatternPoints) +
+             " points");
     return std::nullopt;
   }
   return *g;

@@ -13,6 +13,9 @@ namespace usina::apt {
 
 // The most points one pattern holds (RANDOM and PARLEL multiply them).
 inline constexpr std::size_t kMaxPatternPoints = 100000;
+// ... all the patterns a program defines, and all the points its
+// GOTO/pattern statements visit (each is kept in memory).
+inline constexpr std::size_t kMostProgramPatternPoints = 1000000;
 
 struct PatternVisit {
   core::Vec3 p;

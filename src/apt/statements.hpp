@@ -35,6 +35,8 @@ class StatementRunner {
 
   double zsurf() const { return zsurf_; }
 
+  std::size_t& pattern_points() { return pattern_points_; }
+
  private:
   bool fail(const core::SourceLoc& at, core::Code code, std::string message);
   bool major(const Token& word, const std::vector<Arg>& args);
@@ -86,10 +88,12 @@ class StatementRunner {
   double cutter_radius_ = 0.0;
   double intol_ = 0.0;  // IBM's defaults: INTOL 0, OUTTOL .0005
   double outtol_ = 0.0005;
-  double ps_z_ = 0.0;           // the part surface, a horizontal plane (the XY plane at first)
-  bool nops_ = false;           // NOPS: the next GO/ keeps the tool's z
-  std::optional<Vec2> fwd_;     // the sense of direction: the last motion's, unit
-  std::size_t arc_points_ = 0;  // the points written on circles so far
+  double ps_z_ = 0.0;               // the part surface, a horizontal plane (the XY plane at first)
+  bool nops_ = false;               // NOPS: the next GO/ keeps the tool's z
+  std::optional<Vec2> fwd_;         // the sense of direction: the last motion's, unit
+  std::size_t arc_points_ = 0;      // the points written on circles so far
+  std::size_t pattern_points_ = 0;  // the points the patterns defined hold
+  std::size_t visited_ = 0;         // the points GOTO/pattern wrote
 
   core::DiagnosticSink& diags_;
   AptResult& out_;

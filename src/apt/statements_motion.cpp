@@ -78,6 +78,11 @@ void StatementRunner::write_run(const ClWord& name, const std::vector<core::Vec3
 bool StatementRunner::goto_pattern(const Token& word, const std::vector<Arg>& args) {
   const auto visits = pattern_visits(args[0].geom, {args.begin() + 1, args.end()});
   if (!visits) return fail(word.loc, visits.error().code, visits.error().message);
+  visited_ += visits->size();
+  if (visited_ > kMostProgramPatternPoints)
+    return fail(word.loc, core::Code::AptBadArgument,
+                "the program's GOTO/pattern statements visit more than " +
+                    std::to_string(kMostProgramPatternPoints) + " points");
   const ClWord name = args[0].name.empty() ? ClWord::number(0.0) : symbol_word(args[0].name);
   std::vector<core::Vec3> run;
   for (const PatternVisit& v : *visits) {

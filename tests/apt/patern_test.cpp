@@ -124,6 +124,22 @@ TEST(AptPatern, DefinitionErrors) {
   expect_error("X=POINT/A,0", Code::AptBadArgument);
 }
 
+TEST(AptPatern, AProgramsPatternsHoldAtMostAMillionPoints) {
+  std::string p = "P=POINT/0,0\nV=VECTOR/1,0,0\n";
+  for (int i = 0; i < 10; ++i)
+    p += "A" + std::to_string(i) + "=PATERN/LINEAR,P,V,100000\n";
+  const AptRun ten = run(p + "FINI\n");
+  EXPECT_FALSE(ten.diags.has_errors());
+  const AptRun more = run(p + "B=PATERN/LINEAR,P,V,1\nFINI\n");
+  EXPECT_TRUE(more.has(core::Code::AptBadArgument));
+  // Visits too: ten times the 100,000 points of A0, then one more.
+  std::string v = "P=POINT/0,0\nV=VECTOR/1,0,0\nA=PATERN/LINEAR,P,V,100000\n";
+  for (int i = 0; i < 10; ++i)
+    v += "GOTO/A\n";
+  EXPECT_FALSE(run(v + "FINI\n").diags.has_errors());
+  EXPECT_TRUE(run(v + "GOTO/A,RETAIN,1\nFINI\n").has(core::Code::AptBadArgument));
+}
+
 // The points of the 5000 records of line 11, the GOTO after kBase's 9 lines
 // and the pattern.
 std::vector<core::Vec3> goto_points(const AptRun& r) {
