@@ -75,6 +75,7 @@ class StatementRunner {
   bool modal(const std::string& word, const std::vector<Arg>& args, const core::SourceLoc& at);
   bool direction(const std::string& word, const std::vector<Arg>& args, const core::SourceLoc& at);
   bool startup(const Token& word, const std::vector<Arg>& args);
+  bool vertical(const Token& word, const std::vector<Arg>& args);  // GOUP, GODOWN
   std::optional<Drive> read_drive(const Token& word, const std::vector<Arg>& args);
   bool run_drive(const Drive& d);
   bool known_start(const Token& word);
