@@ -129,6 +129,13 @@ std::optional<Geom> ArgReader::definition(bool nested_def) {
     return std::nullopt;
   }
   pos_ += 2;
+  // Past the bound no pattern is computed: each would be thrown away.
+  if (major.text == "PATERN" && pattern_points_ > kMostProgramPatternPoints) {
+    fail(major, core::Code::AptBadArgument,
+         "the program's patterns hold more than " + std::to_string(kMostProgramPatternPoints) +
+             " points");
+    return std::nullopt;
+  }
   auto args = arguments();
   if (!args) return std::nullopt;
   if (!nested_def && at().kind != TokKind::End) {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,10 +23,38 @@ enum class GeomType : unsigned char { Point, Line, Circle, Plane, Vector, Patter
 std::string_view type_name(GeomType t);  // "POINT", ...
 std::size_t canon_size(GeomType t);      // 3, 4, 7, 4, 3; 0 for a pattern (its points)
 
+// A pattern's points, shared: a pattern of 100,000 points passes from its
+// symbol to each statement that names it without being copied.
+class PointList {
+ public:
+  PointList() = default;
+
+  explicit PointList(std::vector<core::Vec3> p)
+      : p_(std::make_shared<const std::vector<core::Vec3>>(std::move(p))) {}
+
+  const std::vector<core::Vec3>& all() const {
+    static const std::vector<core::Vec3> none;
+    return p_ ? *p_ : none;
+  }
+
+  std::size_t size() const { return all().size(); }
+
+  const core::Vec3& operator[](std::size_t i) const { return all()[i]; }
+
+  const core::Vec3& front() const { return all().front(); }
+
+  auto begin() const { return all().begin(); }
+
+  auto end() const { return all().end(); }
+
+ private:
+  std::shared_ptr<const std::vector<core::Vec3>> p_;
+};
+
 struct Geom {
   GeomType type = GeomType::Point;
   std::array<double, 7> c{};
-  std::vector<core::Vec3> points;  // a pattern's points, in its order
+  PointList points;  // a pattern's points, in its order
 };
 
 // The numbers `--canonical` prints: the canonical form, or a pattern's

@@ -94,7 +94,7 @@ class StatementRunner {
   std::optional<Vec2> fwd_;         // the sense of direction: the last motion's, unit
   std::size_t arc_points_ = 0;      // the points written on circles so far
   std::size_t pattern_points_ = 0;  // the points the patterns defined hold
-  std::size_t visited_ = 0;         // the points GOTO/pattern wrote
+  std::size_t visited_ = 0;         // the patterns' points GOTO/pattern went through
 
   core::DiagnosticSink& diags_;
   AptResult& out_;

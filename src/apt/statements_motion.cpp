@@ -76,13 +76,15 @@ void StatementRunner::write_run(const ClWord& name, const std::vector<core::Vec3
 // across at that height and down, the two moves a RAPID and its own ISN
 // record after them so that the point itself is a GOTO again.
 bool StatementRunner::goto_pattern(const Token& word, const std::vector<Arg>& args) {
-  const auto visits = pattern_visits(args[0].geom, {args.begin() + 1, args.end()});
-  if (!visits) return fail(word.loc, visits.error().code, visits.error().message);
-  visited_ += visits->size();
+  // The work of a GOTO/pattern is its pattern's size, whatever it visits:
+  // bounded before it is done.
+  visited_ += args[0].geom.points.size();
   if (visited_ > kMostProgramPatternPoints)
     return fail(word.loc, core::Code::AptBadArgument,
-                "the program's GOTO/pattern statements visit more than " +
-                    std::to_string(kMostProgramPatternPoints) + " points");
+                "the program's GOTO/pattern statements go through more than " +
+                    std::to_string(kMostProgramPatternPoints) + " points of patterns");
+  const auto visits = pattern_visits(args[0].geom, {args.begin() + 1, args.end()});
+  if (!visits) return fail(word.loc, visits.error().code, visits.error().message);
   const ClWord name = args[0].name.empty() ? ClWord::number(0.0) : symbol_word(args[0].name);
   std::vector<core::Vec3> run;
   for (const PatternVisit& v : *visits) {

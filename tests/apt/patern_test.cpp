@@ -189,6 +189,18 @@ TEST(AptPatern, GotoModifiers) {
   EXPECT_EQ(rapids, 1);
 }
 
+TEST(AptPatern, OverlappingListsAndSeveralAvoids) {
+  // Ranges that overlap name each point once; two RETAINs keep what both name.
+  expect_xs(goto_points(go(",RETAIN,1,THRU,3,2,THRU,4")), {0, 1, 2, 3});
+  expect_xs(goto_points(go(",RETAIN,1,THRU,3,RETAIN,2,THRU,4")), {1, 2});
+  expect_xs(goto_points(go(",OMIT,1,OMIT,1,THRU,2,RETAIN,2,THRU,4")), {2, 3});
+  // Point 3 named by two AVOIDs: the larger rise, 8.
+  const std::vector<core::Vec3> ps = goto_points(go(",AVOID,5,3,AVOID,8,2,THRU,3"));
+  ASSERT_EQ(ps.size(), 8u);  // 1; up, across, 2; up, across, 3; 4
+  EXPECT_DOUBLE_EQ(ps[1].z, 8.0);
+  EXPECT_DOUBLE_EQ(ps[5].z, 8.0);
+}
+
 TEST(AptPatern, GotoErrors) {
   using core::Code;
   const std::string x = "X=PATERN/LINEAR,P0,VX,4\n";
