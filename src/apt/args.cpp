@@ -1,5 +1,6 @@
 #include "apt/args.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -129,11 +130,11 @@ std::optional<Geom> ArgReader::definition(bool nested_def) {
     return std::nullopt;
   }
   pos_ += 2;
-  // Past the bound no pattern is computed: each would be thrown away.
-  if (major.text == "PATERN" && pattern_points_ > kMostProgramPatternPoints) {
+  // Past the bound no pattern is computed (nor its arguments read).
+  if (major.text == "PATERN" && pattern_points_ >= kMostProgramPatternPoints) {
     fail(major, core::Code::AptBadArgument,
-         "the program's patterns hold more than " + std::to_string(kMostProgramPatternPoints) +
-             " points");
+         "PATERN: the program's patterns make and read more than " +
+             std::to_string(kMostProgramPatternPoints) + " points");
     return std::nullopt;
   }
   auto args = arguments();
@@ -142,18 +143,13 @@ std::optional<Geom> ArgReader::definition(bool nested_def) {
     fail(at(), core::Code::AptSyntax, "unexpected '" + at().text + "' after the definition");
     return std::nullopt;
   }
-  auto g = define(major.text, *args, zsurf_);
+  // The patterns' budget is spent by what each definition does, failing or not.
+  std::size_t left =
+      kMostProgramPatternPoints - std::min(pattern_points_, kMostProgramPatternPoints);
+  auto g = define(major.text, *args, zsurf_, &left);
+  pattern_points_ = kMostProgramPatternPoints - left;
   if (!g) {
     fail(major, g.error().code, g.error().message);
-    return std::nullopt;
-  }
-  // Each definition is kept (symbols, --canonical): the points of all
-  // patterns are bounded as a program's circles are.
-  pattern_points_ += g->points.size();
-  if (pattern_points_ > kMostProgramPatternPoints) {
-    fail(major, core::Code::AptBadArgument,
-         "the program's patterns hold more than " + std::to_string(kMostProgramPatternPoints) +
-             " points");
     return std::nullopt;
   }
   return *g;

@@ -66,14 +66,16 @@ std::string describe(const std::vector<Arg>& args) {
 
 namespace usina::apt {
 
-GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf) {
+GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf,
+                  std::size_t* pattern_budget) {
   GeomResult r = tl::make_unexpected(GeomError{});
   if (major == "POINT") r = forms::point_form(args, zsurf);
   if (major == "LINE") r = forms::line_form(args);
   if (major == "CIRCLE") r = forms::circle_form(args, zsurf);
   if (major == "PLANE") r = forms::plane_form(args);
   if (major == "VECTOR") r = forms::vector_form(args);
-  if (major == "PATERN") r = forms::pattern_form(args);
+  std::size_t none = 0;
+  if (major == "PATERN") r = forms::pattern_form(args, pattern_budget ? *pattern_budget : none);
   if (!r && r.error().message.empty()) {
     r.error().message = std::string(major) + "/" + forms::describe(args) + ": no form of " +
                         std::string(major) +

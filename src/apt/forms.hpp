@@ -41,7 +41,9 @@ GeomResult line_form(const std::vector<Arg>& a);
 GeomResult circle_form(const std::vector<Arg>& a, double zsurf);
 GeomResult plane_form(const std::vector<Arg>& a);
 GeomResult vector_form(const std::vector<Arg>& a);
-GeomResult pattern_form(const std::vector<Arg>& a);      // patern.cpp
+// patern.cpp; `budget`: the points the program's patterns may still make
+// and read (each definition takes its share, failing or not).
+GeomResult pattern_form(const std::vector<Arg>& a, std::size_t& budget);
 GeomResult pattern_point(const Arg& pattern, double n);  // POINT/pattern,n
 
 // "POINT, LEFT, 3": the kinds of the arguments, for a message.

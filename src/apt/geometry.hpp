@@ -83,7 +83,10 @@ using GeomResult = tl::expected<Geom, GeomError>;
 
 // The definition `major/args` (POINT, LINE, CIRCLE, PLANE, VECTOR, PATERN); `zsurf`
 // is the z of points given by two coordinates.
-GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf);
+// `pattern_budget`: the points PATERN definitions may still make and read
+// (none without it).
+GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf,
+                  std::size_t* pattern_budget = nullptr);
 
 Geom make_point(double x, double y, double z);
 Geom make_line(double a, double b, double d);  // normalises (a,b)
