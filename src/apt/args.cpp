@@ -1,8 +1,10 @@
 #include "apt/args.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "apt/patern.hpp"
 #include "apt/vocabulary.hpp"
 
 namespace usina::apt {
@@ -13,12 +15,14 @@ namespace {
 constexpr std::string_view kMoreMinorWords[] = {
     "XLARGE", "XSMALL", "YLARGE", "YSMALL", "ZLARGE", "ZSMALL", "XYPLAN", "YZPLAN",
     "ZXPLAN", "RTHETA", "THETAR", "INTERC", "SLOPE",  "DSTAN",  "TANTO",  "ADJUST",
-    "FEDTO",  "RAPTO",  "RTRCTO", "SFM",    "SMM",    "THRU",   "NOPOST", "ZAXIS"};
+    "FEDTO",  "RAPTO",  "RTRCTO", "SFM",    "SMM",    "THRU",   "NOPOST", "ZAXIS",
+    "ARC",    "RANDOM", "AVOID",  "OMIT",   "RETAIN"};
 
 }  // namespace
 
 bool is_geometry_word(std::string_view w) {
-  return w == "POINT" || w == "LINE" || w == "CIRCLE" || w == "PLANE" || w == "VECTOR";
+  return w == "POINT" || w == "LINE" || w == "CIRCLE" || w == "PLANE" || w == "VECTOR" ||
+         w == "PATERN";
 }
 
 bool is_minor_word(std::string_view w) {
@@ -126,13 +130,24 @@ std::optional<Geom> ArgReader::definition(bool nested_def) {
     return std::nullopt;
   }
   pos_ += 2;
+  // Past the bound no pattern is computed (nor its arguments read).
+  if (major.text == "PATERN" && pattern_points_ >= kMostProgramPatternPoints) {
+    fail(major, core::Code::AptBadArgument,
+         "PATERN: the program's patterns make and read more than " +
+             std::to_string(kMostProgramPatternPoints) + " points");
+    return std::nullopt;
+  }
   auto args = arguments();
   if (!args) return std::nullopt;
   if (!nested_def && at().kind != TokKind::End) {
     fail(at(), core::Code::AptSyntax, "unexpected '" + at().text + "' after the definition");
     return std::nullopt;
   }
-  auto g = define(major.text, *args, zsurf_);
+  // The patterns' budget is spent by what each definition does, failing or not.
+  std::size_t left =
+      kMostProgramPatternPoints - std::min(pattern_points_, kMostProgramPatternPoints);
+  auto g = define(major.text, *args, zsurf_, &left);
+  pattern_points_ = kMostProgramPatternPoints - left;
   if (!g) {
     fail(major, g.error().code, g.error().message);
     return std::nullopt;

@@ -15,9 +15,17 @@ namespace usina::apt {
 
 class ArgReader {
  public:
+  // `pattern_points`: the points the program's patterns hold so far.
   ArgReader(const std::vector<Token>& toks, std::size_t pos, SymbolTable& symbols,
-            std::vector<Definition>& defs, double zsurf, core::DiagnosticSink& diags)
-      : toks_(toks), pos_(pos), symbols_(symbols), defs_(defs), zsurf_(zsurf), diags_(diags) {}
+            std::vector<Definition>& defs, double zsurf, core::DiagnosticSink& diags,
+            std::size_t& pattern_points)
+      : toks_(toks),
+        pos_(pos),
+        symbols_(symbols),
+        defs_(defs),
+        zsurf_(zsurf),
+        diags_(diags),
+        pattern_points_(pattern_points) {}
 
   // The comma-separated arguments to the end of the statement (or a ')').
   // `any_word`: a word that names nothing is taken as a word (MACHIN/name).
@@ -56,6 +64,7 @@ class ArgReader {
   bool any_word_ = false;
   int depth_ = 0;  // nesting of parentheses, powers and definitions
   core::DiagnosticSink& diags_;
+  std::size_t& pattern_points_;
 };
 
 // Whether `w` is a geometry major word (POINT, LINE, CIRCLE, PLANE, VECTOR).

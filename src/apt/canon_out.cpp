@@ -1,6 +1,8 @@
 #include "apt/canon_out.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -143,6 +145,7 @@ void ClToCanon::cycle(const ClRecord& r) {
 
 void ClToCanon::surface(const ClRecord& r) {
   arc_.reset();
+  segmented_ = false;
   // 0, #4 (CIRCLE), #9, name, 0, then xc,yc,zc, i,j,k, r.
   if (r.sub != 2 || r.words.size() != 12) return;
   for (std::size_t i = 5; i < 12; ++i)
@@ -155,6 +158,11 @@ void ClToCanon::surface(const ClRecord& r) {
 }
 
 void ClToCanon::motion(const ClRecord& r) {
+  if (segmented_ && r.sub != 6) {  // the segmented circle has ended
+    arc_.reset();
+    segmented_ = false;
+  }
+  if (segmented_arc(r)) return;
   const bool arc = arc_ && r.sub == 5 && r.words.size() == 5 && at_ && !cycle_;
   if (!arc) arc_.reset();
   for (std::size_t i = 2; i + 2 < r.words.size(); i += 3) {
@@ -189,6 +197,48 @@ void ClToCanon::arc(const canon::Vec3& p, const ClRecord& r) {
   emit(op, r);
 }
 
+// A segmented circle's record of points (5000 5, or its 5000 6
+// continuation) as one arc: about the circle's centre in the start's plane,
+// turning the way the points turn, to the record's last point brought to
+// the start's radius (the chords' ends lie on the tolerance band's outer
+// edge, the motion's last point on the circle; within OUTTOL). Points off
+// the start's plane or its radius (by more than 1 %) stay chords.
+bool ClToCanon::segmented_arc(const ClRecord& r) {
+  const bool several = r.words.size() >= 8 && (r.words.size() - 2) % 3 == 0;
+  const bool continued = segmented_ ? r.sub == 6 : r.sub == 5;
+  if (circles_ != Circles::Arcs || !arc_ || !at_ || cycle_ || rapid_ || !several || !continued ||
+      std::fabs(arc_->axis.z) < 1.0 - 1e-9)
+    return false;
+  const canon::Vec3 s = *at_;
+  const canon::Vec3 c{arc_->center.x, arc_->center.y, s.z};
+  const double rho = std::hypot(s.x - c.x, s.y - c.y);
+  double sweep = 0.0;
+  canon::Vec3 last = s;
+  for (std::size_t i = 2; i + 2 < r.words.size(); i += 3) {
+    const canon::Vec3 p{r.words[i].real * scale_, r.words[i + 1].real * scale_,
+                        r.words[i + 2].real * scale_};
+    const double d = std::hypot(p.x - c.x, p.y - c.y);
+    if (std::fabs(p.z - s.z) > 1e-6 || std::fabs(d - rho) > 0.01 * rho + 1e-9 || !(rho > 0))
+      return false;
+    const double ax = last.x - c.x, ay = last.y - c.y, bx = p.x - c.x, by = p.y - c.y;
+    sweep += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+    last = p;
+  }
+  if (std::fabs(sweep) < 1e-9) return false;
+  const double k = rho / std::hypot(last.x - c.x, last.y - c.y);
+  const canon::Vec3 end{c.x + (last.x - c.x) * k, c.y + (last.y - c.y) * k, s.z};
+  // More than a revolution is |turn| - 1 extra turns (docs/trace.md).
+  const int extra =
+      static_cast<int>(std::floor(std::fabs(sweep) / (2.0 * std::numbers::pi) - 1e-9));
+  const int turn = (sweep > 0 ? 1 : -1) * (1 + std::max(extra, 0));
+  canon::Arc op{end, c, {0.0, 0.0, 1.0}, turn, feed_, {}, {}};
+  if (per_rev_) op.programmed = *per_rev_;
+  emit(op, r);
+  at_ = end;
+  segmented_ = true;  // the circle stays pending for a continuation record
+  return true;
+}
+
 void ClToCanon::move(const canon::Vec3& p, const ClRecord& r) {
   // FROM sets the start: a traverse there, as a post's first positioning.
   if (r.sub == 3 || rapid_) {
@@ -208,11 +258,14 @@ void ClToCanon::drill(const canon::Vec3& p, const ClRecord& r) {
   emit(canon::Feed{bottom, feed_, {}, {}}, r, canon::Origin::Cycle);
   emit(canon::Traverse{top, {}}, r, canon::Origin::Cycle);
   at_ = top;
-  emit(canon::Hole{p, diameter_.value_or(0.0), depth_}, r);
+  // The moves above drill it: the hole is their feature, not one more for a
+  // post to drill (post/writer_hole.cpp).
+  emit(canon::Hole{p, diameter_.value_or(0.0), depth_}, r, canon::Origin::Cycle);
 }
 
-void to_canon(const std::vector<ClRecord>& records, double scale, canon::Sink& sink) {
-  ClToCanon c(scale, sink);
+void to_canon(const std::vector<ClRecord>& records, double scale, canon::Sink& sink,
+              Circles circles) {
+  ClToCanon c(scale, sink, circles);
   for (const ClRecord& r : records)
     c.record(r);
   sink.finish();

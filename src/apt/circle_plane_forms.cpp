@@ -129,7 +129,7 @@ GeomResult make_plane(core::Vec3 n, double d) {
   const double len = std::sqrt(core::dot(n, n));
   if (len < 1e-12)
     return tl::make_unexpected(no_solution("PLANE: the normal is zero, no plane (IBM error 1005)"));
-  Geom g{GeomType::Plane, {}};
+  Geom g{GeomType::Plane, {}, {}};
   g.c[0] = n.x / len;
   g.c[1] = n.y / len;
   g.c[2] = n.z / len;
@@ -164,7 +164,7 @@ GeomResult plane_form(const std::vector<Arg>& a) {
 }
 
 GeomResult vector_form(const std::vector<Arg>& a) {
-  Geom g{GeomType::Vector, {}};
+  Geom g{GeomType::Vector, {}, {}};
   if (match(a, {"n", "n", "n"})) {
     g.c[0] = a[0].num;
     g.c[1] = a[1].num;

@@ -129,6 +129,19 @@ std::optional<Vec2> tangent_stop(const Path& path, const Curve& ds, const Curve&
 
 }  // namespace
 
+std::optional<double> horizontal_z(const Geom& g) {
+  if (g.type != GeomType::Plane) return std::nullopt;
+  const auto& c = g.c;
+  if (std::fabs(c[2]) < 1e-9 || std::hypot(c[0], c[1]) > 1e-9 * std::fabs(c[2]))
+    return std::nullopt;
+  return c[3] / c[2];
+}
+
+double distance_to(const Curve& c, Vec2 p) {
+  if (c.circle) return std::fabs(std::hypot(p.x - c.round.c.x, p.y - c.round.c.y) - c.round.r);
+  return std::fabs(c.line.n.x * p.x + c.line.n.y * p.y - c.line.d);
+}
+
 std::optional<Curve> curve_of(const Geom& g) {
   Curve out;
   if (g.type == GeomType::Line) {

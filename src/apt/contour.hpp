@@ -29,6 +29,12 @@ struct Curve {
 // The curve of a LINE, CIRCLE or vertical PLANE; empty for other geometry.
 std::optional<Curve> curve_of(const Geom& g);
 
+// The z of a horizontal plane; empty for any other geometry.
+std::optional<double> horizontal_z(const Geom& g);
+
+// How far the point `p` is from the curve (its unsigned distance).
+double distance_to(const Curve& c, Vec2 p);
+
 // The tool-centre path of one motion: a line through `start` along `t`, or
 // a circle about `c` of radius `rho` travelled counter-clockwise (sense +1)
 // or clockwise (-1).

@@ -23,6 +23,7 @@ bool item_matches(const Arg& a, std::string_view item) {
   if (item == "c") return is_geom(a, GeomType::Circle);
   if (item == "pl") return is_geom(a, GeomType::Plane);
   if (item == "v") return is_geom(a, GeomType::Vector);
+  if (item == "pat") return is_geom(a, GeomType::Pattern);
   if (item == "sel") return a.kind == Arg::Kind::Word && is_selector(a.word);
   if (item == "side") return is_word(a, {"LEFT", "RIGHT"});
   if (item == "io") return is_word(a, {"IN", "OUT"});
@@ -65,13 +66,16 @@ std::string describe(const std::vector<Arg>& args) {
 
 namespace usina::apt {
 
-GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf) {
+GeomResult define(std::string_view major, const std::vector<Arg>& args, double zsurf,
+                  std::size_t* pattern_budget) {
   GeomResult r = tl::make_unexpected(GeomError{});
   if (major == "POINT") r = forms::point_form(args, zsurf);
   if (major == "LINE") r = forms::line_form(args);
   if (major == "CIRCLE") r = forms::circle_form(args, zsurf);
   if (major == "PLANE") r = forms::plane_form(args);
   if (major == "VECTOR") r = forms::vector_form(args);
+  std::size_t none = 0;
+  if (major == "PATERN") r = forms::pattern_form(args, pattern_budget ? *pattern_budget : none);
   if (!r && r.error().message.empty()) {
     r.error().message = std::string(major) + "/" + forms::describe(args) + ": no form of " +
                         std::string(major) +
@@ -79,7 +83,7 @@ GeomResult define(std::string_view major, const std::vector<Arg>& args, double z
                         "docs/apt.md lists the forms";
   }
   if (r) {
-    for (double v : r->c)
+    for (double v : canonical(*r))
       if (!std::isfinite(v))
         return tl::make_unexpected(forms::no_solution(std::string(major) + " has no finite value"));
   }

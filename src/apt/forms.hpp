@@ -13,7 +13,7 @@
 namespace usina::apt::forms {
 
 // Pattern items: "n" a number, "p" point, "l" line, "c" circle, "pl" plane,
-// "v" vector, "sel" XLARGE..ZSMALL, "side" LEFT|RIGHT, "io" IN|OUT, "ls"
+// "v" vector, "pat" pattern, "sel" XLARGE..ZSMALL, "side" LEFT|RIGHT, "io" IN|OUT, "ls"
 // LARGE|SMALL, "ax" XAXIS|YAXIS; an upper-case item is that minor word.
 bool match(const std::vector<Arg>& args, std::initializer_list<std::string_view> pattern);
 
@@ -41,6 +41,10 @@ GeomResult line_form(const std::vector<Arg>& a);
 GeomResult circle_form(const std::vector<Arg>& a, double zsurf);
 GeomResult plane_form(const std::vector<Arg>& a);
 GeomResult vector_form(const std::vector<Arg>& a);
+// patern.cpp; `budget`: the points the program's patterns may still make
+// and read (each definition takes its share, failing or not).
+GeomResult pattern_form(const std::vector<Arg>& a, std::size_t& budget);
+GeomResult pattern_point(const Arg& pattern, double n);  // POINT/pattern,n
 
 // "POINT, LEFT, 3": the kinds of the arguments, for a message.
 std::string describe(const std::vector<Arg>& args);

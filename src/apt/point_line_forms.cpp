@@ -54,6 +54,7 @@ GeomResult point_intof(const std::vector<Arg>& a, double zsurf) {
 GeomResult point_form(const std::vector<Arg>& a, double zsurf) {
   if (match(a, {"n", "n"})) return make_point(a[0].num, a[1].num, zsurf);
   if (match(a, {"n", "n", "n"})) return make_point(a[0].num, a[1].num, a[2].num);
+  if (match(a, {"pat", "n"})) return pattern_point(a[0], a[1].num);
   if (!a.empty() && (a[0].word == "INTOF" || (a.size() > 1 && a[1].word == "INTOF")))
     return point_intof(a, zsurf);
   if (match(a, {"c", "ATANGL", "n"})) {

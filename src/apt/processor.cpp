@@ -111,7 +111,8 @@ void Processor::assignment(const std::vector<Token>& t, std::size_t i) {
     return;
   }
   const bool def = t[i + 2].kind == TokKind::Word && is_geometry_word(t[i + 2].text);
-  ArgReader reader(t, i + 2, run_.symbols(), out_.definitions, run_.zsurf(), diags_);
+  ArgReader reader(t, i + 2, run_.symbols(), out_.definitions, run_.zsurf(), diags_,
+                   run_.pattern_points());
   if (def) {
     auto g = reader.definition(false);
     if (!g) return;

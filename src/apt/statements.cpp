@@ -83,13 +83,14 @@ void StatementRunner::words(const std::vector<Token>& t, std::size_t i, int isn,
   ws.pop_back();
   std::vector<Arg> args;
   if (slash) {
-    ArgReader reader(t, i, symbols_, out_.definitions, zsurf_, diags_);
+    ArgReader reader(t, i, symbols_, out_.definitions, zsurf_, diags_, pattern_points_);
     auto read = reader.arguments(major_word.text == "MACHIN");
     if (!read) return;
     args = std::move(*read);
   }
   pending_.clear();
   writes_ = false;
+  isn_ = isn;
   if (deferred_) resolve_deferred(major_word, args);
   defer_now_ = false;
   if (!modifiers(ws, major_word) || !major(major_word, args)) {

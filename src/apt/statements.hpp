@@ -35,11 +35,15 @@ class StatementRunner {
 
   double zsurf() const { return zsurf_; }
 
+  std::size_t& pattern_points() { return pattern_points_; }
+
  private:
   bool fail(const core::SourceLoc& at, core::Code code, std::string message);
   bool major(const Token& word, const std::vector<Arg>& args);
   bool motion(const Token& word, const std::vector<Arg>& args);
   bool godlta(const Token& word, const std::vector<Arg>& args);
+  bool goto_pattern(const Token& word, const std::vector<Arg>& args);
+  void write_run(const ClWord& name, const std::vector<core::Vec3>& points);
   bool control(const Token& word, const std::vector<Arg>& args);
   bool post(const Token& word, int code, const std::vector<Arg>& args);
   bool modifiers(const std::vector<Token>& mods, const Token& major);
@@ -71,6 +75,7 @@ class StatementRunner {
   bool modal(const std::string& word, const std::vector<Arg>& args, const core::SourceLoc& at);
   bool direction(const std::string& word, const std::vector<Arg>& args, const core::SourceLoc& at);
   bool startup(const Token& word, const std::vector<Arg>& args);
+  bool vertical(const Token& word, const std::vector<Arg>& args);  // GOUP, GODOWN
   std::optional<Drive> read_drive(const Token& word, const std::vector<Arg>& args);
   bool run_drive(const Drive& d);
   bool known_start(const Token& word);
@@ -84,16 +89,19 @@ class StatementRunner {
   double cutter_radius_ = 0.0;
   double intol_ = 0.0;  // IBM's defaults: INTOL 0, OUTTOL .0005
   double outtol_ = 0.0005;
-  double ps_z_ = 0.0;           // the part surface, a horizontal plane (the XY plane at first)
-  bool nops_ = false;           // NOPS: the next GO/ keeps the tool's z
-  std::optional<Vec2> fwd_;     // the sense of direction: the last motion's, unit
-  std::size_t arc_points_ = 0;  // the points written on circles so far
+  double ps_z_ = 0.0;               // the part surface, a horizontal plane (the XY plane at first)
+  bool nops_ = false;               // NOPS: the next GO/ keeps the tool's z
+  std::optional<Vec2> fwd_;         // the sense of direction: the last motion's, unit
+  std::size_t arc_points_ = 0;      // the points written on circles so far
+  std::size_t pattern_points_ = 0;  // the points the patterns defined hold
+  std::size_t visited_ = 0;         // the patterns' points GOTO/pattern went through
 
   core::DiagnosticSink& diags_;
   AptResult& out_;
   SymbolTable symbols_;
   std::vector<ClRecord> pending_;  // the records of the statement being read
   bool writes_ = false;            // whether the statement has a 1000 record
+  int isn_ = 0;                    // the statement's number
   core::Vec3 at_{};                // the tool end's position
   int lost_at_ = 0;  // the line of a motion not run, after which at_ is unknown (0: known)
   double zsurf_ = 0.0;

@@ -50,15 +50,6 @@ bool is_geom(const std::vector<Arg>& args, std::size_t i) {
   return i < args.size() && args[i].kind == Arg::Kind::Geom;
 }
 
-// The z of a horizontal plane; empty for any other geometry.
-std::optional<double> horizontal_z(const Geom& g) {
-  if (g.type != GeomType::Plane) return std::nullopt;
-  const auto& c = g.c;
-  if (std::fabs(c[2]) < 1e-9 || std::hypot(c[0], c[1]) > 1e-9 * std::fabs(c[2]))
-    return std::nullopt;
-  return c[3] / c[2];
-}
-
 // Whether every point is a finite number (huge coordinates, radii or
 // cutters overflow in the offsets).
 bool all_finite(const std::vector<Vec2>& points, double z) {
@@ -288,9 +279,7 @@ bool StatementRunner::run_drive(const Drive& d) {
 bool StatementRunner::contour(const Token& word, const std::vector<Arg>& args) {
   const std::string& w = word.text;
   if (w == "GO") return startup(word, args);
-  if (w == "GOUP" || w == "GODOWN")
-    return fail(word.loc, core::Code::AptNotSupported,
-                w + " (a motion along the tool axis to a surface) is not built: use GODLTA");
+  if (w == "GOUP" || w == "GODOWN") return vertical(word, args);
   if (w == "PSIS" || w == "INDIRV" || w == "INDIRP") return modal(w, args, word.loc);
   auto d = read_drive(word, args);
   if (!d) return false;

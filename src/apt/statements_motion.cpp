@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "apt/patern.hpp"
 #include "apt/statements.hpp"
 #include "apt/vocabulary.hpp"
 
@@ -18,6 +19,11 @@ bool all_numbers(const std::vector<Arg>& args) {
 }  // namespace
 
 bool StatementRunner::motion(const Token& word, const std::vector<Arg>& args) {
+  if (!args.empty() && args[0].kind == Arg::Kind::Geom && args[0].geom.type == GeomType::Pattern) {
+    if (word.text == "GOTO") return goto_pattern(word, args);
+    return fail(word.loc, core::Code::AptBadArgument,
+                "FROM takes a point; GOTO/pattern goes to a pattern's points");
+  }
   const bool point =
       args.size() == 1 && args[0].kind == Arg::Kind::Geom && args[0].geom.type == GeomType::Point;
   const bool numbers = (args.size() == 2 || args.size() == 3) && all_numbers(args);
@@ -47,6 +53,53 @@ bool StatementRunner::motion(const Token& word, const std::vector<Arg>& args) {
   add(cls::kMotion, word.text == "FROM" ? 3 : 5,
       {named ? symbol_word(args[0].name) : ClWord::number(0.0), ClWord::number(0.0),
        ClWord::number(p.x), ClWord::number(p.y), ClWord::number(p.z)});
+  return true;
+}
+
+// The points as 5000 5 records (80 points a record, more in 5000 6 ones),
+// named by the pattern, as a contour's points.
+void StatementRunner::write_run(const ClWord& name, const std::vector<core::Vec3>& points) {
+  constexpr std::size_t kPerRecord = 80;
+  for (std::size_t i = 0; i < points.size(); i += kPerRecord) {
+    std::vector<ClWord> w{name, ClWord::number(0.0)};
+    for (std::size_t k = i; k < points.size() && k < i + kPerRecord; ++k) {
+      w.push_back(ClWord::number(points[k].x));
+      w.push_back(ClWord::number(points[k].y));
+      w.push_back(ClWord::number(points[k].z));
+    }
+    add(cls::kMotion, i == 0 ? 5 : 6, std::move(w));
+  }
+}
+
+// GOTO/pattern: each point a GOTO (under CYCLE/DRILL each is drilled). A
+// point with AVOID,h is reached over the rise: up h where the tool is,
+// across at that height and down, the two moves a RAPID and its own ISN
+// record after them so that the point itself is a GOTO again.
+bool StatementRunner::goto_pattern(const Token& word, const std::vector<Arg>& args) {
+  // The work of a GOTO/pattern is its pattern's size, whatever it visits:
+  // bounded before it is done.
+  visited_ += args[0].geom.points.size();
+  if (visited_ > kMostProgramPatternPoints)
+    return fail(word.loc, core::Code::AptBadArgument,
+                "the program's GOTO/pattern statements go through more than " +
+                    std::to_string(kMostProgramPatternPoints) + " points of patterns");
+  const auto visits = pattern_visits(args[0].geom, {args.begin() + 1, args.end()});
+  if (!visits) return fail(word.loc, visits.error().code, visits.error().message);
+  const ClWord name = args[0].name.empty() ? ClWord::number(0.0) : symbol_word(args[0].name);
+  std::vector<core::Vec3> run;
+  for (const PatternVisit& v : *visits) {
+    if (v.avoid > 0.0) {
+      write_run(name, run);
+      run.clear();
+      const core::Vec3 up{0.0, 0.0, v.avoid};
+      add(cls::kPost, 5, {});
+      write_run(name, lost_at_ == 0 ? std::vector{at_ + up, v.p + up} : std::vector{v.p + up});
+      add(cls::kSource, isn_, {ClWord::number(0.0), ClWord::chars("")});
+    }
+    run.push_back(v.p);
+    turned(v.p);
+  }
+  write_run(name, run);
   return true;
 }
 

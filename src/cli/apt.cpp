@@ -32,6 +32,7 @@ struct AptOptions {
   std::string format = "cldump";
   std::string units = "mm";
   bool canonical = false;
+  bool chords = false;  // --chords: IBM's chords of a circle in the canon stream, not the arc
   DiagnosticOptions diagnostics;
   PostOutput output;  // --post, -o (of every format too) and the post's options
 };
@@ -46,8 +47,8 @@ std::string definitions(const std::vector<apt::Definition>& defs) {
   std::string out;
   for (const apt::Definition& d : defs) {
     std::string nums;
-    for (std::size_t i = 0; i < apt::canon_size(d.geom.type); ++i)
-      nums += (i ? "," : "") + canon_number(d.geom.c[i]);
+    for (double v : apt::canonical(d.geom))
+      nums += (nums.empty() ? "" : ",") + canon_number(v);
     out += fmt::format("{{\"name\":\"{}\",\"type\":\"{}\",\"canon\":[{}]}}\n", d.name,
                        apt::type_name(d.geom.type), nums);
   }
@@ -56,6 +57,10 @@ std::string definitions(const std::vector<apt::Definition>& defs) {
 
 double scale_of(const AptOptions& o) {
   return o.units == "inch" ? 25.4 : 1.0;
+}
+
+apt::Circles circles_of(const AptOptions& o) {
+  return o.chords ? apt::Circles::Chords : apt::Circles::Arcs;
 }
 
 // Reads the program into `sources`; false (and a message) when it cannot.
@@ -91,7 +96,7 @@ std::string formatted(const AptOptions& o, const apt::AptResult& result) {
     return apt::write_iso4343(result.records, o.units == "inch" ? "INCHES" : "MM");
   if (o.format == "cldump") return apt::record_print(result.records);
   JsonlText trace;
-  apt::to_canon(result.records, scale_of(o), trace);
+  apt::to_canon(result.records, scale_of(o), trace, circles_of(o));
   return std::move(trace.text);
 }
 
@@ -132,7 +137,7 @@ int run_apt(const AptOptions& o) {
   if (status != 0 && whole_only(o)) return status;
   if (!o.canonical && o.format == "jsonl" && o.output.out == "-") {
     canon::TraceWriter writer(stdout, canon::TraceFormat::Jsonl);  // streamed, not held
-    apt::to_canon(result.records, scale_of(o), writer);
+    apt::to_canon(result.records, scale_of(o), writer, circles_of(o));
     return status;
   }
   const int written = write_out(o, formatted(o, result));
@@ -151,7 +156,7 @@ int post_apt(const AptOptions& o) {
     diags.set_sources(&sources);
     const apt::AptResult result = apt::process(sources.get(id)->text(), id, diags);
     if (diags.errors() > 0) return 1;
-    apt::to_canon(result.records, scale_of(o), sink);
+    apt::to_canon(result.records, scale_of(o), sink, circles_of(o));
     return diags.errors() > 0 ? 1 : 0;
   });
 }
@@ -191,6 +196,8 @@ void add_apt(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--canonical", opts->canonical,
                 "print each geometry definition's canonical form as a JSON line");
+  cmd->add_flag("--chords", opts->chords,
+                "jsonl and --post: a circle as the chords of the CL (IBM's points), not an arc");
   add_diagnostic_options(*cmd, opts->diagnostics);
   add_post_options(*cmd, opts->output);
   cmd->get_option("--post")->required(false);  // only to write a program

@@ -196,7 +196,7 @@ TEST(AptContourErrors, ImpossibleMotionsAreErrorsAtTheStatement) {
 
 TEST(AptContourErrors, WhatCannotRunSaysWhy) {
   EXPECT_TRUE(run(std::string(kLines) + "GOFWD/L1,TO,L2\nFINI\n").has(core::Code::AptBadArgument));
-  EXPECT_TRUE(run(std::string(kLines) + "GOUP/L1\nFINI\n").has(core::Code::AptNotSupported));
+  EXPECT_TRUE(run(std::string(kLines) + "GOUP/L1,L2\nFINI\n").has(core::Code::AptNotSupported));
   EXPECT_TRUE(run(std::string(kLines) + "GO/TO,L1,(PLANE/1,1,1,0)\nFINI\n")
                   .has(core::Code::AptNotSupported));
   EXPECT_TRUE(run(std::string(kLines) + "GO/TO,L1\nGOLFT/L1,TO,L2,L1\nFINI\n")

@@ -25,6 +25,20 @@ TEST(AptPost, WritesTheProgramForAControl) {
   EXPECT_NE(nc.find("G01 X-1. F300.\nY6.\n"), std::string::npos) << nc;
 }
 
+TEST(AptPost, CircleIsPostedAsAnArcOrWithChordsAsChords) {
+  // Groover's contour (tests/programs/apt/README.md): GOFWD/C1 from (170,60)
+  // counter-clockwise about (130,60) to (130,100): G03, I-40 J0 from the start.
+  const std::string f = std::string(USINA_TEST_DIR) + "/programs/apt/groover_contour.apt";
+  const auto r = usina::test::usina("apt " + quote(f) + " --post fanuc");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Y60.\nG03 X130. Y100. I-40. J0.\nG01 X28.159\n"), std::string::npos)
+      << r.out;
+  const auto c = usina::test::usina("apt " + quote(f) + " --post fanuc --chords");
+  EXPECT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.out.find("G03"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("X170.002 Y61.965"), std::string::npos) << c.out;
+}
+
 TEST(AptPost, InchProgramIsPostedInMillimetres) {
   const TempDir dir;
   const std::string f = dir.write("p.apt", "FEDRAT/10\nFROM/0,0,0\nGOTO/1,0,0\nFINI\n");

@@ -42,9 +42,10 @@ class Stream final : public canon::Sink {
   std::vector<std::string> ops;
 };
 
-std::vector<std::string> stream(const std::vector<ClRecord>& records) {
+std::vector<std::string> stream(const std::vector<ClRecord>& records,
+                                Circles circles = Circles::Arcs) {
   Stream s;
-  to_canon(records, 1.0, s);
+  to_canon(records, 1.0, s, circles);
   return s.ops;
 }
 
@@ -107,7 +108,9 @@ TEST(AptRoundTrip, CanonIso4343CanonGivesTheSameStream) {
     const std::string text = write_iso4343(r.result.records, "MM");
     const std::vector<ClRecord> back = read_cl_text(text, 1, ClDialect::AptCl, diags);
     EXPECT_FALSE(diags.has_errors()) << f << "\n" << text;
-    expect_near(stream(back), stream(r.result.records), f.string() + "\n" + text);
+    // ISO 4343 holds IBM's chords of a circle (its CIRCLE a comment), so the
+    // stream read back is the chords' stream.
+    expect_near(stream(back), stream(r.result.records, Circles::Chords), f.string() + "\n" + text);
   }
 }
 

@@ -3,9 +3,10 @@
 // geometry, motion into CL records), then every writer of its result: the
 // record print (--format cldump), the canon stream (--format jsonl, into a
 // NullSink) and the canonical forms (--canonical). The first byte picks the
-// unit of the canon stream (bit 0: inches). Every diagnostic is rendered and
-// discarded. Any input must give records or diagnostics, never a crash, a
-// hang or a number that is not finite in the canon stream.
+// unit of the canon stream (bit 0: inches) and its circles (bit 1: chords,
+// else arcs). Every diagnostic is rendered and discarded. Any input must
+// give records or diagnostics, never a crash, a hang or a number that is not
+// finite in the canon stream.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -32,12 +33,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string print = apt::record_print(result.records);
   (void)print;
   for (const apt::Definition& d : result.definitions) {
-    for (std::size_t i = 0; i < apt::canon_size(d.geom.type); ++i) {
-      if (!std::isfinite(d.geom.c[i])) __builtin_trap();  // a canonical form not finite
+    for (double v : apt::canonical(d.geom)) {
+      if (!std::isfinite(v)) __builtin_trap();  // a canonical form (a pattern's points) not finite
     }
   }
   fuzz::FiniteSink sink;
-  apt::to_canon(result.records, (bits & 1u) != 0 ? 25.4 : 1.0, sink);
+  // Bit 1: the circles' chords (--chords), else their arcs.
+  apt::to_canon(result.records, (bits & 1u) != 0 ? 25.4 : 1.0, sink,
+                (bits & 2u) != 0 ? apt::Circles::Chords : apt::Circles::Arcs);
   sink.finish();
   return 0;
 }

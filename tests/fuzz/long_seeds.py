@@ -167,6 +167,11 @@ APT = {
     # 1 MB of contouring: a startup, a line to a circle, the circle to a line.
     "contour": lambda n: "L1=LINE/0,0,0,10\nL2=LINE/0,5,10,5\nC=CIRCLE/-3,5,3\nCUTTER/2\n"
     + repeat_to("GOTO/-5,-5,0\nGO/TO,L1\nTLLFT,GOLFT/L1,TANTO,C\nGOFWD/C,PAST,L2\n", n) + "FINI\n",
+    # 1 MB of patterns: large ones named again and again, GOTO/pattern with
+    # long lists of ranges (their work must not be the product of the two).
+    "patern": lambda n: "P=POINT/0,0\nV=VECTOR/1,0,0\nA=PATERN/LINEAR,P,V,100000\n"
+    + repeat_to("B=PATERN/RANDOM,A,P\nX=POINT/A,99999\nGOTO/A,OMIT,1,THRU,99999,"
+                "AVOID,1,2,THRU,100000,RETAIN,1,THRU,100000\n", n) + "FINI\n",
 }
 # --- CL files (the first byte picks the reader: 0 NX CLSF, 1 APT CL)
 
@@ -197,7 +202,7 @@ CL_SIZES = {"statement": 200_000, "comment": 100_000, "continuation": 200_000,
 
 APT_SIZES = {"statement": 200_000, "comment": 100_000, "nesting": 20_000,
              "continuation": 200_000, "program": 1_000_000,
-             "contour": 1_000_000}
+             "contour": 1_000_000, "patern": 1_000_000}
 
 # --- usina job's TOML files (the first byte picks the reader: 0 job, 1 tools, 2 materials)
 

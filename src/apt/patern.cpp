@@ -1,0 +1,276 @@
+// PATERN definition forms and POINT/pattern,n (docs/apt.md, "Patterns"). Counts are whole numbers;
+// increments (INCR) are distances along a vector or angles on a circle between one point and the
+// next.
+#include "apt/patern.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "apt/forms.hpp"
+
+namespace usina::apt {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+using Points = std::vector<core::Vec3>;
+using PointsResult = tl::expected<Points, GeomError>;
+
+tl::unexpected<GeomError> bad(std::string message) {
+  return tl::make_unexpected(GeomError{core::Code::AptBadArgument, std::move(message)});
+}
+
+tl::unexpected<GeomError> unknown() {
+  return tl::make_unexpected(GeomError{});
+}
+
+bool is_word(const Arg& a, std::string_view w) {
+  return a.kind == Arg::Kind::Word && a.word == w;
+}
+
+bool whole(double n, double least) {
+  return n >= least && n <= static_cast<double>(kMaxPatternPoints) && n == std::floor(n);
+}
+
+// The points a program's PATERN definitions may still make or read (its
+// patterns' bound, kMostProgramPatternPoints): every step takes its share
+// before it is done, so the work stays bounded even by definitions that fail.
+class Budget {
+ public:
+  explicit Budget(std::size_t left) : left_(left) {}
+
+  bool take(std::size_t n) {
+    if (n > left_) {
+      left_ = 0;
+      return false;
+    }
+    left_ -= n;
+    return true;
+  }
+
+  std::size_t left() const { return left_; }
+
+ private:
+  std::size_t left_;
+};
+
+tl::unexpected<GeomError> spent() {
+  return bad("PATERN: the program's patterns make and read more than " +
+             std::to_string(kMostProgramPatternPoints) + " points");
+}
+
+GeomResult pattern_of(Points points) {
+  if (points.size() > kMaxPatternPoints)
+    return bad("PATERN: more than " + std::to_string(kMaxPatternPoints) + " points");
+  Geom g;
+  g.type = GeomType::Pattern;
+  g.points = PointList(std::move(points));
+  return g;
+}
+
+// INCR,d1,d2,... and INCR,n,AT,d (n steps of d), in groups, from a[i] (INCR)
+// to the end.
+tl::expected<std::vector<double>, GeomError> increments(const std::vector<Arg>& a, std::size_t i,
+                                                        Budget& b) {
+  std::vector<double> out;
+  while (i < a.size()) {
+    if (is_word(a[i], "INCR")) {
+      if (++i == a.size() || a[i].kind != Arg::Kind::Number)
+        return bad("PATERN: INCR takes increments d1,d2,... or n,AT,d");
+      continue;
+    }
+    if (a[i].kind != Arg::Kind::Number) return unknown();
+    if (i + 1 < a.size() && is_word(a[i + 1], "AT")) {
+      if (i + 2 == a.size() || a[i + 2].kind != Arg::Kind::Number)
+        return bad("PATERN: n,AT,d takes the increment d after AT");
+      if (!whole(a[i].num, 1) ||
+          out.size() + static_cast<std::size_t>(a[i].num) > kMaxPatternPoints)
+        return bad("PATERN: the count before AT is a whole number from 1 to " +
+                   std::to_string(kMaxPatternPoints) + " in all");
+      if (!b.take(static_cast<std::size_t>(a[i].num))) return spent();
+      out.insert(out.end(), static_cast<std::size_t>(a[i].num), a[i + 2].num);
+      i += 3;
+      continue;
+    }
+    if (out.size() == kMaxPatternPoints)
+      return bad("PATERN: more than " + std::to_string(kMaxPatternPoints) + " increments");
+    if (!b.take(1)) return spent();
+    out.push_back(a[i++].num);
+  }
+  return out;
+}
+
+// Unit direction of a vector argument, or an error.
+tl::expected<core::Vec3, GeomError> unit(const Arg& v) {
+  const core::Vec3 d = forms::xyz(v);
+  const double n = std::sqrt(core::dot(d, d));
+  if (!(n > 1e-12)) return bad("PATERN: the vector has no length, so no direction");
+  return d / n;
+}
+
+PointsResult linear(const std::vector<Arg>& a, Budget& b) {
+  if (forms::match(a, {"LINEAR", "p", "p", "n"})) {
+    if (!whole(a[3].num, 2)) return bad("PATERN/LINEAR,point,point,n: n is whole, 2 or more");
+    const auto n = static_cast<std::size_t>(a[3].num);
+    if (!b.take(n)) return spent();
+    const core::Vec3 p = forms::xyz(a[1]), q = forms::xyz(a[2]);
+    Points out;
+    for (std::size_t k = 0; k < n; ++k)
+      out.push_back(p + (q - p) * (static_cast<double>(k) / static_cast<double>(n - 1)));
+    return out;
+  }
+  if (forms::match(a, {"LINEAR", "p", "v", "n"})) {
+    if (!whole(a[3].num, 1)) return bad("PATERN/LINEAR,point,vector,n: n is whole, 1 or more");
+    if (!b.take(static_cast<std::size_t>(a[3].num))) return spent();
+    Points out;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(a[3].num); ++k)
+      out.push_back(forms::xyz(a[1]) + forms::xyz(a[2]) * static_cast<double>(k));
+    return out;
+  }
+  const bool incr = a.size() > 4 &&
+                    forms::match({a.begin(), a.begin() + 3}, {"LINEAR", "p", "v"}) &&
+                    is_word(a[3], "INCR");
+  if (!incr) return unknown();
+  const auto u = unit(a[2]);
+  if (!u) return tl::make_unexpected(u.error());
+  const auto steps = increments(a, 3, b);
+  if (!steps) return tl::make_unexpected(steps.error());
+  Points out{forms::xyz(a[1])};
+  for (double d : *steps)
+    out.push_back(out.back() + *u * d);
+  return out;
+}
+
+// Angles in degrees from +X, counter-clockwise; CLW turns the other way.
+PointsResult on_circle(const Arg& c, const std::vector<double>& angles) {
+  Points out;
+  for (double t : angles)
+    out.push_back({c.geom.c[0] + c.geom.c[6] * std::cos(t * kDeg),
+                   c.geom.c[1] + c.geom.c[6] * std::sin(t * kDeg), c.geom.c[2]});
+  return out;
+}
+
+PointsResult arc(const std::vector<Arg>& a, Budget& b) {
+  const bool ends = forms::match(a, {"ARC", "c", "n", "n", "CLW", "n"}) ||
+                    forms::match(a, {"ARC", "c", "n", "n", "CCLW", "n"});
+  if (ends) {
+    const double sense = a[4].word == "CLW" ? -1.0 : 1.0;
+    double sweep = std::fmod(sense * (a[3].num - a[2].num), 360.0);
+    if (sweep <= 1e-9) sweep += 360.0;
+    const bool round = sweep > 360.0 - 1e-9;  // the whole circle: the last point is not the first
+    if (!whole(a[5].num, round ? 1 : 2))
+      return bad(
+          "PATERN/ARC,circle,a1,a2,CLW|CCLW,n: n is whole, 2 or more (1 or more around "
+          "the whole circle)");
+    const auto n = static_cast<std::size_t>(a[5].num);
+    if (!b.take(n)) return spent();
+    const double step = sweep / static_cast<double>(round ? n : n - 1);
+    std::vector<double> angles;
+    for (std::size_t k = 0; k < n; ++k)
+      angles.push_back(a[2].num + sense * step * static_cast<double>(k));
+    return on_circle(a[1], angles);
+  }
+  const bool incr = a.size() > 5 &&
+                    (forms::match({a.begin(), a.begin() + 4}, {"ARC", "c", "n", "CLW"}) ||
+                     forms::match({a.begin(), a.begin() + 4}, {"ARC", "c", "n", "CCLW"})) &&
+                    is_word(a[4], "INCR");
+  if (!incr) return unknown();
+  const auto steps = increments(a, 4, b);
+  if (!steps) return tl::make_unexpected(steps.error());
+  const double sense = a[3].word == "CLW" ? -1.0 : 1.0;
+  std::vector<double> angles{a[2].num};
+  for (double d : *steps)
+    angles.push_back(angles.back() + sense * d);
+  return on_circle(a[1], angles);
+}
+
+PointsResult random(const std::vector<Arg>& a, Budget& b) {
+  if (a.size() < 2) return unknown();
+  Points out;
+  for (std::size_t i = 1; i < a.size(); ++i) {
+    const bool point = a[i].kind == Arg::Kind::Geom && a[i].geom.type == GeomType::Point;
+    const bool pattern = a[i].kind == Arg::Kind::Geom && a[i].geom.type == GeomType::Pattern;
+    if (!point && !pattern) return unknown();
+    if (!b.take(pattern ? a[i].geom.points.size() : 1)) return spent();
+    if (point) out.push_back(forms::xyz(a[i]));
+    if (pattern) out.insert(out.end(), a[i].geom.points.begin(), a[i].geom.points.end());
+    if (out.size() > kMaxPatternPoints)
+      return bad("PATERN: more than " + std::to_string(kMaxPatternPoints) + " points");
+  }
+  return out;
+}
+
+// The pattern copied by each offset, copy after copy.
+PointsResult copies(const Arg& pattern, const std::vector<core::Vec3>& offsets, Budget& b) {
+  const std::size_t n = pattern.geom.points.size();
+  if (n * offsets.size() > kMaxPatternPoints)
+    return bad("PATERN/PARLEL: more than " + std::to_string(kMaxPatternPoints) + " points");
+  if (!b.take(n * offsets.size())) return spent();
+  Points out;
+  for (const core::Vec3& d : offsets)
+    for (const core::Vec3& p : pattern.geom.points)
+      out.push_back(p + d);
+  return out;
+}
+
+PointsResult parlel(const std::vector<Arg>& a, Budget& b) {
+  std::vector<core::Vec3> offsets;
+  if (forms::match(a, {"PARLEL", "pat", "pat"})) {
+    if (!b.take(a[2].geom.points.size())) return spent();
+    for (const core::Vec3& q : a[2].geom.points)
+      offsets.push_back(q - a[2].geom.points.front());
+    return copies(a[1], offsets, b);
+  }
+  if (forms::match(a, {"PARLEL", "pat", "v", "n"})) {
+    if (!whole(a[3].num, 1)) return bad("PATERN/PARLEL,pattern,vector,n: n is whole, 1 or more");
+    if (!b.take(static_cast<std::size_t>(a[3].num))) return spent();
+    for (std::size_t k = 0; k < static_cast<std::size_t>(a[3].num); ++k)
+      offsets.push_back(forms::xyz(a[2]) * static_cast<double>(k));
+    return copies(a[1], offsets, b);
+  }
+  const bool incr = a.size() > 4 &&
+                    forms::match({a.begin(), a.begin() + 3}, {"PARLEL", "pat", "v"}) &&
+                    is_word(a[3], "INCR");
+  if (!incr) return unknown();
+  const auto u = unit(a[2]);
+  if (!u) return tl::make_unexpected(u.error());
+  const auto steps = increments(a, 3, b);
+  if (!steps) return tl::make_unexpected(steps.error());
+  offsets.push_back({});
+  for (double d : *steps)
+    offsets.push_back(offsets.back() + *u * d);
+  return copies(a[1], offsets, b);
+}
+
+}  // namespace
+
+namespace forms {
+
+GeomResult pattern_form(const std::vector<Arg>& a, std::size_t& budget) {
+  if (a.empty() || a[0].kind != Arg::Kind::Word) return unknown();
+  Budget b(budget);
+  PointsResult r = unknown();
+  if (a[0].word == "LINEAR") r = linear(a, b);
+  if (a[0].word == "ARC") r = arc(a, b);
+  if (a[0].word == "RANDOM") r = random(a, b);
+  if (a[0].word == "PARLEL") r = parlel(a, b);
+  budget = b.left();
+  if (!r) return tl::make_unexpected(r.error());
+  return pattern_of(std::move(*r));
+}
+
+GeomResult pattern_point(const Arg& pattern, double n) {
+  const std::size_t count = pattern.geom.points.size();
+  if (!(n >= 1 && n <= static_cast<double>(count) && n == std::floor(n)))
+    return bad("POINT/pattern,n: n is the number of a point of the pattern, 1 to " +
+               std::to_string(count));
+  const core::Vec3 p = pattern.geom.points[static_cast<std::size_t>(n) - 1];
+  return make_point(p.x, p.y, p.z);
+}
+
+}  // namespace forms
+}  // namespace usina::apt
