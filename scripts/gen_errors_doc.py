@@ -317,13 +317,15 @@ EXPLAIN = {
         "function given too many values, a modal word (TLLFT, NOPS) with arguments.",
         "Give the statement the arguments the message names."),
     "E_APT_NOT_SUPPORTED": (
-        "The statement is APT, but usina's APT does not run it yet: the contouring statements "
-        "(GO, GOLFT, GORGT, GOFWD, GOBACK, GOUP, GODOWN with the cutter offset), a few "
-        "definition forms, the geometry functions (DISTF...), a feed rate after a GOTO's point, "
-        "and statements of the language usina does not know (MACRO, LOOPST, ...). The "
-        "statement is left out, never skipped in silence.",
-        "See docs/apt.md for what this version runs; write the motion with GOTO points until "
-        "contouring is built."),
+        "The statement is APT, but usina's APT does not run it yet: contouring on 3D surfaces "
+        "(a part surface that is not horizontal, a drive or check surface that is not a line, "
+        "circle or vertical plane), GOUP/GODOWN with PAST, several check surfaces with branch "
+        "labels, a few definition forms (PATERN GRID, CONST), the geometry functions "
+        "(DISTF...), a feed rate after a GOTO's point, and statements of the language usina "
+        "does not know (MACRO, LOOPST, ...). The statement is left out, never skipped in "
+        "silence.",
+        "See docs/apt.md for what this version runs; write the motion in the 2.5D forms it "
+        "lists, or with GOTO points."),
     "W_APT_NO_FINI": (
         "The APT program has no FINI statement; the processor takes its end as FINI and "
         "writes no FINI record.",
