@@ -63,10 +63,29 @@ struct NcWord {
 struct Words {
   std::vector<NcWord> list;
 
-  void add(const NcWord& w) {
-    list.push_back(w);
+  // A new word, built where it is kept: a word built on the stack and
+  // copied in was read back 16 bytes at a time before its narrower fields'
+  // stores had landed, a stalled store-to-load forward on every word of
+  // every block (issue 19). Call added() once it is filled.
+  NcWord& next() { return list.emplace_back(); }
+
+  void added() {
+    const NcWord& w = list.back();
     letters |= letter_bit(w.letter);
     if (w.letter == 'G') g_bits |= g_bit(code(w));
+  }
+
+  void add(const NcWord& w) {
+    next() = w;
+    added();
+  }
+
+  // A G word the front end adds (the modal motion of a block of axes only).
+  void add_g(double g) {
+    NcWord& w = next();
+    w.letter = 'G';
+    w.value = w.raw = g;
+    added();
   }
 
   void clear() {

@@ -150,17 +150,18 @@ bool plain_block_words(std::string_view text, Words& w) {
     std::size_t j = i + 1;
     const bool negative = j < text.size() && text[j] == '-';
     if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
-    NcWord word;
+    double value = 0;
     bool point = false;
-    if (!plain_digits(text, j, word.value, point) || !word_may_end(text, j)) break;
-    if (negative) word.value = -word.value;
+    if (!plain_digits(text, j, value, point) || !word_may_end(text, j)) break;
+    if (negative) value = -value;
+    NcWord& word = w.next();
     word.letter = l;
-    word.raw = word.value;
+    word.value = word.raw = value;
     word.integer_literal = !point;
     word.pos = i;
-    if (l == 'G') word.code = tenths(word.value);
-    if (l == 'M') word.code = as_code(whole(word.value));
-    w.add(word);
+    if (l == 'G') word.code = tenths(value);
+    if (l == 'M') word.code = as_code(whole(value));
+    w.added();
     i = j;
   }
   if (i >= text.size()) return true;
@@ -201,7 +202,7 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     auto v = r.expression();
     if (!v) return macro_error(r, b);
     if (!word_in_range(b, l, at, r, *v)) return false;
-    NcWord word;
+    NcWord& word = w.next();
     word.letter = l;
     word.value = word.raw = v->v;
     word.integer_literal = r.literal() && !r.had_point();
@@ -211,7 +212,7 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
     // Codes are asked for dozens of times a block: read them once.
     if (l == 'G') word.code = tenths(word.value);
     if (l == 'M') word.code = as_code(whole(word.value));
-    w.add(word);
+    w.added();
     if (l == 'G') {
       g20 = g20 || tenths(word.value) == 200;
       g21 = g21 || tenths(word.value) == 210;
@@ -572,7 +573,7 @@ void Engine::group_one_motion(Words& w) {
         t == 520 || t == 530 || t == 920 || t == 431 || t == 310)
       return;
   }
-  if (axes) w.add({'G', motion_ / 10.0, motion_ / 10.0, false, false, false, 0});
+  if (axes) w.add_g(motion_ / 10.0);
 }
 
 // The block's words down the interpreter's one road: its G codes in
