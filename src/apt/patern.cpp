@@ -112,6 +112,25 @@ tl::expected<core::Vec3, GeomError> unit(const Arg& v) {
   return d / n;
 }
 
+// `WORD,first,vector,INCR,...` (LINEAR from a point, PARLEL of a pattern):
+// the points from the first argument (`from_point`) or the origin along the
+// vector's direction by each increment in turn, that start first; unknown()
+// when the statement is not of that form.
+PointsResult stepped(const std::vector<Arg>& a, std::string_view word, std::string_view first,
+                     bool from_point, Budget& b) {
+  const bool incr = a.size() > 4 && forms::match({a.begin(), a.begin() + 3}, {word, first, "v"}) &&
+                    is_word(a[3], "INCR");
+  if (!incr) return unknown();
+  const auto u = unit(a[2]);
+  if (!u) return tl::make_unexpected(u.error());
+  const auto steps = increments(a, 3, b);
+  if (!steps) return tl::make_unexpected(steps.error());
+  Points out{from_point ? forms::xyz(a[1]) : core::Vec3{}};
+  for (double d : *steps)
+    out.push_back(out.back() + *u * d);
+  return out;
+}
+
 PointsResult linear(const std::vector<Arg>& a, Budget& b) {
   if (forms::match(a, {"LINEAR", "p", "p", "n"})) {
     if (!whole(a[3].num, 2)) return bad("PATERN/LINEAR,point,point,n: n is whole, 2 or more");
@@ -131,18 +150,7 @@ PointsResult linear(const std::vector<Arg>& a, Budget& b) {
       out.push_back(forms::xyz(a[1]) + forms::xyz(a[2]) * static_cast<double>(k));
     return out;
   }
-  const bool incr = a.size() > 4 &&
-                    forms::match({a.begin(), a.begin() + 3}, {"LINEAR", "p", "v"}) &&
-                    is_word(a[3], "INCR");
-  if (!incr) return unknown();
-  const auto u = unit(a[2]);
-  if (!u) return tl::make_unexpected(u.error());
-  const auto steps = increments(a, 3, b);
-  if (!steps) return tl::make_unexpected(steps.error());
-  Points out{forms::xyz(a[1])};
-  for (double d : *steps)
-    out.push_back(out.back() + *u * d);
-  return out;
+  return stepped(a, "LINEAR", "p", true, b);
 }
 
 // Angles in degrees from +X, counter-clockwise; CLW turns the other way.
@@ -232,18 +240,9 @@ PointsResult parlel(const std::vector<Arg>& a, Budget& b) {
       offsets.push_back(forms::xyz(a[2]) * static_cast<double>(k));
     return copies(a[1], offsets, b);
   }
-  const bool incr = a.size() > 4 &&
-                    forms::match({a.begin(), a.begin() + 3}, {"PARLEL", "pat", "v"}) &&
-                    is_word(a[3], "INCR");
-  if (!incr) return unknown();
-  const auto u = unit(a[2]);
-  if (!u) return tl::make_unexpected(u.error());
-  const auto steps = increments(a, 3, b);
-  if (!steps) return tl::make_unexpected(steps.error());
-  offsets.push_back({});
-  for (double d : *steps)
-    offsets.push_back(offsets.back() + *u * d);
-  return copies(a[1], offsets, b);
+  const auto steps = stepped(a, "PARLEL", "pat", false, b);
+  if (!steps) return steps;
+  return copies(a[1], *steps, b);
 }
 
 }  // namespace

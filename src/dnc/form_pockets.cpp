@@ -5,8 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "cam/chain.hpp"
-#include "cam/dxf_import.hpp"
 #include "cam/pocket.hpp"
 #include "dnc/form_reading.hpp"
 
@@ -67,18 +65,14 @@ Reading read_circle_pocket(FormFields& f, post::PostOptions&) {
 // The outline and islands of a drawing: the closed contours of its layer
 // (all layers when none is named), the outermost the pocket's wall.
 Reading read_pocket_dxf(FormFields& f, post::PostOptions&) {
-  const std::string dxf = f.text("dxf", "the drawing", cam::kMaxDxfBytes, std::nullopt);
-  cam::DxfOptions d;
-  const std::string layer = f.text("layer", "the layer", 255, std::string());
-  if (!layer.empty()) d.layer = layer;
-  d.spline_tolerance = f.number("spline_tolerance", "the spline tolerance", cam::kTolerance, 0.01);
+  const FormDrawing drawing = read_drawing(f);
   const cam::PocketOptions o = read_pocket_options(f);
   auto phrases = pocket_phrases();
   phrases.back() = {"spline", "spline_tolerance"};  // a drawing has no centre field
-  return {[dxf, d, o](canon::Sink& sink, core::DiagnosticSink& diags) {
-            auto entities = cam::read_dxf_text(dxf, "the drawing", d, diags);
-            if (!entities) return false;
-            const auto shape = cam::pocket_shape(cam::chain(std::move(*entities)), diags);
+  return {[drawing, o](canon::Sink& sink, core::DiagnosticSink& diags) {
+            const auto contours = drawing.contours(diags);
+            if (!contours) return false;
+            const auto shape = cam::pocket_shape(*contours, diags);
             return shape && cam::generate_pocket(*shape, o, sink, diags);
           },
           std::move(phrases), "stepover", "dxf"};

@@ -1,6 +1,5 @@
-// The profile's form: usina gen profile --dxf with the drawing's text in
-// the body (the page's upload; bounded by the server's max_upload and by
-// the DXF reader's own 64 MiB), read by the same checked reader as a file.
+// The profile's form, usina gen profile --dxf with the drawing's text in
+// the body, and the reading of a form's drawing (the pocket's too).
 #include "cam/chain.hpp"
 #include "cam/dxf_import.hpp"
 #include "cam/profile.hpp"
@@ -13,12 +12,24 @@ constexpr int kMaxTabs = 10000;
 
 }  // namespace
 
-Reading read_profile_dxf(FormFields& f, post::PostOptions&) {
-  const std::string dxf = f.text("dxf", "the drawing", cam::kMaxDxfBytes, std::nullopt);
-  cam::DxfOptions d;
+FormDrawing read_drawing(FormFields& f) {
+  FormDrawing d;
+  d.text = f.text("dxf", "the drawing", cam::kMaxDxfBytes, std::nullopt);
   const std::string layer = f.text("layer", "the layer", 255, std::string());
-  if (!layer.empty()) d.layer = layer;
-  d.spline_tolerance = f.number("spline_tolerance", "the spline tolerance", cam::kTolerance, 0.01);
+  if (!layer.empty()) d.options.layer = layer;
+  d.options.spline_tolerance =
+      f.number("spline_tolerance", "the spline tolerance", cam::kTolerance, 0.01);
+  return d;
+}
+
+std::optional<std::vector<cam::Path>> FormDrawing::contours(core::DiagnosticSink& diags) const {
+  auto entities = cam::read_dxf_text(text, "the drawing", options, diags);
+  if (!entities) return std::nullopt;
+  return cam::chain(std::move(*entities));
+}
+
+Reading read_profile_dxf(FormFields& f, post::PostOptions&) {
+  const FormDrawing drawing = read_drawing(f);
   cam::ProfileOptions o;
   const std::string side =
       f.choice("side", "the side", {"outside", "inside", "auto", "left", "right", "on"}, "outside");
@@ -30,10 +41,9 @@ Reading read_profile_dxf(FormFields& f, post::PostOptions&) {
   o.tabs.height = f.number("tab_height", "the tab height", cam::kLength, 1.0);
   o.cut = read_cutting(f);
   if (const auto s = cam::profile_side(side)) o.side = *s;
-  return {[dxf, d, o](canon::Sink& sink, core::DiagnosticSink& diags) {
-            auto entities = cam::read_dxf_text(dxf, "the drawing", d, diags);
-            if (!entities) return false;
-            return cam::generate_profile(cam::chain(std::move(*entities)), o, sink, diags);
+  return {[drawing, o](canon::Sink& sink, core::DiagnosticSink& diags) {
+            const auto contours = drawing.contours(diags);
+            return contours && cam::generate_profile(*contours, o, sink, diags);
           },
           {{"tab height", "tab_height"},
            {"tabs", "tabs"},

@@ -7,9 +7,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "cam/dxf_import.hpp"
 #include "cam/program.hpp"
 #include "canon/sink.hpp"
 #include "core/diagnostic.hpp"
@@ -28,6 +31,20 @@ struct Reading {
   std::string_view work_field;
   std::string_view other_field = "";  // an error no phrase names (the drawing's, for a profile)
 };
+
+// A drawing sent in a form's `dxf` field (the page's upload; bounded by the
+// server's max_upload and the DXF reader's own 64 MiB), with the `layer`
+// and `spline_tolerance` fields: what `usina gen --dxf FILE` reads.
+struct FormDrawing {
+  std::string text;
+  cam::DxfOptions options;
+
+  // Its contours, chained; nothing, with the reader's diagnostics, when
+  // the text is no drawing (read by the same checked reader as a file).
+  std::optional<std::vector<cam::Path>> contours(core::DiagnosticSink& diags) const;
+};
+
+FormDrawing read_drawing(FormFields& f);  // form_profile.cpp
 
 // The fields every cycle has (tool, feeds, spindle, safe Z, the bound on
 // the work), with docs/gen.md's defaults.
