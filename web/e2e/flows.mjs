@@ -5,6 +5,7 @@
 import { readFileSync } from 'node:fs';
 import { Control, text } from './control.mjs';
 import { PASSWORD } from './harness.mjs';
+import { toolLifeFlow } from './tools.mjs';
 import { utilisationFlow } from './utilisation.mjs';
 
 export async function logInAs(page, user) {
@@ -221,6 +222,8 @@ export async function machineFlow(page, h, t, first) {
     t.check(cycle === '83.5 s', `the part count rises when the control reports a part (from ${parts}; last cycle ${cycle})`);
     await utilisationFlow(page, h, t, first);
     await t.shot(page, 'web-utilisation.png', false);
+    await toolLifeFlow(page, h, t);
+    await t.shot(page, 'web-tools.png', false);
 
     const mark = control.mark();
     const d2 = await startJob(page, first, 'Send', 'block', 'N0150');

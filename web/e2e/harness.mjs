@@ -10,6 +10,10 @@ export const web = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 export const CHROMIUM = '/usr/bin/chromium';
 export const PASSWORD = 'correct horse 1';
 export const SKIP = 77;
+// The machine's shift calendar (above): its zone, and a holiday in the
+// chart's two weeks.
+export const ZONE = 'America/Sao_Paulo';
+export const HOLIDAY = new Date(Date.now() - 3 * 86_400_000).toLocaleDateString('en-CA', { timeZone: ZONE });
 
 export function arg(name, fallback) {
   const at = process.argv.indexOf(`--${name}`);
@@ -49,7 +53,11 @@ export class Harness {
     writeFileSync(
       config,
       `[web]\nroot = "page"\n\n[server]\nmax_upload = 134217728\n\n[[machine]]\nname = "romi-1"\ndialect = "romi"\nport = "${this.machinePort()}"\n` +
-        `baud = 9600\ndata_bits = 7\nparity = "even"\nstop_bits = 2\nflow = "xonxoff"\ncode = "iso"\neob = "hash"\nmode = "tryout"\n`,
+        `baud = 9600\ndata_bits = 7\nparity = "even"\nstop_bits = 2\nflow = "xonxoff"\ncode = "iso"\neob = "hash"\nmode = "tryout"\n` +
+        // Shifts the whole day every day in a zone not UTC's, and a holiday
+        // three days ago: the utilisation is charted in the zone's days
+        // against the shifts, and a day without a shift says so (utilisation.mjs).
+        `\n[machine.calendar]\ntimezone = "${ZONE}"\nshifts = [{days = "mon-sun", start = "00:00", end = "12:00"}, {days = "mon-sun", start = "12:00", end = "24:00"}]\nholidays = ["${HOLIDAY}"]\n`,
     );
     const port = await this.serve(['serve', '--data', data, '--config', config, '--listen', '127.0.0.1:0']);
     this.base = `http://127.0.0.1:${port}`;

@@ -1,15 +1,16 @@
 // The machines, live from the server's event stream: each machine's state,
 // its job's progress (bytes sent of the total, the block), its part count
 // and last cycle time against the estimate of the program last sent; its
-// utilisation per day (machine_utilisation.ts); its quality records
-// (machine_quality.ts); and, for a role that may, the job buttons
+// utilisation per day (machine_utilisation.ts); its tool life
+// (machine_tools.ts); its quality records (machine_quality.ts); and, for a role that may, the job buttons
 // (machine_jobs.ts) and the quality form.
 import { enc, getJson, token, type Job, type Machine, type Revision } from './api';
 import { h, show, status } from './dom';
 import { jobForm, type JobForm } from './machine_jobs';
 import { qualityPanel, type QualityPanel, type QualityRecord } from './machine_quality';
+import { toolsPanel, type ToolsPanel } from './machine_tools';
 import { utilisationPanel, type UtilisationPanel } from './machine_utilisation';
-import { mayRecordQuality, mayRunJobs, sessionUser } from './roles';
+import { mayRecordQuality, mayResetTools, mayRunJobs, sessionUser } from './roles';
 
 let socket: WebSocket | null = null;
 
@@ -27,6 +28,7 @@ interface Shown {
   status: HTMLElement;
   form: JobForm | null;
   utilisation: UtilisationPanel;
+  tools: ToolsPanel;
   quality: QualityPanel;
   estimate: Estimate | null; // of the last job's revision
 }
@@ -117,10 +119,11 @@ function render(s: Shown): void {
 interface Viewer {
   runs: boolean;
   records: boolean;
+  resets: boolean;
 }
 
 function machineSection(m: Machine, shown: Map<string, Shown>, v: Viewer): HTMLElement {
-  const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), quality: qualityPanel(m.name, v.records), estimate: null };
+  const s: Shown = { machine: m, job: m.job, status: h('div', { class: 'machine-status' }), form: null, utilisation: utilisationPanel(m.name), tools: toolsPanel(m.name, v.resets), quality: qualityPanel(m.name, v.records), estimate: null };
   if (v.runs) s.form = jobForm(m, () => shown.get(m.name)?.job ?? null);
   shown.set(m.name, s);
   render(s);
@@ -131,13 +134,14 @@ function machineSection(m: Machine, shown: Map<string, Shown>, v: Viewer): HTMLE
     s.status,
     s.form ? s.form.element : null,
     s.utilisation.element,
+    s.tools.element,
     s.quality.element,
   );
 }
 
 export async function machinesPage(main: HTMLElement): Promise<void> {
   const [list, who] = await Promise.all([getJson<{ machines: Machine[] }>('/api/machines'), sessionUser()]);
-  const v: Viewer = { runs: mayRunJobs(who.role), records: mayRecordQuality(who.role) };
+  const v: Viewer = { runs: mayRunJobs(who.role), records: mayRecordQuality(who.role), resets: mayResetTools(who.role) };
   const shown = new Map<string, Shown>();
   const sections = h('div', { id: 'machine-sections' }, ...list.machines.map((m) => machineSection(m, shown, v)));
   const none = h('p', { id: 'no-machines', text: 'No machines are configured (usina-serve.toml, or Machine settings for an admin).', hidden: list.machines.length > 0 });
@@ -207,13 +211,19 @@ function listen(shown: Map<string, Shown>, live: HTMLElement, roster: (ev: Serve
       if (!s.job || s.job.state !== 'running' || j.job === s.job.job || j.state === 'running') s.job = j;
       render(s);
       if (ev.type !== 'job.progress') void refresh(shown, name);
-      if (ENDED.some((e) => ev.type === `job.${e}`)) s.utilisation.refresh();
+      if (ENDED.some((e) => ev.type === `job.${e}`)) {
+        s.utilisation.refresh();
+        s.tools.refresh();
+      }
     } else if (ev.type === 'machine.part') {
       if (ev.part_count !== undefined) s.machine.part_count = ev.part_count;
       if (ev.last_cycle_seconds !== undefined) s.machine.last_cycle_seconds = ev.last_cycle_seconds;
       render(s);
       void refresh(shown, name); // the control's count and message, too
       s.utilisation.refresh();
+      s.tools.refresh();
+    } else if (ev.type === 'machine.tool_reset') {
+      s.tools.refresh(); // from this page or another
     } else if (ev.type === 'machine.quality') {
       s.quality.add(ev as unknown as QualityRecord); // the event is the record
     } else {

@@ -62,3 +62,8 @@ export function whyNot(who: SessionUser, author: string, from: string, to: strin
   if (g.fourEyes && who.role !== 'admin' && who.user === author) return `you wrote this revision; ${from} → ${to} needs someone else (four eyes)`;
   return '';
 }
+
+// Start a tool's life count again (Permission::ResetToolLife).
+export function mayResetTools(role: Role): boolean {
+  return role === 'operator' || role === 'programmer' || role === 'admin';
+}
