@@ -1,6 +1,7 @@
 #include "dnc/api_events.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <variant>
 
 #include <boost/beast/websocket.hpp>
@@ -121,6 +122,9 @@ void EventHub::add(std::shared_ptr<EventSession> s) {
 void EventHub::publish(std::string_view type, nlohmann::json event) {
   event["type"] = std::string(type);
   event["seq"] = ++seq_;
+  event["server_us"] = std::chrono::duration_cast<std::chrono::microseconds>(
+                           std::chrono::system_clock::now().time_since_epoch())
+                           .count();
   const auto text = std::make_shared<const std::string>(
       event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   std::erase_if(sessions_, [](const std::weak_ptr<EventSession>& w) { return w.expired(); });

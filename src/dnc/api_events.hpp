@@ -58,7 +58,9 @@ class EventHub {
 
   void listen(EventListener l) { listeners_.push_back(std::move(l)); }
 
-  // `event` gets a "type" and a "seq" (one more per event).
+  // `event` gets a "type", a "seq" (one more per event) and "server_us", the
+  // server's clock when it was sent (microseconds since 1970, UTC): a page
+  // times a running job by the server's clock, not its own.
   void publish(std::string_view type, nlohmann::json event);
   void close_all();
 

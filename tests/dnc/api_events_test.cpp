@@ -1,5 +1,7 @@
 // `GET /api/events`: a WebSocket that carries one JSON event per change,
 // open only with a valid token.
+#include <chrono>
+
 #include <gtest/gtest.h>
 
 #include "server_fixture.hpp"
@@ -22,6 +24,12 @@ TEST(ApiEvents, AnUploadAndAStateChangeAreEventsOnTheWebSocket) {
     req.set(boost::beast::http::field::authorization, "Bearer " + boss);
   }));
   ws.handshake("127.0.0.1", "/api/events");
+  const auto clock_us = [] {
+    return std::chrono::duration_cast<std::chrono::microseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+  };
+  const std::int64_t before_us = clock_us();
   const std::string text = "G0 X1\nM2\n";
   const auto up = c.post("/api/programs", {{"name", "O800"}, {"text", text}}, boss).json();
   c.post("/api/programs/O800/revisions/" + up["revision"].get<std::string>() + "/state",
@@ -37,6 +45,13 @@ TEST(ApiEvents, AnUploadAndAStateChangeAreEventsOnTheWebSocket) {
   EXPECT_EQ(events[1]["type"], "revision.state");
   EXPECT_EQ(events[1]["state"], "checked");
   EXPECT_EQ(events[1]["seq"].get<int>(), events[0]["seq"].get<int>() + 1);
+  // Each event says when the server sent it, by its clock (here the test's).
+  const std::int64_t after_us = clock_us();
+  for (const nlohmann::json& e : events) {
+    EXPECT_GE(e["server_us"].get<std::int64_t>(), before_us) << e;
+    EXPECT_LE(e["server_us"].get<std::int64_t>(), after_us) << e;
+  }
+  EXPECT_LE(events[0]["server_us"].get<std::int64_t>(), events[1]["server_us"].get<std::int64_t>());
 }
 
 TEST(ApiEvents, TheWebSocketIsRefusedWithoutAValidToken) {
