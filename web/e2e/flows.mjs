@@ -161,6 +161,18 @@ async function dripAndStop(page, h, t, control) {
   t.check(/Drip feed long-drip to romi-1\?/.test(await dialog.innerText()), 'Drip feed asks for confirmation');
   await dialog.getByRole('button', { name: 'Drip feed' }).click();
   await page.waitForFunction(() => Number(document.querySelector('#machine-romi-1 .job')?.dataset.bytesSent) > 0);
+  // The check's cycle time of long-drip is known: what is left is by it.
+  const timed = /^; \d+ s elapsed, about (\d+ min )?\d+ s left by the check's cycle time$/;
+  let clock = '';
+  try {
+    await page.waitForFunction((re) => new RegExp(re).test(document.querySelector('#machine-romi-1 .job-time')?.textContent ?? ''), timed.source, { timeout: 10000 });
+    clock = await page.locator('#machine-romi-1 .job-time').innerText();
+    await page.waitForFunction((was) => document.querySelector('#machine-romi-1 .job-time')?.textContent !== was, clock, { timeout: 5000 });
+  } catch {
+    clock = `${clock} → ${await page.locator('#machine-romi-1 .job-time').innerText()}`;
+  }
+  const later = await page.locator('#machine-romi-1 .job-time').innerText();
+  t.check(timed.test(clock) && timed.test(later) && later !== clock, `the running drip feed's clock moves ("${clock.slice(2)}", then "${later.slice(2)}")`);
   await removeQueued(page, h, t, rev);
   await page.getByRole('button', { name: 'Stop the job' }).click();
   await page.getByRole('dialog').getByRole('button', { name: 'Stop the job' }).click();
@@ -213,6 +225,10 @@ export async function machineFlow(page, h, t, first) {
     const got = text(control.received);
     t.check(full && job.sent === job.total && /100 %/.test(await page.locator('#machine-romi-1 .progress-text').innerText()), `the progress bar reaches 100 % (${job.sent} / ${job.total} bytes; seen ${[...seen].sort((a, b) => a - b).join(', ')} %)`);
     t.check(control.mark() === job.total && got.includes('N0230 M02#'), `the control received every byte (${control.mark()} of ${job.total})`);
+    const ended = (await h.api('oper', 'GET', `/api/jobs/${id}`)).json;
+    const took = await page.locator('#machine-romi-1 .job-time').innerText();
+    const want = Math.round((ended.ended_at_us - ended.started_at_us) / 1e6);
+    t.check(took === `; took ${want} s` || took === `; took ${Math.floor(want / 60)} min ${want % 60} s`, `the ended send says how long it took ("${took.slice(2)}", the server's ${want} s)`);
     await t.shot(page, 'web-machines.png');
 
     const parts = Number(await page.locator('#machine-romi-1 dd.parts').innerText());

@@ -73,6 +73,9 @@ export interface Job {
   block: number | null;
   reason: string;
   alarm: boolean;
+  created_at_us: number;
+  started_at_us: number | null; // by the server's clock
+  ended_at_us: number | null;
 }
 
 export interface Machine {

@@ -9,14 +9,25 @@ import { h, show, status } from './dom';
 import { jobForm, type JobForm } from './machine_jobs';
 import { qualityPanel, type QualityPanel, type QualityRecord } from './machine_quality';
 import { toolsPanel, type ToolsPanel } from './machine_tools';
-import { utilisationPanel, type UtilisationPanel } from './machine_utilisation';
+import { duration, utilisationPanel, type UtilisationPanel } from './machine_utilisation';
 import { mayRecordQuality, mayResetTools, mayRunJobs, sessionUser } from './roles';
 
 let socket: WebSocket | null = null;
+let ticker = 0;
 
 export function leaveMachines(): void {
   socket?.close();
   socket = null;
+  window.clearInterval(ticker);
+}
+
+// The server's clock less this browser's (ms), from the last event's
+// `server_us`: a running job's elapsed time is the server's, whatever the
+// clock of the PC the page runs on says.
+let skewMs = 0;
+
+function serverNowMs(): number {
+  return Date.now() + skewMs;
 }
 
 // What the page knows of one machine: the last answer of the server and
@@ -70,7 +81,34 @@ function percent(j: Job): number {
   return j.bytes_total > 0 ? Math.floor((100 * j.bytes_sent) / j.bytes_total) : 0;
 }
 
-function jobLine(name: string, j: Job | null): HTMLElement {
+// What is left of a running job: a drip feed by the check's cycle time of
+// its program (the machine cuts as it reads, so the bytes left stand for
+// the time left), a send (or a drip feed without an estimate) by its rate
+// so far.
+function leftText(j: Job, elapsed: number, cycle: number | null): string {
+  if (j.bytes_total <= 0) return '';
+  if (j.mode === 'drip' && cycle !== null && cycle > 0) {
+    return `, about ${duration((cycle * (j.bytes_total - j.bytes_sent)) / j.bytes_total)} left by the check's cycle time`;
+  }
+  if (j.bytes_sent <= 0 || elapsed < 1) return '';
+  return `, about ${duration((elapsed * (j.bytes_total - j.bytes_sent)) / j.bytes_sent)} left at the rate so far`;
+}
+
+// "1 min 12 s elapsed, about 2 min left …" while it runs; "took 9 s" once ended.
+function timeText(j: Job, cycle: number | null): string {
+  if (j.started_at_us === null || j.started_at_us === undefined) return '';
+  if (j.ended_at_us !== null && j.ended_at_us !== undefined) return `; took ${duration((j.ended_at_us - j.started_at_us) / 1e6)}`;
+  const elapsed = Math.max(0, (serverNowMs() - j.started_at_us / 1000) / 1000);
+  return `; ${duration(elapsed)} elapsed${leftText(j, elapsed, cycle)}`;
+}
+
+// The check's cycle time of the job's own revision, when known.
+function cycleOf(s: Shown): number | null {
+  const e = s.estimate;
+  return e && s.job && e.program === s.job.program && e.revision === s.job.revision ? e.seconds : null;
+}
+
+function jobLine(name: string, j: Job | null, cycle: number | null): HTMLElement {
   if (!j) return h('p', { class: 'job', text: 'No job yet.' });
   const bar = h('progress', { max: j.bytes_total || 1, value: j.bytes_sent, 'aria-label': `${name}: bytes sent of job ${j.job}` });
   const where = j.block !== null ? `, block ${j.block}` : '';
@@ -80,6 +118,7 @@ function jobLine(name: string, j: Job | null): HTMLElement {
     `Job ${j.job}: ${j.program} (${j.mode === 'drip' ? 'drip feed' : 'send'}, ${j.state}${j.alarm ? ', alarm' : ''}) `,
     bar,
     h('span', { class: 'progress-text', text: ` ${j.bytes_sent} / ${j.bytes_total} bytes (${percent(j)} %)${where}` }),
+    h('span', { class: 'job-time', text: timeText(j, cycle) }),
     j.reason && ENDED.includes(j.state) && j.state !== 'done' ? h('span', { class: 'reason', text: ` — ${j.reason}` }) : null,
   );
 }
@@ -95,7 +134,7 @@ function statusOf(s: Shown): HTMLElement[] {
   ];
   return [
     h('dl', { class: 'summary' }, ...items.flatMap(([k, v, cls]) => [h('dt', { text: k }), h('dd', { class: cls, text: v })])),
-    jobLine(m.name, s.job),
+    jobLine(m.name, s.job, cycleOf(s)),
     m.last_message ? h('p', { class: 'message', text: `Message from the control: ${m.last_message}` }) : h('span'),
   ];
 }
@@ -167,6 +206,14 @@ export async function machinesPage(main: HTMLElement): Promise<void> {
     none.hidden = shown.size > 0;
   };
   listen(shown, live, roster);
+  // A running job's clock moves between its progress events (a drip feed
+  // held by XOFF sends none).
+  ticker = window.setInterval(() => {
+    for (const s of shown.values()) {
+      const span = s.job?.state === 'running' ? s.status.querySelector('.job-time') : null;
+      if (span && s.job) span.textContent = timeText(s.job, cycleOf(s));
+    }
+  }, 1000);
 }
 
 async function refresh(shown: Map<string, Shown>, name: string): Promise<void> {
@@ -185,6 +232,7 @@ interface ServerEvent {
   part_count?: number;
   last_cycle_seconds?: number | null;
   user?: string;
+  server_us?: number;
 }
 
 function listen(shown: Map<string, Shown>, live: HTMLElement, roster: (ev: ServerEvent) => Promise<void>): void {
@@ -196,6 +244,7 @@ function listen(shown: Map<string, Shown>, live: HTMLElement, roster: (ev: Serve
   ws.addEventListener('close', () => socket === ws && (live.textContent = 'Live updates: disconnected (reload the page)'));
   ws.addEventListener('message', (e) => {
     const ev = JSON.parse(String(e.data)) as ServerEvent;
+    if (typeof ev.server_us === 'number') skewMs = ev.server_us / 1000 - Date.now();
     if (ev.type === 'machine.added' || ev.type === 'machine.retired') {
       roster(ev).catch(() => undefined); // a machine retired as soon as added: the next event says so
       return;
