@@ -32,6 +32,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 # The web page's build and browser test (docs/web.md): esbuild, three.js,
-# TypeScript and playwright-core at the versions of web/package-lock.json.
+# TypeScript and Playwright (@playwright/test) at the versions of web/package-lock.json.
 # Playwright drives Debian's chromium; it never downloads a browser.
 (cd "$(dirname "$0")/../web" && npm ci --no-audit --no-fund)

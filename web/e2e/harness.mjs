@@ -24,7 +24,7 @@ export function arg(name, fallback) {
 export function skipUnlessReady() {
   const why = !existsSync(CHROMIUM)
     ? `${CHROMIUM} is not installed (scripts/setup.sh installs Debian's chromium)`
-    : !existsSync(join(web, 'node_modules', 'playwright-core'))
+    : !existsSync(join(web, 'node_modules', '@playwright', 'test'))
       ? 'web/node_modules is missing (scripts/setup.sh runs `npm ci` in web/)'
       : '';
   if (!why) return;
@@ -93,7 +93,7 @@ export class Harness {
 
   // Debian's chromium, headless, in a fresh profile.
   async browser() {
-    const { chromium } = await import('playwright-core');
+    const { chromium } = await import('@playwright/test'); // its browser API (its runner: docs/web.md)
     return chromium.launchPersistentContext(join(this.scratch, 'profile'), {
       executablePath: CHROMIUM,
       headless: true,

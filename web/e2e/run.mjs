@@ -1,6 +1,6 @@
 // The page's end-to-end test: a real `usina serve` with a fresh store, the
 // page built into a scratch folder, Debian's chromium driven headless by
-// playwright-core. Logs in, uploads the seed 000 program, checks its
+// Playwright (@playwright/test). Logs in, uploads the seed 000 program, checks its
 // diagnostics and its 3D view, a click on a move, its 2D drawing
 // (drawing.mjs), its stock replayed (stock.mjs), the machines page, a
 // program made from the elliptical pocket's form (forms.mjs), a folder
