@@ -169,12 +169,6 @@ void print_rows(std::string_view title, const std::string& given, const std::vec
   }
 }
 
-void print_json(std::string_view name, json inputs, json results) {
-  const json out = {
-      {"calculation", name}, {"inputs", std::move(inputs)}, {"results", std::move(results)}};
-  fmt::print("{}\n", out.dump(2));
-}
-
 template <typename T>
 bool checked(std::string_view verb, const sim::Checked<T>& r) {
   if (!r) fail(verb, r.error());
@@ -422,11 +416,7 @@ void run_bcd(const BcdFlags& f) {
   const auto r = sim::bcd(f.numeral);
   if (!checked("bcd", r)) return;
   if (f.format == "text") return print_bcd(*r);
-  json digits = json::array();
-  for (const sim::BcdDigit& d : r->digits)
-    digits.push_back({{"digit", d.digit}, {"bits", d.bits}, {"place_value", d.place_value}});
-  print_json("bcd", {{"numeral", f.numeral}},
-             {{"value", r->value}, {"code", r->code}, {"digits", std::move(digits)}});
+  fmt::print("{}\n", sim::calc_json(f.numeral, *r).dump(2));
 }
 
 void add_bcd(CLI::App& calc) {

@@ -65,6 +65,18 @@ class Inputs {
     return fail(key, fmt::format("{} is not a whole number", v->dump()));
   }
 
+  // Text as given, or a whole number of JSON written in decimal.
+  std::string numeral(std::string_view key) {
+    const json* v = find(key);
+    if (v == nullptr) return {};
+    if (v->is_string()) return v->get<std::string>();
+    if (v->is_number_unsigned()) return std::to_string(v->get<std::uint64_t>());
+    if (v->is_number_integer() && v->get<std::int64_t>() >= 0)
+      return std::to_string(v->get<std::int64_t>());
+    fail(key, fmt::format("{} is neither digits as text (\"1250\") nor a whole number", v->dump()));
+    return {};
+  }
+
  private:
   const json* find(std::string_view key) {
     if (!error_.empty()) return nullptr;
@@ -129,6 +141,15 @@ Checked<json> cutting_from(const json& given) {
   return run(read, in, cutting);
 }
 
+Checked<json> bcd_from(const json& given) {
+  Inputs read(given, {"numeral"});
+  const std::string numeral = read.numeral("numeral");
+  if (!read.error().empty()) return tl::unexpected(read.error());
+  auto r = bcd(numeral);
+  if (!r) return tl::unexpected(r.error());
+  return calc_json(numeral, *r);
+}
+
 }  // namespace
 
 json calc_json(const OpenLoopInput& in, const OpenLoop& r) {
@@ -191,13 +212,22 @@ json calc_json(const CuttingInput& in, const Cutting& r) {
                 {{"spindle_rpm", r.spindle_rpm}, {"feed_mm_per_min", or_null(r.feed_mm_per_min)}});
 }
 
+json calc_json(std::string_view numeral, const Bcd& r) {
+  json digits = json::array();
+  for (const BcdDigit& d : r.digits)
+    digits.push_back({{"digit", d.digit}, {"bits", d.bits}, {"place_value", d.place_value}});
+  return answer("bcd", {{"numeral", numeral}},
+                {{"value", r.value}, {"code", r.code}, {"digits", std::move(digits)}});
+}
+
 Checked<json> calc_from_json(std::string_view name, const json& inputs) {
   if (name == "open-loop") return open_loop_from(inputs);
   if (name == "closed-loop") return closed_loop_from(inputs);
   if (name == "precision") return precision_from(inputs);
   if (name == "cutting") return cutting_from(inputs);
+  if (name == "bcd") return bcd_from(inputs);
   return tl::unexpected(
-      fmt::format("no calculator `{}`: open-loop, closed-loop, precision or cutting", name));
+      fmt::format("no calculator `{}`: open-loop, closed-loop, precision, cutting or bcd", name));
 }
 
 }  // namespace usina::sim

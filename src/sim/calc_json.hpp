@@ -17,11 +17,14 @@ nlohmann::json calc_json(const OpenLoopInput& in, const OpenLoop& r);
 nlohmann::json calc_json(const ClosedLoopInput& in, const ClosedLoop& r);
 nlohmann::json calc_json(const PrecisionInput& in, const Precision& r);
 nlohmann::json calc_json(const CuttingInput& in, const Cutting& r);
+// `numeral` as it was given (leading zeros are digits of the code).
+nlohmann::json calc_json(std::string_view numeral, const Bcd& r);
 
-// The calculation `name` (open-loop, closed-loop, precision or cutting) of
-// `inputs`, a JSON object of the input field names: the whole answer, or
-// the message of the first input missing, unknown, not a number or not whole,
-// or the calculation's own.
+// The calculation `name` (open-loop, closed-loop, precision, cutting or
+// bcd) of `inputs`, a JSON object of the input field names: the whole
+// answer, or the message of the first input missing, unknown, not a number
+// or not whole, or the calculation's own. bcd's `numeral` is text ("0125":
+// its zeros are digits) or a whole number of JSON.
 Checked<nlohmann::json> calc_from_json(std::string_view name, const nlohmann::json& inputs);
 
 }  // namespace usina::sim

@@ -43,10 +43,22 @@ TEST(ApiCalc, BadInputsAndUnknownCalculatorsAre400WithTheMessage) {
   const test::Reply r = c.post("/api/calc/open-loop", half, oper);
   EXPECT_EQ(r.status, 400);
   EXPECT_NE(r.body.find("steps_per_rev: 7.5 is not a whole number"), std::string::npos) << r.body;
-  const test::Reply none = c.post("/api/calc/bcd", json::object(), oper);
+  const test::Reply none = c.post("/api/calc/surfacing", json::object(), oper);
   EXPECT_EQ(none.status, 400);
   EXPECT_NE(none.body.find("no calculator"), std::string::npos) << none.body;
   EXPECT_EQ(c.post("/api/calc/open-loop", kExample71).status, 401);
+}
+
+TEST(ApiCalc, BcdAsTheCommandLinePrintsIt) {
+  test::RunningServer s;
+  s.start();
+  const test::ApiClient c = s.client();
+  const std::string oper = c.log_in("oper", test::kPassword);
+  const test::Reply r = c.post("/api/calc/bcd", {{"numeral", "1250"}}, oper);
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json()["results"]["code"], "0001 0010 0101 0000");
+  const test::Reply bad = c.post("/api/calc/bcd", {{"numeral", "1.5"}}, oper);
+  EXPECT_EQ(bad.status, 400);
 }
 
 }  // namespace

@@ -94,8 +94,33 @@ TEST(CalcJson, TheCalculationsOwnRefusalAndAnUnknownName) {
   EXPECT_NE(error_of("open-loop", flat).find("pitch"), std::string::npos);
   const json twelve_teeth = {{"speed_m_per_min", 100}, {"diameter_mm", 10}, {"teeth", 12}};
   EXPECT_FALSE(error_of("cutting", twelve_teeth).empty());  // teeth without a chip load
-  EXPECT_NE(error_of("bcd", json::object()).find("no calculator `bcd`"), std::string::npos);
+  EXPECT_NE(error_of("surfacing", json::object()).find("no calculator `surfacing`"),
+            std::string::npos);
   EXPECT_NE(error_of("../etc", kExample71).find("no calculator"), std::string::npos);
+}
+
+// Table 7.4: the numeral as text keeps its leading zeros as digits of the
+// code; a whole number of JSON is its decimal digits.
+TEST(CalcJson, BcdOfTextAndOfAWholeNumber) {
+  const auto text = calc_from_json("bcd", {{"numeral", "0125"}});
+  ASSERT_TRUE(text.has_value()) << text.error();
+  EXPECT_EQ((*text)["calculation"], "bcd");
+  EXPECT_EQ((*text)["inputs"]["numeral"], "0125");
+  EXPECT_EQ((*text)["results"]["value"], 125);
+  EXPECT_EQ((*text)["results"]["code"], "0000 0001 0010 0101");
+  ASSERT_EQ((*text)["results"]["digits"].size(), 4u);
+  EXPECT_EQ((*text)["results"]["digits"][1]["place_value"], 100);
+  const auto number = calc_from_json("bcd", {{"numeral", 1250}});
+  ASSERT_TRUE(number.has_value()) << number.error();
+  EXPECT_EQ((*number)["results"]["code"], "0001 0010 0101 0000");
+  EXPECT_EQ(error_of("bcd", json::object()), "numeral is required");
+  EXPECT_EQ(error_of("bcd", {{"numeral", 12.5}}),
+            "numeral: 12.5 is neither digits as text (\"1250\") nor a whole number");
+  EXPECT_EQ(error_of("bcd", {{"numeral", -3}}),
+            "numeral: -3 is neither digits as text (\"1250\") nor a whole number");
+  EXPECT_FALSE(error_of("bcd", {{"numeral", "12a"}}).empty());  // bcd's own refusal
+  EXPECT_FALSE(error_of("bcd", {{"numeral", std::string(20, '9')}}).empty());
+  EXPECT_NE(error_of("bcd", {{"number", "1"}}).find("unknown input `number`"), std::string::npos);
 }
 
 }  // namespace

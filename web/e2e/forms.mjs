@@ -121,4 +121,16 @@ async function axisCalculators(page, t) {
   await page.locator('#positioning-status[role="alert"]').waitFor();
   const said = await page.locator('#positioning-status').innerText();
   t.check(fp === '333.333' && pulses === '10000' && cr === '0.025' && accuracy === '0.0275' && cr8 === '3.92157' && said === 'bits: 8.5 is not a whole number', `the axis calculators give seed 004's examples 7.1 and 7.3 (f_p ${fp} Hz, ${pulses} pulses; CR ${cr} mm, accuracy ${accuracy} mm; 8 bits: CR ${cr8} mm, the register's) and the server's message ("${said}")`);
+
+  // Table 7.4: a number as it is punched, the leading zeros as digits.
+  await page.getByLabel('Calculator', { exact: true }).selectOption('bcd');
+  await page.locator('.calc-results tr[data-result="code"]').waitFor();
+  const code = await result('code');
+  await page.getByLabel(/Whole number/).fill('0070');
+  await page.locator('.calc-results tr[data-result="code"] td', { hasText: '0000 0000 0111 0000' }).waitFor();
+  const digits = await page.locator('.calc-results tr[data-result^="digit-"]').allInnerTexts();
+  await page.getByLabel(/Whole number/).fill('12a');
+  await page.locator('#positioning-status[role="alert"]').waitFor();
+  const bad = await page.locator('#positioning-status').innerText();
+  t.check(code === '0001 0010 0101 0000' && digits.length === 4 && /Digit 7\s+0111\s+× 10\^1/.test(digits[2]) && /12a/.test(bad), `the BCD of 1250 (${code}), of 0070 digit by digit (${digits.map((d) => d.replace(/\s+/g, ' ')).join('; ')}), and a numeral refused ("${bad}")`);
 }

@@ -1,16 +1,18 @@
 // Seed 004's §7.5 calculators of an NC axis on the "New program" page: the
 // open loop (stepper motor), the closed loop (servomotor and encoder) and
-// the precision of an axis. The server computes them (POST /api/calc/NAME,
+// the precision of an axis; and table 7.4's binary-coded decimal (how a
+// number is punched on tape, digit by digit). The server computes them (POST /api/calc/NAME,
 // `usina calc NAME --format json`), so the page and the command line give
 // the same figures and the same messages. Filled with the seed's examples
-// 7.1-7.3, answered as you type.
+// 7.1-7.3 (and 1250 for the BCD), answered as you type.
 import { ApiError, postJson } from './api';
 import { field, h, status } from './dom';
 
 interface Input {
   key: string;
   label: string;
-  value: number;
+  value: number | string;
+  text?: boolean; // sent as typed (a numeral's leading zeros are digits)
 }
 
 interface Calculator {
@@ -32,6 +34,7 @@ const CALCULATORS: Calculator[] = [
     title: 'Precision of an axis (7.5.3)',
     inputs: [PITCH, GEAR, { key: 'steps_per_rev', label: 'Steps or slots per revolution n_s', value: 48 }, { key: 'travel_mm', label: 'Travel L (mm)', value: 1000 }, { key: 'bits', label: 'Register bits B', value: 16 }, { key: 'sigma_mm', label: 'Mechanical error σ (mm)', value: 0.005 }],
   },
+  { name: 'bcd', title: 'Binary-coded decimal of a number (table 7.4)', inputs: [{ key: 'numeral', label: 'Whole number (digits, at most 19)', value: '1250', text: true }] },
 ];
 
 // Each result in words, with its formula and unit (the seed's symbols).
@@ -52,7 +55,25 @@ const RESULTS: Record<string, [string, string]> = {
   limited_by: ['Limited by', ''],
   accuracy_mm: ['Accuracy CR / 2 + 3σ', 'mm'],
   repeatability_mm: ['Repeatability ± 3σ', 'mm'],
+  value: ['Value (the sum of the digits\' place values)', ''],
+  code: ['BCD code, four bits a digit', ''],
 };
+
+interface BcdDigit {
+  digit: number;
+  bits: string;
+  place_value: number;
+}
+
+// A result's rows: one per figure, and one per digit of a BCD code.
+function rows(results: Record<string, unknown>): HTMLElement[] {
+  return Object.entries(results).flatMap(([k, v]) => {
+    if (k === 'digits' && Array.isArray(v)) {
+      return (v as BcdDigit[]).map((d, i) => h('tr', { 'data-result': `digit-${i}` }, h('th', { scope: 'row', text: `Digit ${d.digit}` }), h('td', { text: d.bits }), h('td', { text: `× 10^${v.length - 1 - i}` })));
+    }
+    return [h('tr', { 'data-result': k }, h('th', { scope: 'row', text: RESULTS[k]?.[0] ?? k }), h('td', { text: figure(v) }), h('td', { text: RESULTS[k]?.[1] ?? '' }))];
+  });
+}
 
 function figure(v: unknown): string {
   return typeof v === 'number' ? String(Number(v.toPrecision(6))) : String(v);
@@ -70,14 +91,14 @@ export function positioningPanel(): HTMLElement {
   const compute = async () => {
     const n = ++asked;
     const c = CALCULATORS.find((x) => x.name === which.value) as Calculator;
-    const body: Record<string, number> = {};
-    for (const { input, control } of inputs) if (control.value.trim() !== '') body[input.key] = Number(control.value);
+    const body: Record<string, number | string> = {};
+    for (const { input, control } of inputs) if (control.value.trim() !== '') body[input.key] = input.text ? control.value.trim() : Number(control.value);
     try {
       const r = await postJson<{ results: Record<string, unknown> }>(`/api/calc/${c.name}`, body);
       if (n !== asked) return;
       said.removeAttribute('role');
       said.textContent = `${c.title}: computed by the server (usina calc ${c.name}).`;
-      table.replaceChildren(...Object.entries(r.results).map(([k, v]) => h('tr', { 'data-result': k }, h('th', { scope: 'row', text: RESULTS[k]?.[0] ?? k }), h('td', { text: figure(v) }), h('td', { text: RESULTS[k]?.[1] ?? '' }))));
+      table.replaceChildren(...rows(r.results));
     } catch (e) {
       if (n !== asked) return;
       table.replaceChildren();
@@ -91,7 +112,7 @@ export function positioningPanel(): HTMLElement {
   };
   const build = () => {
     const c = CALCULATORS.find((x) => x.name === which.value) as Calculator;
-    inputs = c.inputs.map((input) => ({ input, control: h('input', { type: 'number', step: 'any', inputmode: 'decimal', value: input.value, name: input.key }) }));
+    inputs = c.inputs.map((input) => ({ input, control: input.text ? h('input', { type: 'text', inputmode: 'numeric', value: input.value, name: input.key, autocomplete: 'off' }) : h('input', { type: 'number', step: 'any', inputmode: 'decimal', value: input.value, name: input.key }) }));
     fields.replaceChildren(...inputs.map(({ input, control }) => field(input.label, control, `axis-${input.key}`)));
     void compute();
   };
