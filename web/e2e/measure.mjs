@@ -18,9 +18,11 @@ function chromiumMegabytes(profile) {
     try {
       const stat = readFileSync(`/proc/${pid}/stat`, 'utf8');
       const ppid = stat.slice(stat.lastIndexOf(')') + 2).split(' ')[1];
-      const rss = /VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${pid}/status`, 'utf8'));
+      const status = readFileSync(`/proc/${pid}/status`, 'utf8');
+      const rss = /VmRSS:\s+(\d+)/.exec(status);
+      const anon = /RssAnon:\s+(\d+)/.exec(status);
       const cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
-      return { pid, ppid, kb: rss ? Number(rss[1]) : 0, cmd };
+      return { pid, ppid, kb: rss ? Number(rss[1]) : 0, anon: anon ? Number(anon[1]) : 0, cmd };
     } catch {
       return null;
     }
@@ -31,8 +33,14 @@ function chromiumMegabytes(profile) {
     for (const p of procs) if (!tree.has(p.pid) && tree.has(p.ppid)) tree.add(p.pid), (grew = true);
   }
   const kb = procs.filter((p) => tree.has(p.pid)).reduce((a, p) => a + p.kb, 0);
-  const renderer = procs.filter((p) => tree.has(p.pid) && p.cmd.includes('--type=renderer')).reduce((a, p) => a + p.kb, 0);
-  return { all: (kb / 1024).toFixed(0), renderer: (renderer / 1024).toFixed(0) };
+  const renderers = procs.filter((p) => tree.has(p.pid) && p.cmd.includes('--type=renderer'));
+  const renderer = renderers.reduce((a, p) => a + p.kb, 0);
+  // Its own memory: RssAnon leaves out the shared files mapped (chromium's
+  // own code and libraries, which every tab shares).
+  const own = renderers.reduce((a, p) => a + p.anon, 0);
+  // The GPU process (SwiftShader here) holds the page's WebGL buffers.
+  const gpu = procs.filter((p) => tree.has(p.pid) && p.cmd.includes('--type=gpu-process')).reduce((a, p) => a + p.anon, 0);
+  return { all: (kb / 1024).toFixed(0), renderer: (renderer / 1024).toFixed(0), own: Math.round(own / 1024), gpu: Math.round(gpu / 1024) };
 }
 
 try {
@@ -78,6 +86,10 @@ try {
   page.setDefaultTimeout(120000);
   await page.goto(`${base}/`);
   await page.evaluate((t) => sessionStorage.setItem('usina.token', t), token);
+  await page.goto(`${base}/#/library`);
+  await page.locator('#library-table[aria-busy="false"]').waitFor();
+  const before = chromiumMegabytes(harness.scratch);
+  console.log(`page: before the program (the library shown): the renderer ${before.renderer} MB resident, ${before.own} MB its own (RssAnon); the GPU process ${before.gpu} MB its own`);
   t0 = performance.now();
   await page.goto(`${base}/#/program/BIG/${rev}`);
   await page.waitForFunction(() => Number(document.getElementById('viewer')?.dataset.vertices) > 1);
@@ -94,7 +106,7 @@ try {
   const metrics = (await cdp.send('Performance.getMetrics')).metrics;
   const heap = metrics.find((m) => m.name === 'JSHeapUsedSize').value;
   const mem = chromiumMegabytes(harness.scratch);
-  console.log(`page: JavaScript heap ${(heap / 1048576).toFixed(1)} MB (typed arrays aside); chromium resident ${mem.all} MB in all, the page's renderer ${mem.renderer} MB`);
+  console.log(`page: JavaScript heap ${(heap / 1048576).toFixed(1)} MB (typed arrays aside); chromium resident ${mem.all} MB in all, the page's renderer ${mem.renderer} MB, ${mem.own} MB its own (RssAnon), ${mem.own - before.own} MB more than before the program; the GPU process ${mem.gpu} MB its own, ${mem.gpu - before.gpu} MB more`);
   t0 = performance.now();
   for (const view of ['Top', 'Front', 'Side', 'Iso', 'Top', 'Front', 'Side', 'Iso', 'Top', 'Iso'])
     await page.getByRole('button', { name: `${view} view` }).click();
