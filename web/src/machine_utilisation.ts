@@ -46,10 +46,12 @@ export function dayLabel(date: string): string {
   return `${d} ${MONTHS[m - 1] ?? '?'}`;
 }
 
+// Rounded to the second first, so 119.7 s is "2 min 0 s", never "1 min 60 s".
 export function duration(s: number): string {
-  if (s < 60) return `${Math.round(s)} s`;
-  if (s < 3600) return `${Math.floor(s / 60)} min ${Math.round(s % 60)} s`;
-  return `${Math.floor(s / 3600)} h ${Math.round((s % 3600) / 60)} min`;
+  const r = Math.round(s);
+  if (r < 60) return `${r} s`;
+  if (r < 3600) return `${Math.floor(r / 60)} min ${r % 60} s`;
+  return `${Math.floor(r / 3600)} h ${Math.floor((r % 3600) / 60)} min`;
 }
 
 export function percent(v: number): string {
