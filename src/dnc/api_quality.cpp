@@ -19,6 +19,7 @@ namespace {
 
 constexpr std::int64_t kDefaultPage = 100;
 constexpr std::int64_t kMaxPage = 1000;
+constexpr std::size_t kMaxCharacteristicBytes = 200;  // as a record's (store_quality.cpp)
 
 HttpResponse bad(const ApiCall& c, const std::string& message) {
   return error_response(c.req, http::status::bad_request, message);
@@ -138,9 +139,15 @@ HttpResponse api_quality(ApiCall& c) {
   const auto limit = query_count(c, "limit");
   if (!before || !limit || *limit > kMaxPage)
     return bad(c, fmt::format("before and limit are whole numbers (limit at most {})", kMaxPage));
+  // Only one characteristic's records: its measurements over time.
+  std::string_view characteristic;
+  if (const auto it = c.target.query.find("characteristic"); it != c.target.query.end())
+    characteristic = it->second;
+  if (characteristic.size() > kMaxCharacteristicBytes)
+    return bad(c, fmt::format("characteristic is at most {} bytes", kMaxCharacteristicBytes));
   // One record more than the page: whether there is a next page at all.
   const std::int64_t page = *limit == 0 ? kDefaultPage : *limit;
-  auto records = quality_records(c.ctx.store, c.params[0], *before, page + 1);
+  auto records = quality_records(c.ctx.store, c.params[0], *before, page + 1, characteristic);
   if (!records) return error_response(c.req, status_of(records.error()), records.error().message);
   const bool more = static_cast<std::int64_t>(records->size()) > page;
   if (more) records->pop_back();

@@ -96,12 +96,21 @@ StoreResult<QualityRecord> record_quality(Store& store, const Actor& actor, Qual
 }
 
 StoreResult<std::vector<QualityRecord>> quality_records(Store& store, std::string_view machine,
-                                                        std::int64_t before, std::int64_t limit) {
-  auto rows = store.db().query(
+                                                        std::int64_t before, std::int64_t limit,
+                                                        std::string_view characteristic) {
+  constexpr std::string_view kColumns =
       "SELECT id, at, by_user, characteristic, measured, nominal, min_value, max_value, unit, "
-      "part, program, job, note FROM quality_records WHERE machine = $1 AND id < $2 "
-      "ORDER BY id DESC LIMIT $3",
-      {machine, before > 0 ? before : std::numeric_limits<std::int64_t>::max(), limit});
+      "part, program, job, note FROM quality_records WHERE machine = $1 AND id < $2 ";
+  const std::int64_t below = before > 0 ? before : std::numeric_limits<std::int64_t>::max();
+  // Two statements rather than `$4 = '' OR ...`: PostgreSQL cannot tell the
+  // type of a parameter compared only with a literal.
+  auto rows =
+      characteristic.empty()
+          ? store.db().query(fmt::format("{}ORDER BY id DESC LIMIT $3", kColumns),
+                             {machine, below, limit})
+          : store.db().query(
+                fmt::format("{}AND characteristic = $4 ORDER BY id DESC LIMIT $3", kColumns),
+                {machine, below, limit, characteristic});
   if (!rows) return tl::unexpected(rows.error());
   std::vector<QualityRecord> out;
   for (const SqlRow& row : *rows) {

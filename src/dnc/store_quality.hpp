@@ -43,8 +43,10 @@ struct QualityRecord {
 StoreResult<QualityRecord> record_quality(Store& store, const Actor& actor, QualityRecord r);
 
 // The machine's records, newest first: at most `limit`, those with an id
-// below `before` when it is not 0 (the next page).
+// below `before` when it is not 0 (the next page); only those of
+// `characteristic` when it is not empty.
 StoreResult<std::vector<QualityRecord>> quality_records(Store& store, std::string_view machine,
-                                                        std::int64_t before, std::int64_t limit);
+                                                        std::int64_t before, std::int64_t limit,
+                                                        std::string_view characteristic = {});
 
 }  // namespace usina::dnc

@@ -61,6 +61,16 @@ TEST_P(QualityOnBothStores, ARecordComesBackExactlyWithItsVerdictNewestFirst) {
   ASSERT_TRUE(next);
   ASSERT_EQ(next->size(), 1u);
   EXPECT_EQ((*next)[0].id, first->id);
+  // One characteristic's records, and their next page.
+  auto bores = quality_records(*store, "m1", 0, 1, "bore A diameter");
+  ASSERT_TRUE(bores) << bores.error().message;
+  ASSERT_EQ(bores->size(), 1u);
+  EXPECT_EQ((*bores)[0].id, second->id);
+  auto older = quality_records(*store, "m1", second->id, 100, "bore A diameter");
+  ASSERT_TRUE(older);
+  ASSERT_EQ(older->size(), 1u);
+  EXPECT_EQ((*older)[0].id, first->id);
+  EXPECT_TRUE(quality_records(*store, "m1", 0, 100, "bore B")->empty());
   auto entries = read_audit(*store, 0, 100);
   ASSERT_TRUE(entries);
   ASSERT_EQ(entries->size(), 4u);
@@ -139,6 +149,12 @@ TEST(ApiQuality, AnOperatorRecordsAndAReaderPagesNewestFirst) {
   const auto whole = c.get(base + "?limit=2", oper).json();
   EXPECT_EQ(whole["records"].size(), 2u);
   EXPECT_TRUE(whole["next_before"].is_null()) << whole.dump();
+  // One characteristic (the name %-escaped in the query), and one too long.
+  const auto bore = c.get(base + "?characteristic=bore%20A%20diameter", oper);
+  ASSERT_EQ(bore.status, 200) << bore.body;
+  ASSERT_EQ(bore.json()["records"].size(), 1u);
+  EXPECT_EQ(bore.json()["records"][0]["measured"], 20.025);
+  EXPECT_EQ(c.get(base + "?characteristic=" + std::string(201, 'x'), oper).status, 400);
 }
 
 TEST(ApiQuality, BadBodiesAre400AnUnknownMachine404) {

@@ -73,6 +73,16 @@ export async function qualityFlow(page, h, { check, shot }) {
   const zoomed = await fitsAtZoom(page, 'the machines page with 27 quality records and the form');
   check(zoomed.ok, zoomed.text);
 
+  // One characteristic's measurements, then all again.
+  const counter = page.locator('#quality-romi-1 > p.status');
+  await page.getByLabel('Show only the characteristic').fill('bore A diameter');
+  await counter.filter({ hasText: 'of bore A diameter' }).waitFor();
+  const only = await page.locator('#quality-romi-1-table tbody th').allInnerTexts();
+  const onlySaid = await counter.innerText();
+  await page.getByLabel('Show only the characteristic').fill('');
+  await counter.filter({ hasText: /^20 records shown; more are older\.$/ }).waitFor();
+  check(only.length === 2 && only.every((c) => c === 'bore A diameter') && onlySaid === '2 records of bore A diameter shown.', `the records of one characteristic ("${onlySaid}"), and all again`);
+
   await h.addUser('progr', 'programmer');
   await logInAs(page, 'progr');
   await openMachines(page);

@@ -1,11 +1,12 @@
 // A machine's quality records (docs/dnc-server.md, "Quality records"): the
 // newest first, a page at a time ("More" asks for the records `before` the
 // last shown), each out-of-tolerance value marked NOT OK in words, not
-// only in colour; and, for the roles that may record (operator, approver,
+// only in colour; a filter to one characteristic (its measurements over
+// time, `?characteristic=`); and, for the roles that may record (operator, approver,
 // admin), a form checked as it is typed, with the server's 400 shown as it
 // says it.
 import { enc, getJson } from './api';
-import { h } from './dom';
+import { field, h } from './dom';
 import { qualityForm } from './quality_form';
 
 export interface QualityRecord {
@@ -83,19 +84,34 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
   const empty = h('p', { class: 'note', text: 'No quality records yet.', hidden: true }); // shown once read
   const more = h('button', { type: 'button', text: 'More records', hidden: true, 'aria-controls': `${id}-table` });
   const said = h('p', { class: 'status', 'aria-live': 'polite' });
+  const names = h('datalist', { id: `${id}-names` });
+  const only = h('input', { type: 'search', list: `${id}-names`, autocomplete: 'off', maxlength: 200 });
+  const filter = field('Show only the characteristic', only, `${id}-only`);
+  const known = new Set<string>();
+  const remember = (c: string) => {
+    if (known.has(c)) return;
+    known.add(c);
+    names.append(h('option', { value: c }));
+  };
   let before: number | null = null;
+  let wanted = ''; // the characteristic shown, '' for all
   const show = () => {
     const n = shownIds.size;
-    said.textContent = n ? `${n} ${n === 1 ? 'record' : 'records'} shown${more.hidden ? '' : '; more are older'}.` : '';
+    const of = wanted ? ` of ${wanted}` : '';
+    said.textContent = n ? `${n} ${n === 1 ? 'record' : 'records'}${of} shown${more.hidden ? '' : '; more are older'}.` : wanted ? `No records of ${wanted}.` : '';
     scroller.hidden = shownIds.size === 0;
-    empty.hidden = shownIds.size !== 0;
+    empty.hidden = shownIds.size !== 0 || wanted !== '';
   };
+  let asked = 0;
   const load = async () => {
+    const n = ++asked;
     more.setAttribute('aria-busy', 'true');
     try {
-      const q = before === null ? '' : `&before=${before}`;
+      const q = (before === null ? '' : `&before=${before}`) + (wanted ? `&characteristic=${enc(wanted)}` : '');
       const page = await getJson<{ records: QualityRecord[]; next_before: number | null }>(`/api/machines/${enc(machine)}/quality?limit=${PAGE}${q}`);
+      if (n !== asked) return; // the filter changed meanwhile
       for (const r of page.records) {
+        remember(r.characteristic);
         if (shownIds.has(r.id)) continue; // recorded while this page was read
         shownIds.add(r.id);
         body.append(row(r));
@@ -111,11 +127,24 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
     }
   };
   more.addEventListener('click', () => void load());
+  let typing = 0;
+  only.addEventListener('input', () => {
+    window.clearTimeout(typing);
+    typing = window.setTimeout(() => {
+      if (only.value.trim() === wanted) return;
+      wanted = only.value.trim();
+      shownIds.clear();
+      body.replaceChildren();
+      before = null;
+      void load();
+    }, 300);
+  });
   void load();
   const panel: QualityPanel = {
-    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), scroller, empty, more, said),
+    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), filter, names, scroller, empty, more, said),
     add(r: QualityRecord) {
-      if (shownIds.has(r.id)) return;
+      remember(r.characteristic);
+      if (shownIds.has(r.id) || (wanted && r.characteristic !== wanted)) return;
       shownIds.add(r.id);
       body.prepend(row(r));
       show();
