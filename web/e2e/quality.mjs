@@ -79,9 +79,18 @@ export async function qualityFlow(page, h, { check, shot }) {
   await counter.filter({ hasText: 'of bore A diameter' }).waitFor();
   const only = await page.locator('#quality-romi-1-table tbody th').allInnerTexts();
   const onlySaid = await counter.innerText();
+  // Its run chart: the two values in order, the one past max a square.
+  const run = page.locator('#quality-romi-1-run');
+  const values = await run.locator('.point').evaluateAll((ps) => ps.map((p) => `${p.tagName}:${p.dataset.value}`));
+  const labels = await run.locator('text').allTextContents();
+  const desc = await run.locator('desc').textContent();
+  await page.evaluate(() => document.getElementById('quality-romi-1').scrollIntoView({ block: 'start' }));
+  await shot(page, 'web-quality-run.png', false);
   await page.getByLabel('Show only the characteristic').fill('');
   await counter.filter({ hasText: /^20 records shown; more are older\.$/ }).waitFor();
+  const gone = await run.count();
   check(only.length === 2 && only.every((c) => c === 'bore A diameter') && onlySaid === '2 records of bore A diameter shown.', `the records of one characteristic ("${onlySaid}"), and all again`);
+  check(values.join(' ') === 'rect:20.03 circle:20.012' && labels.includes('max 20.021 mm') && labels.includes('nominal = min 20 mm') && /^2 measurements from .+; 1 outside the limits; the last 20\.012 mm\.$/.test(desc) && gone === 0, `its run chart: ${values.join(', ')} oldest first, the one past max a square, the limits drawn ("${desc}"); gone with the filter`);
 
   await h.addUser('progr', 'programmer');
   await logInAs(page, 'progr');

@@ -8,6 +8,7 @@
 import { enc, getJson } from './api';
 import { field, h } from './dom';
 import { qualityForm } from './quality_form';
+import { runChart } from './run_chart';
 
 export interface QualityRecord {
   id: number;
@@ -95,12 +96,33 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
   };
   let before: number | null = null;
   let wanted = ''; // the characteristic shown, '' for all
+  const chartHost = h('div', { class: 'chart', hidden: true });
+  let records: QualityRecord[] = []; // those shown, newest first
+  // One characteristic's records shown: their run chart, with the limits
+  // of the newest (a change of limits shows as its points' verdicts).
+  const plot = () => {
+    chartHost.hidden = !wanted || records.length === 0;
+    if (chartHost.hidden) return chartHost.replaceChildren();
+    const newest = records[0];
+    chartHost.replaceChildren(
+      runChart({
+        id: `${id}-run`,
+        title: `${machine}: ${wanted}, the ${records.length} ${records.length === 1 ? 'measurement' : 'measurements'} shown, against the limits of the newest (${limitsText(newest)})`,
+        unit: newest.unit,
+        points: [...records].reverse().map((r) => ({ label: when(r.at_us), value: r.measured, ok: r.ok, text: `${when(r.at_us)}: ${withUnit(r.measured, r.unit)}, ${verdictText(r.ok)}${r.part ? `, part ${r.part}` : ''}` })),
+        min: newest.min,
+        max: newest.max,
+        nominal: newest.nominal,
+      }),
+    );
+  };
   const show = () => {
     const n = shownIds.size;
     const of = wanted ? ` of ${wanted}` : '';
     said.textContent = n ? `${n} ${n === 1 ? 'record' : 'records'}${of} shown${more.hidden ? '' : '; more are older'}.` : wanted ? `No records of ${wanted}.` : '';
     scroller.hidden = shownIds.size === 0;
     empty.hidden = shownIds.size !== 0 || wanted !== '';
+    plot();
   };
   let asked = 0;
   const load = async () => {
@@ -114,6 +136,7 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
         remember(r.characteristic);
         if (shownIds.has(r.id)) continue; // recorded while this page was read
         shownIds.add(r.id);
+        records.push(r);
         body.append(row(r));
       }
       before = page.next_before;
@@ -134,6 +157,7 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
       if (only.value.trim() === wanted) return;
       wanted = only.value.trim();
       shownIds.clear();
+      records = [];
       body.replaceChildren();
       before = null;
       void load();
@@ -141,11 +165,12 @@ export function qualityPanel(machine: string, mayRecord: boolean): QualityPanel 
   });
   void load();
   const panel: QualityPanel = {
-    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), filter, names, scroller, empty, more, said),
+    element: h('section', { class: 'quality', id, 'aria-labelledby': `${id}-h` }, h('h3', { id: `${id}-h`, text: 'Quality records' }), filter, names, chartHost, scroller, empty, more, said),
     add(r: QualityRecord) {
       remember(r.characteristic);
       if (shownIds.has(r.id) || (wanted && r.characteristic !== wanted)) return;
       shownIds.add(r.id);
+      records.unshift(r);
       body.prepend(row(r));
       show();
     },
