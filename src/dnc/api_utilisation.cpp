@@ -2,6 +2,7 @@
 // (store_utilisation.hpp), over a range of calendar days given as
 // `?from=YYYY-MM-DD&to=YYYY-MM-DD` (both inclusive): UTC days, or with
 // `days=local` the days of the machine's shift calendar's zone.
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 
@@ -9,6 +10,7 @@
 
 #include "dnc/api_json.hpp"
 #include "dnc/api_router.hpp"
+#include "dnc/server_machines.hpp"
 #include "dnc/shift_calendar.hpp"
 #include "dnc/store_utilisation.hpp"
 
@@ -203,6 +205,25 @@ HttpResponse api_utilisation(ApiCall& c) {
 
 namespace {
 
+// Its life from the machine's `tool_life` (null without one): the parts and
+// minutes, the share used, and whether it is worn (used 1 or more).
+void add_life(nlohmann::json& out, const ToolLives& lives, const ToolUse& t) {
+  const auto it = lives.find(t.tool);
+  const ToolLifeLimit* life = it == lives.end() ? nullptr : &it->second;
+  // A plain double and a flag: GCC 12 thinks an optional's value read under
+  // its own test may be uninitialised (-Wmaybe-uninitialized, a false alarm).
+  const std::optional<double> share =
+      life ? life_used(*life, t.parts, t.cutting_seconds) : std::nullopt;
+  const bool has_share = share.has_value();
+  const double used = share.value_or(0.0);
+  out["life_parts"] = life && life->parts ? nlohmann::json(*life->parts) : nlohmann::json(nullptr);
+  out["life_cutting_minutes"] = life && life->cutting_minutes
+                                    ? nlohmann::json(*life->cutting_minutes)
+                                    : nlohmann::json(nullptr);
+  out["life_used"] = has_share ? nlohmann::json(used) : nlohmann::json(nullptr);
+  out["worn"] = has_share && used >= 1.0;
+}
+
 nlohmann::json tool_json(const ToolUse& t, std::int64_t range_from_us) {
   nlohmann::json out = {{"tool", t.tool},
                         {"parts", t.parts},
@@ -236,7 +257,8 @@ std::optional<std::int64_t> tool_number(std::string_view text) {
 }  // namespace
 
 HttpResponse api_tool_life(ApiCall& c) {
-  if (c.ctx.machines.find(c.params[0]) == nullptr)
+  const MachineRuntime* machine = c.ctx.machines.find(c.params[0]);
+  if (machine == nullptr)
     return error_response(c.req, http::status::not_found,
                           fmt::format("no machine {}", c.params[0]));
   // Without a range: every part the store knows of, up to today, each tool
@@ -248,9 +270,26 @@ HttpResponse api_tool_life(ApiCall& c) {
   const std::int64_t from_us = range->first * day_us;
   auto life = tool_life(c.ctx.store, c.params[0], from_us, (range->last + 1) * day_us, from_resets);
   if (!life) return error_response(c.req, status_of(life.error()), life.error().message);
+  // A tool with a life that has cut nothing counted yet is listed too, at 0.
+  const ToolLives& lives = machine->config.tool_life;
+  std::vector<ToolUse> uses = std::move(life->tools);
+  for (const auto& [tool, limit] : lives) {
+    (void)limit;
+    const bool listed =
+        std::any_of(uses.begin(), uses.end(), [&](const ToolUse& u) { return u.tool == tool; });
+    if (!listed) {
+      ToolUse unused;
+      unused.tool = static_cast<int>(tool);
+      uses.push_back(unused);
+    }
+  }
+  std::sort(uses.begin(), uses.end(),
+            [](const ToolUse& a, const ToolUse& b) { return a.tool < b.tool; });
   nlohmann::json tools = nlohmann::json::array();
-  for (const ToolUse& t : life->tools)
+  for (const ToolUse& t : uses) {
     tools.push_back(tool_json(t, from_us));
+    add_life(tools.back(), lives, t);
+  }
   return json_response(c.req, http::status::ok,
                        {{"machine", c.params[0]},
                         {"from", date_text(range->first)},

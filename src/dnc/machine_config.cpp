@@ -15,8 +15,9 @@
 namespace usina::dnc {
 namespace {
 
-// machine_class, profile, the data patterns and calendar are the server's (server_config.cpp).
-constexpr std::array<std::string_view, 26> kKeys{"name",
+// machine_class, profile, the data patterns, calendar and tool_life are the server's
+// (server_config.cpp).
+constexpr std::array<std::string_view, 27> kKeys{"name",
                                                  "dialect",
                                                  "port",
                                                  "baud",
@@ -41,7 +42,8 @@ constexpr std::array<std::string_view, 26> kKeys{"name",
                                                  "profile",
                                                  "part_count_pattern",
                                                  "cycle_time_pattern",
-                                                 "calendar"};
+                                                 "calendar",
+                                                 "tool_life"};
 
 class Reader {
  public:

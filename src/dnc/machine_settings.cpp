@@ -13,7 +13,7 @@
 namespace usina::dnc {
 namespace {
 
-constexpr std::array<std::string_view, 2> kFileOnly{"profile", "calendar"};
+constexpr std::array<std::string_view, 3> kFileOnly{"profile", "calendar", "tool_life"};
 
 // The value of `key` as TOML, or why it cannot be one.
 tl::expected<void, std::string> put(toml::table& t, const std::string& key,

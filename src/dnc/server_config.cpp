@@ -10,8 +10,9 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "dnc/config_report.hpp"
 #include "dnc/machine_config.hpp"
-#include "sim/profile_keys.hpp"
+#include "dnc/tool_life_config.hpp"
 
 namespace usina::dnc {
 namespace {
@@ -33,14 +34,7 @@ bool byte_limit_ok(const std::optional<std::int64_t>& v) {
 
 void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source_region& at,
           std::string message) {
-  core::Diagnostic d;
-  d.code = core::Code::DncConfig;
-  d.severity = core::Severity::Error;
-  d.loc.file = file_id;
-  d.loc.line = at.begin.line;
-  d.loc.col = at.begin.column;
-  d.message = std::move(message);
-  diags.report(std::move(d));
+  config_error(diags, file_id, at, std::move(message));
 }
 
 // The tables of the file and their keys ([[machine]]'s are machine_config's).
@@ -65,17 +59,7 @@ std::span<const std::string_view> table_keys(std::string_view table) {
 
 void unknown_key(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::key& key,
                  std::string_view where, std::span<const std::string_view> keys) {
-  const std::string_view near = sim::nearest_key(key.str(), keys);
-  core::Diagnostic d;
-  d.code = core::Code::UnknownDncKey;
-  d.severity = core::Severity::Warning;
-  d.loc.file = file_id;
-  d.loc.line = key.source().begin.line;
-  d.loc.col = key.source().begin.column;
-  d.message = fmt::format("unknown key `{}` {} is not read; {}", key.str(), where,
-                          near.empty() ? std::string("docs/dnc-server.md lists the keys")
-                                       : fmt::format("did you mean `{}`?", near));
-  diags.report(std::move(d));
+  config_unknown_key(diags, file_id, key, where, keys);
 }
 
 // A misspelt table or key was ignored without a word (`max_uplaod` left the
@@ -284,6 +268,32 @@ bool read_calendars(const toml::table& root, ServerConfig& c, std::uint32_t file
   return ok;
 }
 
+// Each machine's own `tool_life` table.
+bool read_machine_tool_lives(const toml::table& root, ServerConfig& c, std::uint32_t file_id,
+                             core::DiagnosticSink& diags) {
+  bool ok = true;
+  const toml::array* list = root["machine"].as_array();
+  for (std::size_t i = 0; i < c.machines.size(); ++i) {
+    ServerMachine& m = c.machines[i];
+    const toml::table* t = list != nullptr ? list->get(i)->as_table() : nullptr;
+    const toml::node* own = t != nullptr ? t->get("tool_life") : nullptr;
+    if (own == nullptr) continue;
+    const toml::table* table = own->as_table();
+    if (table == nullptr) {
+      fail(diags, file_id, own->source(),
+           fmt::format("machine `{}`: tool_life must be a table: write [machine.tool_life] "
+                       "under its [[machine]]",
+                       m.link.name));
+      ok = false;
+      continue;
+    }
+    auto lives = read_tool_lives(*table, m.link.name, file_id, diags);
+    if (lives) m.tool_life = std::move(*lives);
+    ok = lives.has_value() && ok;
+  }
+  return ok;
+}
+
 std::optional<std::string> read_file(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) return std::nullopt;
@@ -354,6 +364,7 @@ std::optional<ServerConfig> read_server_config(std::string_view toml_text, std::
   ok = read_web_table(root, c, file_id, diags) && ok;
   ok = read_data_tables(root, c.mtconnect, c.mqtt, file_id, diags) && ok;
   ok = read_calendars(root, c, file_id, diags) && ok;
+  ok = read_machine_tool_lives(root, c, file_id, diags) && ok;
   if (!read_machine_classes(root, c, file_id, diags) || !ok) return std::nullopt;
   return c;
 }

@@ -29,6 +29,7 @@
 #include "dnc/data_config.hpp"
 #include "dnc/link_config.hpp"
 #include "dnc/shift_calendar.hpp"
+#include "dnc/tool_life_config.hpp"
 #include "sim/machine_profile.hpp"
 
 namespace usina::dnc {
@@ -45,6 +46,8 @@ struct ServerMachine {
   // Its shifts (shift_calendar.hpp): its own `calendar` table, else the
   // server's [calendar]; none: utilisation per 24 h day only.
   std::optional<ShiftCalendar> calendar = std::nullopt;
+  // Its `tool_life` table (tool_life_config.hpp): the tools with a life.
+  ToolLives tool_life = {};
   // Added by an admin through the API (store_machines.hpp), not set in the
   // file: the page may change or retire it.
   bool from_store = false;

@@ -41,8 +41,10 @@ inline ServerMachine pty_machine(const std::string& name, const std::string& por
   return m;
 }
 
-// A server with one machine `mill-1` on a pty, its control simulated.
-inline Control start_with_control(RunningServer& s, std::uint32_t baud = 115200) {
+// A server with one machine `mill-1` on a pty, its control simulated (and
+// `lives`, its tools' lives).
+inline Control start_with_control(RunningServer& s, std::uint32_t baud = 115200,
+                                  ToolLives lives = {}) {
   auto pair = open_pty_pair(s.io());
   EXPECT_TRUE(pair) << pair.error();
   Control c;
@@ -53,6 +55,7 @@ inline Control start_with_control(RunningServer& s, std::uint32_t baud = 115200)
   c.sim->start();
   ServerConfig config;
   config.machines.push_back(pty_machine("mill-1", pair->slave_path, baud));
+  config.machines.back().tool_life = std::move(lives);
   s.start(config);
   return c;
 }

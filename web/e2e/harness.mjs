@@ -57,7 +57,9 @@ export class Harness {
         // Shifts the whole day every day in a zone not UTC's, and a holiday
         // three days ago: the utilisation is charted in the zone's days
         // against the shifts, and a day without a shift says so (utilisation.mjs).
-        `\n[machine.calendar]\ntimezone = "${ZONE}"\nshifts = [{days = "mon-sun", start = "00:00", end = "12:00"}, {days = "mon-sun", start = "12:00", end = "24:00"}]\nholidays = ["${HOLIDAY}"]\n`,
+        `\n[machine.calendar]\ntimezone = "${ZONE}"\nshifts = [{days = "mon-sun", start = "00:00", end = "12:00"}, {days = "mon-sun", start = "12:00", end = "24:00"}]\nholidays = ["${HOLIDAY}"]\n` +
+        // A life for two tools: T1 is worn out by the first part (tools.mjs).
+        `\n[machine.tool_life]\nT1 = {parts = 1}\nT2 = {cutting_minutes = 600}\n`,
     );
     const port = await this.serve(['serve', '--data', data, '--config', config, '--listen', '127.0.0.1:0']);
     this.base = `http://127.0.0.1:${port}`;

@@ -16,6 +16,13 @@ export async function toolLifeFlow(page, h, t) {
   const t1 = api.tools.find((x) => x.tool === 1);
   t.check(JSON.stringify(shown) === JSON.stringify(want) && t1 && t1.parts >= 1 && t1.cutting_seconds > 0 && api.tools.some((x) => x.tool === 2), `a row per tool with the server's parts (${shown.join(', ')}; T1 ${t1?.cutting_seconds.toFixed(1)} s cutting)`);
 
+  // Their lives (harness.mjs): T1 one part, T2 600 minutes of cutting.
+  const used = (n) => page.locator(`#tools-romi-1-table tr[data-tool="${n}"] td.used`).innerText();
+  const u1 = await used(1);
+  const u2 = await used(2);
+  const worn = await page.locator('#tools-romi-1-table tr[data-tool="1"]').getAttribute('class');
+  t.check(u1 === '100 %: WORN OUT' && worn === 'worn' && u2 === `${Math.round((100 * api.tools.find((x) => x.tool === 2).cutting_seconds) / 36000)} %` && api.tools.find((x) => x.tool === 1).worn === true, `a tool past its life says so in words (T1 "${u1}", T2 "${u2}")`);
+
   const reset = page.getByRole('button', { name: 'Reset the life of T1' });
   await reset.click();
   let dialog = page.getByRole('dialog');
@@ -41,7 +48,8 @@ export async function toolLifeFlow(page, h, t) {
   const a2 = after.find((x) => x.tool === 2);
   const b2 = api.tools.find((x) => x.tool === 2);
   const parts = await row.locator('td.parts').innerText();
+  const usedAfter = await row.locator('td.used').innerText();
   const log = (await h.api('boss', 'GET', '/api/audit?limit=100000')).json.entries.filter((e) => e.action === 'tool.reset');
-  t.check(parts === '0' && a1.parts === 0 && a1.counted_from === 'reset' && a1.reset_by === 'oper' && a2.parts === b2.parts && log.length === 1 && log[0].actor === 'oper' && log[0].reason === 'new insert' && log[0].subject === 'romi-1/T1', `the reset starts T1's count again (row: ${parts} parts; T2 keeps ${a2.parts}) and the audit log holds it (${log.map((e) => `${e.actor} ${e.subject} "${e.reason}"`).join(', ')})`);
+  t.check(parts === '0' && usedAfter === '0 %' && a1.worn === false && a1.parts === 0 && a1.counted_from === 'reset' && a1.reset_by === 'oper' && a2.parts === b2.parts && log.length === 1 && log[0].actor === 'oper' && log[0].reason === 'new insert' && log[0].subject === 'romi-1/T1', `the reset starts T1's count again (row: ${parts} parts; T2 keeps ${a2.parts}) and the audit log holds it (${log.map((e) => `${e.actor} ${e.subject} "${e.reason}"`).join(', ')})`);
   await page.locator('#tools-romi-1').scrollIntoViewIfNeeded();
 }

@@ -4,7 +4,9 @@
 // it and why; for the roles that may (operator, programmer, admin), a Reset
 // button per tool that asks for confirmation and a reason, which the audit
 // log keeps. Read again when a part is made, a job ends or a tool is reset
-// (from this page or another: the `machine.tool_reset` event).
+// (from this page or another: the `machine.tool_reset` event). A tool with
+// a life (`tool_life` of usina-serve.toml) shows the share of it used, and
+// says in words when it is worn out or near its end.
 import { ApiError, enc, getJson, postJson } from './api';
 import { confirmWithReason } from './confirm';
 import { h } from './dom';
@@ -20,6 +22,25 @@ interface ToolUse {
   reset_at_us: number | null;
   reset_by: string | null;
   reset_reason: string | null;
+  life_parts: number | null;
+  life_cutting_minutes: number | null;
+  life_used: number | null; // 1: worn
+  worn: boolean;
+}
+
+// At this share of its life a tool is "near its end".
+const NEAR_END = 0.9;
+
+function lifeText(t: ToolUse): string {
+  const parts = t.life_parts !== null ? `${t.life_parts} ${t.life_parts === 1 ? 'part' : 'parts'}` : '';
+  const minutes = t.life_cutting_minutes !== null ? `${t.life_cutting_minutes} min cutting` : '';
+  return [parts, minutes].filter(Boolean).join(' or ') || '—';
+}
+
+function usedText(t: ToolUse): string {
+  if (t.life_used === null) return '—';
+  const share = `${Math.round(100 * t.life_used)} %`;
+  return t.worn ? `${share}: WORN OUT` : t.life_used >= NEAR_END ? `${share}: near its end` : share;
 }
 
 interface ToolLife {
@@ -55,7 +76,7 @@ export interface ToolsPanel {
 export function toolsPanel(machine: string, mayReset: boolean): ToolsPanel {
   const id = `tools-${machine}`;
   const body = h('tbody');
-  const heads = ['Tool', 'Parts', 'Cutting', 'In the spindle', 'Counted since (UTC)', 'Last reset', ...(mayReset ? ['Reset'] : [])];
+  const heads = ['Tool', 'Parts', 'Cutting', 'In the spindle', 'Life', 'Used', 'Counted since (UTC)', 'Last reset', ...(mayReset ? ['Reset'] : [])];
   const table = h('table', { id: `${id}-table`, class: 'figures' }, h('caption', { text: `Tool life on ${machine}: each tool since its last reset` }), h('thead', {}, h('tr', {}, ...heads.map((t) => h('th', { scope: 'col', text: t })))), body);
   const scroller = h('div', { class: 'table-scroll', tabindex: 0, role: 'region', 'aria-label': `Tool life on ${machine}`, hidden: true }, table);
   const empty = h('p', { class: 'note', text: 'No tool has cut a counted part yet.', hidden: true });
@@ -85,11 +106,13 @@ export function toolsPanel(machine: string, mayReset: boolean): ToolsPanel {
   const row = (t: ToolUse) =>
     h(
       'tr',
-      { 'data-tool': t.tool },
+      { 'data-tool': t.tool, class: t.worn ? 'worn' : t.life_used !== null && t.life_used >= NEAR_END ? 'near-end' : '' },
       h('th', { scope: 'row', text: t.tool === 0 ? 'T0 (no tool)' : `T${t.tool}` }),
       h('td', { class: 'parts', text: String(t.parts) }),
       h('td', { text: duration(t.cutting_seconds) }),
       h('td', { text: duration(t.seconds) }),
+      h('td', { text: lifeText(t) }),
+      h('td', { class: 'used', text: usedText(t) }),
       h('td', { text: t.counted_from === 'reset' ? when(t.since_us) : 'the first record' }),
       h('td', { class: 'reset', text: resetText(t) }),
       mayReset ? h('td', {}, button(t)) : null,
