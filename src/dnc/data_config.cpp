@@ -4,19 +4,14 @@
 
 #include <fmt/format.h>
 
+#include "dnc/config_report.hpp"
+
 namespace usina::dnc {
 namespace {
 
 void fail(core::DiagnosticSink& diags, std::uint32_t file_id, const toml::source_region& at,
           std::string message) {
-  core::Diagnostic d;
-  d.code = core::Code::DncConfig;
-  d.severity = core::Severity::Error;
-  d.loc.file = file_id;
-  d.loc.line = at.begin.line;
-  d.loc.col = at.begin.column;
-  d.message = std::move(message);
-  diags.report(std::move(d));
+  config_error(diags, file_id, at, std::move(message));
 }
 
 // A string key of `t` into `into`; false (reported) when it is not a string.

@@ -126,6 +126,7 @@ void MqttPublisher::on_connect(mosquitto*, void* self, int reason) {
   me->connected_ = true;
   log_line(fmt::format("connected to {}", broker_name(me->config_)));
   me->publish_server_state(mqtt_server_online(me->config_));
+  me->send_retained();
 }
 
 void MqttPublisher::on_disconnect(mosquitto*, void* self, int) {
@@ -278,6 +279,32 @@ void MqttPublisher::publish_server_state(const nlohmann::json& state) {
     --pending_;
 }
 
+void MqttPublisher::send(const std::string& topic, const std::string& payload, int qos,
+                         bool retain) {
+  ++pending_;
+  const int rc = mosquitto_publish(mosq_, nullptr, topic.c_str(), static_cast<int>(payload.size()),
+                                   payload.data(), qos, retain);
+  // Not connected: a QoS 1 message stays queued for the connection; QoS 0 is gone.
+  if (rc != MOSQ_ERR_SUCCESS && (qos == 0 || rc != MOSQ_ERR_NO_CONN)) --pending_;
+}
+
+// libmosquitto 2.0.11 (Debian 12) sends a message queued before the
+// connection again without its retain flag (the broker's log: "d1, q1,
+// r0"), so a state published while the connection was being made reached
+// the subscribers then but was never retained for a later one. Retained
+// messages are therefore never queued: they are kept here and sent, with
+// the flag, on each connection (a broker restarted without persistence gets
+// them again too).
+void MqttPublisher::send_retained() {
+  std::map<std::string, std::string> now;
+  {
+    std::lock_guard lock(mutex_);
+    now = retained_;
+  }
+  for (const auto& [topic, payload] : now)
+    send(topic, payload, 1, true);
+}
+
 void MqttPublisher::publish(std::string_view type, const nlohmann::json& event) {
   if (!running_) return;
   if (pending_ >= kMaxPending) {
@@ -286,12 +313,16 @@ void MqttPublisher::publish(std::string_view type, const nlohmann::json& event) 
   }
   const std::string topic = mqtt_topic(config_.prefix, type, event);
   const std::string payload = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  const int qos = type == "job.progress" ? 0 : 1;
-  ++pending_;
-  const int rc = mosquitto_publish(mosq_, nullptr, topic.c_str(), static_cast<int>(payload.size()),
-                                   payload.data(), qos, retained(type));
-  // Not connected: a QoS 1 message stays queued for the connection; QoS 0 is gone.
-  if (rc != MOSQ_ERR_SUCCESS && (qos == 0 || rc != MOSQ_ERR_NO_CONN)) --pending_;
+  if (retained(type)) {
+    {
+      std::lock_guard lock(mutex_);
+      retained_[topic] = payload;
+    }
+    // Kept before connected_ is read: a connection made meanwhile sends it.
+    if (connected_) send(topic, payload, 1, true);
+    return;
+  }
+  send(topic, payload, type == "job.progress" ? 0 : 1, false);
 }
 
 void MqttPublisher::stop() {

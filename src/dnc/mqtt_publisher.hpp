@@ -25,6 +25,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -79,6 +80,8 @@ class MqttPublisher {
   void note_failure(int rc, int error_number);
   bool wait_before_retry(int seconds);
   void publish_server_state(const nlohmann::json& state);
+  void send(const std::string& topic, const std::string& payload, int qos, bool retain);
+  void send_retained();
 
   MqttConfig config_;
   std::string password_;
@@ -97,6 +100,10 @@ class MqttPublisher {
   std::condition_variable woken_;
   std::string tls_error_;  // libmosquitto's last error line (OpenSSL's reason)
   std::string last_failure_;
+  // The last payload of each retained topic (a machine's state and part
+  // count), guarded by mutex_: sent again on every connection, so a
+  // subscriber always finds them retained (below, send_retained).
+  std::map<std::string, std::string> retained_;
 };
 
 // The retained payloads of PREFIX/server/state: online (at each connect,

@@ -54,6 +54,32 @@ class MosquittoBroker {
     const std::string conf = (dir_ / "mosquitto.conf").string();
     std::ofstream(conf) << "listener " << port_ << " 127.0.0.1\n"
                         << settings << "persistence false\nlog_dest none\n";
+    return spawn(why);
+  }
+
+  // Stops the broker and starts it again on its port: without persistence,
+  // it has forgotten every retained message.
+  bool restart(std::string* why) {
+    ::kill(pid_, SIGTERM);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+    return spawn(why);
+  }
+
+  ~MosquittoBroker() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, nullptr, 0);
+    }
+    if (!dir_.empty()) std::filesystem::remove_all(dir_);
+  }
+
+  unsigned short port() const { return port_; }
+
+ private:
+  bool spawn(std::string* why) {
+    const std::string bin = mosquitto_binary();
+    const std::string conf = (dir_ / "mosquitto.conf").string();
     std::vector<std::string> args{bin, "-c", conf};
     std::vector<char*> argv;
     for (auto& a : args)
@@ -72,17 +98,6 @@ class MosquittoBroker {
     return *why = "mosquitto did not listen", false;
   }
 
-  ~MosquittoBroker() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      ::waitpid(pid_, nullptr, 0);
-    }
-    if (!dir_.empty()) std::filesystem::remove_all(dir_);
-  }
-
-  unsigned short port() const { return port_; }
-
- private:
   static int& made() {
     static int n = 0;
     return n;

@@ -111,5 +111,40 @@ TEST(Mqtt, TheMachinesStateIsRetainedForALateSubscriber) {
   EXPECT_EQ(payload(m)["state"], "idle");
 }
 
+// The server keeps each retained topic's last payload and sends it on every
+// connection: a broker restarted without persistence has the machine's
+// state again (and libmosquitto's resend of a message queued before the
+// connection, which drops the retain flag, can no longer lose it).
+TEST(Mqtt, ABrokerRestartedWithoutItsRetainedMessagesGetsTheMachinesStateAgain) {
+  test::MosquittoBroker broker;
+  std::string why;
+  if (!broker.start(&why)) GTEST_SKIP() << why;
+  RunningServer s;
+  auto pair = open_pty_pair(s.io());
+  ASSERT_TRUE(pair) << pair.error();
+  ServerConfig config;
+  config.machines.push_back(pty_machine("mill-1", pair->slave_path, 115200));
+  config.mqtt.enabled = true;
+  ASSERT_TRUE(parse_mqtt_url("mqtt://127.0.0.1:" + std::to_string(broker.port()), config.mqtt));
+  s.start(config);
+  const auto idle = [](const MqttMessage& m) { return payload(m).value("state", "") == "idle"; };
+  {
+    test::MqttSubscriber first;
+    ASSERT_TRUE(first.subscribe(broker.port(), "usina/machines/+/state"));
+    ASSERT_FALSE(first.wait_for("usina/machines/mill-1/state", idle).topic.empty());
+  }
+  ASSERT_TRUE(broker.restart(&why)) << why;
+  {  // the server reconnects (after a second) and says it again
+    test::MqttSubscriber probe;
+    ASSERT_TRUE(probe.subscribe(broker.port(), "usina/machines/+/state"));
+    ASSERT_FALSE(probe.wait_for("usina/machines/mill-1/state", idle).topic.empty());
+  }
+  test::MqttSubscriber late;
+  ASSERT_TRUE(late.subscribe(broker.port(), "usina/machines/+/state"));
+  const MqttMessage m = late.wait_for("usina/machines/mill-1/state", idle);
+  ASSERT_FALSE(m.topic.empty());
+  EXPECT_TRUE(m.retained);
+}
+
 }  // namespace
 }  // namespace usina::dnc
