@@ -82,18 +82,28 @@ TEST(Mqtt, AJobsEventsReachTheBrokerAsJson) {
   EXPECT_FALSE(made.topic.empty());
 }
 
+// A server whose machine `mill-1` (a pty, no control behind it) is idle,
+// publishing to `broker`; the pty's pair, kept open by the caller.
+tl::expected<PtyPair, std::string> start_idle_mill(RunningServer& s,
+                                                   const test::MosquittoBroker& broker) {
+  auto pair = open_pty_pair(s.io());
+  if (!pair) return pair;
+  ServerConfig config;
+  config.machines.push_back(pty_machine("mill-1", pair->slave_path, 115200));
+  config.mqtt.enabled = true;
+  if (!parse_mqtt_url("mqtt://127.0.0.1:" + std::to_string(broker.port()), config.mqtt))
+    return tl::unexpected(std::string("the broker's URL was refused"));
+  s.start(config);
+  return pair;
+}
+
 TEST(Mqtt, TheMachinesStateIsRetainedForALateSubscriber) {
   test::MosquittoBroker broker;
   std::string why;
   if (!broker.start(&why)) GTEST_SKIP() << why;
   RunningServer s;
-  auto pair = open_pty_pair(s.io());
+  const auto pair = start_idle_mill(s, broker);
   ASSERT_TRUE(pair) << pair.error();
-  ServerConfig config;
-  config.machines.push_back(pty_machine("mill-1", pair->slave_path, 115200));
-  config.mqtt.enabled = true;
-  ASSERT_TRUE(parse_mqtt_url("mqtt://127.0.0.1:" + std::to_string(broker.port()), config.mqtt));
-  s.start(config);
   {  // a first subscriber sees the machine idle: the event has left
     test::MqttSubscriber first;
     ASSERT_TRUE(first.subscribe(broker.port(), "usina/#"));
@@ -120,13 +130,8 @@ TEST(Mqtt, ABrokerRestartedWithoutItsRetainedMessagesGetsTheMachinesStateAgain) 
   std::string why;
   if (!broker.start(&why)) GTEST_SKIP() << why;
   RunningServer s;
-  auto pair = open_pty_pair(s.io());
+  const auto pair = start_idle_mill(s, broker);
   ASSERT_TRUE(pair) << pair.error();
-  ServerConfig config;
-  config.machines.push_back(pty_machine("mill-1", pair->slave_path, 115200));
-  config.mqtt.enabled = true;
-  ASSERT_TRUE(parse_mqtt_url("mqtt://127.0.0.1:" + std::to_string(broker.port()), config.mqtt));
-  s.start(config);
   const auto idle = [](const MqttMessage& m) { return payload(m).value("state", "") == "idle"; };
   {
     test::MqttSubscriber first;
