@@ -74,7 +74,8 @@ job_sources=(src/job/toml_reader.cpp src/job/job_file.cpp src/job/tools.cpp src/
 config_sources=(src/sim/machine_profile.cpp src/sim/stock/tool_shape.cpp src/sim/stock/tool_reach.cpp
   src/sim/stock/height_map.cpp
   src/dnc/server_config.cpp src/dnc/machine_config.cpp src/dnc/link_config.cpp
-  src/dnc/data_config.cpp src/dnc/link_port.cpp src/dnc/shift_calendar.cpp)
+  src/dnc/data_config.cpp src/dnc/link_port.cpp src/dnc/shift_calendar.cpp
+  src/dnc/config_report.cpp src/dnc/tool_life_config.cpp)
 mapfile -t post_sources < <(cd "$root" && ls src/post/*.cpp | sort)
 mapfile -t forms_sources < <(cd "$root" && ls src/dnc/form_*.cpp | sort)
 
