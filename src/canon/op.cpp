@@ -41,6 +41,24 @@ const char* op_name(const OpKind& kind) {
   return std::visit(NameOf{}, kind);
 }
 
+const char* path_mode_code(PathMode::Mode m) {
+  switch (m) {
+  case PathMode::Mode::ExactPath: return "G61";
+  case PathMode::Mode::ExactStop: return "G61.1";
+  case PathMode::Mode::Blend: return "G64";
+  }
+  return "G64";
+}
+
+const char* spindle_dir_name(SpindleDir d) {
+  switch (d) {
+  case SpindleDir::Cw: return "cw";
+  case SpindleDir::Ccw: return "ccw";
+  case SpindleDir::Off: return "off";
+  }
+  return "off";
+}
+
 bool is_motion(const OpKind& kind) {
   return std::holds_alternative<Traverse>(kind) || std::holds_alternative<Feed>(kind) ||
          std::holds_alternative<Arc>(kind) || std::holds_alternative<Spline>(kind) ||

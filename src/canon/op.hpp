@@ -168,6 +168,11 @@ struct Op {
 // The name of an op in the trace ("traverse", "feed", ...).
 const char* op_name(const OpKind& kind);
 
+// A path mode's G code ("G61", "G61.1", "G64") and a spindle's direction
+// ("cw", "ccw", "off"), as the trace writes them.
+const char* path_mode_code(PathMode::Mode m);
+const char* spindle_dir_name(SpindleDir d);
+
 // True for the ops that move the tool (traverse, feed, arc, spline, probe).
 bool is_motion(const OpKind& kind);
 

@@ -2,8 +2,11 @@
 
 #include <stdio.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -171,6 +174,54 @@ TEST(TraceJsonl, NumbersRoundTrip) {
 TEST(TraceJsonl, ShortestFormForSimpleDecimals) {
   EXPECT_EQ(to_jsonl({Dwell{0.1}, at(1, 1)}), R"({"op":"dwell","src":[1,1],"s":0.1})");
   EXPECT_EQ(to_jsonl({Dwell{25.4}, at(1, 1)}), R"({"op":"dwell","src":[1,1],"s":25.4})");
+}
+
+// The dwell's number as written: what follows "s":, up to the closing brace.
+std::string dwell_text(double s) {
+  const std::string line = to_jsonl({Dwell{s}, at(1, 1)});
+  const std::size_t from = line.find("\"s\":") + 4;
+  return line.substr(from, line.size() - 1 - from);
+}
+
+TEST(TraceJsonl, ShortDecimalsAtTheEdgesOfTheirFastPath) {
+  EXPECT_EQ(dwell_text(-12.5), "-12.5");
+  EXPECT_EQ(dwell_text(-0.000001), "-0.000001");
+  EXPECT_EQ(dwell_text(0.000001), "0.000001");
+  EXPECT_EQ(dwell_text(999999999.999999), "999999999.999999");
+  EXPECT_EQ(dwell_text(-999999999.5), "-999999999.5");
+  EXPECT_EQ(dwell_text(100), "100");
+  EXPECT_EQ(dwell_text(1e9), "1000000000");   // past the fast path: fmt's shortest form
+  EXPECT_EQ(dwell_text(0.0000005), "5e-07");  // not a whole number of millionths
+  EXPECT_EQ(dwell_text(0.1 + 0.2), "0.30000000000000004");
+}
+
+// Any double, of any size and sign, reads back as itself.
+TEST(TraceJsonl, EveryNumberReadsBackAsItself) {
+  std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+  const auto next = [&state] {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return state;
+  };
+  for (int i = 0; i < 200000; ++i) {
+    const std::uint64_t r = next();
+    double v = 0.0;
+    switch (i % 3) {
+    case 0: {  // a short decimal, as programs have
+      v = static_cast<double>(static_cast<std::int64_t>(r % 2000000000001ULL) - 1000000000000LL) /
+          std::pow(10.0, static_cast<double>(r >> 60));
+      break;
+    }
+    case 1: v = (static_cast<double>(r >> 11) / 9007199254740992.0 - 0.5) * 2e9; break;
+    default: std::memcpy(&v, &r, sizeof v);
+    }
+    if (!std::isfinite(v)) continue;
+    const std::string text = dwell_text(v);
+    char* end = nullptr;
+    ASSERT_EQ(std::strtod(text.c_str(), &end), v) << text;
+    ASSERT_EQ(*end, '\0') << text;
+  }
 }
 
 TEST(TraceJsonl, CommentQuotesBackslashesAndControlCharactersEscaped) {
