@@ -75,10 +75,15 @@ struct ExprNode {
   std::uint32_t col = 0;
 };
 
+// A word's value that is a plain number ("X12.5", nearly every word): kept
+// in the word, with no node to write and read back.
+inline constexpr ExprRef kPlainNumber = 0xfffffffeu;
+
 struct Word {
-  char letter = 0;  // upper case; '@' and '^' for polar words
-  ExprRef value = kNoExpr;
+  char letter = 0;          // upper case; '@' and '^' for polar words
+  ExprRef value = kNoExpr;  // the expression, or kPlainNumber: then `number`
   std::uint32_t col = 0;
+  double number = 0.0;
 };
 
 struct ParamAssign {

@@ -29,6 +29,13 @@ struct EvalError {
 std::optional<double> evaluate(const Block& block, ExprRef ref, const ParameterSource& params,
                                EvalError& err);
 
+// A word's value: its plain number, or its expression evaluated.
+inline std::optional<double> evaluate_word(const Block& block, const Word& word,
+                                           const ParameterSource& params, EvalError& err) {
+  if (word.value == kPlainNumber) return word.number;
+  return evaluate(block, word.value, params, err);
+}
+
 // An expression's value as a parameter index: an integer (within 1e-4, as
 // LinuxCNC's read_integer_value) in 1..5602.
 std::optional<int> parameter_index(double value, std::uint32_t col, EvalError& err);

@@ -48,15 +48,29 @@ class Lexer {
   // allowed inside). Nullopt, consuming nothing, when none is next.
   // Inline: the parser reads every word's value through it.
   std::optional<double> number() {
+    double v = 0.0;
+    if (!number(v)) return std::nullopt;
+    return v;
+  }
+
+  // The same, the value in `out`: the parser's way, with no std::optional
+  // built field by field and read back whole (a stalled store forward on
+  // every word).
+  bool number(double& out) {
     skip_blanks();
     // The shape of nearly every number in a program, read in one pass
     // (gcode/decimal.hpp); blanks inside it or more than 15 digits go the
     // slow way.
     const Decimal d = scan_decimal(text_, i_);
-    if (d.digits > kExactDigits || blank_inside(d.end, d.point)) return number_slow(i_);
-    if (d.digits == 0) return std::nullopt;
+    if (d.digits > kExactDigits || blank_inside(d.end, d.point)) {
+      const auto slow = number_slow(i_);
+      if (slow) out = *slow;
+      return slow.has_value();
+    }
+    if (d.digits == 0) return false;
     i_ = d.end;
-    return d.value;
+    out = d.value;
+    return true;
   }
 
   // Everything up to (not including) `close`, raw; consumes `close` too.

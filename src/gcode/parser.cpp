@@ -39,6 +39,7 @@ class Parser {
   ExprRef number_node(double value, std::size_t at);
   [[gnu::noinline]] ExprRef too_many_nodes(std::uint32_t at_col);
   ExprRef real_value(int depth);
+  bool word_value(Word& word);
   bool exponent_in_range(std::size_t start);
 
   // Whether the number just read is followed by an E: nearly every number
@@ -315,6 +316,28 @@ ExprRef Parser::real_value(int depth) {
   return kNoExpr;
 }
 
+// A word's value: a plain number kept in the word itself (nearly every
+// word), else an expression in the block's arena, read by real_value.
+bool Parser::word_value(Word& word) {
+  const char c = lex_.peek();
+  const bool sign = c == '-' || c == '+';
+  if (sign || (c >= '0' && c <= '9') || c == '.') {
+    const Lexer start = lex_;
+    if (sign) lex_.advance();
+    const std::size_t digits = lex_.pos();
+    double v = 0.0;
+    if (lex_.number(v)) {
+      if (at_exponent() && !exponent_in_range(digits)) return false;
+      word.value = kPlainNumber;
+      word.number = c == '-' ? -v : v;
+      return true;
+    }
+    lex_ = start;  // "-[...]", "-#1", a number too long: real_value says
+  }
+  word.value = real_value(0);
+  return word.value != kNoExpr;
+}
+
 struct OKeyword {
   std::string_view spelling;
   OKind kind;
@@ -475,9 +498,10 @@ void Parser::item() {
       return;
     }
     lex_.advance();
-    const ExprRef v = real_value(0);
-    if (v == kNoExpr) return;
-    block_.words.push_back({c, v, col(at)});
+    Word& word = block_.words.emplace_back();
+    word.letter = c;
+    word.col = col(at);
+    if (!word_value(word)) block_.words.pop_back();
   } else {
     const auto raw = static_cast<unsigned char>(lex_.text()[at]);
     fail(core::Code::UnexpectedCharacter, at,

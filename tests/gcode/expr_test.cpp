@@ -52,7 +52,7 @@ Result eval(const std::string& expr, const MapParams& params = MapParams{}) {
   const bool ok = parse_block(line, {0, 1, 0}, b, diags);
   EXPECT_TRUE(ok) << line << ": " << (diags.all().empty() ? "" : diags.all()[0].message);
   if (!ok || b.words.size() != 1) return r;
-  r.value = evaluate(b, b.words[0].value, params, r.err);
+  r.value = evaluate_word(b, b.words[0], params, r.err);
   return r;
 }
 

@@ -52,13 +52,21 @@ double value(const Block& b, ExprRef ref) {
   return v ? *v : std::nan("");
 }
 
+// A word's value: its plain number or its expression's.
+double value(const Block& b, const Word& word) {
+  NoParams params;
+  EvalError err;
+  const auto v = evaluate_word(b, word, params, err);
+  return v ? *v : std::nan("");
+}
+
 // The value of the only word of `text`'s block.
 double word_value(const std::string& text) {
   auto p = parse(text);
   EXPECT_TRUE(p->ok) << text;
   EXPECT_EQ(p->block.words.size(), 1u) << text;
   if (!p->ok || p->block.words.size() != 1) return std::nan("");
-  return value(p->block, p->block.words[0].value);
+  return value(p->block, p->block.words[0]);
 }
 
 // The one syntax error of `text`: its code and column.
@@ -94,13 +102,13 @@ TEST(Parser, WordsHaveUpperCaseLettersValuesAndColumns) {
   ASSERT_EQ(w.size(), 3u);
   EXPECT_EQ(w[0].letter, 'G');
   EXPECT_EQ(w[0].col, 1u);
-  EXPECT_EQ(value(p->block, w[0].value), 1.0);
+  EXPECT_EQ(value(p->block, w[0]), 1.0);
   EXPECT_EQ(w[1].letter, 'X');
   EXPECT_EQ(w[1].col, 4u);
-  EXPECT_EQ(value(p->block, w[1].value), 2.5);
+  EXPECT_EQ(value(p->block, w[1]), 2.5);
   EXPECT_EQ(w[2].letter, 'Y');
   EXPECT_EQ(w[2].col, 9u);
-  EXPECT_EQ(value(p->block, w[2].value), -3.0);
+  EXPECT_EQ(value(p->block, w[2]), -3.0);
 }
 
 // A number's value is kept whole and its exponent, which no dialect has,
@@ -115,9 +123,9 @@ TEST(Parser, NumberEdges) {
   auto p = parse("X1e5");  // X1 and an E word, as the control reads it
   ASSERT_TRUE(p->ok);
   ASSERT_EQ(p->block.words.size(), 2u);
-  EXPECT_EQ(value(p->block, p->block.words[0].value), 1.0);
+  EXPECT_EQ(value(p->block, p->block.words[0]), 1.0);
   EXPECT_EQ(p->block.words[1].letter, 'E');
-  EXPECT_EQ(value(p->block, p->block.words[1].value), 5.0);
+  EXPECT_EQ(value(p->block, p->block.words[1]), 5.0);
   EXPECT_SYNTAX_ERROR("X1e400", Code::NumberOutOfRange, 2);
   EXPECT_SYNTAX_ERROR("X-1E-400", Code::NumberOutOfRange, 3);
   EXPECT_SYNTAX_ERROR("G1 X1 E1e999", Code::NumberOutOfRange, 8);
@@ -140,10 +148,10 @@ TEST(Parser, BlanksAnywhereOutsideComments) {
   ASSERT_TRUE(p->ok);
   ASSERT_EQ(p->block.words.size(), 2u);
   EXPECT_EQ(p->block.words[0].letter, 'G');
-  EXPECT_EQ(value(p->block, p->block.words[0].value), 1.0);
+  EXPECT_EQ(value(p->block, p->block.words[0]), 1.0);
   EXPECT_EQ(p->block.words[1].letter, 'X');
   EXPECT_EQ(p->block.words[1].col, 7u);
-  EXPECT_EQ(value(p->block, p->block.words[1].value), 1.5);
+  EXPECT_EQ(value(p->block, p->block.words[1]), 1.5);
 }
 
 TEST(Parser, WordsWithoutBlanksBetween) {
@@ -151,7 +159,7 @@ TEST(Parser, WordsWithoutBlanksBetween) {
   ASSERT_TRUE(p->ok);
   ASSERT_EQ(p->block.words.size(), 4u);
   EXPECT_EQ(p->block.words[3].letter, 'F');
-  EXPECT_EQ(value(p->block, p->block.words[3].value), 300.0);
+  EXPECT_EQ(value(p->block, p->block.words[3]), 300.0);
 }
 
 TEST(Parser, PlusSignIsAccepted) {
@@ -480,6 +488,23 @@ TEST(Parser, NamedParameterReadInAWord) {
   EXPECT_EQ(word_value("X#<X>"), 5.0);
 }
 
+TEST(Parser, APlainNumberIsKeptInItsWordAndAnExpressionInTheArena) {
+  auto p = parse("G1 X-1.5 Y+.25 Z-[2] F#1");
+  ASSERT_TRUE(p->ok);
+  const auto& w = p->block.words;
+  ASSERT_EQ(w.size(), 5u);
+  EXPECT_EQ(w[0].value, kPlainNumber);
+  EXPECT_EQ(w[0].number, 1.0);
+  EXPECT_EQ(w[1].value, kPlainNumber);
+  EXPECT_EQ(w[1].number, -1.5);
+  EXPECT_EQ(w[2].value, kPlainNumber);
+  EXPECT_EQ(w[2].number, 0.25);
+  EXPECT_EQ(p->block.expr(w[3].value).kind, ExprKind::Negate);  // "-[2]": the sign read again
+  EXPECT_EQ(value(p->block, w[3]), -2.0);
+  EXPECT_EQ(p->block.expr(w[4].value).kind, ExprKind::Param);
+  EXPECT_EQ(w[4].col, 22u);
+}
+
 TEST(Parser, IndirectParameter) {
   // ##7: the parameter whose number is in #7 (here 70 → 0).
   auto p = parse("X##7");
@@ -585,7 +610,7 @@ TEST(Parser, AtanTakesTwoBracketedArguments) {
   auto p = parse("X ATAN[1]/[-1]");
   ASSERT_TRUE(p->ok);
   EXPECT_EQ(p->block.expr(p->block.words[0].value).kind, ExprKind::Atan2);
-  EXPECT_NEAR(value(p->block, p->block.words[0].value), 135.0, 1e-12);
+  EXPECT_NEAR(value(p->block, p->block.words[0]), 135.0, 1e-12);
 }
 
 TEST(Parser, AtanWithOneArgumentIsAnError) {
@@ -598,7 +623,7 @@ TEST(Parser, ExistsOfANamedParameter) {
   const ExprNode& n = p->block.expr(p->block.words[0].value);
   EXPECT_EQ(n.kind, ExprKind::Exists);
   EXPECT_EQ(n.name, "x");
-  EXPECT_EQ(value(p->block, p->block.words[0].value), 1.0);
+  EXPECT_EQ(value(p->block, p->block.words[0]), 1.0);
   EXPECT_EQ(word_value("X exists[#<nothing>]"), 0.0);
 }
 

@@ -17,12 +17,15 @@ bool Interpreter::evaluate(const Block& b) {
   assigns_.clear();
   EvalError err;
   for (const Word& word : b.words) {
-    // Most words are plain numbers: no evaluator needed.
-    const ExprNode& node = b.expr(word.value);
-    auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
-                                           : gcode::evaluate(b, word.value, *this, err);
-    if (!v) return evaluation_failed(err.error.code, err.col, err.error.message);
-    evaluated_.push_back({word.letter, *v, word.col});
+    // No std::optional on the way of a plain number: built field by field
+    // and read back whole, it stalled every word (a failed store forward).
+    double v = word.number;
+    if (word.value != kPlainNumber) {
+      const auto e = gcode::evaluate(b, word.value, *this, err);
+      if (!e) return evaluation_failed(err.error.code, err.col, err.error.message);
+      v = *e;
+    }
+    evaluated_.push_back({word.letter, v, word.col});
   }
   return evaluate_assigns(b);
 }
