@@ -178,24 +178,27 @@ void StatsSink::moved_to(const Axes6& to) {
   pos_ = to;
 }
 
-PlannedMove StatsSink::straight_move(const Axes6& to, double cruise, Kind kind) const {
+StatsSink::Line StatsSink::line_to(const Axes6& to) const {
   const double length = path_length(pos_, to);
-  const AxisShare share = straight_share(pos_, to, length);
+  return {to, length, straight_share(pos_, to, length)};
+}
+
+PlannedMove StatsSink::straight_move(const Line& line, double cruise, Kind kind) const {
   PlannedMove m;
-  m.length = length;
-  m.start_dir = m.end_dir = direction(pos_, to);
-  m.cruise = block_limit(length, cruise);
-  m.kin = {along_path(machine_, share, AxisRate::Accel),
-           along_path(machine_, share, AxisRate::Jerk)};
+  m.length = line.length;
+  m.start_dir = m.end_dir = direction(pos_, line.to);
+  m.cruise = block_limit(line.length, cruise);
+  m.kin = {along_path(machine_, line.share, AxisRate::Accel),
+           along_path(machine_, line.share, AxisRate::Jerk)};
   m.account = account(kind);
   m.op = op_;
-  m.max_speed = along_path(machine_, share, AxisRate::Rapid);
+  m.max_speed = along_path(machine_, line.share, AxisRate::Rapid);
   m.rapid = kind == Rapid;
   return m;
 }
 
-double StatsSink::straight(const Axes6& to, double cruise, Kind kind) {
-  const PlannedMove m = straight_move(to, cruise, kind);
+double StatsSink::straight(const Line& line, double cruise, Kind kind) {
+  const PlannedMove m = straight_move(line, cruise, kind);
   planner_->add(m);
   return m.length;
 }
@@ -208,10 +211,10 @@ void StatsSink::traverse(const canon::Op& op, const canon::Traverse& t) {
   box.add(t.to);
   checks_.travel(op, box.lo, box.hi, to);
   checks_.rapid(op, from, t.to);
-  const double length = path_length(pos_, to);
-  const double cruise = along_path(machine_, straight_share(pos_, to, length), AxisRate::Rapid);
+  const Line line = line_to(to);
+  const double cruise = along_path(machine_, line.share, AxisRate::Rapid);
   ToolStats& ts = tool();
-  ts.rapid_mm += straight(to, cruise, Rapid);
+  ts.rapid_mm += straight(line, cruise, Rapid);
   ++ts.counts.rapids;
   ts.bounds.add(box);
   moved_to(to);
@@ -251,11 +254,10 @@ void StatsSink::feed(const canon::Op& op, const Vec3& to_xyz, const canon::Abc& 
   box.add(xyz(pos_));
   box.add(to_xyz);
   checks_.travel(op, box.lo, box.hi, to);
-  const double length = path_length(pos_, to);
-  const double cruise =
-      feed_speed(op, straight_share(pos_, to, length), rate_of(f, programmed, length));
+  const Line line = line_to(to);
+  const double cruise = feed_speed(op, line.share, rate_of(f, programmed, line.length));
   ToolStats& ts = tool();
-  ts.cutting_mm += straight(to, cruise, Cutting);
+  ts.cutting_mm += straight(line, cruise, Cutting);
   ++ts.counts.feeds;
   ts.bounds.add(box);
   moved_to(to);
@@ -369,10 +371,10 @@ void StatsSink::probe(const canon::Op& op, const canon::Probe& p) {
   box.add(xyz(pos_));
   box.add(p.to);
   checks_.travel(op, box.lo, box.hi, to);
-  const double length = path_length(pos_, to);
-  const double limit = along_path(machine_, straight_share(pos_, to, length), AxisRate::MaxFeed);
+  const Line line = line_to(to);
+  const double limit = along_path(machine_, line.share, AxisRate::MaxFeed);
   const double cruise = last_feed_ ? std::min(*last_feed_ / 60.0, limit) : limit;
-  straight(to, cruise, Other);
+  straight(line, cruise, Other);
   planner_->stop();
   ToolStats& ts = tool();
   ++ts.counts.probes;

@@ -128,7 +128,8 @@ bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_po
   i = d.end;
   v = d.value;
   had_point = d.point;
-  return std::isfinite(v);
+  // Up to 15 digits the value is finite: no test waits for the division.
+  return d.digits <= decimal_detail::kExactDigits || std::isfinite(v);
 }
 
 namespace {
