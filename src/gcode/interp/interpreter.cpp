@@ -121,7 +121,8 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
   BlockWords& w = *words_;
   if (!sort_words(block.words, w) || !assign(block.assigns) || !check(w)) return false;
   // The block works on a copy of the modal state: a failed block changes nothing.
-  const ModalState before = state_;
+  ModalState before;
+  copy_state(before, state_);
   if (!execute(block.comments, w) || machine_faulted()) {
     state_ = before;
     return false;
