@@ -1,5 +1,6 @@
 // Putting back what one block changed, for a front end that reports a
 // refused block and reads on (interpreter.hpp, Interpreter::checkpoint).
+#include "core/copy_in_pieces.hpp"
 #include "gcode/interp/interpreter.hpp"
 
 namespace usina::gcode {
@@ -8,7 +9,7 @@ void Interpreter::checkpoint() {
   if (!checkpoint_) {
     checkpoint_.emplace(Checkpoint{state_, machine_, cycles_, ended_, {}});
   } else {
-    checkpoint_->state = state_;
+    core::copy_in_pieces(checkpoint_->state, state_);
     checkpoint_->machine = machine_;
     checkpoint_->cycles = cycles_;
     checkpoint_->ended = ended_;

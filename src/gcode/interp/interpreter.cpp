@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/copy_in_pieces.hpp"
 #include "gcode/interp/block_words.hpp"
 #include "gcode/parser.hpp"
 #include "gcode/program_text.hpp"
@@ -122,7 +123,7 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
   if (!sort_words(block.words, w) || !assign(block.assigns) || !check(w)) return false;
   // The block works on a copy of the modal state: a failed block changes nothing.
   ModalState before;
-  copy_state(before, state_);
+  core::copy_in_pieces(before, state_);
   if (!execute(block.comments, w) || machine_faulted()) {
     state_ = before;
     return false;

@@ -3,8 +3,6 @@
 #pragma once
 
 #include <array>
-#include <cstring>
-#include <type_traits>
 
 #include "canon/op.hpp"
 #include "core/arc.hpp"
@@ -79,21 +77,5 @@ struct ModalState {
   bool feed_override = true;
   bool speed_override = true;
 };
-
-// The copy a block rolls back to, taken before every block. GCC copies a
-// struct this size with `rep movsq`, whose start costs more than moving its
-// 392 bytes (6 % of `usina check`); sixteen bytes at a time, unrolled, it
-// is a few dozen moves.
-inline void copy_state(ModalState& to, const ModalState& from) {
-  static_assert(std::is_trivially_copyable_v<ModalState>);
-  constexpr std::size_t kChunk = 16;
-  auto* out = reinterpret_cast<unsigned char*>(&to);
-  const auto* in = reinterpret_cast<const unsigned char*>(&from);
-  constexpr std::size_t whole = sizeof(ModalState) / kChunk * kChunk;
-#pragma GCC unroll 32
-  for (std::size_t i = 0; i < whole; i += kChunk)
-    std::memcpy(out + i, in + i, kChunk);
-  std::memcpy(out + whole, in + whole, sizeof(ModalState) - whole);
-}
 
 }  // namespace usina::gcode

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "core/copy_in_pieces.hpp"
+
 namespace usina::gcode::romi {
 namespace {
 
@@ -148,9 +150,9 @@ bool Translator::execute() {
 void Translator::end_block(bool ok) {
   comments_ = {};
   if (ok) {
-    modal_ = work_;
+    core::copy_in_pieces(modal_, work_);
   } else {
-    work_ = modal_;
+    core::copy_in_pieces(work_, modal_);
   }
 }
 
