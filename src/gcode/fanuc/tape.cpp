@@ -39,12 +39,11 @@ long digits(std::string_view s, std::size_t& i) {
 
 // The characters a block is made of, as against the blanks, comments,
 // block ends and '%' the tape is cut at.
-constexpr std::array<bool, 256> kWordChar = [] {
+// The characters where cutting a block decides something.
+constexpr std::array<bool, 256> kDecides = [] {
   std::array<bool, 256> t{};
-  for (bool& x : t)
-    x = true;
-  for (unsigned char c : {' ', '\t', '\r', '(', '%', ';', '\n'})
-    t[c] = false;
+  for (unsigned char c : {'(', '%', ';', '\n'})
+    t[c] = true;
   return t;
 }();
 
@@ -175,12 +174,17 @@ TapeBlock Tape::cut(TapePos at) const {
   TapeBlock b;
   for (std::size_t i = at.offset; i < text.size(); ++i) {
     const char c = text[i];
-    if (kWordChar[static_cast<unsigned char>(c)]) {
-      // A run of the block's own characters: nothing to decide in it.
+    if (!kDecides[static_cast<unsigned char>(c)]) {
+      // A run of the block's own characters and blanks, words and blanks
+      // alike (a loop that stopped at each blank stopped at every word):
+      // the block's content ends after its last character that is not blank.
       std::size_t j = i + 1;
-      while (j < text.size() && kWordChar[static_cast<unsigned char>(text[j])])
+      while (j < text.size() && !kDecides[static_cast<unsigned char>(text[j])])
         ++j;
-      p.content_end = j;
+      std::size_t end = j;
+      while (end > i && blank(text[end - 1]))
+        --end;
+      if (end > i) p.content_end = end;
       i = j - 1;
       continue;
     }
@@ -215,7 +219,6 @@ TapeBlock Tape::cut(TapePos at) const {
       }
       continue;
     }
-    if (!blank(c)) p.content_end = i + 1;
   }
   if (p.start < text.size() && make_block(at.file, text, text.size(), p, b)) {
     b.next = {at.file, p.line, text.size(), p.line_start};
