@@ -175,7 +175,12 @@ TEST(AptPatern, GotoModifiers) {
   expect_xs(goto_points(go(",INVERS")), {3, 2, 1, 0});
   expect_xs(goto_points(go(",OMIT,2,THRU,3")), {0, 3});
   expect_xs(goto_points(go(",RETAIN,1,4")), {0, 3});
-  expect_xs(goto_points(go(",INVERS,OMIT,1")), {3, 2, 1});
+  // The numbers follow the output order (INVERS: 1 is the last point); CONST
+  // makes them the definition's (the APT360 manual, §4.6.2 and §4.6.6).
+  expect_xs(goto_points(go(",INVERS,OMIT,1")), {2, 1, 0});
+  expect_xs(goto_points(go(",OMIT,1,INVERS")), {2, 1, 0});
+  expect_xs(goto_points(go(",INVERS,CONST,OMIT,1")), {3, 2, 1});
+  expect_xs(goto_points(go(",CONST,OMIT,1")), {1, 2, 3});  // without INVERS, the same order
   // Point 3 over a rise of 5: up at point 2, across, down (a RAPID).
   const AptRun r = go(",AVOID,5,3");
   const std::vector<core::Vec3> ps = goto_points(r);
@@ -187,6 +192,24 @@ TEST(AptPatern, GotoModifiers) {
   for (const ClRecord& c : r.result.records)
     rapids += c.cls == cls::kPost && c.sub == 5 ? 1 : 0;
   EXPECT_EQ(rapids, 1);
+}
+
+// The manual's example (§4.6.6, a pattern of 12 points):
+// GOTO/PAT1,INVERS,RETAIN,2,THRU,4,6,8 and GOTO/PAT1,INVERS,CONST,RETAIN,11,THRU,9,7,5
+// both go to points 11, 10, 9, 7, 5 (x = 10, 9, 8, 6, 4).
+TEST(AptPatern, ConstNumbersByTheDefinition) {
+  const std::string twelve = "X=PATERN/LINEAR,P0,VX,12\nGOTO/X";
+  expect_xs(goto_points(base(twelve + ",INVERS,RETAIN,2,THRU,4,6,8")), {10, 9, 8, 6, 4});
+  expect_xs(goto_points(base(twelve + ",INVERS,CONST,RETAIN,11,THRU,9,7,5")), {10, 9, 8, 6, 4});
+  // AVOID's numbers too: the output's 1 under INVERS is the definition's 12.
+  const std::vector<core::Vec3> ps = goto_points(base(twelve + ",INVERS,RETAIN,1,2,AVOID,4,2"));
+  ASSERT_EQ(ps.size(), 4u);  // 12; up, across, 11
+  EXPECT_DOUBLE_EQ(ps[1].z, 4.0);
+  EXPECT_DOUBLE_EQ(ps[3].x, 10.0);
+  const std::vector<core::Vec3> c =
+      goto_points(base(twelve + ",INVERS,CONST,RETAIN,12,11,AVOID,4,11"));
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_DOUBLE_EQ(c[2].z, 4.0);
 }
 
 TEST(AptPatern, OverlappingListsAndSeveralAvoids) {
@@ -209,8 +232,9 @@ TEST(AptPatern, GotoErrors) {
   expect_error(x + "GOTO/X,OMIT", Code::AptBadArgument);
   expect_error(x + "GOTO/X,OMIT,1,THRU", Code::AptBadArgument);
   expect_error(x + "GOTO/X,AVOID,0,1", Code::AptBadArgument);
-  expect_error(x + "GOTO/X,CONST", Code::AptBadArgument);
-  expect_error(x + "GOTO/X,2", Code::AptBadArgument);
+  expect_error(x + "GOTO/X,CONST,OMIT,5", Code::AptBadArgument);
+  expect_error(x + "GOTO/X,2", Code::AptBadArgument);  // a feed: FEDRAT of its own
+  expect_error(x + "GOTO/X,INVERS,CLW", Code::AptBadArgument);
   expect_error(x + "FROM/X", Code::AptBadArgument);
 }
 
