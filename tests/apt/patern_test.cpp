@@ -80,17 +80,29 @@ TEST(AptPatern, Random) {
                 {{1, 1, 0}, {0, 0, 0}, {2, 0, 0}, {7, 8, 9}});
 }
 
+// The APT360 manual's parallelogram pattern (§4.5.3): the first pattern is
+// the first column; a column at each point of the second, the second,
+// fourth ... columns in the reverse order. By hand, A = (0,0),(2,0).
 TEST(AptPatern, ParlelByPattern) {
-  // A copied by each offset of B from B's first point: (0,0), (0,3).
-  expect_points(base("B=PATERN/LINEAR,(POINT/5,5),(POINT/5,8),2\nX=PATERN/PARLEL,A,B").def("X"),
-                {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {2, 3, 0}});
+  // B from A's first point: columns at offsets (0,0), (0,3), (0,6).
+  expect_points(base("B=PATERN/LINEAR,P0,(POINT/0,6),3\nX=PATERN/PARLEL,A,B").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, 3, 0}, {0, 3, 0}, {0, 6, 0}, {2, 6, 0}});
+  // B from A's last point (2,0): the same offsets.
+  expect_points(base("B=PATERN/LINEAR,(POINT/2,0),(POINT/2,3),2\nX=PATERN/PARLEL,A,B").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, 3, 0}, {0, 3, 0}});
+  // B ending at A's first point: read from its end, so A is the first column.
+  expect_points(base("B=PATERN/LINEAR,(POINT/0,-3),P0,2\nX=PATERN/PARLEL,A,B").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, -3, 0}, {0, -3, 0}});
 }
 
 TEST(AptPatern, ParlelAlongVector) {
   expect_points(base("X=PATERN/PARLEL,A,VY,3").def("X"),
-                {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}, {0, 2, 0}, {2, 2, 0}});
+                {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 2, 0}, {2, 2, 0}});
   expect_points(base("X=PATERN/PARLEL,A,(VECTOR/0,2,0),INCR,1,4").def("X"),
-                {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}, {0, 5, 0}, {2, 5, 0}});
+                {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 5, 0}, {2, 5, 0}});
+  // INCR,n,AT,d: n columns d apart besides the pattern (the manual's §4.5.3.3).
+  expect_points(base("X=PATERN/PARLEL,A,VY,INCR,2,AT,1.5").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, 1.5, 0}, {0, 1.5, 0}, {0, 3, 0}, {2, 3, 0}});
 }
 
 TEST(AptPatern, NthPoint) {
@@ -120,6 +132,9 @@ TEST(AptPatern, DefinitionErrors) {
   expect_error("X=PATERN/RANDOM", Code::AptUnknownForm);
   // 1,000 points copied 1,000 times: beyond the 100,000 a pattern holds.
   expect_error("B=PATERN/LINEAR,P0,VX,1000\nX=PATERN/PARLEL,B,VY,1000", Code::AptBadArgument);
+  // PARLEL of two patterns with no common first or last point.
+  expect_error("B=PATERN/LINEAR,(POINT/5,5),(POINT/5,8),2\nX=PATERN/PARLEL,A,B",
+               Code::AptBadArgument);
   expect_error("X=POINT/A,3", Code::AptBadArgument);
   expect_error("X=POINT/A,0", Code::AptBadArgument);
 }
