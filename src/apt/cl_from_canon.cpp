@@ -64,6 +64,10 @@ void CanonToCl::goto_point(const canon::Vec3& p, const core::SourceLoc& src) {
 
 void CanonToCl::on(const canon::Op& op) {
   if (finished_) return;
+  // Between two ops the records are final, but for a traverse a hole may
+  // take back: flushed before any op but a hole.
+  if (records_.size() >= kChunk && !pending_ && !std::holds_alternative<canon::Hole>(op.kind))
+    flush();
   if (pending_) {
     hold(op);
     return;
@@ -265,6 +269,14 @@ void CanonToCl::finish() {
     release();
   cycle_off(src);
   add(cls::kFini, 0, {}, src);
+  flush();
+}
+
+void CanonToCl::flush() {
+  if (!flush_ || records_.empty()) return;
+  flush_(std::move(records_));
+  records_.clear();
+  last_traverse_.reset();
 }
 
 std::vector<ClRecord> canon_to_cl(const std::vector<canon::Op>& ops) {

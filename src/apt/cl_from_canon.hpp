@@ -6,6 +6,7 @@
 // G-code program", says what the CL cannot hold and how it is written).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -16,12 +17,21 @@ namespace usina::apt {
 
 class CanonToCl final : public canon::Sink {
  public:
+  // Takes the records written so far, when given: a program of millions of
+  // moves is written in parts (some kChunk records, each ending between two
+  // ops) and never held whole.
+  using Flush = std::function<void(std::vector<ClRecord>&&)>;
+  static constexpr std::size_t kChunk = 4096;
+
+  explicit CanonToCl(Flush flush = {}) : flush_(std::move(flush)) {}
+
   void on(const canon::Op& op) override;
 
   // Writes what is held, closes an open cycle, then FINI; once (front ends
   // may call it more than once).
   void finish() override;
 
+  // The records not yet flushed (all of them without a Flush).
   const std::vector<ClRecord>& records() const { return records_; }
 
  private:
@@ -58,6 +68,9 @@ class CanonToCl final : public canon::Sink {
   void write_drilled(const PendingHole& h);
   void release();
 
+  void flush();
+
+  Flush flush_;
   std::vector<ClRecord> records_;
   std::optional<canon::Vec3> at_;  // where the tool is
   std::optional<double> feed_;     // the CL's feed rate (mm/min) ...

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -34,17 +35,31 @@ bool cl_format(const std::string& f) {
 
 // The CL data of the canon stream. cldata and iso4343 feed a post or a
 // machine: none when the program has an error (as `usina apt` does); the
-// record print shows what was read, errors and all.
+// record print shows what was read, errors and all. The records go out in
+// parts as they come (never held whole): into a file, which is put in place
+// only when good, or, for standard output, which cannot be taken back, into
+// the bytes held until the run is over (the record print goes out at once).
 int trace_cl(const TraceOptions& o, std::FILE* out) {
-  apt::CanonToCl cl;
+  const bool hold = o.out == "-" && o.format != "cldump";
+  std::string held;
+  std::size_t written = 0;  // records
+  apt::CanonToCl cl([&](std::vector<apt::ClRecord>&& records) {
+    std::string bytes;
+    if (o.format == "cldata")
+      bytes = apt::write_cldata(records, static_cast<std::uint32_t>(written + 1));
+    if (o.format == "iso4343") bytes = apt::write_iso4343(records, written == 0 ? "MM" : "");
+    if (o.format == "cldump") bytes = apt::record_print(records, written + 1);
+    written += records.size();
+    if (hold) {
+      held += bytes;
+    } else {
+      std::fwrite(bytes.data(), 1, bytes.size(), out);
+    }
+  });
   const int run = run_program(o.run, cl);
   cl.finish();
   if (run == 2 || (run != 0 && o.format != "cldump")) return run;
-  std::string bytes;
-  if (o.format == "cldata") bytes = apt::write_cldata(cl.records());
-  if (o.format == "iso4343") bytes = apt::write_iso4343(cl.records(), "MM");
-  if (o.format == "cldump") bytes = apt::record_print(cl.records());
-  std::fwrite(bytes.data(), 1, bytes.size(), out);
+  std::fwrite(held.data(), 1, held.size(), out);
   return run;
 }
 

@@ -271,6 +271,34 @@ TEST(CanonToCl, InverseTimeAndPerRevolutionFeeds) {
   EXPECT_EQ(rev.programmed.value, 0.1);
 }
 
+// A long stream flushed in parts gives the bytes of the whole, each part
+// numbered on from the last; a hole's approach is never split from it.
+TEST(CanonToCl, FlushedInPartsIsTheWhole) {
+  std::vector<Op> ops;
+  for (int i = 0; i < 3000; ++i) {
+    ops.push_back(op(canon::Feed{{i * 1.0, 0, 0}, 100.0 + i % 3, {}, {}}));
+    for (const Op& o : g81(i * 1.0, 5, 2))
+      if (i % 100 == 0) ops.push_back(o);
+  }
+  std::string parts, print;
+  std::size_t n = 0, flushes = 0;
+  CanonToCl cl([&](std::vector<ClRecord>&& r) {
+    parts += write_cldata(r, static_cast<std::uint32_t>(n + 1));
+    print += record_print(r, n + 1);
+    n += r.size();
+    ++flushes;
+  });
+  for (const Op& o : ops)
+    cl.on(o);
+  cl.finish();
+  const std::vector<ClRecord> whole = canon_to_cl(ops);
+  EXPECT_GT(flushes, 2u);
+  EXPECT_TRUE(cl.records().empty());
+  EXPECT_EQ(n, whole.size());
+  EXPECT_EQ(parts, write_cldata(whole));
+  EXPECT_EQ(print, record_print(whole));
+}
+
 TEST(CanonToCl, MachineCodesAndFinishOnce) {
   CanonToCl cl;
   cl.on(op(canon::MachineCode{'M', 0, {}, {}}));
