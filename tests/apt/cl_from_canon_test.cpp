@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -297,6 +298,44 @@ TEST(CanonToCl, FlushedInPartsIsTheWhole) {
   EXPECT_EQ(n, whole.size());
   EXPECT_EQ(parts, write_cldata(whole));
   EXPECT_EQ(print, record_print(whole));
+}
+
+// Random streams of traverses, feeds, arcs (either way, helical, in XY) and
+// plain drillings come back move for move (a fixed seed: the same streams
+// every run).
+TEST(CanonToCl, RandomStreamsComeBack) {
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> u(-50.0, 50.0);
+  for (int round = 0; round < 200; ++round) {
+    std::vector<Op> ops{op(canon::Traverse{{u(rng), u(rng), 5}, {}})}, want = ops;
+    Vec3 at = std::get<canon::Traverse>(ops[0].kind).to;
+    for (unsigned line = 2; line < 40; ++line) {
+      const int kind = static_cast<int>(rng() % 4);
+      if (kind == 0) {
+        at = {u(rng), u(rng), u(rng) / 10};
+        ops.push_back(op(canon::Traverse{at, {}}, line));
+        want.push_back(ops.back());
+      } else if (kind == 1) {
+        at = {u(rng), u(rng), u(rng) / 10};
+        ops.push_back(op(canon::Feed{at, 100.0 + static_cast<double>(rng() % 3), {}, {}}, line));
+        want.push_back(ops.back());
+      } else if (kind == 2) {
+        const Vec3 c{at.x + u(rng) / 5, at.y + u(rng) / 5, at.z};
+        const double r = std::hypot(at.x - c.x, at.y - c.y), a = u(rng);
+        at = {c.x + r * std::cos(a), c.y + r * std::sin(a), at.z + u(rng) / 25};
+        ops.push_back(op(canon::Arc{at, c, {0, 0, 1}, rng() % 2 ? 1 : -1, 300.0, {}, {}}, line));
+        want.push_back(ops.back());
+      } else {
+        const std::vector<Op> h = g81(u(rng), u(rng), line);
+        ops.insert(ops.end(), h.begin(), h.end());
+        for (const std::size_t i : {0, 1, 3, 4, 2})
+          want.push_back(h[i]);
+        at = std::get<canon::Traverse>(h[4].kind).to;
+      }
+    }
+    SCOPED_TRACE(round);
+    expect_round_trip(ops, want);
+  }
 }
 
 TEST(CanonToCl, MachineCodesAndFinishOnce) {
