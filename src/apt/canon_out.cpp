@@ -129,7 +129,7 @@ void ClToCanon::cycle(const ClRecord& r) {
     cycle_ = false;
     return;
   }
-  // CYCLE/DRILL,depth,IPM|MMPM,feed,clearance (the numbers in that order).
+  // CYCLE/DRILL,depth,IPM|MMPM,feed,clearance[,retract] (the numbers in that order).
   std::vector<double> nums;
   for (const ClWord& w : r.words)
     if (w.kind == ClWord::Kind::Real) nums.push_back(w.real);
@@ -141,6 +141,9 @@ void ClToCanon::cycle(const ClRecord& r) {
   depth_ = nums[0] * scale_;
   feed_ = nums[1] * scale_;
   clearance_ = nums[2] * scale_;
+  // A fourth number (usina's, docs/apt.md): the height above the point the
+  // tool leaves the hole to, when not the clearance (G98's initial level).
+  retract_ = nums.size() >= 4 ? nums[3] * scale_ : clearance_;
 }
 
 void ClToCanon::surface(const ClRecord& r) {
@@ -256,8 +259,9 @@ void ClToCanon::drill(const canon::Vec3& p, const ClRecord& r) {
   const canon::Vec3 bottom{p.x, p.y, p.z - depth_};
   emit(canon::Traverse{top, {}}, r, canon::Origin::Cycle);
   emit(canon::Feed{bottom, feed_, {}, {}}, r, canon::Origin::Cycle);
-  emit(canon::Traverse{top, {}}, r, canon::Origin::Cycle);
-  at_ = top;
+  const canon::Vec3 out{p.x, p.y, p.z + retract_};
+  emit(canon::Traverse{out, {}}, r, canon::Origin::Cycle);
+  at_ = out;
   // The moves above drill it: the hole is their feature, not one more for a
   // post to drill (post/writer_hole.cpp).
   emit(canon::Hole{p, diameter_.value_or(0.0), depth_}, r, canon::Origin::Cycle);

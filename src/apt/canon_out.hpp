@@ -66,10 +66,11 @@ class ClToCanon {
   std::optional<canon::ProgrammedFeed> per_rev_;
   std::optional<double> diameter_;
   canon::Spindle spindle_{};
-  // CYCLE/DRILL,depth,IPM,f,clearance: each GOTO point drills.
+  // CYCLE/DRILL,depth,IPM,f,clearance[,retract]: each GOTO point drills.
   bool cycle_ = false;
   double depth_ = 0.0;
   double clearance_ = 0.0;
+  double retract_ = 0.0;           // where the tool leaves the hole to, above the point
   std::optional<PendingArc> arc_;  // a circle's record, waiting for its motion
   bool segmented_ = false;         // its points so far went out as an arc
   std::optional<canon::Vec3> at_;  // where the tool is, once a motion said

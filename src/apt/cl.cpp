@@ -44,9 +44,9 @@ void print_word(fmt::memory_buffer& out, const ClRecord& r, std::size_t i) {
 
 }  // namespace
 
-std::string record_print(const std::vector<ClRecord>& records) {
+std::string record_print(const std::vector<ClRecord>& records, std::size_t first) {
   fmt::memory_buffer out;
-  std::size_t recno = 0;
+  std::size_t recno = first - 1;
   for (const ClRecord& r : records) {
     fmt::format_to(std::back_inserter(out), "{} {} {} {} ", ++recno, r.cls, r.sub, r.words.size());
     for (std::size_t i = 0; i < r.words.size(); ++i) {

@@ -49,7 +49,7 @@ ClWord symbol_word(const std::string& name);
 std::vector<ClWord> text_words(const std::string& text, std::size_t count);
 
 // The record print of ../shared/conformance/apt: "recno class subclass
-// nwords data...", one record a line.
-std::string record_print(const std::vector<ClRecord>& records);
+// nwords data...", one record a line, numbered from `first`.
+std::string record_print(const std::vector<ClRecord>& records, std::size_t first = 1);
 
 }  // namespace usina::apt

@@ -130,9 +130,9 @@ bool Reader::next(ClRecord& r) {
 
 }  // namespace
 
-std::string write_cldata(const std::vector<ClRecord>& records) {
+std::string write_cldata(const std::vector<ClRecord>& records, std::uint32_t first) {
   std::string out;
-  std::uint32_t recno = 0;
+  std::uint32_t recno = first - 1;
   for (const ClRecord& r : records) {
     put_u32(out, ++recno);
     put_u32(out, static_cast<std::uint32_t>(r.words.size()));

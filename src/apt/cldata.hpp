@@ -21,10 +21,11 @@ namespace usina::apt {
 // longest records hold 242).
 inline constexpr std::size_t kMostCldataWords = 4096;
 
-// The bytes of `records`, numbered from 1. A real smaller than 1e-150 in
+// The bytes of `records`, numbered from `first` (a file written in parts
+// numbers each part on from the last). A real smaller than 1e-150 in
 // magnitude is written as 0 (its bytes could read as text); text longer
 // than 6 characters is cut.
-std::string write_cldata(const std::vector<ClRecord>& records);
+std::string write_cldata(const std::vector<ClRecord>& records, std::uint32_t first = 1);
 
 // Reads the records of `bytes` (file `file` of a SourceManager) in order,
 // handing each to `take` until it returns false. A record that breaks the

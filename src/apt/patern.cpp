@@ -212,27 +212,54 @@ PointsResult random(const std::vector<Arg>& a, Budget& b) {
   return out;
 }
 
-// The pattern copied by each offset, copy after copy.
+// The pattern copied by each offset, copy after copy (the manual's
+// columns): the first, third ... in the pattern's order, the second,
+// fourth ... in the reverse order (the APT360 manual, §4.5.3: the tool
+// goes up one column and down the next).
 PointsResult copies(const Arg& pattern, const std::vector<core::Vec3>& offsets, Budget& b) {
-  const std::size_t n = pattern.geom.points.size();
+  const std::vector<core::Vec3>& column = pattern.geom.points.all();
+  const std::size_t n = column.size();
   if (n * offsets.size() > kMaxPatternPoints)
     return bad("PATERN/PARLEL: more than " + std::to_string(kMaxPatternPoints) + " points");
   if (!b.take(n * offsets.size())) return spent();
   Points out;
-  for (const core::Vec3& d : offsets)
-    for (const core::Vec3& p : pattern.geom.points)
-      out.push_back(p + d);
+  for (std::size_t k = 0; k < offsets.size(); ++k)
+    for (std::size_t i = 0; i < n; ++i)
+      out.push_back(column[k % 2 == 0 ? i : n - 1 - i] + offsets[k]);
   return out;
+}
+
+bool same_point(const core::Vec3& p, const core::Vec3& q) {
+  return core::distance(p, q) <= 1e-6;
+}
+
+// PARLEL,pattern1,pattern2: the two meet at the first or last point of
+// each (the manual: "a common point"); the columns stand at pattern2's
+// points, from that common point on (pattern2 read backwards when the
+// common point is its last), so that the first column is pattern1 itself.
+PointsResult parlel_patterns(const Arg& column, const Arg& rows, Budget& b) {
+  const std::vector<core::Vec3>& c = column.geom.points.all();
+  const std::vector<core::Vec3>& r = rows.geom.points.all();
+  if (!b.take(r.size())) return spent();
+  const auto meets = [&c](const core::Vec3& p) {
+    return same_point(p, c.front()) || same_point(p, c.back());
+  };
+  const bool from_first = meets(r.front());
+  if (!from_first && !meets(r.back()))
+    return bad(
+        "PATERN/PARLEL,pattern1,pattern2: the patterns have no common point (the first or "
+        "last point of each)");
+  std::vector<core::Vec3> offsets;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const std::size_t k = from_first ? i : r.size() - 1 - i;
+    offsets.push_back(r[k] - (from_first ? r.front() : r.back()));
+  }
+  return copies(column, offsets, b);
 }
 
 PointsResult parlel(const std::vector<Arg>& a, Budget& b) {
   std::vector<core::Vec3> offsets;
-  if (forms::match(a, {"PARLEL", "pat", "pat"})) {
-    if (!b.take(a[2].geom.points.size())) return spent();
-    for (const core::Vec3& q : a[2].geom.points)
-      offsets.push_back(q - a[2].geom.points.front());
-    return copies(a[1], offsets, b);
-  }
+  if (forms::match(a, {"PARLEL", "pat", "pat"})) return parlel_patterns(a[1], a[2], b);
   if (forms::match(a, {"PARLEL", "pat", "v", "n"})) {
     if (!whole(a[3].num, 1)) return bad("PATERN/PARLEL,pattern,vector,n: n is whole, 1 or more");
     if (!b.take(static_cast<std::size_t>(a[3].num))) return spent();

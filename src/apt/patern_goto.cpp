@@ -1,5 +1,5 @@
-// GOTO/pattern's modifiers (docs/apt.md, "Patterns"): which points are
-// visited, in which order, over which rise. The work is the pattern's size
+// GOTO/pattern's modifiers (docs/apt.md, "Patterns"; the APT360 manual
+// §4.6): which points are visited, in which order, over which rise. The work is the pattern's size
 // plus the lists', never their product (a hostile list of ranges stays
 // linear).
 #include <algorithm>
@@ -66,6 +66,7 @@ void count_once(std::vector<Range> ranges, std::vector<int>& delta) {
 
 struct Modifiers {
   bool invers = false;
+  bool constant = false;          // CONST: the numbers are the definition's, not the output's
   std::vector<int> omit, retain;  // difference arrays of the points named
   int retains = 0;                // RETAIN groups
   std::vector<std::pair<Range, double>> avoid;
@@ -75,13 +76,15 @@ tl::expected<Modifiers, GeomError> read_modifiers(const std::vector<Arg>& mods, 
   Modifiers m;
   m.omit.assign(n + 1, 0);
   m.retain.assign(n + 1, 0);
+  // INVERS and CONST say how every list's numbers read, wherever they stand.
+  for (const Arg& a : mods) {
+    m.invers = m.invers || is_word(a, "INVERS");
+    m.constant = m.constant || is_word(a, "CONST");
+  }
   for (std::size_t k = 0; k < mods.size();) {
     const std::string w = mods[k].kind == Arg::Kind::Word ? mods[k].word : std::string();
     ++k;
-    if (w == "INVERS") {
-      m.invers = true;
-      continue;
-    }
+    if (w == "INVERS" || w == "CONST") continue;
     double rise = 0.0;
     if (w == "AVOID") {
       if (k == mods.size() || mods[k].kind != Arg::Kind::Number || !(mods[k].num > 0))
@@ -89,10 +92,16 @@ tl::expected<Modifiers, GeomError> read_modifiers(const std::vector<Arg>& mods, 
       rise = mods[k++].num;
     }
     if (w != "OMIT" && w != "RETAIN" && w != "AVOID")
-      return bad("GOTO/pattern takes INVERS, OMIT, RETAIN and AVOID after the pattern" +
-                 std::string(w.empty() ? "" : ", not " + w));
+      return bad("GOTO/pattern takes INVERS, CONST, OMIT, RETAIN and AVOID after the pattern" +
+                 std::string(w.empty() ? " (a feed rate is a FEDRAT statement of its own)"
+                                       : ", not " + w));
     auto ranges = point_list(mods, k, n, w);
     if (!ranges) return tl::make_unexpected(ranges.error());
+    // The manual's numbers follow the output order (INVERS: 1 is the last
+    // point defined) unless CONST says the definition's.
+    if (m.invers && !m.constant)
+      for (Range& r : *ranges)
+        r = {n - 1 - r.second, n - 1 - r.first};
     if (w == "OMIT") count_once(std::move(*ranges), m.omit);
     if (w == "RETAIN") {
       count_once(std::move(*ranges), m.retain);

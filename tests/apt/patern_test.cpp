@@ -80,17 +80,29 @@ TEST(AptPatern, Random) {
                 {{1, 1, 0}, {0, 0, 0}, {2, 0, 0}, {7, 8, 9}});
 }
 
+// The APT360 manual's parallelogram pattern (§4.5.3): the first pattern is
+// the first column; a column at each point of the second, the second,
+// fourth ... columns in the reverse order. By hand, A = (0,0),(2,0).
 TEST(AptPatern, ParlelByPattern) {
-  // A copied by each offset of B from B's first point: (0,0), (0,3).
-  expect_points(base("B=PATERN/LINEAR,(POINT/5,5),(POINT/5,8),2\nX=PATERN/PARLEL,A,B").def("X"),
-                {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {2, 3, 0}});
+  // B from A's first point: columns at offsets (0,0), (0,3), (0,6).
+  expect_points(base("B=PATERN/LINEAR,P0,(POINT/0,6),3\nX=PATERN/PARLEL,A,B").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, 3, 0}, {0, 3, 0}, {0, 6, 0}, {2, 6, 0}});
+  // B from A's last point (2,0): the same offsets.
+  expect_points(base("B=PATERN/LINEAR,(POINT/2,0),(POINT/2,3),2\nX=PATERN/PARLEL,A,B").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, 3, 0}, {0, 3, 0}});
+  // B ending at A's first point: read from its end, so A is the first column.
+  expect_points(base("B=PATERN/LINEAR,(POINT/0,-3),P0,2\nX=PATERN/PARLEL,A,B").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, -3, 0}, {0, -3, 0}});
 }
 
 TEST(AptPatern, ParlelAlongVector) {
   expect_points(base("X=PATERN/PARLEL,A,VY,3").def("X"),
-                {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}, {0, 2, 0}, {2, 2, 0}});
+                {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 2, 0}, {2, 2, 0}});
   expect_points(base("X=PATERN/PARLEL,A,(VECTOR/0,2,0),INCR,1,4").def("X"),
-                {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}, {0, 5, 0}, {2, 5, 0}});
+                {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {0, 5, 0}, {2, 5, 0}});
+  // INCR,n,AT,d: n columns d apart besides the pattern (the manual's §4.5.3.3).
+  expect_points(base("X=PATERN/PARLEL,A,VY,INCR,2,AT,1.5").def("X"),
+                {{0, 0, 0}, {2, 0, 0}, {2, 1.5, 0}, {0, 1.5, 0}, {0, 3, 0}, {2, 3, 0}});
 }
 
 TEST(AptPatern, NthPoint) {
@@ -120,6 +132,9 @@ TEST(AptPatern, DefinitionErrors) {
   expect_error("X=PATERN/RANDOM", Code::AptUnknownForm);
   // 1,000 points copied 1,000 times: beyond the 100,000 a pattern holds.
   expect_error("B=PATERN/LINEAR,P0,VX,1000\nX=PATERN/PARLEL,B,VY,1000", Code::AptBadArgument);
+  // PARLEL of two patterns with no common first or last point.
+  expect_error("B=PATERN/LINEAR,(POINT/5,5),(POINT/5,8),2\nX=PATERN/PARLEL,A,B",
+               Code::AptBadArgument);
   expect_error("X=POINT/A,3", Code::AptBadArgument);
   expect_error("X=POINT/A,0", Code::AptBadArgument);
 }
@@ -175,7 +190,12 @@ TEST(AptPatern, GotoModifiers) {
   expect_xs(goto_points(go(",INVERS")), {3, 2, 1, 0});
   expect_xs(goto_points(go(",OMIT,2,THRU,3")), {0, 3});
   expect_xs(goto_points(go(",RETAIN,1,4")), {0, 3});
-  expect_xs(goto_points(go(",INVERS,OMIT,1")), {3, 2, 1});
+  // The numbers follow the output order (INVERS: 1 is the last point); CONST
+  // makes them the definition's (the APT360 manual, §4.6.2 and §4.6.6).
+  expect_xs(goto_points(go(",INVERS,OMIT,1")), {2, 1, 0});
+  expect_xs(goto_points(go(",OMIT,1,INVERS")), {2, 1, 0});
+  expect_xs(goto_points(go(",INVERS,CONST,OMIT,1")), {3, 2, 1});
+  expect_xs(goto_points(go(",CONST,OMIT,1")), {1, 2, 3});  // without INVERS, the same order
   // Point 3 over a rise of 5: up at point 2, across, down (a RAPID).
   const AptRun r = go(",AVOID,5,3");
   const std::vector<core::Vec3> ps = goto_points(r);
@@ -187,6 +207,24 @@ TEST(AptPatern, GotoModifiers) {
   for (const ClRecord& c : r.result.records)
     rapids += c.cls == cls::kPost && c.sub == 5 ? 1 : 0;
   EXPECT_EQ(rapids, 1);
+}
+
+// The manual's example (§4.6.6, a pattern of 12 points):
+// GOTO/PAT1,INVERS,RETAIN,2,THRU,4,6,8 and GOTO/PAT1,INVERS,CONST,RETAIN,11,THRU,9,7,5
+// both go to points 11, 10, 9, 7, 5 (x = 10, 9, 8, 6, 4).
+TEST(AptPatern, ConstNumbersByTheDefinition) {
+  const std::string twelve = "X=PATERN/LINEAR,P0,VX,12\nGOTO/X";
+  expect_xs(goto_points(base(twelve + ",INVERS,RETAIN,2,THRU,4,6,8")), {10, 9, 8, 6, 4});
+  expect_xs(goto_points(base(twelve + ",INVERS,CONST,RETAIN,11,THRU,9,7,5")), {10, 9, 8, 6, 4});
+  // AVOID's numbers too: the output's 1 under INVERS is the definition's 12.
+  const std::vector<core::Vec3> ps = goto_points(base(twelve + ",INVERS,RETAIN,1,2,AVOID,4,2"));
+  ASSERT_EQ(ps.size(), 4u);  // 12; up, across, 11
+  EXPECT_DOUBLE_EQ(ps[1].z, 4.0);
+  EXPECT_DOUBLE_EQ(ps[3].x, 10.0);
+  const std::vector<core::Vec3> c =
+      goto_points(base(twelve + ",INVERS,CONST,RETAIN,12,11,AVOID,4,11"));
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_DOUBLE_EQ(c[2].z, 4.0);
 }
 
 TEST(AptPatern, OverlappingListsAndSeveralAvoids) {
@@ -209,8 +247,9 @@ TEST(AptPatern, GotoErrors) {
   expect_error(x + "GOTO/X,OMIT", Code::AptBadArgument);
   expect_error(x + "GOTO/X,OMIT,1,THRU", Code::AptBadArgument);
   expect_error(x + "GOTO/X,AVOID,0,1", Code::AptBadArgument);
-  expect_error(x + "GOTO/X,CONST", Code::AptBadArgument);
-  expect_error(x + "GOTO/X,2", Code::AptBadArgument);
+  expect_error(x + "GOTO/X,CONST,OMIT,5", Code::AptBadArgument);
+  expect_error(x + "GOTO/X,2", Code::AptBadArgument);  // a feed: FEDRAT of its own
+  expect_error(x + "GOTO/X,INVERS,CLW", Code::AptBadArgument);
   expect_error(x + "FROM/X", Code::AptBadArgument);
 }
 
