@@ -2,7 +2,9 @@
 // or its CL data (--format cldata|iso4343|cldump: docs/apt.md).
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,15 +35,54 @@ bool cl_format(const std::string& f) {
   return f == "cldata" || f == "iso4343" || f == "cldump";
 }
 
+// Standard output cannot be taken back: the CL data of a program waits in
+// an unnamed temporary file (memory stays flat whatever the program's size)
+// until the run says whether it goes out.
+class HeldOutput {
+ public:
+  HeldOutput() : file_(std::tmpfile()) {}
+
+  HeldOutput(const HeldOutput&) = delete;
+  HeldOutput& operator=(const HeldOutput&) = delete;
+
+  ~HeldOutput() {
+    if (file_ != nullptr) std::fclose(file_);
+  }
+
+  std::FILE* stream() const { return file_; }
+
+  // Copies what was held to `out`; false when it could not be read back.
+  bool send_to(std::FILE* out) const {
+    if (std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0) return false;
+    std::vector<char> buf(1 << 16);
+    std::size_t n = 0;
+    while ((n = std::fread(buf.data(), 1, buf.size(), file_)) > 0)
+      std::fwrite(buf.data(), 1, n, out);
+    return std::ferror(file_) == 0;
+  }
+
+ private:
+  std::FILE* file_;
+};
+
 // The CL data of the canon stream. cldata and iso4343 feed a post or a
 // machine: none when the program has an error (as `usina apt` does); the
 // record print shows what was read, errors and all. The records go out in
-// parts as they come (never held whole): into a file, which is put in place
-// only when good, or, for standard output, which cannot be taken back, into
-// the bytes held until the run is over (the record print goes out at once).
+// parts as they come (never held whole in memory): into a file, which is
+// put in place only when good, or, for standard output, into a held
+// temporary file sent on when the run is over (the record print goes out
+// at once).
 int trace_cl(const TraceOptions& o, std::FILE* out) {
-  const bool hold = o.out == "-" && o.format != "cldump";
-  std::string held;
+  std::optional<HeldOutput> held;
+  if (o.out == "-" && o.format != "cldump") {
+    held.emplace();
+    if (held->stream() == nullptr) {
+      fmt::print(stderr, "usina: error: trace: no temporary file to hold the CL data in: {}\n",
+                 std::strerror(errno));
+      return 2;
+    }
+  }
+  std::FILE* sink = held ? held->stream() : out;
   std::size_t written = 0;  // records
   apt::CanonToCl cl([&](std::vector<apt::ClRecord>&& records) {
     std::string bytes;
@@ -50,16 +91,15 @@ int trace_cl(const TraceOptions& o, std::FILE* out) {
     if (o.format == "iso4343") bytes = apt::write_iso4343(records, written == 0 ? "MM" : "");
     if (o.format == "cldump") bytes = apt::record_print(records, written + 1);
     written += records.size();
-    if (hold) {
-      held += bytes;
-    } else {
-      std::fwrite(bytes.data(), 1, bytes.size(), out);
-    }
+    std::fwrite(bytes.data(), 1, bytes.size(), sink);
   });
   const int run = run_program(o.run, cl);
   cl.finish();
   if (run == 2 || (run != 0 && o.format != "cldump")) return run;
-  std::fwrite(held.data(), 1, held.size(), out);
+  if (held && !held->send_to(out)) {
+    fmt::print(stderr, "usina: error: trace: the held CL data could not be read back\n");
+    return 2;
+  }
   return run;
 }
 
