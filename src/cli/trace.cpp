@@ -51,9 +51,11 @@ class HeldOutput {
 
   std::FILE* stream() const { return file_; }
 
-  // Copies what was held to `out`; false when it could not be read back.
+  // Copies what was held to `out`; false when it could not all be written
+  // (a full disk) or read back.
   bool send_to(std::FILE* out) const {
-    if (std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0) return false;
+    if (std::fflush(file_) != 0 || std::ferror(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0)
+      return false;
     std::vector<char> buf(1 << 16);
     std::size_t n = 0;
     while ((n = std::fread(buf.data(), 1, buf.size(), file_)) > 0)
@@ -97,7 +99,9 @@ int trace_cl(const TraceOptions& o, std::FILE* out) {
   cl.finish();
   if (run == 2 || (run != 0 && o.format != "cldump")) return run;
   if (held && !held->send_to(out)) {
-    fmt::print(stderr, "usina: error: trace: the held CL data could not be read back\n");
+    fmt::print(stderr,
+               "usina: error: trace: the CL data held for standard output could not be written or "
+               "read back (is the temporary folder full?)\n");
     return 2;
   }
   return run;

@@ -207,6 +207,29 @@ TEST(TraceCl, ErrorPaths) {
   EXPECT_EQ(slurp(kept), "old");
 }
 
+// CL data held for standard output that cannot be written whole (a file
+// size limit stands for a full temporary folder): an error, and nothing on
+// standard output rather than a short CL a post would take.
+TEST(TraceCl, HeldDataThatCannotBeWrittenIsAnErrorNotAShortFile) {
+  const TempDir dir;
+  std::string text = "G21 G90 G0 X0 Y0 Z5\nG1 Z0 F300\n";
+  for (int i = 0; i < 3000; ++i)
+    text += "G1 X" + std::to_string(i % 100) + " Y" + std::to_string(i / 100) + "\n";
+  const std::string p = dir.write("long.ngc", text + "M2\n");
+  const std::string err = dir.path("err");
+  const std::string trace = quote(USINA_BINARY) + " trace " + quote(p) + " --format cldata";
+  // SIGXFSZ ignored: the write past the limit fails (EFBIG) instead of
+  // killing the process.
+  const test::Run r = shell("trap '' XFSZ; ulimit -f 64; " + trace + " 2>" + quote(err), err);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out.size() << " bytes";
+  EXPECT_TRUE(contains(r.err, "could not be written or read back")) << r.err;
+  // Without the limit the same command writes it whole.
+  const test::Run whole = shell(trace + " 2>" + quote(err), err);
+  EXPECT_EQ(whole.status, 0) << whole.err;
+  EXPECT_GT(whole.out.size(), 64u * 1024u);
+}
+
 TEST(TraceCl, CldataIsNeverWrittenToATerminal) {
   const TempDir dir;
   const std::string p = dir.write("p.ngc", "G0 X1\nM2\n");
