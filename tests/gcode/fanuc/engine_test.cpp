@@ -345,9 +345,27 @@ std::string scratch(const std::string& name) {
   return ::testing::TempDir() + "usina_fanuc_" + std::to_string(::getpid()) + "_" + name;
 }
 
-std::string offsets_file() {
-  const std::string path = scratch("offsets.toml");
-  std::FILE* f = std::fopen(path.c_str(), "w");
+// A file the test writes and removes when it ends (1,282 were left in /tmp).
+class ScratchFile {
+ public:
+  explicit ScratchFile(std::string path) : path_(std::move(path)) {}
+
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+
+  ~ScratchFile() { std::remove(path_.c_str()); }
+
+  operator const std::string&() const { return path_; }  // NOLINT: read as its path
+
+  const char* c_str() const { return path_.c_str(); }
+
+ private:
+  std::string path_;
+};
+
+std::unique_ptr<ScratchFile> offsets_file() {
+  auto path = std::make_unique<ScratchFile>(scratch("offsets.toml"));
+  std::FILE* f = std::fopen(path->c_str(), "w");
   std::fputs(
       "# offset page\n[H]\n1 = [10.5, -0.5]\n2 = 3.0\n[D]\n11 = [5.0, -0.01]\n"
       "12 = [-2.0, 0]\n",
@@ -357,7 +375,8 @@ std::string offsets_file() {
 }
 
 TEST(FanucEngine, G43AndG44TakeHRegistersFromTheOffsetFile) {
-  const std::string o = offsets_file();
+  const auto offsets = offsets_file();
+  const std::string& o = *offsets;
   // #5083: the tool length offset now applied on Z (the trace shows the tip).
   auto r = run_fanuc_offsets("G43 H1\nG0 X#5083\nG44 H2\nG0 X#5083\nG49\nG0 X#5083\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
@@ -368,7 +387,8 @@ TEST(FanucEngine, G43AndG44TakeHRegistersFromTheOffsetFile) {
 }
 
 TEST(FanucEngine, G43WithAMoveAndHSelectedBefore) {
-  const std::string o = offsets_file();
+  const auto offsets = offsets_file();
+  const std::string& o = *offsets;
   auto r = run_fanuc_offsets("H1\nG43 Z50.\nG0 X#5083\nG43 H2 Z20.\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
   ASSERT_EQ(r->ends().size(), 3u);
@@ -378,7 +398,8 @@ TEST(FanucEngine, G43WithAMoveAndHSelectedBefore) {
 }
 
 TEST(FanucEngine, OffsetRegistersAsVariablesAndG10L10ToL13) {
-  const std::string o = offsets_file();
+  const auto offsets = offsets_file();
+  const std::string& o = *offsets;
   auto r = run_fanuc_offsets(
       "G0 X#2201 Y#2001 Z#2611\nG10 L10 P3 R7.\nG91 G10 L11 P3 R1.\nG90\n"
       "G0 X[#2203 + #2003]\nM30\n",
@@ -392,7 +413,8 @@ TEST(FanucEngine, OffsetRegistersAsVariablesAndG10L10ToL13) {
 }
 
 TEST(FanucEngine, CutterCompTakesTheRadiusOfRegisterD) {
-  const std::string o = offsets_file();
+  const auto offsets = offsets_file();
+  const std::string& o = *offsets;
   auto r =
       run_fanuc_offsets("G0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X-20.\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
@@ -404,7 +426,7 @@ TEST(FanucEngine, OffsetFileErrors) {
   EXPECT_EQ(
       run_fanuc_offsets("M30\n", ::testing::TempDir() + "no_such_offsets.toml")->first_error(),
       Code::FileNotFound);
-  const std::string bad = scratch("bad_offsets.toml");
+  const ScratchFile bad(scratch("bad_offsets.toml"));
   std::FILE* f = std::fopen(bad.c_str(), "w");
   std::fputs("[H]\n1 = [x, 2]\n", f);
   std::fclose(f);
@@ -415,7 +437,8 @@ TEST(FanucEngine, OffsetFileErrors) {
 }
 
 TEST(FanucEngine, MirrorSwapsTheCompensationSide) {
-  const std::string o = offsets_file();
+  const auto offsets = offsets_file();
+  const std::string& o = *offsets;
   auto r = run_fanuc_offsets(
       "G51.1 X0\nG0 X0 Y-20.\nG41 D11 G1 X0 Y-10. F100.\nY10.\nG40 G0 X20.\nM30\n", o);
   EXPECT_TRUE(r->ok) << r->first_error_text();
