@@ -320,6 +320,10 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   // The hand-over: evaluated words down the interpreter's one road
   // (interp/evaluated_block.hpp), each at the column it was written at.
   bool hand_over(const TapeBlock& b, Words& w);
+  // A plain move (most blocks of a long program) straight to the hand-over
+  // (fanuc/plain_move.cpp).
+  bool plain_move(const Words& w) const;
+  bool plain_move_block(const TapeBlock& b, const Words& w);
   bool hand(const TapeBlock& b, std::span<const EvaluatedWord> words);
   bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);
   core::SourceLoc block_loc(const TapeBlock& b) const;

@@ -299,6 +299,7 @@ bool Engine::nc_block(const TapeBlock& b) {
   Words& w = words_;  // its list's storage serves every block
   w.clear();
   if (!read_words(b, w)) return false;
+  if (plain_move(w)) return plain_move_block(b, w);
   decimal_point(b, w);
   for (const NcWord& g : w.list) {
     if (g.letter == 'M' && !g.vacant) m_ = g.value;

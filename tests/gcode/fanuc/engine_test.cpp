@@ -66,6 +66,19 @@ TEST(FanucEngine, DecimalPointFanucReadsLeastIncrements) {
   EXPECT_FALSE(r->has(Code::IntegerCoordinate));
 }
 
+// The rule holds in a plain move after others (a shortcut for plain moves
+// must not let an integer past it).
+TEST(FanucEngine, DecimalPointRuleAfterPlainMoves) {
+  auto fanuc = run_fanuc("G0 X1. Y1.\nG1 X1000 Y2. F100.\nM30\n", {}, {"decimal_point=fanuc"});
+  EXPECT_TRUE(fanuc->ok) << fanuc->first_error_text();
+  ASSERT_EQ(fanuc->ends().size(), 2u);
+  EXPECT_NEAR(fanuc->ends()[1].x, 1.0, 1e-9);
+  auto calculator = run_fanuc("G0 X1. Y1.\nG1 X1000 Y2. F100.\nM30\n");
+  ASSERT_EQ(calculator->ends().size(), 2u);
+  EXPECT_NEAR(calculator->ends()[1].x, 1000.0, 1e-9);
+  EXPECT_TRUE(calculator->has(Code::IntegerCoordinate));
+}
+
 TEST(FanucEngine, VacantVariableLeavesItsWordOut) {
   auto r = run_fanuc("G0 X5. Y5.\nG0 X#1 Y7.\nM30\n");
   EXPECT_TRUE(r->ok);

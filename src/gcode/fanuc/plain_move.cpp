@@ -1,0 +1,50 @@
+// The shortcut of a plain move: a block of G00-G03 and X Y Z I J K R F S
+// words written with a point, outside every mode the front end changes
+// moves in (transformations, polar coordinates or interpolation, canned
+// cycles, a modal macro call, the move after G69). Such a block is most
+// blocks of a long program, and each pass of nc_block would let it by
+// unchanged: it goes straight to the hand-over with what those passes would
+// have recorded (issue 19). A block that is not plain in every respect
+// takes the whole road.
+#include "gcode/fanuc/engine.hpp"
+
+namespace usina::gcode::fanuc {
+
+bool Engine::plain_move(const Words& w) const {
+  constexpr std::uint32_t kPlain = Words::letters_of("GXYZIJKRFS");
+  constexpr std::uint32_t kDistances = Words::letters_of("XYZIJKR");
+  if ((w.letters & ~kPlain) != 0) return false;
+  // The modes that change moves or add words (nc_block's passes).
+  if (xf_.active() || polar_ || polar_interp_.active() || after_g69_ || modal_call_) return false;
+  if (interp_.state().motion > 30 || cycle_ == 760 || cycle_ == 870) return false;
+  for (const NcWord& word : w.list) {
+    // A vacant word, a value to check after its rule, or a distance the
+    // decimal-point rule reads (it may also warn).
+    if (word.vacant || !word.checked) return false;
+    if (word.integer_literal && (Words::letter_bit(word.letter) & kDistances) != 0) return false;
+    if (word.letter == 'G' && (word.code < 0 || word.code > 30 || word.code % 10 != 0))
+      return false;
+  }
+  return true;
+}
+
+bool Engine::plain_move_block(const TapeBlock& b, const Words& w) {
+  passed_m_.clear();  // machine_codes: no M word
+  handed_.clear();
+  const std::uint32_t col0 = loc_of(b, 0).col;
+  for (const NcWord& word : w.list) {
+    double v = word.value;
+    if (word.letter == 'G') {
+      motion_ = cycle_ = word.code;  // fanuc_codes
+      v = word.code / 10.0;
+    }
+    handed_.push_back({word.letter, v, col0 + static_cast<std::uint32_t>(word.pos)});
+  }
+  // A cycle's levels (convert_codes) were forgotten by the block that left
+  // its mode: the interpreter's motion is group 1's by now.
+  if (!hand(b, handed_)) return false;
+  reset_program_point();
+  return true;
+}
+
+}  // namespace usina::gcode::fanuc
