@@ -20,6 +20,13 @@ constexpr std::uint32_t letter_bit(char letter) {
   return std::uint32_t{1} << (letter - 'A');
 }
 
+constexpr std::uint32_t letters_of(std::string_view set) {
+  std::uint32_t bits = 0;
+  for (const char c : set)
+    bits |= letter_bit(c);
+  return bits;
+}
+
 // A block's commands and values. Fixed arrays, not maps: a block is checked
 // for every line of the program, and nothing is allocated for it.
 struct BlockCodes {
@@ -131,8 +138,11 @@ Checked read_code(const CodeIndex& codes, const OptionValues& options, const Wor
 }
 
 Checked read_value(const Word& w, BlockCodes& b) {
-  static constexpr std::string_view kLetters = "FIJKLNPRSTXYZ";
-  if (kLetters.find(w.letter) == std::string_view::npos) {
+  // Sets of letters as bits: a search of a string called memchr for every
+  // word of every block (issue 19).
+  constexpr std::uint32_t kLetters = letters_of("FIJKLNPRSTXYZ");
+  constexpr std::uint32_t kNotNegative = letters_of("FNPTS");
+  if ((kLetters & letter_bit(w.letter)) == 0) {
     return tl::unexpected(
         Failure{20, w.col,
                 fmt::format("{} words are not in Grbl (3 axes X Y Z; no A B C D E H Q U V W, "
@@ -147,7 +157,7 @@ Checked read_value(const Word& w, BlockCodes& b) {
     return tl::unexpected(
         Failure{25, w.col, fmt::format("{} word appears twice in the block", w.letter)});
   }
-  if (std::string_view("FNPTS").find(w.letter) != std::string_view::npos && w.value < 0) {
+  if ((kNotNegative & letter_bit(w.letter)) != 0 && w.value < 0) {
     return tl::unexpected(
         Failure{4, w.col, fmt::format("{}{} must not be negative", w.letter, w.value)});
   }

@@ -129,7 +129,9 @@ std::size_t read_number(std::string_view s, double& value) {
   std::size_t i = 0;
   if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
   const Decimal d = scan_decimal(s, i);
-  if (d.digits == 0 || !std::isfinite(d.value)) return 0;
+  // Up to 15 digits the value is finite: no test waits for the division.
+  if (d.digits == 0 || (d.digits > decimal_detail::kExactDigits && !std::isfinite(d.value)))
+    return 0;
   value = s[0] == '-' ? -d.value : d.value;
   return d.end;
 }

@@ -17,6 +17,15 @@ double deg(double rad) {
   return core::rad_to_deg(rad);
 }
 
+}  // namespace
+
+std::optional<double> Heading::degrees() const {
+  if (!known_) return std::nullopt;
+  return angle_ ? *angle_ : deg(std::atan2(step_.y, step_.x));
+}
+
+namespace {
+
 double rad(double degrees) {
   return core::deg_to_rad(degrees);
 }
@@ -238,11 +247,11 @@ bool Translator::tangent_arc(Vec2 p0, bool ccw) {
   double dir = 0.0;
   if (words_.has('A') && words_.has('C')) {
     dir = words_.get('A');
-  } else if (!work_.direction) {
+  } else if (const auto heading = work_.direction.degrees()) {
+    dir = *heading;
+  } else {
     return error(core::Code::NoTangentDirection, words_.col('R'),
                  "a tangent arc with no previous move to be tangent to");
-  } else {
-    dir = *work_.direction;
   }
   const Vec2 n = ccw ? Vec2{-std::sin(rad(dir)), std::cos(rad(dir))}
                      : Vec2{std::sin(rad(dir)), -std::cos(rad(dir))};
@@ -322,7 +331,9 @@ bool Translator::blend(const Vec3& next_end) {
 bool Translator::emit_line(const Vec3& end, bool rapid) {
   if (!hand_move(rapid ? 0 : 1, work_.tf.apply(end))) return false;
   const Vec2 d{end.x - work_.pos.x, end.y - work_.pos.y};
-  if (std::hypot(d.x, d.y) > 1e-9) work_.direction = deg(std::atan2(d.y, d.x));
+  // hypot is at least the larger component: most moves are told by it.
+  if (std::fabs(d.x) > 1e-9 || std::fabs(d.y) > 1e-9 || std::hypot(d.x, d.y) > 1e-9)
+    work_.direction.set_step(d);
   work_.pos = end;
   return true;
 }
@@ -350,7 +361,7 @@ bool Translator::emit_arc(const Vec3& end, Vec2 center, bool ccw, int turns) {
   const bool machine_ccw = ccw != work_.tf.flips();
   if (!hand_arc(m, mc, machine_ccw, turns)) return false;
   const double ae = std::atan2(end.y - center.y, end.x - center.x);
-  work_.direction = deg(ae) + (ccw ? 90.0 : -90.0);
+  work_.direction.set_degrees(deg(ae) + (ccw ? 90.0 : -90.0));
   work_.pos = end;
   return true;
 }

@@ -59,6 +59,32 @@ struct PendingBlend {
   Vec3 start;
 };
 
+// The direction of travel at the programmed point, for the tangent arcs
+// (R C, R A, R alone). A straight move leaves its step and the angle is
+// worked out only when an arc asks: an arctangent per move was a twentieth
+// of a long program's run (issue 19).
+class Heading {
+ public:
+  void set_step(Vec2 step) {
+    known_ = true;
+    step_ = step;
+    angle_.reset();
+  }
+
+  void set_degrees(double degrees) {
+    known_ = true;
+    angle_ = degrees;
+  }
+
+  // std::nullopt before the first move; the angle in degrees after it.
+  std::optional<double> degrees() const;
+
+ private:
+  bool known_ = false;
+  Vec2 step_;
+  std::optional<double> angle_;
+};
+
 // The modes a romi program reads its words by, in the interpreter's words
 // (GCode tenths, RetractMode): romi's own, since the interpreter is handed
 // absolute millimetres.
@@ -80,11 +106,11 @@ struct Modal {
   // Program coordinates.
   DrillCycle drill;
   Transform tf;
-  int offset_register = 0;          // O
-  Vec3 pos;                         // the programmed point
-  Vec3 machine_at;                  // where the last move handed over ended (transformed)
-  std::optional<double> direction;  // of travel at pos, degrees
-  double tool_diameter = 0.0;       // of the tool in the spindle
+  int offset_register = 0;     // O
+  Vec3 pos;                    // the programmed point
+  Vec3 machine_at;             // where the last move handed over ended (transformed)
+  Heading direction;           // of travel at pos
+  double tool_diameter = 0.0;  // of the tool in the spindle
   std::optional<PendingBlend> blend;
 
   Modes machine;

@@ -148,6 +148,19 @@ TEST(RomiPolarArc, TangentArcWithNoPreviousMoveIsAnError) {
   EXPECT_EQ(r->first_error(), Code::NoTangentDirection);
 }
 
+// The direction of travel a tangent arc starts in: the last straight
+// move's (here +Y, not +X), then the end tangent of the arc before it.
+TEST(RomiPolarArc, TangentArcsFollowTheMoveAndTheArcBefore) {
+  auto r = run_romi("G01 F100 X0 Y10#G03 R5 C90#G03 R5 C90#M02#");
+  ASSERT_TRUE(r->ok) << r->first_error_text();
+  const auto a = r->all<canon::Arc>();
+  ASSERT_EQ(a.size(), 2u);
+  expect_near(a[0].center, {-5, 10, 0});
+  expect_near(a[0].to, {-5, 15, 0});
+  expect_near(a[1].center, {-5, 10, 0});  // the same circle on
+  expect_near(a[1].to, {-10, 10, 0});
+}
+
 TEST(RomiPolarArc, XYIJHasAnAbsoluteCentre) {
   auto r = run_romi("X20 Y10#G02 X30 Y10 I25 J10 F100#M02#");
   ASSERT_TRUE(r->ok) << r->first_error_text();

@@ -108,8 +108,8 @@ TEST(RomiState, AFailedBlockSentItsMoveButKeepsTheProgrammedPoint) {
   EXPECT_EQ(last->to.y, 20.0);  // sent, as a control's move is made
   EXPECT_EQ(r->state().pos.x, 10.0);
   EXPECT_EQ(r->state().pos.y, 0.0);
-  ASSERT_TRUE(r->state().direction.has_value());
-  EXPECT_EQ(*r->state().direction, 0.0);  // along +X, the last committed move
+  ASSERT_TRUE(r->state().direction.degrees().has_value());
+  EXPECT_EQ(*r->state().direction.degrees(), 0.0);  // along +X, the last committed move
 }
 
 TEST(RomiState, AFailedCompensationBlockLeavesCompensationOff) {
