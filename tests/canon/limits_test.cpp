@@ -1,6 +1,7 @@
 // canon/limits.hpp: the range of every number a canon op carries.
 #include "canon/limits.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -53,6 +54,51 @@ TEST(CanonLimits, BeyondTheBoundsIsOutOfRange) {
   Outline o;
   o.segs.push_back({{1, 0}, Vec2{kNan, 0}, 1});
   EXPECT_FALSE(check_range(Pocket{o, 1.0}));
+}
+
+// Moves are first checked without the checker that names the number (a
+// shortcut for the usual move): each field of a traverse and a feed at
+// and just past its bounds, as an op and as a move, with the verdict the
+// bounds give and a message whenever it fails.
+TEST(CanonLimits, MovesAtTheirBounds) {
+  const double past = std::nextafter(1e9, kInf);
+  const double below_min = std::nextafter(kMinFeed, 0.0);
+
+  struct Case {
+    double v;
+    bool length_ok, rate_ok;
+  };
+
+  const Case cases[] = {{0.0, true, true},        {kMinFeed, true, true}, {below_min, true, false},
+                        {-kMinFeed, true, false}, {1e9, true, true},      {-1e9, true, false},
+                        {past, false, false},     {-past, false, false},  {kNan, false, false},
+                        {kInf, false, false}};
+  for (const Case& c : cases) {
+    for (int field = 0; field < 6; ++field) {
+      Feed f{{1, 2, 3}, 100.0, {}, {ProgrammedFeed::Mode::PerMinute, 100.0}};
+      Traverse t{{1, 2, 3}, {}};
+      bool ok = c.length_ok;
+      switch (field) {
+      case 0: f.to.x = t.to.x = c.v; break;
+      case 1: f.to.z = t.to.z = c.v; break;
+      case 2: f.abc[1] = t.abc[1] = c.v; break;
+      case 3: f.f = c.v, ok = c.rate_ok; break;
+      case 4: f.programmed.value = c.v, ok = c.rate_ok; break;
+      default: f.f = std::nullopt, f.programmed.value = c.v, ok = c.rate_ok; break;
+      }
+      SCOPED_TRACE(testing::Message() << "value " << c.v << ", field " << field);
+      const auto move = check_range(f);
+      EXPECT_EQ(move.has_value(), ok);
+      if (!move) {
+        EXPECT_FALSE(move.error().empty());
+      }
+      EXPECT_EQ(check_range(OpKind{f}).has_value(), ok);
+      if (field <= 2) {
+        EXPECT_EQ(check_range(t).has_value(), c.length_ok);
+        EXPECT_EQ(check_range(OpKind{t}).has_value(), c.length_ok);
+      }
+    }
+  }
 }
 
 TEST(CanonLimits, SingleValues) {
