@@ -22,7 +22,8 @@
 #    on the surfacing program and on a spiral of as many blocks made by
 #    bench/gen_spiral.py, in which no two moves merge (the worst case: one
 #    drawing entity a block); --no-draw leaves this out;
-# 6. times check, trace and stats in every dialect (rs274ngc, fanuc, grbl,
+# 6. times check, trace, stats and convert (to the dialect's own control,
+#    written to standard output) in every dialect (rs274ngc, fanuc, grbl,
 #    romi) on the same raster written for each (bench/gen_surfacing*.py):
 #    CPU MB/s, peak MiB and the ratio to rs274ngc (issue 19: each within
 #    1.5x), and Debian's LinuxCNC interpreter `rs274` on the rs274ngc
@@ -180,11 +181,12 @@ if [[ "$draw" -eq 1 ]]; then
 fi
 
 # The command line of a verb in a dialect (output and warnings discarded).
-dialect_line() {  # dialect, program, verb (check|trace|stats)
+dialect_line() {  # dialect, program, verb (check|trace|stats|convert)
   case "$3" in
     check) echo "'$usina' check --dialect $1 '$2' > /dev/null 2>&1" ;;
     trace) echo "'$usina' trace --dialect $1 --format jsonl '$2' > /dev/null 2>&1" ;;
     stats) echo "'$usina' stats --dialect $1 '$2' > /dev/null 2>&1" ;;
+    convert) echo "'$usina' convert --dialect $1 --post $1 '$2' > /dev/null 2>&1" ;;
   esac
 }
 
@@ -197,9 +199,9 @@ dialect_row() {  # dialect, program, verb, rs274ngc's cpu seconds
   python3 - "$1" "$3" "$size" "$cpu" "$mib" "$4" << 'PY'
 import sys
 dialect, verb, size, cpu, mib, base = sys.argv[1], sys.argv[2], int(sys.argv[3]), *map(float, sys.argv[4:])
-target = {"check": 250, "trace": 120, "stats": 100}[verb]
+target = {"check": 250, "trace": 120, "stats": 100, "convert": 80}[verb]
 ok = lambda good: "ok" if good else "MISSED"
-print(f"{dialect:9} {verb:6} cpu {cpu:6.3f} s = {size / 1e6 / cpu:6.1f} MB/s (>= {target}: {ok(size / 1e6 / cpu >= target)})"
+print(f"{dialect:9} {verb:7} cpu {cpu:6.3f} s = {size / 1e6 / cpu:6.1f} MB/s (>= {target}: {ok(size / 1e6 / cpu >= target)})"
       f"   x{cpu / base:4.2f} of rs274ngc (<= 1.5: {ok(cpu / base <= 1.5)})   peak {mib:5.1f} MiB (< 32: {ok(mib < 32)})")
 PY
 }
@@ -214,7 +216,7 @@ if [[ "$dialects" -eq 1 ]]; then
       python3 "$root/bench/gen_surfacing_$d.py" "$blocks" "${programs[$d]}"
     fi
   done
-  for verb in check trace stats; do
+  for verb in check trace stats convert; do
     read -r base _ < <(cpu_and_peak "$(dialect_line rs274ngc "$program" "$verb")")
     for d in rs274ngc fanuc grbl romi; do
       dialect_row "$d" "${programs[$d]}" "$verb" "$base"

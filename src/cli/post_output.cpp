@@ -1,12 +1,14 @@
 #include "cli/post_output.hpp"
 
+#include <cerrno>
 #include <cstdio>
-#include <sstream>
+#include <cstring>
 
 #include <fmt/format.h>
 
 #include "cli/validators.hpp"
 #include "core/file_ostream.hpp"
+#include "core/held_output.hpp"
 #include "core/output_file.hpp"
 
 namespace usina::cli {
@@ -44,18 +46,31 @@ int unknown_post(const std::string& name) {
 namespace {
 
 // Standard output cannot be taken back, so the program is held until it is
-// good, then written.
+// good (in a temporary file: core::HeldOutput), then written.
 int write_to_stdout(const PostOutput& o,
                     const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
-  std::ostringstream held;
+  const core::HeldOutput held;
+  if (held.stream() == nullptr) {
+    fmt::print(stderr, "usina: error: no temporary file to hold the program in: {}\n",
+               std::strerror(errno));
+    return 2;
+  }
+  core::FileOstream text(held.stream());
   PostDiagnostics post_diags;
-  auto sink = post::make_post(o.post, held, o.options, post_diags);
+  auto sink = post::make_post(o.post, text, o.options, post_diags);
   if (!sink) return unknown_post(o.post);
   int status = produce(*sink, post_diags);
   sink->finish();  // a post's finish is idempotent; a generator need not call it
   if (status == 0 && post_diags.errors() > 0) status = 1;
-  if (status == 0) fmt::print("{}", held.str());
-  return status;
+  if (status != 0) return status;
+  text.flush();
+  if (!held.send_to(stdout)) {
+    fmt::print(stderr,
+               "usina: error: the program held for standard output could not be written or read "
+               "back (is the temporary folder full?)\n");
+    return 2;
+  }
+  return 0;
 }
 
 }  // namespace

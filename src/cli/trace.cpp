@@ -18,6 +18,7 @@
 #include "canon/trace_writer.hpp"
 #include "cli/run.hpp"
 #include "cli/verbs.hpp"
+#include "core/held_output.hpp"
 #include "core/output_file.hpp"
 
 namespace usina::cli {
@@ -35,38 +36,6 @@ bool cl_format(const std::string& f) {
   return f == "cldata" || f == "iso4343" || f == "cldump";
 }
 
-// Standard output cannot be taken back: the CL data of a program waits in
-// an unnamed temporary file (memory stays flat whatever the program's size)
-// until the run says whether it goes out.
-class HeldOutput {
- public:
-  HeldOutput() : file_(std::tmpfile()) {}
-
-  HeldOutput(const HeldOutput&) = delete;
-  HeldOutput& operator=(const HeldOutput&) = delete;
-
-  ~HeldOutput() {
-    if (file_ != nullptr) std::fclose(file_);
-  }
-
-  std::FILE* stream() const { return file_; }
-
-  // Copies what was held to `out`; false when it could not all be written
-  // (a full disk) or read back.
-  bool send_to(std::FILE* out) const {
-    if (std::fflush(file_) != 0 || std::ferror(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0)
-      return false;
-    std::vector<char> buf(1 << 16);
-    std::size_t n = 0;
-    while ((n = std::fread(buf.data(), 1, buf.size(), file_)) > 0)
-      std::fwrite(buf.data(), 1, n, out);
-    return std::ferror(file_) == 0;
-  }
-
- private:
-  std::FILE* file_;
-};
-
 // The CL data of the canon stream. cldata and iso4343 feed a post or a
 // machine: none when the program has an error (as `usina apt` does); the
 // record print shows what was read, errors and all. The records go out in
@@ -75,7 +44,7 @@ class HeldOutput {
 // temporary file sent on when the run is over (the record print goes out
 // at once).
 int trace_cl(const TraceOptions& o, std::FILE* out) {
-  std::optional<HeldOutput> held;
+  std::optional<core::HeldOutput> held;
   if (o.out == "-" && o.format != "cldump") {
     held.emplace();
     if (held->stream() == nullptr) {

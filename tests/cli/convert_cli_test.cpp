@@ -64,6 +64,32 @@ TEST(ConvertCli, WhatThePostCannotWriteIsAnError) {
   EXPECT_THAT(r.err, testing::HasSubstr("cannot write a probing move [E_UNSUPPORTED]"));
 }
 
+// Standard output cannot be taken back: the program waits in a temporary
+// file until the run is good. One that cannot be held whole (here a file
+// size limit, with SIGXFSZ ignored so the write fails) is an error and
+// nothing goes out, not a short program; the same command without the
+// limit writes what -o writes.
+TEST(ConvertCli, AProgramThatCannotBeHeldWholeIsAnErrorNotAShortProgram) {
+  const test::TempDir dir;
+  std::string text = "G21 G90 G0 X0 Y0 Z5\nG1 Z0 F300\n";
+  for (int i = 0; i < 4000; ++i)
+    text += "G1 X" + std::to_string(i % 100) + " Y" + std::to_string(i / 100) + "\n";
+  const std::string in = dir.write("long.ngc", text + "M2\n");
+  const std::string err = dir.path("err");
+  const std::string convert = test::quote(USINA_BINARY) + " convert " + test::quote(in) +
+                              " --post fanuc 2>" + test::quote(err);
+  const test::Run cut = test::shell("trap '' XFSZ; ulimit -f 8; " + convert, err);
+  EXPECT_EQ(cut.status, 2) << cut.err;
+  EXPECT_TRUE(cut.out.empty()) << cut.out.size() << " bytes";
+  EXPECT_THAT(cut.err, testing::HasSubstr("could not be written or read back"));
+  const test::Run whole = test::shell(convert, err);
+  EXPECT_EQ(whole.status, 0) << whole.err;
+  EXPECT_GT(whole.out.size(), 8u * 1024u);  // past the limit
+  const std::string out = dir.path("long.nc");
+  ASSERT_EQ(test::usina("convert " + test::quote(in) + " --post fanuc -o " + out).status, 0);
+  EXPECT_EQ(whole.out, test::slurp(out));
+}
+
 TEST(ConvertCli, UsageErrors) {
   EXPECT_NE(test::usina("convert x.ngc").status, 0);  // no --post
   EXPECT_NE(test::usina("convert x.ngc --post heidenhain").status, 0);
