@@ -13,8 +13,9 @@
 namespace usina::apt {
 namespace {
 
-constexpr int kClw = 60, kCclw = 59, kOn = 71, kOff = 72, kFlood = 89, kMist = 90, kIpr = 74,
-              kMmpr = 172, kDrill = 163;
+constexpr int kClw = minor_code("CLW"), kCclw = minor_code("CCLW"), kOn = minor_code("ON"),
+              kOff = minor_code("OFF"), kFlood = minor_code("FLOOD"), kMist = minor_code("MIST"),
+              kIpr = minor_code("IPR"), kMmpr = minor_code("MMPR"), kDrill = minor_code("DRILL");
 
 std::string fmt_number(double v) {
   return fmt::format("{}", v);
@@ -67,11 +68,11 @@ void ClToCanon::record(const ClRecord& r) {
 
 void ClToCanon::post(const ClRecord& r) {
   switch (r.sub) {
-  case 1: emit(canon::ProgramEnd{}, r); return;
-  case 2: emit(canon::MachineCode{'M', 0, {}, {}}, r); return;
-  case 3: emit(canon::MachineCode{'M', 1, {}, {}}, r); return;
-  case 5: rapid_ = true; return;
-  case 1009: {
+  case post_code("END"): emit(canon::ProgramEnd{}, r); return;
+  case post_code("STOP"): emit(canon::MachineCode{'M', 0, {}, {}}, r); return;
+  case post_code("OPSTOP"): emit(canon::MachineCode{'M', 1, {}, {}}, r); return;
+  case post_code("RAPID"): rapid_ = true; return;
+  case post_code("FEDRAT"): {
     const double f = first_number(r).value_or(0.0);
     if (has_code(r, kIpr) || has_code(r, kMmpr)) {
       per_rev_ = canon::ProgrammedFeed{canon::ProgrammedFeed::Mode::PerRevolution, f * scale_};
@@ -82,13 +83,13 @@ void ClToCanon::post(const ClRecord& r) {
     }
     return;
   }
-  case 1010: emit(canon::Dwell{first_number(r).value_or(0.0)}, r); return;
-  case 1030:
+  case post_code("DELAY"): emit(canon::Dwell{first_number(r).value_or(0.0)}, r); return;
+  case post_code("COOLNT"):
     emit(canon::Coolant{has_code(r, kMist), has_code(r, kOn) || has_code(r, kFlood)}, r);
     return;
-  case 1031: spindle(r); return;
-  case 1054: cycle(r); return;
-  case 1055: emit(canon::ToolChange{tool_number(r), diameter_}, r); return;
+  case post_code("SPINDL"): spindle(r); return;
+  case post_code("CYCLE"): cycle(r); return;
+  case post_code("LOADTL"): emit(canon::ToolChange{tool_number(r), diameter_}, r); return;
   default: post_motion_words(r);
   }
 }
@@ -96,7 +97,8 @@ void ClToCanon::post(const ClRecord& r) {
 // The words that reach the stream as text: PARTNO, PPRINT, INSERT, and a
 // post word the canon stream has no op for (MACHIN/..., SEQNO/...).
 void ClToCanon::post_motion_words(const ClRecord& r) {
-  if (r.sub == 1044 || r.sub == 1045 || r.sub == 1046) {
+  if (r.sub == post_code("PPRINT") || r.sub == post_code("PARTNO") ||
+      r.sub == post_code("INSERT")) {
     emit(canon::Comment{text_of(r)}, r);
     return;
   }

@@ -7,15 +7,23 @@
 
 #include <fmt/format.h>
 
+#include "apt/vocabulary.hpp"
+
 namespace usina::apt {
 namespace {
 
-// Vocabulary codes (vocabulary.cpp) and post words' subclasses.
-constexpr int kClw = 60, kCclw = 59, kOff = 72, kFlood = 89, kMist = 90, kMmpm = 171, kMmpr = 172,
-              kDrill = 163, kCircle = 4, kCircleType = 9;
-constexpr int kEnd = 1, kStop = 2, kOpstop = 3, kRapid = 5, kFedrat = 1009, kDelay = 1010,
-              kCoolnt = 1030, kSpindl = 1031, kPprint = 1044, kInsert = 1046, kCycle = 1054,
-              kLoadtl = 1055;
+// Minor words' codes and post words' subclasses (apt/vocabulary.hpp).
+constexpr int kClw = minor_code("CLW"), kCclw = minor_code("CCLW"), kOff = minor_code("OFF"),
+              kFlood = minor_code("FLOOD"), kMist = minor_code("MIST"), kMmpm = minor_code("MMPM"),
+              kMmpr = minor_code("MMPR");
+constexpr int kEnd = post_code("END"), kStop = post_code("STOP"), kOpstop = post_code("OPSTOP"),
+              kRapid = post_code("RAPID"), kFedrat = post_code("FEDRAT"),
+              kDelay = post_code("DELAY"), kCoolnt = post_code("COOLNT"),
+              kSpindl = post_code("SPINDL"), kPprint = post_code("PPRINT"),
+              kInsert = post_code("INSERT"), kCycle = post_code("CYCLE"),
+              kLoadtl = post_code("LOADTL");
+// The circle of the 3000 surface record: its subclass and canonical type.
+constexpr int kCircle = 4, kCircleType = 9;
 
 // Positions that agree to this are one (the round trip holds to 1e-6).
 constexpr double kSame = 1e-9;

@@ -4,11 +4,12 @@
 #include <cmath>
 
 #include "apt/cl_from_canon.hpp"
+#include "apt/vocabulary.hpp"
 
 namespace usina::apt {
 namespace {
 
-constexpr int kMmpm = 171, kDrill = 163, kCycle = 1054;
+constexpr int kMmpm = minor_code("MMPM"), kDrill = minor_code("DRILL"), kCycle = post_code("CYCLE");
 constexpr double kSame = 1e-9;
 
 bool same(const canon::Vec3& a, const canon::Vec3& b) {

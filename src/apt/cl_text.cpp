@@ -71,7 +71,7 @@ bool ClTextReader::dispatch(const ClStatement& st) {
   if (w == "CYCLE") return cycle(st);
   if (w == "PARTNO" || w == "PPRINT" || w == "INSERT")
     return text(st, *post_word_code(w), unquoted(st.rest));
-  if (w == "TOOL PATH") return text(st, 1044, "TOOL PATH/" + st.rest);
+  if (w == "TOOL PATH") return text(st, post_code("PPRINT"), "TOOL PATH/" + st.rest);
   if (w == "REMARK" || w.empty() || is_silent(w)) return false;
   if (w == "FINI") {
     stop_ = true;
@@ -93,16 +93,16 @@ bool ClTextReader::dispatch(const ClStatement& st) {
 }
 
 bool ClTextReader::post_word(const ClStatement& st, int code) {
-  if (code == 1055 && !tool_number(st))
+  if (code == post_code("LOADTL") && !tool_number(st))
     return fail(core::Code::ClBadArgument, st.loc,
                 fmt::format("{}/ takes a tool number, a whole number from 0 to {}", st.major,
                             kMostToolNumber));
   std::vector<ClWord> words;
   for (const ClArg& a : st.args) {
-    if (code == 1055 && a.kind == ClArg::Kind::Word && a.text == "TOOL") continue;
+    if (code == post_code("LOADTL") && a.kind == ClArg::Kind::Word && a.text == "TOOL") continue;
     words.push_back(word_of(a));
   }
-  if (code == 1009) {  // FEDRAT/f[,MMPM] or /MMPM,f: kept for a cycle without a feed
+  if (code == post_code("FEDRAT")) {  // FEDRAT/f[,MMPM] or /MMPM,f: kept for a cycle without a feed
     // A feed rate ends a drilling cycle: SolidWorks CAM writes no CYCLE/OFF
     // before a milling operation that follows one (its cycle carries its own
     // feed and lasts across a tool change).

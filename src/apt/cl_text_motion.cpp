@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "apt/cl_text_reader.hpp"
+#include "apt/vocabulary.hpp"
 
 namespace usina::apt::detail {
 namespace {
@@ -162,7 +163,7 @@ bool ClTextReader::circle_left_out(const char* why) {
 bool ClTextReader::cycle(const ClStatement& st) {
   const std::optional<double> fedto = after(st, "FEDTO");
   cycle_on_ = false;
-  if (!fedto) return post_word(st, 1054);
+  if (!fedto) return post_word(st, post_code("CYCLE"));
   std::optional<double> f = feed_;
   int unit = feed_unit_;
   for (const char* u : {"MMPM", "IPM"}) {

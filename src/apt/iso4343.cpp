@@ -101,13 +101,13 @@ void Writer::record(std::size_t i) {
 }
 
 void Writer::post(const ClRecord& r) {
-  if (r.sub == 5) {
+  if (r.sub == post_code("RAPID")) {
     rapid_ = true;
     return;
   }
   const std::string_view name = post_word_name(r.sub);
   if (name.empty()) return line(fmt::format("$$ record 2000 {}: {}", r.sub, args(r.words)));
-  if (r.sub == 1044 || r.sub == 1045 || r.sub == 1046)
+  if (r.sub == post_code("PPRINT") || r.sub == post_code("PARTNO") || r.sub == post_code("INSERT"))
     return line(fmt::format("{}/{}", name, text_of(r)));
   if (r.words.empty()) return line(std::string(name));
   line(fmt::format("{}/{}", name, args(r.words)));
