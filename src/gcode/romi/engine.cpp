@@ -98,6 +98,10 @@ void Engine::step() {
     return;
   }
   if (block_.base.percent) return;
+  // Nothing between a '#' and the line's end (how romi programs are
+  // written: "G01 X10#" a line) is no block: it runs nothing, and an R
+  // blend waits for the next block that moves, not for it.
+  if (block_.empty() && block_.base.comments.empty() && !block_.base.line_number) return;
   run_.at(block_.base.loc);
   if (!block()) {
     run_.fail();

@@ -131,6 +131,25 @@ TEST(RomiPolarArc, RAloneBlendsIntoTheNextMove) {
   expect_near(r->ends().back(), {30, 30, 0});
 }
 
+// A romi program is written a block a line, each ended by '#': nothing
+// stands between the '#' and the newline, and the blend goes on to the
+// next line's move (it was an error at that empty "block").
+TEST(RomiPolarArc, ABlendAtALineEndBlendsIntoTheNextLinesMove) {
+  auto lines = run_romi("G01 X10 F100#\nG03 R10#\n\nG01 X30 Y30#\nM02#\n");
+  ASSERT_TRUE(lines->ok) << lines->first_error_text();
+  auto one_line = run_romi("G01 X10 F100#G03 R10#G01 X30 Y30#M02#");
+  ASSERT_TRUE(one_line->ok) << one_line->first_error_text();
+  const auto a = lines->all<canon::Arc>();
+  const auto b = one_line->all<canon::Arc>();
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  expect_near(a[0].to, b[0].to);
+  expect_near(lines->ends().back(), {30, 30, 0});
+  // A block with a comment is a block: the blend needs the move there.
+  EXPECT_EQ(run_romi("G01 X10 F100#G03 R10#;a note#G01 X30 Y30#M02#")->first_error(),
+            Code::BlendNeedsMove);
+}
+
 TEST(RomiPolarArc, BlendWithNoMoveAfterIsAnError) {
   auto r = run_romi("G01 X10 F100#G03 R10#G80#M02#");
   EXPECT_EQ(r->first_error(), Code::BlendNeedsMove);
