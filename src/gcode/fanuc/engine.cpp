@@ -85,6 +85,9 @@ Engine::Engine(RunContext& c)
     }
   }
   polar_axes_ = polar_axes_from(c.dialect_options["polar_axes"]).value_or(PolarAxes{});
+  // Not a dialect option (the command line refuses it): a test runs every
+  // block down the whole road to compare with the plain-move shortcut.
+  plain_move_shortcut_ = c.dialect_options.find("whole_road") == c.dialect_options.end();
   locals_.push_back(vacant_locals());
   pecks_ = {options_.peck_clearance_mm, options_.peck_clearance_mm};
   // The offset page of --offsets: the fanuc dialect's own input.

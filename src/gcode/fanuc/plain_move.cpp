@@ -13,7 +13,7 @@ namespace usina::gcode::fanuc {
 bool Engine::plain_move(const Words& w) const {
   constexpr std::uint32_t kPlain = Words::letters_of("GXYZIJKRFS");
   constexpr std::uint32_t kDistances = Words::letters_of("XYZIJKR");
-  if ((w.letters & ~kPlain) != 0) return false;
+  if (!plain_move_shortcut_ || (w.letters & ~kPlain) != 0) return false;
   // The modes that change moves or add words (nc_block's passes).
   if (xf_.active() || polar_ || polar_interp_.active() || after_g69_ || modal_call_) return false;
   if (interp_.state().motion > 30 || cycle_ == 760 || cycle_ == 870) return false;
