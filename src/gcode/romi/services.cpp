@@ -19,6 +19,7 @@ Options Options::from(const Dialect& dialect, const OptionValues& values) {
   o.typographic_dash_is_error = value_of(dialect, values, "typographic_dash") == "error";
   o.motion_cancels_cycle = value_of(dialect, values, "motion_cancels_cycle") == "on";
   o.comp_radius_from_register = value_of(dialect, values, "comp_radius") == "register";
+  o.plain_move_shortcut = values.find("whole_road") == values.end();
   return o;
 }
 

@@ -20,6 +20,9 @@ struct Options {
   bool typographic_dash_is_error = false;
   bool motion_cancels_cycle = false;
   bool comp_radius_from_register = true;  // comp_radius=register
+  // Not a dialect option (the command line refuses it): a test runs every
+  // block down the whole road to compare with the plain-move shortcut.
+  bool plain_move_shortcut = true;
 
   // `values` as resolve_options fills them; an option missing takes the
   // dialect's default.

@@ -127,6 +127,11 @@ class Translator {
   bool execute();
   void end_block(bool ok);
 
+  // A plain move (most blocks of a long program) past the steps that would
+  // let it by (romi/plain_move.cpp).
+  bool plain_move(const EvaluatedBlock& block) const;
+  bool plain_move_block(const EvaluatedBlock& block, const std::function<bool()>& after);
+
   std::optional<double> take_whole(char letter, int lo, int hi);
   bool values();
 
