@@ -37,6 +37,22 @@ StrippedLine strip_line(std::string_view line) {
   return out;
 }
 
+namespace {
+
+// Upper case, digits, signs, points and blanks only (most lines of a
+// program): nothing to upper-case, no comment, no real-time or control
+// character.
+bool plain_line(std::string_view line) {
+  bool plain = true;
+  for (const char ch : line) {
+    const auto c = static_cast<unsigned char>(ch);
+    plain &= c == ' ' || (kPlain[c] && !(c >= 'a' && c <= 'z'));
+  }
+  return plain;
+}
+
+}  // namespace
+
 void strip_line(std::string_view line, StrippedLine& out) {
   out.text.resize(line.size());
   out.cols.resize(line.size());
@@ -44,6 +60,21 @@ void strip_line(std::string_view line, StrippedLine& out) {
   out.control = 0;
   out.verbatim = true;
   std::size_t kept = 0;
+  if (plain_line(line)) {
+    // Every character kept but the blanks: written, and the next one
+    // written over it when it was a blank (a branch per character, taken
+    // at random, cost more than the stores; issue 19).
+    char* text = out.text.data();
+    std::uint32_t* cols = out.cols.data();
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      text[kept] = line[i];
+      cols[kept] = static_cast<std::uint32_t>(i + 1);
+      kept += line[i] != ' ' ? 1 : 0;
+    }
+    out.text.resize(kept);
+    out.cols.resize(kept);
+    return;
+  }
   bool in_parens = false;
   bool in_semicolon = false;
   for (std::size_t i = 0; i < line.size(); ++i) {

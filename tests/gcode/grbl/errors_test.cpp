@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <memory>
 #include <ostream>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -258,6 +259,27 @@ TEST(GrblLines, StripLikeGrblsLineReader) {
   EXPECT_EQ(grbl::strip_line("G0 X1 (a;b) Y2").text, "G0X1Y2");
   EXPECT_EQ(grbl::strip_line("G0 X1 (\xC3\xA9t\xC3\xA9)").text, "G0X1");
   EXPECT_EQ(grbl::strip_line("G0 X1 (done!)").realtime_col, 12u);
+}
+
+// A line of upper case, digits, signs, points and blanks takes a shorter
+// road: it must keep what the general one keeps, at the same columns. The
+// same line with a comment after it takes the general road.
+TEST(GrblLines, APlainLineStripsAsTheGeneralRoadDoes) {
+  const std::string kChars = "GXYZF0123456789.-+ ";
+  std::mt19937 rng(7);
+  for (int n = 0; n < 2000; ++n) {
+    std::string line;
+    const auto length = rng() % 40;
+    for (std::size_t i = 0; i < length; ++i)
+      line += kChars[rng() % kChars.size()];
+    const grbl::StrippedLine plain = grbl::strip_line(line);
+    const grbl::StrippedLine general = grbl::strip_line(line + "(a)");
+    ASSERT_EQ(plain.text, general.text) << line;
+    ASSERT_EQ(plain.cols, general.cols) << line;
+    EXPECT_TRUE(plain.verbatim) << line;
+    EXPECT_EQ(plain.realtime_col, 0u);
+    EXPECT_EQ(plain.control_col, 0u);
+  }
 }
 
 TEST(GrblLines, ReadWordsLikeReadFloat) {
