@@ -8,9 +8,11 @@
 #include <variant>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "canon/toolpath.hpp"
+#include "canon/trace_json.hpp"
 #include "core/source.hpp"
 #include "gcode/dialect.hpp"
 
@@ -83,6 +85,31 @@ inline std::unique_ptr<Run> run_in(const char* name, const std::string& text,
       d->make_runner(RunContext{r->sources, std::move(opts), std::move(values), r->path, r->diags});
   r->ok = runner->run(id);
   return r;
+}
+
+// What a run wrote, as text to compare two runs by: its operations as JSON
+// lines, its diagnostics (line:col: message), whether it succeeded. With
+// `whole_road`, every block takes the dialect's whole road, past its
+// plain-move shortcut (a key the command line refuses).
+inline std::string run_outcome(const char* name, const std::string& text, bool whole_road) {
+  Run r;
+  const std::uint32_t id = r.sources.add(core::SourceFile::from_string("p.nc", text));
+  const Dialect* d = find_dialect(name);
+  EXPECT_NE(d, nullptr);
+  OptionValues values = default_options(*d);
+  if (whole_road) values["whole_road"] = "1";
+  auto runner =
+      d->make_runner(RunContext{r.sources, InterpOptions{}, std::move(values), r.path, r.diags});
+  r.ok = runner->run(id);
+  fmt::memory_buffer out;
+  for (const canon::Op& op : r.path.ops()) {
+    canon::append_jsonl(out, op);
+    out.push_back('\n');
+  }
+  for (const core::Diagnostic& diag : r.diags.all())
+    fmt::format_to(fmt::appender(out), "{}:{}: {}\n", diag.loc.line, diag.loc.col, diag.message);
+  fmt::format_to(fmt::appender(out), "ok {}\n", r.ok);
+  return fmt::to_string(out);
 }
 
 inline void expect_near(const Vec3& got, const Vec3& want, double tol = 1e-6) {

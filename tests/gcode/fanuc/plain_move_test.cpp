@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "canon/trace_json.hpp"
 #include "fanuc_test_support.hpp"
 
 namespace usina::gcode::fanuc_test {
@@ -87,23 +86,8 @@ std::string program(unsigned seed) {
   return text + "M30\nO9000\nG1 X#24 Z#26 F100.\nM99\nO9001\nG0 X1. Y1.\nG1 X2.\nM99\n%\n";
 }
 
-// What a run wrote: its operations as JSON lines, then its diagnostics.
 std::string outcome(const std::string& text, bool whole_road) {
-  Run r;
-  const std::uint32_t id = r.sources.add(core::SourceFile::from_string("p.nc", text));
-  const Dialect* d = find_dialect("fanuc");
-  OptionValues values = default_options(*d);
-  if (whole_road) values["whole_road"] = "1";
-  auto runner =
-      d->make_runner(RunContext{r.sources, InterpOptions{}, std::move(values), r.path, r.diags});
-  r.ok = runner->run(id);
-  fmt::memory_buffer out;
-  for (const canon::Op& op : r.path.ops())
-    canon::append_jsonl(out, op);
-  for (const core::Diagnostic& diag : r.diags.all())
-    fmt::format_to(fmt::appender(out), "{}:{}: {}\n", diag.loc.line, diag.loc.col, diag.message);
-  fmt::format_to(fmt::appender(out), "ok {}\n", r.ok);
-  return fmt::to_string(out);
+  return dialect_test::run_outcome("fanuc", text, whole_road);
 }
 
 TEST(FanucPlainMove, TheShortcutWritesWhatTheWholeRoadWrites) {

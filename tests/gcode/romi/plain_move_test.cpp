@@ -12,7 +12,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "canon/trace_json.hpp"
 #include "romi_test_support.hpp"
 
 namespace usina::gcode::romi_test {
@@ -88,25 +87,8 @@ std::string program(unsigned seed) {
   return text + "M02#\n";
 }
 
-// What a run wrote: its operations as JSON lines, then its diagnostics.
 std::string outcome(const std::string& text, bool whole_road) {
-  Run r;
-  const std::uint32_t id = r.sources.add(core::SourceFile::from_string("p.nc", text));
-  const Dialect* d = find_dialect("romi");
-  OptionValues values = default_options(*d);
-  if (whole_road) values["whole_road"] = "1";
-  auto runner =
-      d->make_runner(RunContext{r.sources, InterpOptions{}, std::move(values), r.path, r.diags});
-  r.ok = runner->run(id);
-  fmt::memory_buffer out;
-  for (const canon::Op& op : r.path.ops()) {
-    canon::append_jsonl(out, op);
-    out.push_back('\n');
-  }
-  for (const core::Diagnostic& diag : r.diags.all())
-    fmt::format_to(fmt::appender(out), "{}:{}: {}\n", diag.loc.line, diag.loc.col, diag.message);
-  fmt::format_to(fmt::appender(out), "ok {}\n", r.ok);
-  return fmt::to_string(out);
+  return dialect_test::run_outcome("romi", text, whole_road);
 }
 
 TEST(RomiPlainMove, TheShortcutWritesWhatTheWholeRoadWrites) {
