@@ -112,6 +112,22 @@ inline std::string run_outcome(const char* name, const std::string& text, bool w
   return fmt::to_string(out);
 }
 
+// The programs `program(seed)` for seeds 0 to count - 1, each run with the
+// dialect's plain-move shortcut and down the whole road: the same outcome
+// expected. Returns how many ran to their end.
+template <typename Program>
+int expect_shortcut_agrees(const char* name, Program program, unsigned count) {
+  int finished = 0;
+  for (unsigned seed = 0; seed < count; ++seed) {
+    const std::string text = program(seed);
+    const std::string shortcut = run_outcome(name, text, false);
+    EXPECT_EQ(shortcut, run_outcome(name, text, true)) << "seed " << seed << "\n" << text;
+    if (testing::Test::HasFailure()) break;
+    finished += shortcut.ends_with("ok true\n") ? 1 : 0;
+  }
+  return finished;
+}
+
 inline void expect_near(const Vec3& got, const Vec3& want, double tol = 1e-6) {
   EXPECT_NEAR(got.x, want.x, tol) << "x";
   EXPECT_NEAR(got.y, want.y, tol) << "y";

@@ -91,13 +91,7 @@ std::string outcome(const std::string& text, bool whole_road) {
 }
 
 TEST(FanucPlainMove, TheShortcutWritesWhatTheWholeRoadWrites) {
-  int finished = 0;
-  for (unsigned seed = 0; seed < 300; ++seed) {
-    const std::string text = program(seed);
-    const std::string shortcut = outcome(text, false);
-    ASSERT_EQ(shortcut, outcome(text, true)) << "seed " << seed << "\n" << text;
-    finished += shortcut.ends_with("ok true\n") ? 1 : 0;
-  }
+  const int finished = dialect_test::expect_shortcut_agrees("fanuc", program, 300);
   // Enough of them run to their end to reach every mode.
   EXPECT_GT(finished, 100);
 }
