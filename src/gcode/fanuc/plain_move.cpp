@@ -5,7 +5,8 @@
 // blocks of a long program, and each pass of nc_block would let it by
 // unchanged: it goes straight to the hand-over with what those passes would
 // have recorded (issue 19). A block that is not plain in every respect
-// takes the whole road.
+// takes the whole road; a test compares the two
+// (tests/gcode/fanuc/plain_move_test.cpp).
 #include "gcode/fanuc/engine.hpp"
 
 namespace usina::gcode::fanuc {
