@@ -1,5 +1,6 @@
 #include "canon/trace_json.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -46,18 +47,44 @@ class Out {
   fmt::memory_buffer& buf_;
 };
 
-// The decimal digits of u written at p: their end. In place: a copy of a
-// few bytes of a length not known when compiling is a call to memmove.
-char* digits_at(char* p, unsigned long long u) {
+// "00" to "99": two digits a division.
+constexpr std::array<char, 200> kDigitPairs = [] {
+  std::array<char, 200> t{};
+  for (std::size_t i = 0; i < 100; ++i) {
+    t[2 * i] = static_cast<char>('0' + i / 10);
+    t[2 * i + 1] = static_cast<char>('0' + i % 10);
+  }
+  return t;
+}();
+
+// Writes the two digits of v < 100 at p.
+void pair_at(char* p, unsigned long long v) {
+  std::memcpy(p, &kDigitPairs[2 * v], 2);
+}
+
+// How many decimal digits u has.
+std::size_t decimal_length(unsigned long long u) {
   std::size_t len = 1;
-  for (unsigned long long rest = u; rest >= 10; rest /= 10)
-    ++len;
-  char* const end = p + len;
+  for (; u >= 100; u /= 100)
+    len += 2;
+  return len + (u >= 10 ? 1 : 0);
+}
+
+// The decimal digits of u written at p, two at a time from the last: their
+// end. In place: a copy of a few bytes of a length not known when
+// compiling is a call to memmove.
+char* digits_at(char* p, unsigned long long u) {
+  char* const end = p + decimal_length(u);
   char* q = end;
-  do {
-    *--q = static_cast<char>('0' + u % 10);
-    u /= 10;
-  } while (u != 0);
+  for (; u >= 100; u /= 100) {
+    q -= 2;
+    pair_at(q, u % 100);
+  }
+  if (u >= 10) {
+    pair_at(q - 2, u);
+  } else {
+    q[-1] = static_cast<char>('0' + u);
+  }
   return end;
 }
 
@@ -103,13 +130,13 @@ void Out::short_decimal(long long n) {
   char* p = room(kIntegerRoom + 1 + 6);
   if (n < 0) *p++ = '-';
   p = digits_at(p, u / kMillion);
-  unsigned long long frac = u % kMillion;
+  const unsigned long long frac = u % kMillion;
   if (frac != 0) {
+    // Six digits after the point, then back over the trailing zeros.
     *p = '.';
-    for (int i = 6; i >= 1; --i) {
-      p[i] = static_cast<char>('0' + frac % 10);
-      frac /= 10;
-    }
+    pair_at(p + 1, frac / 10000);
+    pair_at(p + 3, frac / 100 % 100);
+    pair_at(p + 5, frac % 100);
     p += 6;
     while (*p == '0')
       --p;

@@ -93,6 +93,13 @@ struct Word {
 Checked read_words(std::string_view text, const std::vector<std::uint32_t>& cols,
                    std::vector<Word>& out);
 
+// Most lines of a program, read without stripping them first: upper-case
+// words (a letter and a number) apart or with blanks between them. Their
+// words at the user's columns, and `kept` the characters strip_line keeps
+// of the line; false for any other line (blank, comments, lower case, a
+// blank inside a word, an error...), which strip_line and read_words read.
+bool read_plain_words(std::string_view line, std::vector<Word>& out, std::size_t& kept);
+
 // What the checks need to know between blocks (a subset of Grbl's gc_state).
 struct Modal {
   int motion = 0;  // tenths: 0, 10, 20, 30, 382..385, 800; Grbl starts in G0

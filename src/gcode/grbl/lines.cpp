@@ -39,16 +39,37 @@ StrippedLine strip_line(std::string_view line) {
 
 namespace {
 
-// Upper case, digits, signs, points and blanks only (most lines of a
-// program): nothing to upper-case, no comment, no real-time or control
-// character.
-bool plain_line(std::string_view line) {
+// The characters of a plain line (most lines of a program): upper case,
+// digits, signs, points and blanks; nothing to upper-case, no comment, no
+// real-time or control character.
+constexpr std::array<bool, 256> kPlainLine = [] {
+  std::array<bool, 256> t = kPlain;
+  for (int c = 'a'; c <= 'z'; ++c)
+    t[static_cast<std::size_t>(c)] = false;
+  t[' '] = true;
+  return t;
+}();
+
+// A plain line's characters but the blanks into `out`; false (and `out`
+// to be written again) when the line is not plain. Every character is
+// written, and the next one written over it when it was a blank: a branch
+// per character, taken at random, cost more than the stores (issue 19).
+bool strip_plain_line(std::string_view line, StrippedLine& out) {
+  char* text = out.text.data();
+  std::uint32_t* cols = out.cols.data();
   bool plain = true;
-  for (const char ch : line) {
-    const auto c = static_cast<unsigned char>(ch);
-    plain &= c == ' ' || (kPlain[c] && !(c >= 'a' && c <= 'z'));
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    plain &= kPlainLine[static_cast<unsigned char>(c)];
+    text[kept] = c;
+    cols[kept] = static_cast<std::uint32_t>(i + 1);
+    kept += c != ' ' ? 1 : 0;
   }
-  return plain;
+  if (!plain) return false;
+  out.text.resize(kept);
+  out.cols.resize(kept);
+  return true;
 }
 
 }  // namespace
@@ -59,22 +80,8 @@ void strip_line(std::string_view line, StrippedLine& out) {
   out.realtime_col = out.control_col = 0;
   out.control = 0;
   out.verbatim = true;
+  if (strip_plain_line(line, out)) return;
   std::size_t kept = 0;
-  if (plain_line(line)) {
-    // Every character kept but the blanks: written, and the next one
-    // written over it when it was a blank (a branch per character, taken
-    // at random, cost more than the stores; issue 19).
-    char* text = out.text.data();
-    std::uint32_t* cols = out.cols.data();
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      text[kept] = line[i];
-      cols[kept] = static_cast<std::uint32_t>(i + 1);
-      kept += line[i] != ' ' ? 1 : 0;
-    }
-    out.text.resize(kept);
-    out.cols.resize(kept);
-    return;
-  }
   bool in_parens = false;
   bool in_semicolon = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
@@ -197,6 +204,30 @@ Checked read_words(std::string_view text, const std::vector<std::uint32_t>& cols
     i += 1 + n;
   }
   return {};
+}
+
+bool read_plain_words(std::string_view line, std::vector<Word>& out, std::size_t& kept) {
+  out.clear();
+  kept = 0;
+  const std::size_t n = line.size();
+  std::size_t i = 0;
+  for (;;) {
+    while (i < n && line[i] == ' ')
+      ++i;
+    if (i == n) return !out.empty();
+    const char letter = line[i];
+    if (letter < 'A' || letter > 'Z') return false;
+    double value = 0.0;
+    const std::size_t digits = read_number(line.substr(i + 1), value);
+    const std::size_t end = i + 1 + digits;
+    // A blank in a number, or a character Grbl drops after it, joins or
+    // ends the word elsewhere: the general road reads it.
+    if (digits == 0 || (end < n && line[end] != ' ' && (line[end] < 'A' || line[end] > 'Z')))
+      return false;
+    out.push_back({letter, value, static_cast<std::uint32_t>(i + 1)});
+    kept += end - i;
+    i = end;
+  }
 }
 
 }  // namespace usina::gcode::grbl

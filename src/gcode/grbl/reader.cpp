@@ -30,34 +30,47 @@ LineKind LineReader::read(std::uint32_t n, std::uint64_t offset, std::string_vie
                           std::vector<core::Diagnostic>& diags) {
   diags_ = &diags;
   loc_ = {file_, n, 1, 0, offset};
-  line_ = text;
-  if (!now_.ended) {
-    if (auto length = check_block_length(text, loc_); !length) {
-      diags.push_back(std::move(length.error()));
-      return LineKind::Refused;
-    }
+  if (now_.ended) return after_end(text);
+  if (auto length = check_block_length(text, loc_); !length) {
+    diags.push_back(std::move(length.error()));
+    return LineKind::Refused;
   }
-  strip_line(text, stripped_);
-  const std::string& s = stripped_.text;
-  if (now_.ended) {
-    if (!s.empty() && s != "%" && !warned_after_end_) {
-      warn(core::Code::TextAfterProgramEnd, 1,
-           "lines after M2/M30: Grbl goes on reading them, usina's trace ends at the program end");
-      warned_after_end_ = true;
-    }
-    return LineKind::Nothing;
+  // Most lines are words and blanks, read straight from the line; the
+  // others are stripped as Grbl's line reader strips them first.
+  std::size_t kept = 0;
+  const bool plain = read_plain_words(text, words_, kept);
+  if (!plain) {
+    strip_line(text, stripped_);
+    warnings_of_the_line();
+    const std::string& s = stripped_.text;
+    if (s.empty() || s == "%") return LineKind::Nothing;
+    kept = s.size();
   }
-  warnings_of_the_line();
-  if (s.empty() || s == "%") return LineKind::Nothing;
-  if (s.size() > max_length_) {
+  if (kept > max_length_) {
     return fail({11, 1,
                  fmt::format("{} characters after blanks and comments are removed; Grbl holds {}",
-                             s.size(), max_length_)});
+                             kept, max_length_)});
   }
   next_ = now_;
   next_settings_.reset();
   facts_ = {travel_, now_.modal.tool_length_mm, false, false};
-  return s[0] == '$' ? system() : block();
+  if (plain) return block();
+  if (stripped_.text[0] == '$') return system();
+  if (auto f = read_words(stripped_.text, stripped_.cols, words_); !f) return fail(f.error());
+  return block();
+}
+
+// A line after M2/M30: nothing to run, a warning for the first that holds
+// more than '%'.
+LineKind LineReader::after_end(std::string_view text) {
+  strip_line(text, stripped_);
+  const std::string& s = stripped_.text;
+  if (!s.empty() && s != "%" && !warned_after_end_) {
+    warn(core::Code::TextAfterProgramEnd, 1,
+         "lines after M2/M30: Grbl goes on reading them, usina's trace ends at the program end");
+    warned_after_end_ = true;
+  }
+  return LineKind::Nothing;
 }
 
 void LineReader::accept() {
@@ -85,18 +98,17 @@ void LineReader::warnings_of_the_line() {
   }
 }
 
-// A G-code line: Grbl's checks on a copy of its modal state, then Grbl's
-// words for the interpreter, as Grbl read them (N is Grbl's line number,
-// no word of the block).
+// A G-code line, its words read: Grbl's checks on a copy of its modal
+// state, then Grbl's words for the interpreter, as Grbl read them (N is
+// Grbl's line number, no word of the block).
 LineKind LineReader::block() {
-  if (auto f = read_words(stripped_.text, stripped_.cols, words_); !f) return fail(f.error());
   Accepted acc;
   if (auto f = check_block(codes_, options_, words_, next_.modal, acc); !f) return fail(f.error());
   handed_.clear();
   for (const Word& w : words_) {
     if (w.letter != 'N') handed_.words.push_back({w.letter, w.value, w.col});
   }
-  block_col_ = stripped_.cols.empty() ? 1 : stripped_.cols.front();
+  block_col_ = words_.front().col;
   append_kept_modes(acc);
   if (acc.program_end) next_.ended = true;
   facts_.tool_length_mm = next_.modal.tool_length_mm;

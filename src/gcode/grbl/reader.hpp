@@ -64,6 +64,7 @@ class LineReader {
     bool ended = false;
   };
 
+  LineKind after_end(std::string_view text);
   LineKind block();
   LineKind system();
   LineKind fail(const Failure& f);
@@ -86,7 +87,6 @@ class LineReader {
   std::vector<core::Diagnostic>* diags_ = nullptr;
   StrippedLine stripped_;
   std::vector<Word> words_;
-  std::string_view line_;
   HandedBlock handed_;
   std::uint32_t block_col_ = 1;
   MachineFacts facts_;

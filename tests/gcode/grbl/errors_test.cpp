@@ -282,6 +282,65 @@ TEST(GrblLines, APlainLineStripsAsTheGeneralRoadDoes) {
   }
 }
 
+// Words read straight from a plain line must be the words, columns and
+// length the stripped line gives; a line the shorter road cannot read
+// exactly so must be left to the general one. The lines are random
+// characters (blanks inside numbers, stray signs and points, lower case,
+// '$', '%', a comment) and, a third of them, well-formed words, which the
+// shorter road must read.
+TEST(GrblLines, PlainWordsAreTheWordsOfTheStrippedLine) {
+  const std::string kChars = "GXYZFN$%0123456789.-+ ";
+  std::mt19937 rng(11);
+  int read_plain = 0;
+  for (int n = 0; n < 6000; ++n) {
+    std::string line;
+    const bool well_formed = n % 3 == 0;
+    const auto length = rng() % 40;
+    for (std::size_t i = 0; i < length; ++i) {
+      if (well_formed) {
+        line += std::string(rng() % 3, ' ') + "GXYZF"[rng() % 5] + (rng() % 2 ? "-" : "") +
+                std::to_string(rng() % 1000) + (rng() % 2 ? "." : "") + std::to_string(rng() % 100);
+        i += 4;
+      } else {
+        line += kChars[rng() % kChars.size()];
+      }
+    }
+    if (!well_formed && n % 50 == 1) line += "x1";
+    if (!well_formed && n % 50 == 2) line += "(a)";
+    std::vector<grbl::Word> plain;
+    std::size_t kept = 0;
+    const bool ok = grbl::read_plain_words(line, plain, kept);
+    if (well_formed && !line.empty()) {
+      ASSERT_TRUE(ok) << line;
+    }
+    if (!ok) continue;
+    ++read_plain;
+    const grbl::StrippedLine s = grbl::strip_line(line);
+    std::vector<grbl::Word> general;
+    ASSERT_TRUE(grbl::read_words(s.text, s.cols, general)) << line;
+    EXPECT_EQ(kept, s.text.size()) << line;
+    ASSERT_EQ(plain.size(), general.size()) << line;
+    for (std::size_t i = 0; i < plain.size(); ++i) {
+      EXPECT_EQ(plain[i].letter, general[i].letter) << line;
+      EXPECT_EQ(plain[i].value, general[i].value) << line;
+      EXPECT_EQ(plain[i].col, general[i].col) << line;
+    }
+  }
+  EXPECT_GT(read_plain, 1500);
+  std::vector<grbl::Word> w;
+  std::size_t kept = 0;
+  EXPECT_FALSE(grbl::read_plain_words("", w, kept));
+  EXPECT_FALSE(grbl::read_plain_words("   ", w, kept));
+  EXPECT_FALSE(grbl::read_plain_words("G1 X1 2", w, kept));    // X12 to Grbl
+  EXPECT_FALSE(grbl::read_plain_words("G1 X1.2.3", w, kept));  // error:1
+  EXPECT_FALSE(grbl::read_plain_words("g1 X1", w, kept));
+  EXPECT_FALSE(grbl::read_plain_words("$H", w, kept));
+  ASSERT_TRUE(grbl::read_plain_words(" G1X1  Y-2.5 ", w, kept));
+  EXPECT_EQ(kept, 9u);
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_EQ(w[2].col, 8u);
+}
+
 TEST(GrblLines, ReadWordsLikeReadFloat) {
   std::vector<grbl::Word> w;
   const grbl::StrippedLine s = grbl::strip_line("G1X+1.5Y-.25Z3.");
