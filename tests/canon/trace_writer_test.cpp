@@ -224,6 +224,22 @@ TEST(TraceJsonl, EveryNumberReadsBackAsItself) {
   }
 }
 
+// Whole numbers are written two digits at a time: every length, both
+// signs, and the ends of an int.
+TEST(TraceJsonl, WholeNumbersAtEveryLength) {
+  std::vector<int> values = {0, std::numeric_limits<int>::max(), std::numeric_limits<int>::min()};
+  for (long long p = 1; p <= 1000000000; p *= 10) {
+    for (const long long v : {p - 1, p, p + 1, 2 * p - 1})
+      values.insert(values.end(), {static_cast<int>(v), static_cast<int>(-v)});
+  }
+  for (const int v : values) {
+    EXPECT_EQ(to_jsonl({ToolChange{v, std::nullopt}, at(1, 1)}),
+              R"({"op":"tool","src":[1,1],"tool":)" + std::to_string(v) + R"(,"diameter":null})");
+  }
+  const core::SourceLoc far{0, 4294967295U, 100, 1, 0};
+  EXPECT_EQ(to_jsonl({Dwell{1}, far}), R"({"op":"dwell","src":[4294967295,100],"s":1})");
+}
+
 TEST(TraceJsonl, CommentQuotesBackslashesAndControlCharactersEscaped) {
   EXPECT_EQ(to_jsonl({Comment{"say \"hi\" \\ now"}, at(1, 1)}),
             R"({"op":"comment","src":[1,1],"text":"say \"hi\" \\ now"})");
