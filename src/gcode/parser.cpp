@@ -546,7 +546,61 @@ void Parser::parse_line() {
   }
 }
 
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+// The unsigned plain number at line[i], which ends at a blank, the line's
+// end or a letter that starts the next word (not E: the parser asks
+// whether it was an exponent). Its end, or 0 for any other number.
+std::size_t plain_number_at(std::string_view line, std::size_t i, double& value) {
+  const Decimal d = scan_decimal(line, i);
+  if (d.digits == 0 || d.digits > decimal_detail::kExactDigits) return 0;
+  if (d.end < line.size()) {
+    const char next = line[d.end];
+    if (!is_blank(next) && (next < 'A' || next > 'Z' || next == 'E')) return 0;
+  }
+  value = d.value;
+  return d.end;
+}
+
+// Blanks, then a digit or a point: a number with a blank inside it,
+// which the parser reads whole ("X1 5" is X15).
+bool number_goes_on(std::string_view line, std::size_t i) {
+  while (i < line.size() && is_blank(line[i]))
+    ++i;
+  return i < line.size() && ((line[i] >= '0' && line[i] <= '9') || line[i] == '.');
+}
+
 }  // namespace
+
+bool parse_plain_block(std::string_view line, std::size_t i, Block& block) {
+  if (i + 1 < line.size() && line[i] == 'N') {
+    double n = 0.0;
+    const std::size_t end = plain_number_at(line, i + 1, n);
+    if (end == 0 || number_goes_on(line, end)) return false;
+    block.line_number = n;
+    i = end;
+  }
+  for (;;) {
+    while (i < line.size() && is_blank(line[i]))
+      ++i;
+    if (i == line.size()) return !block.words.empty();
+    const char letter = line[i];
+    // N and O anywhere else are errors; lower case, comments, parameters
+    // and expressions go the whole way.
+    if (letter < 'A' || letter > 'Z' || letter == 'N' || letter == 'O') return false;
+    const std::size_t at = i++;
+    const bool minus = i < line.size() && line[i] == '-';
+    if (minus || (i < line.size() && line[i] == '+')) ++i;
+    double v = 0.0;
+    const std::size_t end = plain_number_at(line, i, v);
+    if (end == 0 || number_goes_on(line, end)) return false;
+    block.words.push_back(
+        {letter, kPlainNumber, static_cast<std::uint32_t>(at + 1), minus ? -v : v});
+    i = end;
+  }
+}
 
 bool parse_block(std::string_view line, const LinePos& where, Block& block,
                  core::DiagnosticSink& diags) {
@@ -555,6 +609,9 @@ bool parse_block(std::string_view line, const LinePos& where, Block& block,
   while (first < line.size() && (line[first] == ' ' || line[first] == '\t'))
     ++first;
   block.loc = {where.file, where.line, static_cast<std::uint32_t>(first + 1), 0, where.offset};
+  if (parse_plain_block(line, first, block)) return true;
+  block.words.clear();
+  block.line_number.reset();
   Parser p(line, block);
   p.parse_line();
   if (!p.error) return true;

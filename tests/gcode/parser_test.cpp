@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -797,6 +798,103 @@ TEST(ProgramIndex, LineAtHandlesCrLfAndTheLastLine) {
   EXPECT_EQ(c.text, "M2");
   EXPECT_EQ(c.next, text.size());
   EXPECT_EQ(line_at(text, 100).text, "");
+}
+
+// A random line of the characters blocks are made of: often well-formed
+// words with blanks between them, often anything.
+std::string random_line(std::mt19937& rng) {
+  const std::string kChars = "GXYZFNOEe0123456789.-+ \t#[]()x";
+  std::string line;
+  const auto pieces = rng() % 8;
+  for (std::size_t i = 0; i < pieces; ++i) {
+    if (rng() % 3 != 0) {
+      line += std::string(rng() % 3, ' ');
+      line += "NGXYZFEA"[rng() % 8];
+      if (rng() % 3 == 0) line += "-+"[rng() % 2];
+      if (rng() % 5 != 0) line += std::to_string(rng() % 1000);
+      if (rng() % 2 == 0) line += ".";
+      if (rng() % 2 == 0) line += std::to_string(rng() % 100);
+    } else {
+      line += kChars[rng() % kChars.size()];
+    }
+  }
+  return line;
+}
+
+// The shortcut for plain blocks must give the words and line number the
+// whole parser gives, at the same columns, and leave every other line to
+// it. The whole parser's reading is the same line with a ';' comment after
+// it, which the shortcut never takes.
+TEST(ParserPlainBlocks, TheShortcutReadsAsTheWholeParser) {
+  std::mt19937 rng(3);
+  int shortcut = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const std::string line = random_line(rng);
+    std::size_t first = 0;
+    while (first < line.size() && (line[first] == ' ' || line[first] == '\t'))
+      ++first;
+    Block plain;
+    if (!parse_plain_block(line, first, plain)) continue;
+    ++shortcut;
+    const auto whole = parse(line + ";");
+    ASSERT_TRUE(whole->ok) << line;
+    EXPECT_EQ(plain.line_number, whole->block.line_number) << line;
+    ASSERT_EQ(plain.words.size(), whole->block.words.size()) << line;
+    for (std::size_t i = 0; i < plain.words.size(); ++i) {
+      const Word& a = plain.words[i];
+      const Word& b = whole->block.words[i];
+      EXPECT_EQ(a.letter, b.letter) << line;
+      EXPECT_EQ(a.col, b.col) << line;
+      ASSERT_EQ(b.value, kPlainNumber) << line;
+      EXPECT_EQ(a.value, kPlainNumber) << line;
+      EXPECT_EQ(std::signbit(a.number), std::signbit(b.number)) << line;
+      EXPECT_EQ(a.number, b.number) << line;
+    }
+  }
+  EXPECT_GT(shortcut, 3000);
+}
+
+TEST(ParserPlainBlocks, WhatTheShortcutLeavesToTheWholeParser) {
+  for (const std::string line : {"",
+                                 "   ",
+                                 "N10",
+                                 "G1 X1 5",
+                                 "G1 X 1",
+                                 "G1 X- 1",
+                                 "G1 X1E3",
+                                 "g1 x1",
+                                 "G1 X#1",
+                                 "G1 X[1]",
+                                 "G1 X1 (c)",
+                                 "G1 X1 ;c",
+                                 "/G1 X1",
+                                 "N10 O100 sub",
+                                 "G1 N10",
+                                 "%",
+                                 "G1 X.",
+                                 "G1 X1.2.3",
+                                 "G1 X1234567890.1234567",
+                                 "G1 @5",
+                                 "N-1 G1",
+                                 "N 10 G1",
+                                 "G1\tX1\r"}) {
+    Block b;
+    std::size_t first = 0;
+    while (first < line.size() && line[first] == ' ')
+      ++first;
+    if (line == "G1\tX1\r") {
+      EXPECT_TRUE(parse_plain_block(line, first, b)) << line;  // tab and CR are blanks
+      continue;
+    }
+    EXPECT_FALSE(parse_plain_block(line, first, b)) << line;
+  }
+  Block b;
+  ASSERT_TRUE(parse_plain_block("N20 G1X45.75  Y4 Z-1.4104", 0, b));
+  EXPECT_EQ(b.line_number, 20.0);
+  ASSERT_EQ(b.words.size(), 4u);
+  EXPECT_EQ(b.words[1].letter, 'X');
+  EXPECT_EQ(b.words[1].col, 7u);
+  EXPECT_EQ(b.words[3].number, -1.4104);
 }
 
 }  // namespace
