@@ -550,56 +550,58 @@ bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-// The unsigned plain number at line[i], which ends at a blank, the line's
-// end or a letter that starts the next word (not E: the parser asks
-// whether it was an exponent). Its end, or 0 for any other number.
+// A word's letter the shortcut reads: upper case, not N or O (errors
+// anywhere but at the start of a block and an O-word's).
+constexpr std::array<bool, 256> kPlainLetter = [] {
+  std::array<bool, 256> t{};
+  for (int c = 'A'; c <= 'Z'; ++c)
+    t[static_cast<std::size_t>(c)] = c != 'N' && c != 'O';
+  return t;
+}();
+
+// The unsigned plain number at line[i] and the blanks after it: where the
+// next word starts (or the line ends), or 0 when the parser reads it
+// otherwise: a blank inside the number ("X1 5" is X15), an E right after
+// it (the parser asks whether it was an exponent), more than 15 digits.
 std::size_t plain_number_at(std::string_view line, std::size_t i, double& value) {
   const Decimal d = scan_decimal(line, i);
   if (d.digits == 0 || d.digits > decimal_detail::kExactDigits) return 0;
-  if (d.end < line.size()) {
-    const char next = line[d.end];
-    if (!is_blank(next) && (next < 'A' || next > 'Z' || next == 'E')) return 0;
+  std::size_t next = d.end;
+  while (next < line.size() && is_blank(line[next]))
+    ++next;
+  if (next < line.size()) {
+    const char c = line[next];
+    if ((c >= '0' && c <= '9') || c == '.' || (c == 'E' && next == d.end)) return 0;
   }
   value = d.value;
-  return d.end;
-}
-
-// Blanks, then a digit or a point: a number with a blank inside it,
-// which the parser reads whole ("X1 5" is X15).
-bool number_goes_on(std::string_view line, std::size_t i) {
-  while (i < line.size() && is_blank(line[i]))
-    ++i;
-  return i < line.size() && ((line[i] >= '0' && line[i] <= '9') || line[i] == '.');
+  return next;
 }
 
 }  // namespace
 
 bool parse_plain_block(std::string_view line, std::size_t i, Block& block) {
+  while (i < line.size() && is_blank(line[i]))
+    ++i;
   if (i + 1 < line.size() && line[i] == 'N') {
     double n = 0.0;
-    const std::size_t end = plain_number_at(line, i + 1, n);
-    if (end == 0 || number_goes_on(line, end)) return false;
+    i = plain_number_at(line, i + 1, n);
+    if (i == 0) return false;
     block.line_number = n;
-    i = end;
   }
-  for (;;) {
-    while (i < line.size() && is_blank(line[i]))
-      ++i;
-    if (i == line.size()) return !block.words.empty();
+  while (i < line.size()) {
     const char letter = line[i];
-    // N and O anywhere else are errors; lower case, comments, parameters
-    // and expressions go the whole way.
-    if (letter < 'A' || letter > 'Z' || letter == 'N' || letter == 'O') return false;
+    // Lower case, comments, parameters and expressions go the whole way.
+    if (!kPlainLetter[static_cast<unsigned char>(letter)]) return false;
     const std::size_t at = i++;
     const bool minus = i < line.size() && line[i] == '-';
     if (minus || (i < line.size() && line[i] == '+')) ++i;
     double v = 0.0;
-    const std::size_t end = plain_number_at(line, i, v);
-    if (end == 0 || number_goes_on(line, end)) return false;
+    i = plain_number_at(line, i, v);
+    if (i == 0) return false;
     block.words.push_back(
         {letter, kPlainNumber, static_cast<std::uint32_t>(at + 1), minus ? -v : v});
-    i = end;
   }
+  return !block.words.empty();
 }
 
 bool parse_block(std::string_view line, const LinePos& where, Block& block,

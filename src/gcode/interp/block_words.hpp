@@ -11,7 +11,7 @@ namespace usina::gcode {
 struct BlockWords {
   static constexpr int kSlots = 28;  // A..Z, '@', '^'
 
-  static int slot(char letter) {
+  static constexpr int slot(char letter) {
     if (letter == '@') return 26;
     if (letter == '^') return 27;
     return letter - 'A';

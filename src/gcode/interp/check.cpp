@@ -165,6 +165,14 @@ bool Interpreter::comp_forbids(const BlockWords& w) {
 }
 
 bool Interpreter::check_unused(const BlockWords& w) {
+  // Most blocks have none of the letters below: nothing to ask.
+  constexpr std::uint32_t kAsked = [] {
+    std::uint32_t bits = 0;
+    for (const char c : std::string_view("IJKRPQLDHE"))
+      bits |= 1u << BlockWords::slot(c);
+    return bits;
+  }();
+  if ((w.present & kAsked) == 0) return true;
   const GCode mo = w.motion;
   const GCode g0 = w.g[kGroupNonModal];
   const bool arc = is_arc(mo);
