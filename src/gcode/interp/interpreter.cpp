@@ -182,28 +182,42 @@ bool Interpreter::sort_word(const EvaluatedWord& word, BlockWords& w) {
     return error(core::Code::ValueOutOfRange, word.col, ok.error());
   }
   if (word.letter == 'G' || word.letter == 'M') {
-    const double tenths = std::round(v * 10.0);
-    if (!(v >= 0 && tenths <= 99990) || std::fabs(v * 10.0 - tenths) > 1e-6 ||
+    // No code is negative or past G9999 (NaN fails here too); within
+    // those, v * 10 to the nearest whole number, halves up.
+    if (!(v >= 0.0 && v <= 10000.0)) return word_refused(word, core::Code::UnknownGCode);
+    const double scaled = v * 10.0;
+    const double tenths = static_cast<double>(static_cast<long long>(scaled + 0.5));
+    if (tenths > 99990 || std::fabs(scaled - tenths) > 1e-6 ||
         (word.letter == 'M' && static_cast<long>(tenths) % 10 != 0)) {
-      return error(word.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode,
-                   word.col, fmt::format("{}{} is not a code", word.letter, v));
+      return word_refused(word, core::Code::UnknownGCode);
     }
     const int code = static_cast<int>(tenths);
     return word.letter == 'G' ? place_g(w, code, word.col) : place_m(w, code / 10, word.col);
   }
-  if (w.has(word.letter)) {
-    return error(core::Code::RepeatedWord, word.col,
-                 fmt::format("{} word appears twice in the block", word.letter));
-  }
+  if (w.has(word.letter)) return word_refused(word, core::Code::RepeatedWord);
   if (word.incremental) {
     if (std::string_view(kAxisLetters).find(word.letter) == std::string_view::npos) {
-      return error(core::Code::NotAllowedInMode, word.col,
-                   fmt::format("{} written as an increment: only axis words may be", word.letter));
+      return word_refused(word, core::Code::NotAllowedInMode);
     }
     w.mark_incremental(word.letter);
   }
   w.set(word.letter, v, word.col);
   return true;
+}
+
+// Why sort_word refused a word: apart, so the way of every accepted word
+// builds no message.
+bool Interpreter::word_refused(const EvaluatedWord& word, core::Code why) {
+  switch (why) {
+  case core::Code::RepeatedWord:
+    return error(why, word.col, fmt::format("{} word appears twice in the block", word.letter));
+  case core::Code::NotAllowedInMode:
+    return error(why, word.col,
+                 fmt::format("{} written as an increment: only axis words may be", word.letter));
+  default:
+    return error(word.letter == 'G' ? core::Code::UnknownGCode : core::Code::UnknownMCode, word.col,
+                 fmt::format("{}{} is not a code", word.letter, word.value));
+  }
 }
 
 bool Interpreter::assign(std::span<const EvaluatedAssign> assigns) {

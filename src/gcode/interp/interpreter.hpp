@@ -226,6 +226,7 @@ class Interpreter final : private ParameterSource {
   // Steps 2-4 (interpreter.cpp, check.cpp, execute.cpp).
   bool sort_words(std::span<const EvaluatedWord> words, BlockWords& w);
   bool sort_word(const EvaluatedWord& word, BlockWords& w);
+  [[gnu::noinline]] bool word_refused(const EvaluatedWord& word, core::Code why);
   bool assign(std::span<const EvaluatedAssign> assigns);
   bool place_g(BlockWords& w, GCode g, std::uint32_t col);
   bool place_m(BlockWords& w, int m, std::uint32_t col);

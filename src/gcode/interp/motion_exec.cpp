@@ -3,6 +3,8 @@
 // probing, splines; canned cycles and cutter compensation are modules of
 // their own driven from here.
 #include <cmath>
+#include <cstdint>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -17,6 +19,14 @@ namespace {
 bool is_rotary(int axis) {
   return axis >= 3 && axis <= 5;
 }
+
+// The words of the axes after X, Y and Z: A B C U V W.
+constexpr std::uint32_t kRotaryAndUvw = [] {
+  std::uint32_t bits = 0;
+  for (const char c : std::string_view("ABCUVW"))
+    bits |= 1u << BlockWords::slot(c);
+  return bits;
+}();
 
 }  // namespace
 
@@ -37,7 +47,11 @@ Axes Interpreter::target(const BlockWords& w, bool machine_coords) const {
   }
   for (int a = machine_coords ? 3 : 0; a < kAxisCount; ++a) {
     const char letter = kAxisLetters[a];
-    if (!w.has(letter)) continue;
+    if (!w.has(letter)) {
+      // Most blocks name X, Y or Z only: the rest is asked at once.
+      if (a >= 3 && (w.present & kRotaryAndUvw) == 0) break;
+      continue;
+    }
     double v = is_rotary(a) ? w.get(letter) : mm(w.get(letter));
     if (a == 0 && s.lathe_diameter) v /= 2.0;  // G7: X words are diameters
     const auto i = static_cast<std::size_t>(a);
