@@ -560,7 +560,65 @@ void Parser::parse() {
     item();
 }
 
+// A word's letter the shortcut reads: upper case, not N or P (errors
+// there) and not lower case (an increment, read the whole way).
+constexpr std::array<bool, 256> kPlainLetter = [] {
+  std::array<bool, 256> t{};
+  for (int c = 'A'; c <= 'Z'; ++c)
+    t[static_cast<std::size_t>(c)] = c != 'N' && c != 'P';
+  return t;
+}();
+
+// The unsigned number right at text[i] and the blanks after it: where the
+// next word starts (or the block ends), or 0 for what the parser reads
+// otherwise or refuses: no digit (a word of no value is 0), an E after it
+// (an exponent, refused), more than 15 digits, a character after it that
+// starts no word.
+std::size_t plain_number_at(std::string_view text, std::size_t i, double& value) {
+  const Decimal d = scan_decimal(text, i);
+  if (d.digits == 0 || d.digits > decimal_detail::kExactDigits) return 0;
+  if (d.end < text.size() && text[d.end] == 'E') return 0;
+  std::size_t next = d.end;
+  while (next < text.size() && is_blank(text[next]))
+    ++next;
+  if (next < text.size() && !kPlainLetter[static_cast<unsigned char>(text[next])]) return 0;
+  value = d.value;
+  return next;
+}
+
 }  // namespace
+
+bool parse_plain_romi_block(std::string_view text, std::uint32_t first_col, std::size_t i,
+                            RomiBlock& block) {
+  while (i < text.size() && is_blank(text[i]))
+    ++i;
+  if (i + 1 < text.size() && text[i] == 'N' && is_digit(text[i + 1])) {
+    double n = 0.0;
+    i = plain_number_at(text, i + 1, n);
+    if (i == 0) return false;
+    block.base.line_number = n;
+  }
+  std::vector<ExprNode>& exprs = block.base.exprs;
+  while (i < text.size()) {
+    const char letter = text[i];
+    if (!kPlainLetter[static_cast<unsigned char>(letter)] || exprs.size() >= kMaxNodes) {
+      return false;
+    }
+    const std::size_t at = i++;
+    const std::size_t value_at = i;
+    const bool minus = i < text.size() && text[i] == '-';
+    if (minus || (i < text.size() && text[i] == '+')) ++i;
+    double v = 0.0;
+    i = plain_number_at(text, i, v);
+    if (i == 0) return false;
+    ExprNode& node = exprs.emplace_back();
+    node.value = minus ? -v : v;
+    node.col = first_col + static_cast<std::uint32_t>(value_at);
+    block.words.push_back({letter, false, static_cast<ExprRef>(exprs.size() - 1),
+                           first_col + static_cast<std::uint32_t>(at)});
+  }
+  return !block.words.empty();
+}
 
 void RomiBlock::clear() {
   base.clear();
@@ -597,6 +655,10 @@ bool parse_romi_block(std::string_view text, const LinePos& where, std::uint32_t
     ++first;
   block.base.loc = {where.file, where.line, static_cast<std::uint32_t>(first_col + first), 0,
                     where.offset};
+  if (parse_plain_romi_block(text, first_col, first, block)) return true;
+  block.words.clear();
+  block.base.exprs.clear();
+  block.base.line_number.reset();
   Parser p(text, first_col, block);
   p.parse();
   if (!p.error) return true;

@@ -70,6 +70,16 @@ inline BlockText block_at(std::string_view text, std::uint64_t offset) {
   return block_at(text, offset, unknown);
 }
 
+// The shortcut parse_romi_block takes for most blocks: an optional N
+// number, then upper-case words of plain numbers apart or with blanks
+// between them ("G1 X112.75 Y16.5 Z-0.8597"), from `first`, the first
+// character that is no blank. Their words, nodes and line number added to
+// `block` as the whole parser makes them; false for any other block, with
+// `block.words`, `block.base.exprs` and `block.base.line_number` left to
+// be cleared.
+bool parse_plain_romi_block(std::string_view text, std::uint32_t first_col, std::size_t first,
+                            RomiBlock& block);
+
 // Parses a block whose first character is at column `first_col` of its line.
 // Returns false after reporting a syntax error.
 bool parse_romi_block(std::string_view text, const LinePos& where, std::uint32_t first_col,
