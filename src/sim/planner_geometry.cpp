@@ -23,38 +23,78 @@ double figure(const AxisLimits& a, AxisRate rate) {
   return 0.0;
 }
 
+// along_path's minimum for one rate, an axis at a time.
+class RateLimit {
+ public:
+  explicit RateLimit(AxisRate rate) : rate_(rate) {}
+
+  void add(const AxisLimits& a, double share, std::size_t i) {
+    const double f = figure(a, rate_);
+    if (rate_ == AxisRate::Jerk && f <= 0.0) {
+      any_zero_jerk_ = true;
+      return;
+    }
+    const double limit = f / share;
+    if (limit < best_) {
+      best_ = limit;
+      axis_ = static_cast<int>(i);
+    }
+  }
+
+  int axis() const { return axis_; }
+
+  double result(const MachineProfile& m) const {
+    double best = best_;
+    // Axes the profile lacks (a rotary axis of a three-axis profile) move at
+    // the rate of the slowest linear axis rather than without limit.
+    if (best == kInf && rate_ != AxisRate::Jerk) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (m.axes[i].present) best = std::min(best, figure(m.axes[i], rate_));
+      }
+    }
+    // One axis without jerk limit makes the move trapezoidal: the S-curve
+    // needs every moving axis to ramp its acceleration.
+    if (rate_ == AxisRate::Jerk && (any_zero_jerk_ || best == kInf)) return 0.0;
+    return best;
+  }
+
+ private:
+  AxisRate rate_;
+  double best_ = kInf;
+  int axis_ = -1;
+  bool any_zero_jerk_ = false;
+};
+
+// An axis that limits nothing: absent, or not moving.
+bool limits_nothing(const AxisLimits& a, double share) {
+  return !a.present || share <= 1e-12;
+}
+
 }  // namespace
 
 double along_path(const MachineProfile& m, const AxisShare& s, AxisRate rate, int* limiting) {
-  double best = kInf;
-  int axis = -1;
-  bool any_zero_jerk = false;
+  RateLimit r(rate);
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!limits_nothing(m.axes[i], s.share[i])) r.add(m.axes[i], s.share[i], i);
+  }
+  if (limiting != nullptr) *limiting = r.axis();
+  return r.result(m);
+}
+
+PathRates path_rates(const MachineProfile& m, const AxisShare& s) {
+  RateLimit rapid(AxisRate::Rapid);
+  RateLimit feed(AxisRate::MaxFeed);
+  RateLimit accel(AxisRate::Accel);
+  RateLimit jerk(AxisRate::Jerk);
   for (std::size_t i = 0; i < 6; ++i) {
     const AxisLimits& a = m.axes[i];
-    if (!a.present || s.share[i] <= 1e-12) continue;
-    const double f = figure(a, rate);
-    if (rate == AxisRate::Jerk && f <= 0.0) {
-      any_zero_jerk = true;
-      continue;
-    }
-    const double limit = f / s.share[i];
-    if (limit < best) {
-      best = limit;
-      axis = static_cast<int>(i);
-    }
+    if (limits_nothing(a, s.share[i])) continue;
+    rapid.add(a, s.share[i], i);
+    feed.add(a, s.share[i], i);
+    accel.add(a, s.share[i], i);
+    jerk.add(a, s.share[i], i);
   }
-  // Axes the profile lacks (a rotary axis of a three-axis profile) move at
-  // the rate of the slowest linear axis rather than without limit.
-  if (best == kInf && rate != AxisRate::Jerk) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (m.axes[i].present) best = std::min(best, figure(m.axes[i], rate));
-    }
-  }
-  if (limiting != nullptr) *limiting = axis;
-  // One axis without jerk limit makes the move trapezoidal: the S-curve
-  // needs every moving axis to ramp its acceleration.
-  if (rate == AxisRate::Jerk && (any_zero_jerk || best == kInf)) return 0.0;
-  return best;
+  return {rapid.result(m), feed.result(m), feed.axis(), accel.result(m), jerk.result(m)};
 }
 
 AxisShare straight_share(const Axes6& from, const Axes6& to, double length) {

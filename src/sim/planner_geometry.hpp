@@ -32,6 +32,18 @@ enum class AxisRate { Rapid, MaxFeed, Accel, Jerk };
 double along_path(const MachineProfile& m, const AxisShare& s, AxisRate rate,
                   int* limiting = nullptr);
 
+// Every rate along_path gives, in one pass over the axes (a straight move
+// asks for all of them): the same values.
+struct PathRates {
+  double rapid = 0.0;
+  double max_feed = 0.0;
+  int max_feed_axis = -1;  // the axis that sets max_feed (or -1)
+  double accel = 0.0;
+  double jerk = 0.0;
+};
+
+PathRates path_rates(const MachineProfile& m, const AxisShare& s);
+
 // The share of a straight move from `from` to `to` over `length`.
 AxisShare straight_share(const Axes6& from, const Axes6& to, double length);
 

@@ -180,7 +180,8 @@ void StatsSink::moved_to(const Axes6& to) {
 
 StatsSink::Line StatsSink::line_to(const Axes6& to) const {
   const double length = path_length(pos_, to);
-  return {to, length, straight_share(pos_, to, length)};
+  const AxisShare share = straight_share(pos_, to, length);
+  return {to, length, share, path_rates(machine_, share)};
 }
 
 PlannedMove StatsSink::straight_move(const Line& line, double cruise, Kind kind) const {
@@ -188,11 +189,10 @@ PlannedMove StatsSink::straight_move(const Line& line, double cruise, Kind kind)
   m.length = line.length;
   m.start_dir = m.end_dir = direction(pos_, line.to);
   m.cruise = block_limit(line.length, cruise);
-  m.kin = {along_path(machine_, line.share, AxisRate::Accel),
-           along_path(machine_, line.share, AxisRate::Jerk)};
+  m.kin = {line.rates.accel, line.rates.jerk};
   m.account = account(kind);
   m.op = op_;
-  m.max_speed = along_path(machine_, line.share, AxisRate::Rapid);
+  m.max_speed = line.rates.rapid;
   m.rapid = kind == Rapid;
   return m;
 }
@@ -212,7 +212,7 @@ void StatsSink::traverse(const canon::Op& op, const canon::Traverse& t) {
   checks_.travel(op, box.lo, box.hi, to);
   checks_.rapid(op, from, t.to);
   const Line line = line_to(to);
-  const double cruise = along_path(machine_, line.share, AxisRate::Rapid);
+  const double cruise = line.rates.rapid;
   ToolStats& ts = tool();
   ts.rapid_mm += straight(line, cruise, Rapid);
   ++ts.counts.rapids;
@@ -223,12 +223,19 @@ void StatsSink::traverse(const canon::Op& op, const canon::Traverse& t) {
 double StatsSink::feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f) {
   int axis = -1;
   const double limit = along_path(machine_, share, AxisRate::MaxFeed, &axis);  // mm/s
+  return feed_speed(op, limit, axis, f);
+}
+
+// The speed a feed move runs at (mm/s): its rate within `limit`, the most
+// the axes allow, which `limiting_axis` sets.
+double StatsSink::feed_speed(const canon::Op& op, double limit, int limiting_axis,
+                             std::optional<double> f) {
   const bool has_rate = f.has_value() && *f > 0.0;
   checks_.feed(op, has_rate, spindle_dir_ != canon::SpindleDir::Off);
   if (!has_rate) return limit;
   tool().feed.add(*f);
   last_feed_ = *f;
-  checks_.feed_limit(op, *f, limit * 60.0, axis);
+  checks_.feed_limit(op, *f, limit * 60.0, limiting_axis);
   return std::min(*f / 60.0, limit);
 }
 
@@ -255,7 +262,8 @@ void StatsSink::feed(const canon::Op& op, const Vec3& to_xyz, const canon::Abc& 
   box.add(to_xyz);
   checks_.travel(op, box.lo, box.hi, to);
   const Line line = line_to(to);
-  const double cruise = feed_speed(op, line.share, rate_of(f, programmed, line.length));
+  const double cruise = feed_speed(op, line.rates.max_feed, line.rates.max_feed_axis,
+                                   rate_of(f, programmed, line.length));
   ToolStats& ts = tool();
   ts.cutting_mm += straight(line, cruise, Cutting);
   ++ts.counts.feeds;
@@ -372,7 +380,7 @@ void StatsSink::probe(const canon::Op& op, const canon::Probe& p) {
   box.add(p.to);
   checks_.travel(op, box.lo, box.hi, to);
   const Line line = line_to(to);
-  const double limit = along_path(machine_, line.share, AxisRate::MaxFeed);
+  const double limit = line.rates.max_feed;
   const double cruise = last_feed_ ? std::min(*last_feed_ / 60.0, limit) : limit;
   straight(line, cruise, Other);
   planner_->stop();

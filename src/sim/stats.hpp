@@ -138,20 +138,24 @@ class StatsSink final : public canon::Sink {
   void spindle(const canon::Spindle& s);
   void tool_change(const canon::ToolChange& t);
 
-  // A straight move from the current position: its length and axis shares,
-  // worked out once for the checks, the cruise speed and the planner.
+  // A straight move from the current position: its length, axis shares
+  // and the rates they allow, worked out once for the checks, the cruise
+  // speed and the planner.
   struct Line {
     Axes6 to;
     double length;
     AxisShare share;
+    PathRates rates;
   };
 
   Line line_to(const Axes6& to) const;
   // Plans a straight move from the current position; returns its length.
   double straight(const Line& line, double cruise, Kind kind);
   PlannedMove straight_move(const Line& line, double cruise, Kind kind) const;
-  // The cruise speed (mm/s) of a feed at `f` mm/min along `share`, reporting a clamp.
+  // The cruise speed (mm/s) of a feed at `f` mm/min along `share`, reporting a clamp;
+  // the same within the axes' `limit` already worked out.
   double feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f);
+  double feed_speed(const canon::Op& op, double limit, int limiting_axis, std::optional<double> f);
   std::optional<double> rate_of(std::optional<double> f, const canon::ProgrammedFeed& programmed,
                                 double length) const;
   double block_limit(double length, double cruise) const;

@@ -6,6 +6,7 @@
 #include "sim/planner.hpp"
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -206,6 +207,38 @@ TEST(PlannerGeometry, RapidLimitedByTheSlowestAxis) {
   // Z alone: its jerk, S-curve.
   const AxisShare z = straight_share({0, 0, 0, 0, 0, 0}, {0, 0, 10, 0, 0, 0}, 10);
   EXPECT_EQ(along_path(m, z, AxisRate::Jerk), 5000.0);
+}
+
+// path_rates is along_path for every rate at once: the same numbers, bit
+// for bit, on random profiles (axes absent, jerk 0) and moves (axes still).
+TEST(PlannerGeometry, PathRatesAreAlongPathForEachRate) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> figure(0.0, 20000.0);
+  std::uniform_real_distribution<double> delta(-50.0, 50.0);
+  for (int n = 0; n < 5000; ++n) {
+    MachineProfile m;
+    for (AxisLimits& a : m.axes) {
+      a.present = rng() % 4 != 0;
+      a.rapid = figure(rng);
+      a.max_feed = figure(rng);
+      a.accel = figure(rng);
+      a.jerk = rng() % 3 == 0 ? 0.0 : figure(rng);
+    }
+    Axes6 to{};
+    for (double& d : to)
+      d = rng() % 3 == 0 ? 0.0 : delta(rng);
+    double length = 0.0;
+    for (const double d : to)
+      length += d * d;
+    const AxisShare s = straight_share({}, to, std::sqrt(length));
+    const PathRates r = path_rates(m, s);
+    int axis = -2;
+    EXPECT_EQ(r.max_feed, along_path(m, s, AxisRate::MaxFeed, &axis));
+    EXPECT_EQ(r.max_feed_axis, axis);
+    EXPECT_EQ(r.rapid, along_path(m, s, AxisRate::Rapid));
+    EXPECT_EQ(r.accel, along_path(m, s, AxisRate::Accel));
+    EXPECT_EQ(r.jerk, along_path(m, s, AxisRate::Jerk));
+  }
 }
 
 // A half circle of radius 1 from (0,0) to (2,0) about (1,0), counter-
