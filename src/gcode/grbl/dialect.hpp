@@ -52,19 +52,12 @@ struct StrippedLine {
   std::uint32_t realtime_col = 0;   // first real-time character (? ~ ! ^X), 0 if none
   std::uint32_t control_col = 0;    // first control character outside comments (NUL...), 0 if none
   unsigned char control = 0;        // that character
-  // Nothing was dropped but blanks, nothing upper-cased: the line is its
-  // own blanked_line(), most lines of a program are.
-  bool verbatim = true;
 };
 
 StrippedLine strip_line(std::string_view line);
 // The same into `out`, whose buffers are reused: nothing is allocated a line
 // once they are as long as the longest line.
 void strip_line(std::string_view line, StrippedLine& out);
-
-// `line` with what Grbl drops turned to blanks and its letters upper-cased,
-// into `out`: the columns stay the user's (what the interpreter is given).
-void blanked_line(std::string_view line, const StrippedLine& s, std::string& out);
 
 // A line of a program: Grbl ends a line at LF or CR (protocol_main_loop),
 // so CR LF, LF and CR alone each end one. The offset of its first byte, its

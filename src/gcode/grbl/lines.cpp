@@ -79,7 +79,6 @@ void strip_line(std::string_view line, StrippedLine& out) {
   out.cols.resize(line.size());
   out.realtime_col = out.control_col = 0;
   out.control = 0;
-  out.verbatim = true;
   if (strip_plain_line(line, out)) return;
   std::size_t kept = 0;
   bool in_parens = false;
@@ -90,13 +89,11 @@ void strip_line(std::string_view line, StrippedLine& out) {
     if (kPlain[c] && !in_parens && !in_semicolon) {
       const char up =
           (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : static_cast<char>(c);
-      if (up != line[i]) out.verbatim = false;
       out.text[kept] = up;
       out.cols[kept] = col;
       ++kept;
       continue;
     }
-    if (c != ' ') out.verbatim = false;
     if (is_realtime(c)) {
       if (out.realtime_col == 0) out.realtime_col = col;
       continue;
@@ -120,12 +117,6 @@ void strip_line(std::string_view line, StrippedLine& out) {
   }
   out.text.resize(kept);
   out.cols.resize(kept);
-}
-
-void blanked_line(std::string_view line, const StrippedLine& s, std::string& out) {
-  out.assign(line.size(), ' ');
-  for (std::size_t k = 0; k < s.text.size(); ++k)
-    out[s.cols[k] - 1] = s.text[k];
 }
 
 // Where the line starting at `at` ends: at the first LF or CR. Searched a

@@ -250,11 +250,6 @@ TEST(GrblLines, StripLikeGrblsLineReader) {
   EXPECT_EQ(s.text, "G1X10Y2");
   EXPECT_EQ(s.cols.front(), 1u);
   EXPECT_EQ(s.cols.back(), 18u);
-  std::string blanked;
-  grbl::blanked_line("g1 x 1 0 (cmt) /y2 ; rest", s, blanked);
-  EXPECT_EQ(blanked, "G1 X 1 0        Y2       ");
-  EXPECT_FALSE(s.verbatim);
-  EXPECT_TRUE(grbl::strip_line("G1 X1  Y2").verbatim);
   EXPECT_EQ(grbl::strip_line("(unclosed G1 X1").text, "");
   EXPECT_EQ(grbl::strip_line("G0 X1 (a;b) Y2").text, "G0X1Y2");
   EXPECT_EQ(grbl::strip_line("G0 X1 (\xC3\xA9t\xC3\xA9)").text, "G0X1");
@@ -276,7 +271,6 @@ TEST(GrblLines, APlainLineStripsAsTheGeneralRoadDoes) {
     const grbl::StrippedLine general = grbl::strip_line(line + "(a)");
     ASSERT_EQ(plain.text, general.text) << line;
     ASSERT_EQ(plain.cols, general.cols) << line;
-    EXPECT_TRUE(plain.verbatim) << line;
     EXPECT_EQ(plain.realtime_col, 0u);
     EXPECT_EQ(plain.control_col, 0u);
   }
