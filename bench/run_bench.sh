@@ -12,9 +12,9 @@
 # 3. times `usina check`, `usina trace --format jsonl > /dev/null` and
 #    `usina stats` (default profile, then small_vmc with an S-curve) on it:
 #    wall time with hyperfine (mean of R runs after a warm-up) when it is
-#    installed (apt-get install hyperfine), otherwise the best of R runs of
-#    /usr/bin/time; CPU time (user+sys) and peak memory (max RSS) with
-#    /usr/bin/time -v;
+#    installed (apt-get install hyperfine), otherwise the best of R runs;
+#    CPU time (the least user+sys of R runs) and peak memory (max RSS) from
+#    the kernel's accounting of the finished runs (getrusage);
 # 4. prints MB/s (10^6 bytes of G-code a second) by wall and by CPU time, and
 #    peak MiB, against the targets (check >= 100 MB/s, trace >= 30 MB/s,
 #    peak < 32 MB), and for stats the seconds against its target (< 3 s);
@@ -87,29 +87,43 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 
 # Wall seconds per run of the command line "$1" (run through sh, output discarded):
-# hyperfine's mean when installed, else the best of $runs runs.
+# hyperfine's mean when installed, else the best of $runs runs (a
+# microsecond clock: /usr/bin/time's 10 ms put a row at a target's edge on
+# either side of it from run to run).
 wall_seconds() {
   if command -v hyperfine > /dev/null; then
     hyperfine --style none --warmup 1 --runs "$runs" --export-json "$tmp/h.json" "$1" > /dev/null
     python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["results"][0]["mean"])' "$tmp/h.json"
   else
-    python3 -c 'import sys; print(min(map(float, sys.argv[1:])))' $(for _ in $(seq "$runs"); do
-      /usr/bin/time -f %e -o "$tmp/t" sh -c "$1"; cat "$tmp/t"; done)
+    python3 - "$runs" "$1" << 'PY'
+import subprocess, sys, time
+best = float("inf")
+for _ in range(int(sys.argv[1])):
+    start = time.perf_counter()
+    subprocess.run(["sh", "-c", sys.argv[2]], stdout=subprocess.DEVNULL, check=False)
+    best = min(best, time.perf_counter() - start)
+print(best)
+PY
   fi
 }
 
 # "cpu_seconds peak_mib" of the command line "$1": the least user+sys time and
-# the largest max RSS of $runs runs under /usr/bin/time -v. CPU time is what
-# the program itself costs, so it holds on a machine shared with other work.
+# the largest max RSS of $runs runs, from the kernel's accounting of the
+# finished children (getrusage, to the microsecond). CPU time is what the
+# program itself costs, so it holds on a machine shared with other work.
 cpu_and_peak() {
-  local cpu=() rss=()
-  for _ in $(seq "$runs"); do
-    /usr/bin/time -v -o "$tmp/v" sh -c "$1" > /dev/null
-    cpu+=("$(awk -F': ' '/User time|System time/ { s += $2 } END { print s }' "$tmp/v")")
-    rss+=("$(awk -F': ' '/Maximum resident set size/ { print $2 }' "$tmp/v")")
-  done
-  python3 -c 'import sys; n = len(sys.argv) // 2; c = sys.argv[1:n + 1]; r = sys.argv[n + 1:]
-print(min(map(float, c)), max(map(int, r)) / 1024)' "${cpu[@]}" "${rss[@]}"
+  python3 - "$runs" "$1" << 'PY'
+import resource, subprocess, sys
+best, peak = float("inf"), 0
+for _ in range(int(sys.argv[1])):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run(["sh", "-c", sys.argv[2]], stdout=subprocess.DEVNULL, check=False)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    used = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    best = min(best, used)
+    peak = max(peak, after.ru_maxrss)  # KiB, the largest child so far
+print(best, peak / 1024)
+PY
 }
 
 report() {  # name, command line, target MB/s
@@ -128,7 +142,7 @@ PY
 }
 
 echo "load before timing: $(cut -d' ' -f1-3 /proc/loadavg) (wall figures need a quiet machine; cpu figures do not)"
-echo "timing: wall $(command -v hyperfine > /dev/null && echo "= hyperfine mean of $runs runs" || echo "= best of $runs runs of /usr/bin/time"); cpu = least user+sys of $runs runs"
+echo "timing: wall $(command -v hyperfine > /dev/null && echo "= hyperfine mean of $runs runs" || echo "= best of $runs runs"); cpu = least user+sys of $runs runs"
 report check "'$usina' check '$program'" 100
 report trace "'$usina' trace --format jsonl '$program' > /dev/null" 30
 
