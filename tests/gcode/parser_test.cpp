@@ -14,6 +14,7 @@
 #include "gcode/expr.hpp"
 #include "gcode/program_index.hpp"
 #include "gcode/program_text.hpp"
+#include "support/random_block.hpp"
 
 namespace usina::gcode {
 namespace {
@@ -800,27 +801,6 @@ TEST(ProgramIndex, LineAtHandlesCrLfAndTheLastLine) {
   EXPECT_EQ(line_at(text, 100).text, "");
 }
 
-// A random line of the characters blocks are made of: often well-formed
-// words with blanks between them, often anything.
-std::string random_line(std::mt19937& rng) {
-  const std::string kChars = "GXYZFNOEe0123456789.-+ \t#[]()x";
-  std::string line;
-  const auto pieces = rng() % 8;
-  for (std::size_t i = 0; i < pieces; ++i) {
-    if (rng() % 3 != 0) {
-      line += std::string(rng() % 3, ' ');
-      line += "NGXYZFEA"[rng() % 8];
-      if (rng() % 3 == 0) line += "-+"[rng() % 2];
-      if (rng() % 5 != 0) line += std::to_string(rng() % 1000);
-      if (rng() % 2 == 0) line += ".";
-      if (rng() % 2 == 0) line += std::to_string(rng() % 100);
-    } else {
-      line += kChars[rng() % kChars.size()];
-    }
-  }
-  return line;
-}
-
 // The shortcut for plain blocks must give the words and line number the
 // whole parser gives, at the same columns, and leave every other line to
 // it. The whole parser's reading is the same line with a ';' comment after
@@ -829,7 +809,7 @@ TEST(ParserPlainBlocks, TheShortcutReadsAsTheWholeParser) {
   std::mt19937 rng(3);
   int shortcut = 0;
   for (int n = 0; n < 20000; ++n) {
-    const std::string line = random_line(rng);
+    const std::string line = test::random_block(rng, "GXYZFNOEe0123456789.-+ \t#[]()x", "NGXYZFEA");
     std::size_t first = 0;
     while (first < line.size() && (line[first] == ' ' || line[first] == '\t'))
       ++first;

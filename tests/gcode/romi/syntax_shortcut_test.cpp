@@ -8,30 +8,10 @@
 
 #include "core/diagnostic.hpp"
 #include "gcode/romi/syntax.hpp"
+#include "support/random_block.hpp"
 
 namespace usina::gcode::romi {
 namespace {
-
-// A random block of the characters romi blocks are made of: often
-// well-formed words with blanks between them, often anything.
-std::string random_block(std::mt19937& rng) {
-  const std::string kChars = "GXYZFNPEex0123456789.-+ \t()[];";
-  std::string block;
-  const auto pieces = rng() % 8;
-  for (std::size_t i = 0; i < pieces; ++i) {
-    if (rng() % 3 != 0) {
-      block += std::string(rng() % 3, ' ');
-      block += "NGXYZFEAP"[rng() % 9];
-      if (rng() % 3 == 0) block += "-+"[rng() % 2];
-      if (rng() % 5 != 0) block += std::to_string(rng() % 1000);
-      if (rng() % 2 == 0) block += ".";
-      if (rng() % 2 == 0) block += std::to_string(rng() % 100);
-    } else {
-      block += kChars[rng() % kChars.size()];
-    }
-  }
-  return block;
-}
 
 std::size_t first_non_blank(std::string_view s) {
   std::size_t i = 0;
@@ -46,7 +26,8 @@ TEST(RomiSyntaxShortcut, ReadsAsTheWholeParser) {
   std::mt19937 rng(5);
   int shortcut = 0;
   for (int n = 0; n < 20000; ++n) {
-    const std::string text = random_block(rng);
+    const std::string text =
+        test::random_block(rng, "GXYZFNPEex0123456789.-+ \t()[];", "NGXYZFEAP");
     RomiBlock plain;
     if (!parse_plain_romi_block(text, 3, first_non_blank(text), plain)) continue;
     ++shortcut;
