@@ -153,35 +153,6 @@ struct Check {
   }
 };
 
-// Whether a move's numbers are all in range, naming none: every move of
-// every program is asked, nearly all are, and the checker above builds its
-// message holder and visits field by field (issue 19). The same bounds as
-// Checker; false sends the move to it for the message.
-bool within(double v, double max) {
-  return std::fabs(v) <= max;  // NaN fails the comparison
-}
-
-bool point_within(const Vec3& p) {
-  return within(p.x, kMaxLength) && within(p.y, kMaxLength) && within(p.z, kMaxLength);
-}
-
-bool abc_within(const Abc& a) {
-  return within(a[0], kMaxAngle) && within(a[1], kMaxAngle) && within(a[2], kMaxAngle);
-}
-
-bool rate_within(double v) {
-  return within(v, kMaxFeed) && v >= 0.0 && (v == 0.0 || v >= kMinFeed);
-}
-
-bool plainly_in_range(const Traverse& t) {
-  return point_within(t.to) && abc_within(t.abc);
-}
-
-bool plainly_in_range(const Feed& f) {
-  return point_within(f.to) && abc_within(f.abc) && (!f.f || rate_within(*f.f)) &&
-         rate_within(f.programmed.value);
-}
-
 }  // namespace
 
 std::string limit_text(double bound) {
@@ -190,25 +161,21 @@ std::string limit_text(double bound) {
   return fmt::format("{:g}", bound);
 }
 
-tl::expected<void, std::string> check_range(const OpKind& op) {
-  if (const auto* f = std::get_if<Feed>(&op); f != nullptr && plainly_in_range(*f)) return {};
-  if (const auto* t = std::get_if<Traverse>(&op); t != nullptr && plainly_in_range(*t)) return {};
+tl::expected<void, std::string> range_problem(const OpKind& op) {
   Checker c(op_name(op));
   std::visit(Check{c}, op);
   if (c.problem) return tl::unexpected(std::move(*c.problem));
   return {};
 }
 
-tl::expected<void, std::string> check_range(const Traverse& move) {
-  if (plainly_in_range(move)) return {};
+tl::expected<void, std::string> range_problem(const Traverse& move) {
   Checker c("traverse");
   Check{c}(move);
   if (c.problem) return tl::unexpected(std::move(*c.problem));
   return {};
 }
 
-tl::expected<void, std::string> check_range(const Feed& move) {
-  if (plainly_in_range(move)) return {};
+tl::expected<void, std::string> range_problem(const Feed& move) {
   Checker c("feed");
   Check{c}(move);
   if (c.problem) return tl::unexpected(std::move(*c.problem));

@@ -26,15 +26,20 @@ inline constexpr double kMinFeedWord = 1e-6;
 // word_out_of_range).
 std::string word_range_error(char letter, double value);
 
-// Why the value of `letter`'s word is out of range, as the error; a value
-// when it is in range. G and M words are codes, checked as codes. Inline:
-// every word of every block asks.
-inline tl::expected<void, std::string> word_out_of_range(char letter, double value) {
-  if (letter == 'G' || letter == 'M') return {};
+// Whether the value of `letter`'s word is in range. G and M words are
+// codes, checked as codes. Inline, and a bool: every word of every block
+// asks, and the message is built only for a word out of range.
+inline bool word_value_in_range(char letter, double value) {
+  if (letter == 'G' || letter == 'M') return true;
   // NaN fails the first comparison.
-  const bool in_range = std::fabs(value) <= kMaxWordValue &&
-                        (letter != 'F' || !(value > 0.0 && value < kMinFeedWord));
-  if (in_range) return {};
+  return std::fabs(value) <= kMaxWordValue &&
+         (letter != 'F' || !(value > 0.0 && value < kMinFeedWord));
+}
+
+// Why the value of `letter`'s word is out of range, as the error; a value
+// when it is in range.
+inline tl::expected<void, std::string> word_out_of_range(char letter, double value) {
+  if (word_value_in_range(letter, value)) return {};
   return tl::unexpected(word_range_error(letter, value));
 }
 

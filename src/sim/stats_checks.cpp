@@ -37,13 +37,19 @@ void StatsChecks::extent(const canon::Op& op, int i, double low, double high) {
   span_lo_[k] = spanned_ ? std::min(span_lo_[k], low) : low;
   span_hi_[k] = spanned_ ? std::max(span_hi_[k], high) : high;
   const AxisLimits& a = machine_.axes[k];
-  const double span = span_hi_[k] - span_lo_[k];
-  if (too_long_[k] || span <= a.max - a.min + kTolerance) return;
+  if (too_long_[k] || span_hi_[k] - span_lo_[k] <= a.max - a.min + kTolerance) return;
+  span_too_long(op, i);
+}
+
+[[gnu::noinline]] void StatsChecks::span_too_long(const canon::Op& op, int i) {
+  const auto k = static_cast<std::size_t>(i);
+  const AxisLimits& a = machine_.axes[k];
   too_long_[k] = true;
   flag(core::Code::OverTravel, op, true,
        fmt::format("{} spans {:.3f} mm (from {:.3f} to {:.3f}), more than the {:.3f} mm the axis "
                    "travels; give the work zero (--work-zero or --var-file) to check the limits",
-                   axis_letter(i), span, span_lo_[k], span_hi_[k], a.max - a.min));
+                   axis_letter(i), span_hi_[k] - span_lo_[k], span_lo_[k], span_hi_[k],
+                   a.max - a.min));
 }
 
 void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, const Axes6& end) {

@@ -48,6 +48,9 @@ class StatsChecks {
   // With no work zero: the extent of the program so far on linear axis `i`
   // against the axis's travel, reported once per axis.
   void extent(const canon::Op& op, int i, double low, double high);
+  // Reports the span of axis `i` longer than its travel (apart from
+  // extent(), which every move calls, so that one stays small).
+  void span_too_long(const canon::Op& op, int i);
 
   // Counts the op; reports it when `first_of_run` and under the cap.
   void flag(core::Code code, const canon::Op& op, bool first_of_run, const std::string& message);

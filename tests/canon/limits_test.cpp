@@ -56,10 +56,10 @@ TEST(CanonLimits, BeyondTheBoundsIsOutOfRange) {
   EXPECT_FALSE(check_range(Pocket{o, 1.0}));
 }
 
-// Moves are first checked without the checker that names the number (a
-// shortcut for the usual move): each field of a traverse and a feed at
-// and just past its bounds, as an op and as a move, with the verdict the
-// bounds give and a message whenever it fails.
+// Moves are first checked without the checker that names the number (an
+// inline shortcut for the usual move, plainly_in_range): each field of a
+// traverse and a feed at and just past its bounds, as an op and as a move,
+// with the verdict the bounds give and a message whenever it fails.
 TEST(CanonLimits, MovesAtTheirBounds) {
   const double past = std::nextafter(1e9, kInf);
   const double below_min = std::nextafter(kMinFeed, 0.0);
@@ -93,9 +93,15 @@ TEST(CanonLimits, MovesAtTheirBounds) {
         EXPECT_FALSE(move.error().empty());
       }
       EXPECT_EQ(check_range(OpKind{f}).has_value(), ok);
+      // The inline shortcut and the checker agree, each on its own.
+      EXPECT_EQ(plainly_in_range(f), ok);
+      EXPECT_EQ(range_problem(f).has_value(), ok);
+      EXPECT_EQ(range_problem(OpKind{f}).has_value(), ok);
       if (field <= 2) {
         EXPECT_EQ(check_range(t).has_value(), c.length_ok);
         EXPECT_EQ(check_range(OpKind{t}).has_value(), c.length_ok);
+        EXPECT_EQ(plainly_in_range(t), c.length_ok);
+        EXPECT_EQ(range_problem(t).has_value(), c.length_ok);
       }
     }
   }

@@ -175,8 +175,10 @@ bool Engine::read_words(const TapeBlock& b, Words& w) {
   if (plain_block_words(b.text, w)) {
     // The checks of read_words below, for the words as they are.
     for (NcWord& word : w.list) {
-      if (const auto ok = word_out_of_range(word.letter, word.value); !ok)
-        return error(core::Code::ValueOutOfRange, b, word.pos, ok.error());
+      if (!word_value_in_range(word.letter, word.value)) {
+        return error(core::Code::ValueOutOfRange, b, word.pos,
+                     word_range_error(word.letter, word.value));
+      }
       word.checked = true;
     }
     return true;

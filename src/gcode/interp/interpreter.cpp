@@ -178,8 +178,8 @@ bool Interpreter::sort_words(std::span<const EvaluatedWord> words, BlockWords& w
 // tenths, G38.2 → 382; M codes are whole numbers), any other letter once.
 bool Interpreter::sort_word(const EvaluatedWord& word, BlockWords& w) {
   const double v = word.value;
-  if (const auto ok = word_out_of_range(word.letter, v); !ok) {
-    return error(core::Code::ValueOutOfRange, word.col, ok.error());
+  if (!word_value_in_range(word.letter, v)) {
+    return error(core::Code::ValueOutOfRange, word.col, word_range_error(word.letter, v));
   }
   if (word.letter == 'G' || word.letter == 'M') {
     // No code is negative or past G9999 (NaN fails here too); within

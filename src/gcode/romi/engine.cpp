@@ -87,6 +87,10 @@ void Engine::step() {
     ++cursor_.line;
     cursor_.line_start = bt.next;
   }
+  // Nothing after a line's last '#', how romi lines end ("G01 X10#"):
+  // every other block cut in a program of a block a line, and the parser
+  // would find no block in it.
+  if (bt.text.empty()) return;
   if (auto length = check_block_length(bt.text, {file_, where.line, col, 1, where.offset});
       !length) {
     diags_.report(std::move(length.error()));
@@ -136,8 +140,8 @@ bool Engine::evaluate_words() {
     auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
                                            : gcode::evaluate(block_.base, w.value, *this, err);
     if (!v) return error(err.error.code, err.col, err.error.message);
-    if (const auto ok = word_out_of_range(w.letter, *v); !ok) {
-      return error(core::Code::ValueOutOfRange, w.col, ok.error());
+    if (!word_value_in_range(w.letter, *v)) {
+      return error(core::Code::ValueOutOfRange, w.col, word_range_error(w.letter, *v));
     }
     const bool incremental = w.lower && dialect_options_.lowercase_incremental;
     words_.push_back({w.letter, *v, w.col, incremental});
