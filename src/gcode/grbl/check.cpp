@@ -94,7 +94,10 @@ Checked read_code(const CodeIndex& codes, const OptionValues& options, const Wor
     return tl::unexpected(
         Failure{23, w.col, code_name('M', w.value) + ": M codes take no fraction"});
   }
-  if (!codes.has_integer(w.letter, iv) ||
+  const CodeEntry* e = mantissa % 10 == 0 ? codes.find(w.letter, iv * 10 + mantissa / 10) : nullptr;
+  // A code of the table has its whole part in it: the search for the
+  // whole part alone is made only for a code the table lacks.
+  if ((e == nullptr && !codes.has_integer(w.letter, iv)) ||
       (w.letter == 'M' && iv == 7 && options.count("grbl_m7") && options.at("grbl_m7") == "off")) {
     return tl::unexpected(
         Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl 1.1 command"});
@@ -113,7 +116,6 @@ Checked read_code(const CodeIndex& codes, const OptionValues& options, const Wor
       b.axis = kind;
     }
   }
-  const CodeEntry* e = mantissa % 10 == 0 ? codes.find(w.letter, iv * 10 + mantissa / 10) : nullptr;
   if (e == nullptr) {
     if (w.letter == 'G' && fraction_family(iv)) {
       return tl::unexpected(
