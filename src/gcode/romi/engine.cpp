@@ -136,9 +136,8 @@ bool Engine::evaluate_words() {
   words_.clear();
   EvalError err;
   for (const RomiWord& w : block_.words) {
-    const ExprNode& node = block_.base.expr(w.value);
-    auto v = node.kind == ExprKind::Number ? std::optional<double>(node.value)
-                                           : gcode::evaluate(block_.base, w.value, *this, err);
+    auto v = w.value == kPlainNumber ? std::optional<double>(w.number)
+                                     : gcode::evaluate(block_.base, w.value, *this, err);
     if (!v) return error(err.error.code, err.col, err.error.message);
     if (!word_value_in_range(w.letter, *v)) {
       return error(core::Code::ValueOutOfRange, w.col, word_range_error(w.letter, *v));

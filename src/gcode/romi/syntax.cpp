@@ -598,24 +598,20 @@ bool parse_plain_romi_block(std::string_view text, std::uint32_t first_col, std:
     if (i == 0) return false;
     block.base.line_number = n;
   }
-  std::vector<ExprNode>& exprs = block.base.exprs;
   while (i < text.size()) {
     const char letter = text[i];
-    if (!kPlainLetter[static_cast<unsigned char>(letter)] || exprs.size() >= kMaxNodes) {
+    // As many words as the whole parser's nodes would hold (one a word).
+    if (!kPlainLetter[static_cast<unsigned char>(letter)] || block.words.size() >= kMaxNodes) {
       return false;
     }
     const std::size_t at = i++;
-    const std::size_t value_at = i;
     const bool minus = i < text.size() && text[i] == '-';
     if (minus || (i < text.size() && text[i] == '+')) ++i;
     double v = 0.0;
     i = plain_number_at(text, i, v);
     if (i == 0) return false;
-    ExprNode& node = exprs.emplace_back();
-    node.value = minus ? -v : v;
-    node.col = first_col + static_cast<std::uint32_t>(value_at);
-    block.words.push_back({letter, false, static_cast<ExprRef>(exprs.size() - 1),
-                           first_col + static_cast<std::uint32_t>(at)});
+    block.words.push_back(
+        {letter, false, kPlainNumber, first_col + static_cast<std::uint32_t>(at), minus ? -v : v});
   }
   return !block.words.empty();
 }

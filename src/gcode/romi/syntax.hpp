@@ -19,10 +19,11 @@ namespace usina::gcode::romi {
 inline constexpr int kMaxParam = 999;
 
 struct RomiWord {
-  char letter = 0;     // upper case
-  bool lower = false;  // written in lower case
-  ExprRef value = kNoExpr;
+  char letter = 0;          // upper case
+  bool lower = false;       // written in lower case
+  ExprRef value = kNoExpr;  // the expression, or kPlainNumber: then `number`
   std::uint32_t col = 0;
+  double number = 0.0;
 };
 
 enum class StmtKind : std::uint8_t { Assign, IfGoto, Goto, Repeat, Call, Sub, Return };
@@ -73,10 +74,11 @@ inline BlockText block_at(std::string_view text, std::uint64_t offset) {
 // The shortcut parse_romi_block takes for most blocks: an optional N
 // number, then upper-case words of plain numbers apart or with blanks
 // between them ("G1 X112.75 Y16.5 Z-0.8597"), from `first`, the first
-// character that is no blank. Their words, nodes and line number added to
-// `block` as the whole parser makes them; false for any other block, with
-// `block.words`, `block.base.exprs` and `block.base.line_number` left to
-// be cleared.
+// character that is no blank. Their words and line number added to
+// `block` as the whole parser makes them, but each value kept in its word
+// (kPlainNumber) where the whole parser makes a node; false for any other
+// block, with `block.words` and `block.base.line_number` left to be
+// cleared.
 bool parse_plain_romi_block(std::string_view text, std::uint32_t first_col, std::size_t first,
                             RomiBlock& block);
 
