@@ -126,7 +126,7 @@ void Planner::run_oldest() {
     }
   }
   if (add_time(account(b.move.account).lookahead_s, t) && observer_) observer_(b.move.op, t);
-  head_ = (head_ + 1) % ring_.size();
+  head_ = head_ + 1 < ring_.size() ? head_ + 1 : 0;
   --count_;
 }
 

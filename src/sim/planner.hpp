@@ -143,7 +143,14 @@ class Planner final : public MotionPlanner {
     double entry = 0.0;      // planned entry speed
   };
 
-  Block& at(std::size_t k) { return ring_[(head_ + k) % ring_.size()]; }
+  // The k-th block from the oldest (k < count_). head_ and k are both
+  // below the ring's size, so one subtraction wraps the sum: the passes
+  // ask for blocks a dozen times a move, and a division each time was 3 %
+  // of `usina stats`.
+  Block& at(std::size_t k) {
+    const std::size_t i = head_ + k;
+    return ring_[i < ring_.size() ? i : i - ring_.size()];
+  }
 
   void run_oldest();
   // Adds `seconds` to `into` when it is a time (finite, not negative): true;
