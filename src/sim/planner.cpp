@@ -96,19 +96,24 @@ void Planner::replan_last() {
 void Planner::plan_backward_forward() {
   // Backward: raise the entries the new block's length allows, up to the
   // first block whose entry does not change (index 0's entry is fixed).
+  // Each block is looked up once a pass, the one next to it carried over.
   std::size_t first_changed = count_ - 1;
+  double after = at(count_ - 1).backward;
   for (std::size_t k = count_ - 1; k-- > 1;) {
     Block& b = at(k);
-    const double raised =
-        reachable_speed(at(k + 1).backward, b.move.length, b.move.kin, b.max_entry);
+    const double raised = reachable_speed(after, b.move.length, b.move.kin, b.max_entry);
     if (raised == b.backward) break;
-    b.backward = raised;
+    b.backward = after = raised;
     first_changed = k;
   }
   // Forward: what each block can reach from the one before it.
-  for (std::size_t k = std::max<std::size_t>(first_changed, 1); k < count_; ++k) {
-    const Block& prev = at(k - 1);
-    at(k).entry = reachable_speed(prev.entry, prev.move.length, prev.move.kin, at(k).backward);
+  const std::size_t start = std::max<std::size_t>(first_changed, 1);
+  if (start >= count_) return;
+  const Block* prev = &at(start - 1);
+  for (std::size_t k = start; k < count_; ++k) {
+    Block& b = at(k);
+    b.entry = reachable_speed(prev->entry, prev->move.length, prev->move.kin, b.backward);
+    prev = &b;
   }
 }
 
