@@ -240,6 +240,26 @@ TEST(TraceJsonl, WholeNumbersAtEveryLength) {
   EXPECT_EQ(to_jsonl({Dwell{1}, far}), R"({"op":"dwell","src":[4294967295,100],"s":1})");
 }
 
+// A line far longer than the room the writer makes at a time (a spline of
+// 3,000 points, a long comment) comes out whole, and a number past the fast
+// path in the middle of it (written by fmt) too.
+TEST(TraceJsonl, LongLinesComeOutWhole) {
+  Spline s{{1, 2, 3}, {}, 60};
+  std::string points;
+  for (int i = 0; i < 3000; ++i) {
+    const double x = i == 1500 ? 0.1 + 0.2 : i + 0.5;
+    s.points.push_back({x, -(i + 1.0), 0.25});
+    points += (i > 0 ? ",[" : "[") +
+              (i == 1500 ? std::string("0.30000000000000004") : std::to_string(i) + ".5") + ",-" +
+              std::to_string(i + 1) + ",0.25]";
+  }
+  EXPECT_EQ(to_jsonl({s, at(7, 1)}),
+            R"({"op":"spline","src":[7,1],"to":[1,2,3],"points":[)" + points + R"(],"f":60})");
+  const std::string text(20000, 'x');
+  EXPECT_EQ(to_jsonl({Comment{text}, at(1, 1)}),
+            R"({"op":"comment","src":[1,1],"text":")" + text + R"("})");
+}
+
 TEST(TraceJsonl, CommentQuotesBackslashesAndControlCharactersEscaped) {
   EXPECT_EQ(to_jsonl({Comment{"say \"hi\" \\ now"}, at(1, 1)}),
             R"({"op":"comment","src":[1,1],"text":"say \"hi\" \\ now"})");
