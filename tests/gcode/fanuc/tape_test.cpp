@@ -1,6 +1,10 @@
 // The fanuc tape read where it stands (fanuc/tape.hpp): blocks cut as they
 // are read, O blocks found as far as a call needs, DO/END and GOTO targets
 // found once per site.
+#include "gcode/fanuc/tape.hpp"
+
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "fanuc_test_support.hpp"
@@ -10,6 +14,36 @@ namespace {
 
 using core::Code;
 using fanuc_test::run_fanuc;
+
+// The tape is scanned several characters at a time for the characters that
+// end or interrupt a block: each of them is found wherever it stands after
+// a block's words, at every offset a scan step may leave it.
+TEST(FanucTape, ABlockEndsWhereverItsEndStands) {
+  const std::string kWords = "G1X2Y3Z4F5G1X2Y3Z4F5G1X2Y3";
+  for (std::size_t n = 1; n <= 24; ++n) {
+    const std::string words = kWords.substr(0, n);
+    for (const char* end : {";", "\n"}) {
+      const std::string text = words + end + "G0";
+      fanuc::Tape tape;
+      const fanuc::TapeBlock b = tape.cut(tape.add_file(0, text));
+      EXPECT_EQ(b.text, words) << text;
+      EXPECT_EQ(b.next.offset, n + 1) << text;
+      EXPECT_EQ(tape.cut(b.next).text, "G0") << text;
+    }
+    fanuc::Tape commented;
+    const std::string with_comment = words + "(NOTE;1)  \nG0";
+    const fanuc::TapeBlock c = commented.cut(commented.add_file(0, with_comment));
+    EXPECT_EQ(c.text, words) << with_comment;
+    EXPECT_EQ(c.comment, "NOTE;1") << with_comment;
+    EXPECT_EQ(commented.cut(c.next).text, "G0") << with_comment;
+    fanuc::Tape closed;
+    const std::string with_percent = words + "%G0";
+    const fanuc::TapeBlock p = closed.cut(closed.add_file(0, with_percent));
+    EXPECT_EQ(p.text, words) << with_percent;
+    const fanuc::TapeBlock after = closed.cut(p.next);
+    EXPECT_TRUE(after.end && after.closed) << with_percent;
+  }
+}
 
 TEST(FanucTape, ALeaderOfCommentsBeforeTheOBlockBelongsToTheProgram) {
   auto r = run_fanuc("%\n(HEADER)\n(POSTED BY CAM)\nO1000\nG0 X1.\nM30\n%\n");
