@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include <fmt/compile.h>
 
@@ -59,6 +60,9 @@ class Out {
     commit();
     buf_.try_reserve(buf_.size() + std::max(n, kSome));
     sync();
+    // fmt's memory buffer grows as asked or throws; any other would
+    // leave the cursor short of room.
+    if (static_cast<std::size_t>(end_ - cur_) < n) throw std::length_error("trace line buffer");
   }
 
   // The buffer's size where the cursor is, and back.
