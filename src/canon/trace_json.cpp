@@ -16,8 +16,8 @@ namespace {
 // Appends to the line's buffer through a cursor of its own: fmt's appender
 // asks for room at every character (a fifth of `usina trace` on a large
 // program), and asking the buffer for room and its size at every piece
-// was a twentieth still. The buffer learns its size when the line is done
-// (or before fmt writes to it).
+// was a twentieth of its instructions still. The buffer learns its size
+// when the line is done (or before fmt writes to it).
 class Out {
  public:
   explicit Out(fmt::memory_buffer& buf) : buf_(buf) { sync(); }
