@@ -207,7 +207,22 @@ class StrokeCheck final : public canon::Sink {
 
   bool stopped() const override { return next_.stopped(); }
 
-  void arm(Box area) { area_ = area; }
+  // Unarmed, only where the tool is matters, and it is asked for when an
+  // area is armed: the straight moves of `usina check` go by unbuilt.
+  bool reads_ops() const override { return area_.has_value() || next_.reads_ops(); }
+
+  void pass(const core::SourceLoc& src) override {
+    passed_ = true;
+    next_.pass(src);
+  }
+
+  // `last_move_end`: where the interpreter's last move ended, the tool's
+  // place when a move went by unbuilt since the last op read.
+  void arm(Box area, core::Vec3 last_move_end) {
+    if (passed_) at_ = last_move_end;
+    passed_ = false;
+    area_ = area;
+  }
 
   void disarm() { area_.reset(); }
 
@@ -226,6 +241,7 @@ class StrokeCheck final : public canon::Sink {
   tl::expected<void, std::string> path(const std::vector<core::Vec3>& points) const;
   canon::Sink& next_;
   core::Vec3 at_;
+  bool passed_ = false;  // a move went by unbuilt since at_ was set
   std::optional<Box> area_;
   std::optional<Violation> violation_;
 };

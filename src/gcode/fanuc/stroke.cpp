@@ -106,26 +106,38 @@ tl::expected<void, std::string> StrokeCheck::path(const std::vector<core::Vec3>&
   return {};
 }
 
+namespace {
+
+// Where a move ends: the tool's place after it (none for other ops).
+std::optional<core::Vec3> move_end(const canon::Op& op) {
+  if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) return t->to;
+  if (const auto* f = std::get_if<canon::Feed>(&op.kind)) return f->to;
+  if (const auto* p = std::get_if<canon::Probe>(&op.kind)) return p->to;
+  if (const auto* a = std::get_if<canon::Arc>(&op.kind)) return a->to;
+  const auto* s = std::get_if<canon::Spline>(&op.kind);
+  if (s != nullptr && !s->points.empty()) return s->points.back();
+  return std::nullopt;
+}
+
+}  // namespace
+
 void StrokeCheck::on(const canon::Op& op) {
   if (violation_) return;  // the control stopped at the alarm
-  // A straight move, most ops of a program: its end, and a list of points
-  // only when an area is armed.
-  const core::Vec3* to = nullptr;
-  if (const auto* t = std::get_if<canon::Traverse>(&op.kind)) to = &t->to;
-  if (const auto* f = std::get_if<canon::Feed>(&op.kind)) to = &f->to;
-  if (const auto* p = std::get_if<canon::Probe>(&op.kind)) to = &p->to;
-  std::vector<core::Vec3> points;
-  if (to != nullptr && area_) points = {*to};
-  if (const auto* s = std::get_if<canon::Spline>(&op.kind)) points = s->points;
-  if (const auto* a = std::get_if<canon::Arc>(&op.kind)) points = arc_points(at_, *a);
-  if (area_ && !points.empty()) {
+  const std::optional<core::Vec3> end = move_end(op);
+  // The path, as points, only while an area is armed.
+  if (area_ && end) {
+    std::vector<core::Vec3> points = {*end};
+    if (const auto* s = std::get_if<canon::Spline>(&op.kind)) points = s->points;
+    if (const auto* a = std::get_if<canon::Arc>(&op.kind)) points = arc_points(at_, *a);
     if (auto ok = path(points); !ok) {
       violation_ = Violation{op.src, ok.error()};
       return;
     }
   }
-  if (!points.empty()) at_ = points.back();
-  if (to != nullptr) at_ = *to;
+  if (end) {
+    at_ = *end;
+    passed_ = false;
+  }
   next_.on(op);
 }
 
@@ -157,7 +169,7 @@ bool Engine::stroke_codes(const TapeBlock& b, Words& w) {
   w.take_g(220);
   for (char c : kCorners)
     w.take(c);
-  stroke_.arm(box);
+  stroke_.arm(box, interp_.last_move_end());
   if (const auto ok = stroke_.forbidden(stroke_.position()); !ok) {
     return error(
         core::Code::ForbiddenArea, b, 0,

@@ -40,6 +40,10 @@ class CanonMachine final : public MotionTarget {
   // current point if nothing moved yet).
   Vec3 last_emitted() const { return moved_ ? to_program(last_) : xyz(state_->pos); }
 
+  // The same point as it went out, in absolute (trace) coordinates: a move
+  // that went by unbuilt (Sink::pass) still set it. Only after a move.
+  const Vec3& last_absolute() const { return last_; }
+
   // Moves with every axis (rotary and UVW too).
   void traverse_axes(const Axes& to);
   void feed_axes(const Axes& to);

@@ -146,6 +146,10 @@ class Interpreter final : private ParameterSource {
 
   const Parameters& parameters() const { return params_; }
 
+  // Where the last move ended, as the ops give it (absolute, trace
+  // coordinates), whether or not the sink built them. Only after a move.
+  const Vec3& last_move_end() const { return machine_.last_absolute(); }
+
  private:
   struct Cursor {
     std::uint32_t file = 0;

@@ -23,14 +23,15 @@ struct Outcome {
   std::uint64_t ops = 0;
 };
 
-Outcome run_into(canon::Sink& inner, const std::string& text, std::uint64_t max_ops) {
+Outcome run_into(canon::Sink& inner, const std::string& text, std::uint64_t max_ops,
+                 const char* dialect = "rs274ngc") {
   core::SourceManager sources;
   core::DiagnosticList diags;
   const std::uint32_t id = sources.add(core::SourceFile::from_string("test.nc", text));
-  const Dialect* d = find_dialect("rs274ngc");
+  const Dialect* d = find_dialect(dialect);
   EXPECT_NE(d, nullptr);
   canon::OpBudget budget(inner, max_ops, diags);
-  auto runner = d->make_runner(RunContext{sources, {}, {}, budget, diags});
+  auto runner = d->make_runner(RunContext{sources, {}, default_options(*d), budget, diags});
   Outcome out;
   out.ok = runner->run(id);
   out.diags = diags.all();
@@ -38,14 +39,15 @@ Outcome run_into(canon::Sink& inner, const std::string& text, std::uint64_t max_
   return out;
 }
 
-void expect_same_either_way(const std::string& text, std::uint64_t max_ops = 1000) {
+void expect_same_either_way(const std::string& text, std::uint64_t max_ops = 1000,
+                            const char* dialect = "rs274ngc") {
   SCOPED_TRACE(text);
   canon::Toolpath path;
   ASSERT_TRUE(path.reads_ops());
-  const Outcome built = run_into(path, text, max_ops);
+  const Outcome built = run_into(path, text, max_ops, dialect);
   canon::NullSink null;
   ASSERT_FALSE(null.reads_ops());
-  const Outcome counted = run_into(null, text, max_ops);
+  const Outcome counted = run_into(null, text, max_ops, dialect);
   EXPECT_EQ(built.ok, counted.ok);
   EXPECT_EQ(built.ops, counted.ops);
   ASSERT_EQ(built.diags.size(), counted.diags.size());
@@ -87,6 +89,31 @@ TEST(UnreadOps, InverseTimeFeedSaysTheSame) {
 
 TEST(UnreadOps, TheBudgetRunsOutAtTheSameBlock) {
   expect_same_either_way("G0 X1\nG1 X2 F100\nG0 X3\nG1 X4\nG0 X5\nM2\n", 3);
+}
+
+// Fanuc's G22 checks where the tool is when it arms an area, after moves
+// that went by unbuilt; armed, it reads every move (docs/fanuc.md §7).
+TEST(UnreadOps, FanucStrokeCheckSaysTheSame) {
+  const std::string box = "G22 X10. Y10. Z10. I-10. J-10. K-10.\n";
+  for (const std::string& text : std::vector<std::string>{
+           "G0 X5. Y5. Z50.\nG1 Z5. F100.\n" + box + "M30\n",  // armed around the tool
+           "G0 X5. Y5. Z50.\nG1 Z5. F100.\nG0 Z50.\n" + box + "M30\n",
+           "G0 X15. Y0 Z0\nG1 X12. Y-5. F100.\n" + box + "G2 X12. Y5. I4. J5.\nM30\n",
+           "G0 X15. Y0 Z0\nG1 X12. Y-5. F100.\n" + box + "G3 X12. Y5. I4. J5.\nM30\n",
+           "G0 Z50.\n" + box + "G0 X0 Y0\nG1 Z0 F100.\nG0 X50.\nM30\n",
+           "G0 Z50.\n" + box + "G23\nG1 X5. Y5. F100.\nZ5.\n" + box + "M30\n",
+           "G0 X-20. Y0 Z0\nG2 X20. I20. F100.\n" + box + "G0 X-5.\nM30\n",
+           std::string("G22 X100. Y100. Z100. I-100. J-100. K-100.\nG0 X50.\nG0 X150.\nM30\n"),
+       }) {
+    expect_same_either_way(text, 1000, "fanuc");
+  }
+  canon::NullSink null;
+  const std::string around = "G0 X5. Y5. Z50.\nG1 Z5. F100.\n" + box + "M30\n";
+  const Outcome counted = run_into(null, around, 1000, "fanuc");
+  EXPECT_FALSE(counted.ok);
+  ASSERT_FALSE(counted.diags.empty());
+  EXPECT_EQ(counted.diags.front().code, core::Code::ForbiddenArea);
+  EXPECT_EQ(counted.diags.front().loc.line, 3u);
 }
 
 TEST(UnreadOps, NothingIsSentAfterAFault) {
