@@ -11,15 +11,21 @@
 
 namespace usina::gcode::grbl {
 
-std::optional<core::Diagnostic> MachineCheck::block(const std::vector<canon::Op>& ops,
+std::optional<core::Diagnostic> MachineCheck::block(const LineMoves& moves,
                                                     const MachineFacts& facts) {
   const Position start = at_;
   facts_ = &facts;
   failure_.reset();
-  for (const canon::Op& o : ops) {
-    op(o);
-    if (failure_) break;
-  }
+  // A move that went by unbuilt is a traverse or a feed: checked as one.
+  moves.each(
+      [&](const canon::Op& o) {
+        op(o);
+        return !failure_;
+      },
+      [&](const LineMoves::Passed& p) {
+        moved(p.to, p.src);
+        return !failure_;
+      });
   if (failure_) at_ = start;
   return std::move(failure_);
 }

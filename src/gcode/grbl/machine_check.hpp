@@ -13,6 +13,36 @@
 
 namespace usina::gcode::grbl {
 
+// The ops of one line, held until its checks pass: those built, and the
+// straight moves that went by unbuilt (the run's sink reads no op: usina
+// check), each with its end and block, in its place among them.
+struct LineMoves {
+  struct Passed {
+    std::size_t before;  // the count of built ops sent before it
+    core::SourceLoc src;
+    core::Vec3 to;
+  };
+
+  std::vector<canon::Op> built;
+  std::vector<Passed> passed;
+
+  void clear() {
+    built.clear();
+    passed.clear();
+  }
+
+  // Each in the order sent, until a visit returns false.
+  template <class OnBuilt, class OnPassed>
+  void each(OnBuilt&& on_built, OnPassed&& on_passed) const {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i <= built.size(); ++i) {
+      for (; k < passed.size() && passed[k].before == i; ++k)
+        if (!on_passed(passed[k])) return;
+      if (i < built.size() && !on_built(built[i])) return;
+    }
+  }
+};
+
 class MachineCheck {
  public:
   explicit MachineCheck(const core::Vec3& start) : at_{start, true} {}
@@ -20,8 +50,7 @@ class MachineCheck {
   // The first failure of the block whose ops are `ops`, made under `facts`:
   // error:33 or error:15 (the block is refused), or ALARM:2 (the run
   // ends). On a failure the position is left where the block started.
-  std::optional<core::Diagnostic> block(const std::vector<canon::Op>& ops,
-                                        const MachineFacts& facts);
+  std::optional<core::Diagnostic> block(const LineMoves& moves, const MachineFacts& facts);
 
  private:
   struct Position {

@@ -20,12 +20,29 @@ namespace {
 // Grbl powers up in G0, and a G54-G59 word re-reads its system's offsets.
 constexpr DialectRules kGrbl{.start_motion = 0, .reselect_reloads_work_offsets = true};
 
-// Holds the ops of the line being run until its checks passed.
+// Holds the ops of the line being run until its checks passed. A
+// straight move goes by unbuilt when the run's sink reads no op; its end
+// is then where the interpreter's last move ended.
 class LineOps final : public canon::Sink {
  public:
-  void on(const canon::Op& op) override { ops.push_back(op); }
+  explicit LineOps(const canon::Sink& next) : next_(next) {}
 
-  std::vector<canon::Op> ops;
+  void on(const canon::Op& op) override { moves.built.push_back(op); }
+
+  bool reads_ops() const override { return next_.reads_ops(); }
+
+  void pass(const core::SourceLoc& src) override {
+    moves.passed.push_back({moves.built.size(), src, interp_->last_move_end()});
+  }
+
+  // The interpreter whose ops these are.
+  void follow(const Interpreter& interp) { interp_ = &interp; }
+
+  LineMoves moves;
+
+ private:
+  const canon::Sink& next_;
+  const Interpreter* interp_ = nullptr;
 };
 
 // The interpreter's error as Grbl's, when Grbl has a number for it.
@@ -52,8 +69,11 @@ class Pass {
         file_(file),
         stop_(c.dialect_options.at("after_error") == "stop"),
         reader_(d, c.dialect_options, file),
+        ops_(c.sink),
         interp_(c.sources, c.options, ops_, interp_diags_, nullptr, kGrbl),
-        check_(c.options.start) {}
+        check_(c.options.start) {
+    ops_.follow(interp_);
+  }
 
   Interpreter& interpreter() { return interp_; }
 
@@ -113,13 +133,13 @@ void Pass::line(std::uint32_t n, std::uint64_t offset, std::string_view text) {
 // the position; true when both accept it, and its ops are then passed on.
 // A refused line is rolled back in the interpreter, its ops dropped.
 bool Pass::hand_over(std::uint32_t n, std::uint64_t offset) {
-  ops_.ops.clear();
+  ops_.moves.clear();
   interp_diags_.clear();
   interp_.checkpoint();
   const HandedBlock& block = reader_.handed();
   const core::SourceLoc loc{file_, n, reader_.block_col(), 0, offset};
   const bool ran = interp_.run_evaluated({loc, block.words, block.assigns, {}});
-  std::optional<core::Diagnostic> failure = check_.block(ops_.ops, reader_.facts());
+  std::optional<core::Diagnostic> failure = check_.block(ops_.moves, reader_.facts());
   if (!failure && !ran) failure = first_error(interp_diags_);
   if (!ran || failure) {
     interp_.roll_back();
@@ -128,8 +148,15 @@ bool Pass::hand_over(std::uint32_t n, std::uint64_t offset) {
   }
   for (const core::Diagnostic& d : interp_diags_.all())
     line_diags_.push_back(d);
-  for (const canon::Op& op : ops_.ops)
-    c_.sink.on(op);
+  ops_.moves.each(
+      [&](const canon::Op& op) {
+        c_.sink.on(op);
+        return true;
+      },
+      [&](const LineMoves::Passed& p) {
+        c_.sink.pass(p.src);
+        return true;
+      });
   return true;
 }
 

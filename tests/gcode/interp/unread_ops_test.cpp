@@ -116,6 +116,24 @@ TEST(UnreadOps, FanucStrokeCheckSaysTheSame) {
   EXPECT_EQ(counted.diags.front().loc.line, 3u);
 }
 
+// Grbl checks a line's moves from where the tool is (soft limits, an arc's
+// radius, a probe's target) before it passes them on, and a refused line
+// sends nothing: moves that go by unbuilt are checked the same.
+TEST(UnreadOps, GrblLineChecksSayTheSame) {
+  const std::string soft = "$22=1\n$20=1\n";
+  for (const std::string& text : std::vector<std::string>{
+           soft + "G0 X-5\nG0 X1\nG0 X-10\nG1 X\nM2\n",
+           soft + "G1 X-50 Y-50 F500\nG2 X-60 Y-50 R4\nG1 X-10 F100\nM2\n",
+           soft + "G1 X-50 Y-50 F500\nG2 X-150 Y-50 I-50 J0\nG3 X-50 Y-50 I55 J0\nM2\n",
+           soft + "G0 X-10 Y-10 Z-1\n$J=G91 X-250 F1000\nG91 G1 X-5 F100\nG90 G38.2 Z-1\nM2\n",
+           "G0 X-10\nG28\nG1 X\nG1 X5 F100\nG38.2 Z-5 F50\nG0 Z5\nM2\n",
+           "G1 X1 F100\nG1 X2\nG0 X3\nG1 X4\nG0 X5\nM2\n",
+       }) {
+    expect_same_either_way(text, 1000, "grbl");
+  }
+  expect_same_either_way("G0 X1\nG1 X2 F100\nG0 X3\nG1 X4\nG0 X5\nM2\n", 3, "grbl");
+}
+
 TEST(UnreadOps, NothingIsSentAfterAFault) {
   canon::NullSink null;
   const Outcome counted = run_into(null, "G0 X1\nG91 G0 X2000000000\nG0 X1\nM2\n", 1000);
