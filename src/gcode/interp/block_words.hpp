@@ -9,13 +9,11 @@
 namespace usina::gcode {
 
 struct BlockWords {
-  static constexpr int kSlots = 28;  // A..Z, '@', '^'
+  // '@' (0), A..Z (1-26) and '^' (30), by their codes: a slot is a
+  // subtraction, with no test of the letter (hot: every word of every block).
+  static constexpr int kSlots = '^' - '@' + 1;
 
-  static constexpr int slot(char letter) {
-    if (letter == '@') return 26;
-    if (letter == '^') return 27;
-    return letter - 'A';
-  }
+  static constexpr int slot(char letter) { return letter - '@'; }
 
   bool has(char letter) const { return (present >> slot(letter)) & 1u; }
 
