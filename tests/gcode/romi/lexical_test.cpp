@@ -1,5 +1,6 @@
 // The romi dialect's lexical rules and start state (spec/romi.md,
 // "Lexical", "Modal state at start").
+#include "gcode/romi/syntax.hpp"
 #include "romi_test_support.hpp"
 
 namespace usina::gcode::romi_test {
@@ -84,6 +85,31 @@ TEST(RomiLexical, CrLfLineEnds) {
   auto r = run_romi("G00 X1#\r\nY2\r\nM02#\r\n");
   ASSERT_TRUE(r->ok) << r->first_error_text();
   expect_near(r->ends().back(), {1, 2, 0});
+}
+
+// A '#' with only the newline after it ("G01 X10#", how romi lines end):
+// the next block starts on the next line, with no empty block between;
+// a '#' with more after it ends only its block.
+TEST(RomiLexical, HashBeforeTheNewlineEndsTheLine) {
+  const std::string text = "G01 X1#\nY2#\r\nZ3# \nX4#Y5#";
+  romi::LineEnd line;
+  const std::vector<std::pair<std::string, bool>> want = {
+      {"G01 X1", true}, {"Y2", true}, {"Z3", false}, {" ", true}, {"X4", false}, {"Y5", false}};
+  std::uint64_t at = 0;
+  for (const auto& [block, ends_line] : want) {
+    const romi::BlockText b = romi::block_at(text, at, line);
+    EXPECT_EQ(b.text, block) << at;
+    EXPECT_EQ(b.ends_line, ends_line) << at;
+    at = b.next;
+  }
+  EXPECT_EQ(at, text.size());
+  // Each block's line is still its own.
+  auto r = run_romi("G01 X1 F100#\r\nY2#\nZ3# \nG01 Q1#\nM02#\n");
+  EXPECT_EQ(r->first_error(), Code::UnusedWord);
+  ASSERT_FALSE(r->diags.all().empty());
+  EXPECT_EQ(r->diags.all().front().loc.line, 4u);
+  ASSERT_EQ(r->ends().size(), 3u);
+  EXPECT_EQ(r->path.ops()[1].src.line, 2u);
 }
 
 TEST(RomiLexical, TypographicDashCanBeAnError) {
