@@ -34,6 +34,11 @@ struct LineMoves {
   // Each in the order sent, until a visit returns false.
   template <class OnBuilt, class OnPassed>
   void each(OnBuilt&& on_built, OnPassed&& on_passed) const {
+    if (passed.empty()) {  // a sink that reads ops: every move built
+      for (const canon::Op& op : built)
+        if (!on_built(op)) return;
+      return;
+    }
     std::size_t k = 0;
     for (std::size_t i = 0; i <= built.size(); ++i) {
       for (; k < passed.size() && passed[k].before == i; ++k)

@@ -25,11 +25,13 @@ constexpr DialectRules kGrbl{.start_motion = 0, .reselect_reloads_work_offsets =
 // is then where the interpreter's last move ended.
 class LineOps final : public canon::Sink {
  public:
-  explicit LineOps(const canon::Sink& next) : next_(next) {}
+  // The run's sink answers the same all run (the sinks of canon/ do):
+  // asked once, not for every move.
+  explicit LineOps(const canon::Sink& next) : reads_ops_(next.reads_ops()) {}
 
   void on(const canon::Op& op) override { moves.built.push_back(op); }
 
-  bool reads_ops() const override { return next_.reads_ops(); }
+  bool reads_ops() const override { return reads_ops_; }
 
   void pass(const core::SourceLoc& src) override {
     moves.passed.push_back({moves.built.size(), src, interp_->last_move_end()});
@@ -41,7 +43,7 @@ class LineOps final : public canon::Sink {
   LineMoves moves;
 
  private:
-  const canon::Sink& next_;
+  bool reads_ops_;
   const Interpreter* interp_ = nullptr;
 };
 
