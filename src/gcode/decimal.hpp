@@ -33,10 +33,6 @@ inline constexpr std::size_t kExactDigits = 15;
 inline constexpr std::array<double, kExactDigits + 1> kPow10 = {
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
-inline bool is_digit(char c) {
-  return c >= '0' && c <= '9';
-}
-
 // What c is worth as a digit; above 9 when it is none. The digit is the
 // loop's test and its value at once: nine instructions a digit, not twelve.
 inline unsigned digit_value(char c) {

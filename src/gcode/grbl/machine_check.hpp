@@ -52,7 +52,7 @@ class MachineCheck {
  public:
   explicit MachineCheck(const core::Vec3& start) : at_{start, true} {}
 
-  // The first failure of the block whose ops are `ops`, made under `facts`:
+  // The first failure of the block whose moves are `moves`, made under `facts`:
   // error:33 or error:15 (the block is refused), or ALARM:2 (the run
   // ends). On a failure the position is left where the block started.
   std::optional<core::Diagnostic> block(const LineMoves& moves, const MachineFacts& facts);

@@ -642,7 +642,7 @@ BlockText block_at(std::string_view text, std::uint64_t offset, LineEnd& known) 
   if (hash == nullptr) return {t, std::min<std::uint64_t>(end + 1, text.size()), true};
   // Nothing but the newline after the '#' (how romi lines end, "G01 X10#"):
   // the next block starts on the next line, and no empty block is cut
-  // between (a quarter of the blocks of a program of four a line).
+  // between (one step in five of a program of four blocks a line).
   const std::uint64_t rest = known.end - (end + 1);
   if (known.end < text.size() && (rest == 0 || (rest == 1 && text[end + 1] == '\r')))
     return {t, known.end + 1, true};
