@@ -232,6 +232,8 @@ class StrokeCheck final : public canon::Sink {
   // Why `p` is forbidden, as the error; a value when it is allowed.
   tl::expected<void, std::string> forbidden(core::Vec3 p) const;
 
+  // Where the tool is, once arm() has run: unarmed, the moves that went
+  // by unbuilt did not move it here.
   core::Vec3 position() const { return at_; }
 
   const std::optional<Violation>& violation() const { return violation_; }
