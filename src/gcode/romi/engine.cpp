@@ -127,6 +127,8 @@ bool Engine::block() {
   }
   if (!statements(false) || !evaluate_words()) return false;
   const EvaluatedBlock evaluated{block_.base.loc, words_, {}, block_.base.comments};
+  // No jump to run after most blocks: no call through a std::function.
+  if (block_.statements.empty()) return translator_.run_evaluated(evaluated);
   return translator_.run_evaluated(evaluated, [this] { return statements(true); });
 }
 

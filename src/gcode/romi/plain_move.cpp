@@ -62,8 +62,22 @@ bool Translator::plain_move_block(const EvaluatedBlock& block, const std::functi
     at(block.loc);
     ok = hand() && ok;
   }
-  end_block(ok);
+  end_plain_move(ok);
   return ok;
+}
+
+// end_block for a plain move: what it changed (the motion, the feed rate,
+// the point, where the tool is, the heading) committed or put back, not
+// the whole modal state (a tenth of romi's translator a block, issue 19).
+void Translator::end_plain_move(bool ok) {
+  comments_ = {};
+  Modal& to = ok ? modal_ : work_;
+  const Modal& from = ok ? work_ : modal_;
+  to.machine.motion = from.machine.motion;
+  to.machine.feed = from.machine.feed;
+  to.pos = from.pos;
+  to.machine_at = from.machine_at;
+  to.direction = from.direction;
 }
 
 }  // namespace usina::gcode::romi

@@ -131,6 +131,7 @@ class Translator {
   // let it by (romi/plain_move.cpp).
   bool plain_move(const EvaluatedBlock& block) const;
   bool plain_move_block(const EvaluatedBlock& block, const std::function<bool()>& after);
+  void end_plain_move(bool ok);
 
   std::optional<double> take_whole(char letter, int lo, int hi);
   bool values();
