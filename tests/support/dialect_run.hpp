@@ -88,7 +88,8 @@ inline std::unique_ptr<Run> run_in(const char* name, const std::string& text,
 }
 
 // What a run wrote, as text to compare two runs by: its operations as JSON
-// lines, its diagnostics (line:col: message), whether it succeeded. With
+// lines, its diagnostics (line:col: message), whether it succeeded, the
+// modes it ended in (what a restart from there starts with). With
 // `whole_road`, every block takes the dialect's whole road, past its
 // plain-move shortcut (a key the command line refuses).
 inline std::string run_outcome(const char* name, const std::string& text, bool whole_road) {
@@ -108,6 +109,10 @@ inline std::string run_outcome(const char* name, const std::string& text, bool w
   }
   for (const core::Diagnostic& diag : r.diags.all())
     fmt::format_to(fmt::appender(out), "{}:{}: {}\n", diag.loc.line, diag.loc.col, diag.message);
+  if (const std::optional<RunModes> m = runner->modes()) {
+    fmt::format_to(fmt::appender(out), "modes inch {} G{} incremental {} motion {} moved {}\n",
+                   m->inch, m->plane, m->incremental, m->motion, m->frame_moved);
+  }
   fmt::format_to(fmt::appender(out), "ok {}\n", r.ok);
   return fmt::to_string(out);
 }
