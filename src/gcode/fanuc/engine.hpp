@@ -366,7 +366,12 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   // Transformations (fanuc/transform.cpp).
   bool transform_codes(const TapeBlock& b, Words& w);
   bool transform_words(const TapeBlock& b, Words& w);
-  void reset_program_point(std::optional<core::Plane> plane = std::nullopt);
+
+  // The interpreter's plane, or `plane`: not an optional plane, whose
+  // flag written and read back as one word waited on the store (issue 19).
+  void reset_program_point() { reset_program_point(interp_.state().plane); }
+
+  void reset_program_point(core::Plane plane);
   core::Vec3 actual_xyz() const;
   core::Plane block_plane(const Words& w) const;
   void polar_point(const std::array<std::optional<NcWord>, 3>& axis, bool incremental,

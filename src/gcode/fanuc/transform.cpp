@@ -101,9 +101,9 @@ core::Vec3 Engine::actual_xyz() const {
   return {p[0] / per, p[1] / per, p[2] / per};
 }
 
-void Engine::reset_program_point(std::optional<core::Plane> plane) {
+void Engine::reset_program_point(core::Plane plane) {
   prog_ = xf_.inverse(actual_xyz());
-  polar_plane_ = plane.value_or(interp_.state().plane);
+  polar_plane_ = plane;
   if (polar_) {
     const core::Vec2 v = core::in_plane(prog_, polar_plane_);
     polar_r_ = std::hypot(v.x, v.y);
