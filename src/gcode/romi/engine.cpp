@@ -138,14 +138,17 @@ bool Engine::evaluate_words() {
   words_.clear();
   EvalError err;
   for (const RomiWord& w : block_.words) {
-    auto v = w.value == kPlainNumber ? std::optional<double>(w.number)
-                                     : gcode::evaluate(block_.base, w.value, *this, err);
-    if (!v) return error(err.error.code, err.col, err.error.message);
-    if (!word_value_in_range(w.letter, *v)) {
-      return error(core::Code::ValueOutOfRange, w.col, word_range_error(w.letter, *v));
+    double v = w.number;
+    if (w.value != kPlainNumber) {
+      const auto e = gcode::evaluate(block_.base, w.value, *this, err);
+      if (!e) return error(err.error.code, err.col, err.error.message);
+      v = *e;
+    }
+    if (!word_value_in_range(w.letter, v)) {
+      return error(core::Code::ValueOutOfRange, w.col, word_range_error(w.letter, v));
     }
     const bool incremental = w.lower && dialect_options_.lowercase_incremental;
-    words_.push_back({w.letter, *v, w.col, incremental});
+    words_.push_back({w.letter, v, w.col, incremental});
   }
   return true;
 }

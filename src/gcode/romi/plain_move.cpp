@@ -52,8 +52,14 @@ bool Translator::plain_move_block(const EvaluatedBlock& block, const std::functi
     } else if (w.letter == 'F') {
       work_.machine.feed = mm(w.value);
       give('F', work_.machine.feed);
+    } else if (w.letter == 'X') {
+      // By name, not end[letter - 'X']: an indexed store kept `end` in
+      // memory, read back whole before the store had landed (issue 19).
+      end.x = mm(w.value);
+    } else if (w.letter == 'Y') {
+      end.y = mm(w.value);
     } else {
-      end[w.letter - 'X'] = mm(w.value);
+      end.z = mm(w.value);
     }
   }
   bool ok = emit_line(end, work_.machine.motion == 0);
