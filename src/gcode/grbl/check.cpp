@@ -89,7 +89,10 @@ Checked read_code(const CodeIndex& codes, const OptionValues& options, const Wor
         Failure{20, w.col, code_name(w.letter, w.value) + " is not a Grbl command"});
   }
   const int iv = static_cast<int>(integer);
-  const int mantissa = static_cast<int>(std::lround(100.0 * (w.value - integer)));
+  // A whole code (most of them) asks no rounding of its fraction: lround
+  // is a call into libm for every G and M word (issue 19).
+  const int mantissa =
+      w.value == integer ? 0 : static_cast<int>(std::lround(100.0 * (w.value - integer)));
   if (w.letter == 'M' && mantissa > 0) {
     return tl::unexpected(
         Failure{23, w.col, code_name('M', w.value) + ": M codes take no fraction"});
@@ -316,8 +319,7 @@ Checked step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
   if (b.has(kMotion)) s.next.motion = b.code(kMotion);
   if (auto f = non_modal(s); !f) return f;
   if (auto f = motion(s); !f) return f;
-  for (char l : std::string_view("NFSTXYZ"))
-    s.use(l);
+  s.unused &= ~letters_of("NFSTXYZ");
   if (s.unused != 0) {
     // The first in the alphabet, as Grbl's check of its value words.
     const Word w = b.value(static_cast<char>('A' + std::countr_zero(s.unused)));
