@@ -16,6 +16,7 @@ void Interpreter::checkpoint() {
     checkpoint_->parameters.clear();  // keeps its capacity: nothing allocated a block
   }
   params_.record_writes(&checkpoint_->parameters);
+  checkpoint_fresh_ = true;
 }
 
 void Interpreter::roll_back() {

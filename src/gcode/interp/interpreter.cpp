@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -115,16 +116,25 @@ Interpreter::Flow Interpreter::step() {
 }
 
 bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
+  const bool checkpointed = std::exchange(checkpoint_fresh_, false);
   if (run_.failed() || ended_) return !run_.failed();
   run_.at(block.loc);
   machine_.set_source(run_.loc());
   if (block.empty()) return true;
   BlockWords& w = *words_;
   if (!sort_words(block.words, w) || !assign(block.assigns) || !check(w)) return false;
-  // The block works on a copy of the modal state: a failed block changes nothing.
+  // The block works on a copy of the modal state: a failed block changes
+  // nothing. A checkpoint taken just before it holds that copy already
+  // (Grbl's every line: the second copy was a tenth of its check, issue 19).
+  if (checkpointed) return execute_from(checkpoint_->state, block.comments, w);
   ModalState before;
   core::copy_in_pieces(before, state_);
-  if (!execute(block.comments, w) || machine_faulted()) {
+  return execute_from(before, block.comments, w);
+}
+
+bool Interpreter::execute_from(const ModalState& before, std::span<const CommentText> comments,
+                               BlockWords& w) {
+  if (!execute(comments, w) || machine_faulted()) {
     state_ = before;
     return false;
   }

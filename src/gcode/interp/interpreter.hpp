@@ -239,6 +239,8 @@ class Interpreter final : private ParameterSource {
   bool check_increments(const BlockWords& w);
   // Step 4 in the dialect's order (execute.cpp, execution_order.hpp).
   bool execute(std::span<const CommentText> notes, BlockWords& w);
+  // execute(), and the modal state put back to `before` if it fails.
+  bool execute_from(const ModalState& before, std::span<const CommentText> notes, BlockWords& w);
   bool run_step(ExecStep step, std::span<const CommentText> notes, BlockWords& w);
   bool comments(std::span<const CommentText> notes);
   void feed_mode(const BlockWords& w);
@@ -324,6 +326,9 @@ class Interpreter final : private ParameterSource {
   CutterComp comp_;
   CannedCycles cycles_;
   std::optional<Checkpoint> checkpoint_;
+  // A checkpoint taken since the last block: that block's failure puts the
+  // state back from it, without a copy of its own (interpreter.cpp).
+  bool checkpoint_fresh_ = false;
   // Runs `effect` now, or after the move cutter compensation holds.
   void in_order(std::function<void()> effect);
   bool comp_forbids(const BlockWords& w);

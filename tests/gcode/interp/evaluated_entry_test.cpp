@@ -127,5 +127,21 @@ TEST(EvaluatedEntry, ARefusedBlockLeavesTheModesAsTheyWere) {
   EXPECT_FALSE(f.interp.state().incremental);
 }
 
+// A checkpoint just before a block holds the state the block puts back
+// when it fails (Grbl's lines take no second copy); a later block without
+// a checkpoint of its own puts back its own start, not the checkpoint's.
+TEST(EvaluatedEntry, ABlockRefusedAfterACheckpointPutsBackItsOwnStart) {
+  Fed f;
+  f.interp.checkpoint();
+  // G91 is in force when the move finds no feed rate, inside the block.
+  EXPECT_FALSE(f.block({{'G', 91, 1}, {'G', 1, 5}, {'X', 10, 8}}));
+  EXPECT_FALSE(f.interp.state().incremental);
+  f.interp.roll_back();
+  f.interp.checkpoint();
+  ASSERT_TRUE(f.block({{'G', 91, 1}}));
+  EXPECT_FALSE(f.block({{'G', 90, 1}, {'G', 1, 5}, {'X', 10, 8}}));
+  EXPECT_TRUE(f.interp.state().incremental);
+}
+
 }  // namespace
 }  // namespace usina::gcode::interp_test
