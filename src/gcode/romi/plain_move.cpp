@@ -74,7 +74,7 @@ bool Translator::plain_move_block(const EvaluatedBlock& block, const std::functi
 
 // end_block for a plain move: what it changed (the motion, the feed rate,
 // the point, where the tool is, the heading) committed or put back, not
-// the whole modal state (a tenth of romi's translator a block, issue 19).
+// the whole modal state copied back and forth (issue 19).
 void Translator::end_plain_move(bool ok) {
   comments_ = {};
   Modal& to = ok ? modal_ : work_;
