@@ -335,7 +335,10 @@ EXPLAIN = {
         "A binary CLDATA file breaks the record layout of docs/apt.md: it ends inside a record, "
         "a record is numbered out of order, holds more than 4,096 words, or a real word is "
         "not finite or beyond 1e12. The location's line is the record's number. Reading stops "
-        "there; what came before is used.",
+        "there; what came before is used. In an NX CLSF or APT CL text file, a statement whose "
+        "record would hold more than 4,096 words (a `PARTNO/`, `PPRINT/` or `INSERT/` text of "
+        "more than 24,576 characters) is this error at its line, since CLDATA could not hold "
+        "it: the statement is left out and reading goes on.",
         "Check that the file is CLDATA as usina writes it (`usina apt --format cldata`) and was "
         "copied whole, as bytes."),
     "E_CL_BAD_ARGUMENT": (

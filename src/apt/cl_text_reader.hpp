@@ -6,8 +6,11 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "apt/cl_statement.hpp"
 #include "apt/cl_text.hpp"
+#include "apt/cldata.hpp"
 
 namespace usina::apt::detail {
 
@@ -36,7 +39,15 @@ class ClTextReader {
   void end();
 
  private:
+  // A record longer than CLDATA holds (a PARTNO of pages of text) is
+  // refused here: written as CLDATA it would not read back.
   bool add(int cls, int sub, std::vector<ClWord> words, const core::SourceLoc& loc) {
+    if (words.size() > kMostCldataWords) {
+      return fail(core::Code::ClBadRecord, loc,
+                  fmt::format("a record of {} words; a CL record holds at most {} (a text of "
+                              "at most {} characters)",
+                              words.size(), kMostCldataWords, kMostCldataWords * 6));
+    }
     recs_.push_back(ClRecord{cls, sub, std::move(words), loc});
     return true;
   }

@@ -208,6 +208,19 @@ TEST(AptClText, AStatementWithAnErrorIsLeftOutAndReadingGoesOn) {
   EXPECT_EQ(r.ops, (std::vector<std::string>{R"({"op":"feed","to":[1,2,3],"f":null})"}));
 }
 
+// A text longer than a CLDATA record holds (found by fuzz_cl: written as
+// CLDATA it did not read back) is an error at its line; reading goes on.
+TEST(AptClText, ATextLongerThanARecordHoldsIsRefused) {
+  const std::string text = "PARTNO/'" + std::string(6 * 4096 + 1, 'c') + "'\nGOTO/1,2,3\n";
+  const ClRun r = read(text, ClDialect::AptCl);
+  EXPECT_EQ(r.diags.error_count(), 1);
+  EXPECT_EQ(r.first_error().substr(0, 20), "1:1 E_CL_BAD_RECORD ") << r.first_error();
+  EXPECT_EQ(r.ops, (std::vector<std::string>{R"({"op":"feed","to":[1,2,3],"f":null})"}));
+  // The longest text a record holds is read.
+  const ClRun fits = read("PARTNO/'" + std::string(6 * 4096, 'c') + "'\n", ClDialect::AptCl);
+  EXPECT_FALSE(fits.diags.has_errors()) << fits.first_error();
+}
+
 TEST(AptClText, EachStatementIsPrecededByItsSourceRecord) {
   core::DiagnosticList diags;
   const auto recs = read_cl_text("RAPID\nGOTO/1,2,3\n", 4, ClDialect::Clsf, diags);
