@@ -125,7 +125,9 @@ class Interpreter final : private ParameterSource {
   // state, canonical machine, cycle values, numbered parameters, the
   // program end) after the block, or the front end's check of its ops,
   // refused it, and lets run_evaluated go on. Blocks of cutter compensation,
-  // subroutines, loops and named parameters are not covered.
+  // subroutines, loops and named parameters are not covered. The next
+  // block run puts back the checkpoint's modal state if it fails (no copy
+  // of its own): take the checkpoint just before that block.
   void checkpoint();
   void roll_back();
 
