@@ -50,6 +50,16 @@ void Planner::add(const PlannedMove& move) {
   add_joined(move, max_entry);
 }
 
+Planner::Speed Planner::reach(const Speed& end, const PlannedMove& m, double cap) {
+  if (m.kin.jerk <= 0.0 && m.length > 0.0) {
+    const double v2 = end.v2 + 2.0 * m.kin.accel * m.length;
+    if (!(v2 < cap * cap)) return {cap, cap * cap};
+    return {std::sqrt(v2), v2};
+  }
+  const double v = reachable_speed(end.v, m.length, m.kin, cap);
+  return {v, v * v};
+}
+
 void Planner::add_joined(const PlannedMove& move, double max_entry) {
   if (!(move.length >= 0.0 && move.cruise > 0.0 && std::isfinite(move.length))) return;
   if (!moving_) max_entry = 0.0;
@@ -57,10 +67,10 @@ void Planner::add_joined(const PlannedMove& move, double max_entry) {
   Block& b = at(count_++);
   b.move = move;
   b.max_entry = max_entry;
-  b.backward = reachable_speed(0.0, move.length, move.kin, max_entry);
+  b.backward = reach({}, move, max_entry);
   // The forward pass plans the entry; a block alone in the buffer comes
   // after a stop (the buffer never runs empty while moving) and enters at rest.
-  b.entry = 0.0;
+  b.entry = {};
   last_ = move;
   moving_ = true;
   plan_backward_forward();
@@ -80,16 +90,16 @@ void Planner::replan_last() {
   Block& b = at(count_ - 1);
   last_ = b.move;
   b.max_entry = std::min(b.max_entry, b.move.cruise);
-  b.backward = reachable_speed(0.0, b.move.length, b.move.kin, b.max_entry);
+  b.backward = reach({}, b.move, b.max_entry);
   if (count_ == 1) return;
   // The blocks before may have to slow down for it, or may now go faster.
   for (std::size_t k = count_ - 1; k-- > 1;) {
     Block& p = at(k);
-    p.backward = reachable_speed(at(k + 1).backward, p.move.length, p.move.kin, p.max_entry);
+    p.backward = reach(at(k + 1).backward, p.move, p.max_entry);
   }
   for (std::size_t k = 1; k < count_; ++k) {
     const Block& prev = at(k - 1);
-    at(k).entry = reachable_speed(prev.entry, prev.move.length, prev.move.kin, at(k).backward);
+    at(k).entry = reach(prev.entry, prev.move, at(k).backward.v);
   }
 }
 
@@ -98,11 +108,11 @@ void Planner::plan_backward_forward() {
   // first block whose entry does not change (index 0's entry is fixed).
   // Each block is looked up once a pass, the one next to it carried over.
   std::size_t first_changed = count_ - 1;
-  double after = at(count_ - 1).backward;
+  Speed after = at(count_ - 1).backward;
   for (std::size_t k = count_ - 1; k-- > 1;) {
     Block& b = at(k);
-    const double raised = reachable_speed(after, b.move.length, b.move.kin, b.max_entry);
-    if (raised == b.backward) break;
+    const Speed raised = reach(after, b.move, b.max_entry);
+    if (raised.v == b.backward.v) break;
     b.backward = after = raised;
     first_changed = k;
   }
@@ -112,15 +122,15 @@ void Planner::plan_backward_forward() {
   const Block* prev = &at(start - 1);
   for (std::size_t k = start; k < count_; ++k) {
     Block& b = at(k);
-    b.entry = reachable_speed(prev->entry, prev->move.length, prev->move.kin, b.backward);
+    b.entry = reach(prev->entry, prev->move, b.backward.v);
     prev = &b;
   }
 }
 
 void Planner::run_oldest() {
   const Block& b = at(0);
-  const double exit = count_ > 1 ? at(1).entry : 0.0;
-  double t = move_time(b.move.length, b.entry, exit, b.move.cruise, b.move.kin);
+  const double exit = count_ > 1 ? at(1).entry.v : 0.0;
+  double t = move_time(b.move.length, b.entry.v, exit, b.move.cruise, b.move.kin);
   if (settings_.quantum > 0.0 && std::isfinite(t)) {
     stretch_s_ += t;
     if (exit == 0.0) {

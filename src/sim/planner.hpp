@@ -136,12 +136,24 @@ class Planner final : public MotionPlanner {
   double drop_last();
 
  private:
+  // A speed the passes carry, with its square: a trapezoidal move reaches
+  // sqrt(v² + 2aL), so the passes chain the squares (an add a block) and take
+  // each root apart, off the chain (a root a block on the chain was a tenth
+  // of `usina stats`).
+  struct Speed {
+    double v = 0.0;
+    double v2 = 0.0;
+  };
+
   struct Block {
     PlannedMove move;
     double max_entry = 0.0;  // corner and speed limit at the entry
-    double backward = 0.0;   // best entry the blocks after it allow
-    double entry = 0.0;      // planned entry speed
+    Speed backward;          // best entry the blocks after it allow
+    Speed entry;             // planned entry speed
   };
+
+  // reachable_speed() from `end` over `m`, at most `cap`.
+  static Speed reach(const Speed& end, const PlannedMove& m, double cap);
 
   // The k-th block from the oldest (k < count_). head_ and k are both
   // below the ring's size, so one subtraction wraps the sum: the passes

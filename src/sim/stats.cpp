@@ -220,38 +220,38 @@ void StatsSink::traverse(const canon::Op& op, const canon::Traverse& t) {
   moved_to(to);
 }
 
-double StatsSink::feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f) {
+double StatsSink::feed_speed(const canon::Op& op, const AxisShare& share, double rate) {
   int axis = -1;
   const double limit = along_path(machine_, share, AxisRate::MaxFeed, &axis);  // mm/s
-  return feed_speed(op, limit, axis, f);
+  return feed_speed(op, limit, axis, rate);
 }
 
 // The speed a feed move runs at (mm/s): its rate within `limit`, the most
 // the axes allow, which `limiting_axis` sets.
-double StatsSink::feed_speed(const canon::Op& op, double limit, int limiting_axis,
-                             std::optional<double> f) {
-  const bool has_rate = f.has_value() && *f > 0.0;
+double StatsSink::feed_speed(const canon::Op& op, double limit, int limiting_axis, double rate) {
+  const bool has_rate = rate > 0.0;
   checks_.feed(op, has_rate, spindle_dir_ != canon::SpindleDir::Off);
   if (!has_rate) return limit;
-  tool().feed.add(*f);
-  last_feed_ = *f;
-  checks_.feed_limit(op, *f, limit * 60.0, limiting_axis);
-  return std::min(*f / 60.0, limit);
+  tool().feed.add(rate);
+  last_feed_ = rate;
+  checks_.feed_limit(op, rate, limit * 60.0, limiting_axis);
+  return std::min(rate / 60.0, limit);
 }
 
 // The mm/min a move runs at: its F, or what G93 (the move takes 1/F
-// minutes, whatever its length) or G95 (F mm a spindle revolution) make of it.
-std::optional<double> StatsSink::rate_of(std::optional<double> f,
-                                         const canon::ProgrammedFeed& programmed,
-                                         double length) const {
+// minutes, whatever its length) or G95 (F mm a spindle revolution) make of
+// it; 0 when it has none.
+double StatsSink::rate_of(std::optional<double> f, const canon::ProgrammedFeed& programmed,
+                          double length) const {
   using Mode = canon::ProgrammedFeed::Mode;
-  if (f || programmed.value <= 0.0) return f;
+  if (f) return *f;
+  if (programmed.value <= 0.0) return 0.0;
   if (programmed.mode == Mode::InverseTime && length > 0.0) return length * programmed.value;
   if (programmed.mode == Mode::PerRevolution && spindle_dir_ != canon::SpindleDir::Off &&
       spindle_rpm_ > 0.0) {
     return programmed.value * spindle_rpm_;
   }
-  return std::nullopt;
+  return 0.0;
 }
 
 void StatsSink::feed(const canon::Op& op, const Vec3& to_xyz, const canon::Abc& abc,
@@ -297,10 +297,10 @@ void StatsSink::arc(const canon::Op& op, const canon::Arc& a) {
       centripetal = std::min(centripetal, machine_.axes[i].accel / in_plane);
     }
   }
-  const std::optional<double> rate = rate_of(a.f, a.programmed, path->length);
+  const double rate = rate_of(a.f, a.programmed, path->length);
   double cruise = feed_speed(op, share, rate);
   const double arc_limit = std::sqrt(centripetal * path->radius);  // v²/r ≤ a
-  if (rate && *rate > 0.0) {
+  if (rate > 0.0) {
     checks_.arc_feed(op, path->radius, cruise * 60.0, arc_limit * 60.0, centripetal);
   }
   const double uncapped = cruise;

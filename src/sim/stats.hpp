@@ -152,12 +152,15 @@ class StatsSink final : public canon::Sink {
   // Plans a straight move from the current position; returns its length.
   double straight(const Line& line, double cruise, Kind kind);
   PlannedMove straight_move(const Line& line, double cruise, Kind kind) const;
-  // The cruise speed (mm/s) of a feed at `f` mm/min along `share`, reporting a clamp;
-  // the same within the axes' `limit` already worked out.
-  double feed_speed(const canon::Op& op, const AxisShare& share, std::optional<double> f);
-  double feed_speed(const canon::Op& op, double limit, int limiting_axis, std::optional<double> f);
-  std::optional<double> rate_of(std::optional<double> f, const canon::ProgrammedFeed& programmed,
-                                double length) const;
+  // The cruise speed (mm/s) of a feed at `rate` mm/min (none unless above 0)
+  // along `share`, reporting a clamp; the same within the axes' `limit`
+  // already worked out.
+  double feed_speed(const canon::Op& op, const AxisShare& share, double rate);
+  double feed_speed(const canon::Op& op, double limit, int limiting_axis, double rate);
+  // A plain double, not an optional: the optional's flag, stored beside the
+  // value and read back with it in one load, stalled every feed move.
+  double rate_of(std::optional<double> f, const canon::ProgrammedFeed& programmed,
+                 double length) const;
   double block_limit(double length, double cruise) const;
   void moved_to(const Axes6& to);
 
