@@ -140,9 +140,10 @@ class StatsSink final : public canon::Sink {
 
   // A straight move from the current position: its length, axis shares
   // and the rates they allow, worked out once for the checks, the cruise
-  // speed and the planner.
+  // speed and the planner. Its end is the caller's, not a copy: the copy
+  // read back in 16 bytes what the caller stored in 8, and waited.
   struct Line {
-    Axes6 to;
+    const Axes6& to;
     double length;
     AxisShare share;
     PathRates rates;
