@@ -228,17 +228,18 @@ bool Engine::end_of_program(const TapeBlock& end) {
                    "the program is empty"});
     return true;
   }
+  const TapeBlock last = tape_.cut(last_at_);
   if (parameter_mode_) {
-    return error(core::Code::UnclosedBlock, last_, 0,
+    return error(core::Code::UnclosedBlock, last, 0,
                  "the program ends in parameter input mode: G10 L50 without G11");
   }
   if (!frames_.empty()) {
-    return error(core::Code::UnclosedBlock, last_, 0,
+    return error(core::Code::UnclosedBlock, last, 0,
                  "the subprogram ends without M99 (Fanuc: it would run into the next program)");
   }
   done_ = true;
   if (!end.end || !end.closed) {
-    diags_.report({core::Code::NoProgramEnd, core::Severity::Warning, loc_of(last_, 0),
+    diags_.report({core::Code::NoProgramEnd, core::Severity::Warning, loc_of(last, 0),
                    "the program ends without M02, M30 or '%'; taken as its end"});
   }
   return true;
@@ -248,7 +249,7 @@ bool Engine::step() {
   const TapeBlock b = tape_.cut(pc_);
   if (b.end || ends_program(b)) return end_of_program(b);
   pc_ = b.next;
-  last_ = b;
+  last_at_ = b.at;
   read_any_ = true;
   if (frames_.empty() && (b.program >= 0 || !b.text.empty())) main_started_ = true;
   core::SourceFile* file = sources_.get(b.file);

@@ -469,7 +469,9 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   std::uint32_t main_file_ = 0;
   TapePos main_start_;
   bool main_started_ = false;  // a block with words or an O number was read
-  TapeBlock last_;             // the last block read
+  // Where the last block read starts: cut again for a message at the end
+  // (a copy of every block, read back whole, waited on its narrow stores).
+  TapePos last_at_;
   bool read_any_ = false;
   std::map<std::uint64_t, LoopEnd> loop_ends_;         // by DO block
   std::map<JumpKey, Jump> jumps_;                      // GOTO

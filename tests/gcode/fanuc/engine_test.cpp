@@ -221,6 +221,21 @@ TEST(FanucEngine, SubprogramWithoutM99IsAnError) {
   EXPECT_EQ(run_fanuc("M98 P20\nM30\nO20\nG0 X1.\n")->first_error(), Code::UnclosedBlock);
 }
 
+// The messages at the end of the tape point at the last block read, its line
+// and column (the engine keeps where it starts and cuts it again).
+TEST(FanucEngine, TheEndOfTapeMessagesPointAtTheLastBlockRead) {
+  const auto where = [](const dialect_test::Run& r, Code code) {
+    for (const core::Diagnostic& d : r.diags.all()) {
+      if (d.code == code) return std::pair{d.loc.line, d.loc.col};
+    }
+    return std::pair<std::uint32_t, std::uint32_t>{0, 0};
+  };
+  EXPECT_EQ(where(*run_fanuc("G0 X1.\n  N20 G1 X2. F100\n\n"), Code::NoProgramEnd),
+            (std::pair<std::uint32_t, std::uint32_t>{2, 7}));  // at G1, after N20
+  EXPECT_EQ(where(*run_fanuc("M98 P20\nM30\nO20\nG0 X1.\n G0 Y1.\n"), Code::UnclosedBlock),
+            (std::pair<std::uint32_t, std::uint32_t>{5, 2}));
+}
+
 TEST(FanucEngine, G66CallsTheMacroAfterEachMove) {
   auto r = run_fanuc(
       "#100 = 0\nG66 P9000 Z-1.\nG0 X1.\nX2.\nG67\nX3.\nG0 Y#100\nM30\n"
