@@ -68,12 +68,13 @@ void Planner::add_joined(const PlannedMove& move, double max_entry) {
   b.move = move;
   b.max_entry = max_entry;
   b.backward = reach({}, move, max_entry);
-  // The forward pass plans the entry; a block alone in the buffer comes
-  // after a stop (the buffer never runs empty while moving) and enters at rest.
+  // run_oldest() plans the entry when the block before runs; a block alone
+  // in the buffer comes after a stop (the buffer never runs empty while
+  // moving) and enters at rest.
   b.entry = {};
   last_ = move;
   moving_ = true;
-  plan_backward_forward();
+  plan_backward();
 }
 
 double Planner::drop_last() {
@@ -97,39 +98,34 @@ void Planner::replan_last() {
     Block& p = at(k);
     p.backward = reach(at(k + 1).backward, p.move, p.max_entry);
   }
-  for (std::size_t k = 1; k < count_; ++k) {
-    const Block& prev = at(k - 1);
-    at(k).entry = reach(prev.entry, prev.move, at(k).backward.v);
-  }
 }
 
-void Planner::plan_backward_forward() {
-  // Backward: raise the entries the new block's length allows, up to the
-  // first block whose entry does not change (index 0's entry is fixed).
-  // Each block is looked up once a pass, the one next to it carried over.
-  std::size_t first_changed = count_ - 1;
+void Planner::plan_backward() {
+  // Raise the entries the new block's length allows, up to the first block
+  // whose entry does not change (index 0's entry is fixed). Each block is
+  // looked up once a pass, the one next to it carried over.
   Speed after = at(count_ - 1).backward;
   for (std::size_t k = count_ - 1; k-- > 1;) {
     Block& b = at(k);
     const Speed raised = reach(after, b.move, b.max_entry);
     if (raised.v == b.backward.v) break;
     b.backward = after = raised;
-    first_changed = k;
-  }
-  // Forward: what each block can reach from the one before it.
-  const std::size_t start = std::max<std::size_t>(first_changed, 1);
-  if (start >= count_) return;
-  const Block* prev = &at(start - 1);
-  for (std::size_t k = start; k < count_; ++k) {
-    Block& b = at(k);
-    b.entry = reach(prev->entry, prev->move, b.backward.v);
-    prev = &b;
   }
 }
 
 void Planner::run_oldest() {
   const Block& b = at(0);
-  const double exit = count_ > 1 ? at(1).entry.v : 0.0;
+  double exit = 0.0;
+  if (count_ > 1) {
+    // The forward pass, one block at a time as the blocks run: the next
+    // entry is what this block reaches from its own within the best the
+    // blocks after allow. The same figure a pass after every new block
+    // gave (the blocks before the first one the backward pass changes keep
+    // theirs), for one step a block, not three.
+    Block& next = at(1);
+    next.entry = reach(b.entry, b.move, next.backward.v);
+    exit = next.entry.v;
+  }
   double t = move_time(b.move.length, b.entry.v, exit, b.move.cruise, b.move.kin);
   if (settings_.quantum > 0.0 && std::isfinite(t)) {
     stretch_s_ += t;

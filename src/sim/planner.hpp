@@ -4,12 +4,12 @@
 // Each block gets the highest entry speed that (1) the corner with the block
 // before allows (junction deviation), (2) both blocks' speeds allow, and
 // (3) lets the machine still stop at the end of the buffer: a backward pass
-// from the newest block (planned to end at rest) and a forward pass from the
-// oldest (whose entry is fixed) after every new block. The backward pass
-// stops at the first block it does not change and the forward pass starts
-// there, so a block costs a few steps, not the buffer's length. When the buffer is full the oldest
-// block runs: its time follows from its entry, its exit (the next block's entry) and its cruise
-// speed.
+// from the newest block (planned to end at rest) after every new block,
+// which stops at the first block it does not change, so a block costs a few
+// steps, not the buffer's length. When the buffer is full the oldest block
+// runs: the forward pass takes its step then, the next block's entry being
+// what this one reaches from its own entry (fixed) within that best, and
+// the block's time follows from its entry, that exit and its cruise speed.
 //
 // Every block is also timed with exact stop (G61: starting and ending at
 // rest) for comparison. Times are summed per account: a number the caller
@@ -169,7 +169,7 @@ class Planner final : public MotionPlanner {
   // Adds `seconds` to `into` when it is a time (finite, not negative): true;
   // else counts the move untimed.
   bool add_time(double& into, double seconds);
-  void plan_backward_forward();
+  void plan_backward();
   AccountTime& account(std::uint32_t id);
 
   PlannerSettings settings_;
