@@ -92,24 +92,23 @@ void Planner::replan_last() {
   last_ = b.move;
   b.max_entry = std::min(b.max_entry, b.move.cruise);
   b.backward = reach({}, b.move, b.max_entry);
-  if (count_ == 1) return;
   // The blocks before may have to slow down for it, or may now go faster.
-  for (std::size_t k = count_ - 1; k-- > 1;) {
-    Block& p = at(k);
-    p.backward = reach(at(k + 1).backward, p.move, p.max_entry);
-  }
+  plan_backward();
 }
 
 void Planner::plan_backward() {
-  // Raise the entries the new block's length allows, up to the first block
-  // whose entry does not change (index 0's entry is fixed). Each block is
-  // looked up once a pass, the one next to it carried over.
+  // The best entries after the newest block changed, up to the first block
+  // whose best does not change: each block's is worked out from the next
+  // one's alone, so the blocks before that one keep theirs (index 0's entry
+  // is fixed). Each block is looked up once a pass, the one next to it
+  // carried over. (Over the whole buffer after a blend's trim was a third
+  // of `usina stats` with the linuxcnc model.)
   Speed after = at(count_ - 1).backward;
   for (std::size_t k = count_ - 1; k-- > 1;) {
     Block& b = at(k);
-    const Speed raised = reach(after, b.move, b.max_entry);
-    if (raised.v == b.backward.v) break;
-    b.backward = after = raised;
+    const Speed best = reach(after, b.move, b.max_entry);
+    if (best.v == b.backward.v && best.v2 == b.backward.v2) break;
+    b.backward = after = best;
   }
 }
 

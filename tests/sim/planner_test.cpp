@@ -47,6 +47,44 @@ double exact(const std::vector<PlannedMove>& moves) {
   return p.accounts()[0].exact_stop_s;
 }
 
+// Changing the newest block and replanning (a blend trims it, or takes it
+// out) plans the buffer as if the block had come so: the blocks before must
+// be able to stop at its end, however far back the change reaches. Slow
+// acceleration, so the speed builds over many 1 mm blocks.
+std::vector<PlannedMove> ramp(std::size_t count) {
+  return std::vector<PlannedMove>(count, line(1.0, kX, kV, {50.0, 0.0}));
+}
+
+double lookahead_time(Planner& p) {
+  p.stop();
+  return p.accounts()[0].lookahead_s;
+}
+
+TEST(Planner, ReplanningAChangedLastBlockPlansAsIfItCameSo) {
+  Planner trimmed({});
+  for (const PlannedMove& m : ramp(30))
+    trimmed.add(m);
+  trimmed.last_move().length = 0.01;
+  trimmed.replan_last();
+  std::vector<PlannedMove> moves = ramp(30);
+  moves.back().length = 0.01;
+  Planner direct({});
+  for (const PlannedMove& m : moves)
+    direct.add(m);
+  EXPECT_DOUBLE_EQ(lookahead_time(trimmed), lookahead_time(direct));
+}
+
+TEST(Planner, DroppingTheLastBlockPlansTheRestToStopBeforeIt) {
+  Planner dropped({});
+  for (const PlannedMove& m : ramp(30))
+    dropped.add(m);
+  dropped.drop_last();
+  Planner direct({});
+  for (const PlannedMove& m : ramp(29))
+    direct.add(m);
+  EXPECT_DOUBLE_EQ(lookahead_time(dropped), lookahead_time(direct));
+}
+
 // 100 mm: 0.1 s up to 100 mm/s over 5 mm, 90 mm at 100 mm/s (0.9 s), 0.1 s
 // down: 1.1 s = L/v + v/a.
 TEST(Planner, SingleMoveReachesItsFeed) {
