@@ -58,19 +58,6 @@ MachineProfile default_machine_profile() {
   return m;
 }
 
-void Box::add(const Vec3& p) {
-  for (int i = 0; i < 3; ++i) {
-    lo[i] = std::min(lo[i], p[i]);
-    hi[i] = std::max(hi[i], p[i]);
-  }
-}
-
-void Box::add(const Box& b) {
-  if (b.empty()) return;
-  add(b.lo);
-  add(b.hi);
-}
-
 void Counts::add(const Counts& c) {
   rapids += c.rapids;
   feeds += c.feeds;

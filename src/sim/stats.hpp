@@ -4,6 +4,7 @@
 // their feed), each a diagnostic at the op's source location.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -50,8 +51,17 @@ struct Box {
 
   bool empty() const { return lo.x > hi.x; }
 
-  void add(const Vec3& p);
-  void add(const Box& b);
+  // Inline: four a move (the move's own box, then the tool's bounds).
+  void add(const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+
+  void add(const Box& b) {
+    if (b.empty()) return;
+    add(b.lo);
+    add(b.hi);
+  }
 };
 
 struct Counts {
