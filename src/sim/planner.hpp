@@ -139,8 +139,10 @@ class Planner final : public MotionPlanner {
   // A speed the passes carry, with its square: a trapezoidal move reaches
   // sqrt(v² + 2aL), so the passes chain the squares (an add a block) and take
   // each root apart, off the chain: each pass waited on a root a block, 3-5 %
-  // of `usina stats`. The speeds come out the same to the last bit on every
-  // program we have.
+  // of `usina stats`. The square carried is not always the square of the
+  // root taken, so a speed can differ from the root-to-root chain's in its
+  // last bit: the same figures for every program of the repository, the
+  // grbl model's total on the 100,000 block bench program 4e-16 apart.
   struct Speed {
     double v = 0.0;
     double v2 = 0.0;
