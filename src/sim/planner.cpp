@@ -80,10 +80,7 @@ void Planner::add_joined(const PlannedMove& move, double max_entry) {
 double Planner::drop_last() {
   const double entry = at(count_ - 1).max_entry;
   --count_;
-  if (count_ > 0) {
-    last_ = at(count_ - 1).move;
-    replan_last();
-  }
+  if (count_ > 0) replan_last();  // which takes the new newest block as the last
   return entry;
 }
 
