@@ -172,7 +172,8 @@ std::optional<std::vector<VarFileEntry>> Engine::persistent_variables() const {
 // A position in a block's text is a column of its line: the text is the
 // file's own, comments and all.
 core::SourceLoc Engine::loc_of(const TapeBlock& b, std::size_t pos) const {
-  return {b.file, b.line, b.text_col + static_cast<std::uint32_t>(pos), 1, b.line_offset};
+  return {b.loc.file, b.loc.line, b.loc.col + static_cast<std::uint32_t>(pos), 1,
+          b.loc.line_offset};
 }
 
 bool Engine::error(core::Code code, const TapeBlock& b, std::size_t pos, std::string message) {
@@ -246,19 +247,20 @@ bool Engine::end_of_program(const TapeBlock& end) {
 }
 
 bool Engine::step() {
-  const TapeBlock b = tape_.cut(pc_);
+  tape_.cut(pc_, block_);
+  const TapeBlock& b = block_;
   if (b.end || ends_program(b)) return end_of_program(b);
   pc_ = b.next;
   last_at_ = b.at;
   read_any_ = true;
   if (frames_.empty() && (b.program >= 0 || !b.text.empty())) main_started_ = true;
-  core::SourceFile* file = sources_.get(b.file);
+  core::SourceFile* file = sources_.get(b.loc.file);
   // The text behind the reader may leave memory (it comes back on a jump).
-  file->release_before(b.line_offset);
+  file->release_before(b.loc.line_offset);
   const std::string_view src = file->text();
-  const std::size_t start = b.line_offset + b.col - 1;
+  const std::size_t start = b.loc.line_offset + b.col - 1;
   if (auto length = check_block_length(src.substr(start, b.length),
-                                       {b.file, b.line, b.col, 1, b.line_offset});
+                                       {b.loc.file, b.loc.line, b.col, 1, b.loc.line_offset});
       !length) {
     diags_.report(std::move(length.error()));
     failed_ = true;

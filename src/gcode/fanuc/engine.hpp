@@ -345,7 +345,6 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   bool plain_move_shortcut_ = true;
   bool hand(const TapeBlock& b, std::span<const EvaluatedWord> words);
   bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);
-  core::SourceLoc block_loc(const TapeBlock& b) const;
   std::vector<EvaluatedWord> handed_;  // reused from block to block
   Words words_;                        // the NC block's words, reused likewise
   void group_one_motion(Words& w);
@@ -465,7 +464,8 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   int program_digits_ = 4;
 
   Tape tape_;
-  TapePos pc_;  // the next block
+  TapePos pc_;       // the next block
+  TapeBlock block_;  // the block that runs (cut into, block after block)
   std::uint32_t main_file_ = 0;
   TapePos main_start_;
   bool main_started_ = false;  // a block with words or an O number was read

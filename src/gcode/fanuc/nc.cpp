@@ -610,17 +610,8 @@ bool Engine::hand_over(const TapeBlock& b, Words& w) {
   return hand(b, handed_);
 }
 
-// The block's place: where its text starts (after '/', O and N); its
-// operations carry it, and the interpreter's diagnostics where no word
-// applies.
-core::SourceLoc Engine::block_loc(const TapeBlock& b) const {
-  core::SourceLoc loc = loc_of(b, 0);
-  loc.length = 0;
-  return loc;
-}
-
 bool Engine::hand(const TapeBlock& b, std::span<const EvaluatedWord> words) {
-  return interp_.run_evaluated({block_loc(b), words, {}, {}});
+  return interp_.run_evaluated({b.loc, words, {}, {}});
 }
 
 bool Engine::hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words) {

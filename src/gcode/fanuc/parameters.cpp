@@ -88,7 +88,7 @@ bool Engine::set_fanuc_parameter(const TapeBlock& b, long number, Words& w) {
   if (!modeled) {
     // At the block's N, the parameter number.
     diags_.report({core::Code::ParameterNotModeled, core::Severity::Warning,
-                   core::SourceLoc{b.file, b.line, b.col, 1, b.line_offset},
+                   core::SourceLoc{b.loc.file, b.loc.line, b.col, 1, b.loc.line_offset},
                    fmt::format("parameter {} is not modelled by usina: ignored (it may change "
                                "what the control does)",
                                number)});

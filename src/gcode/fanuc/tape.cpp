@@ -186,9 +186,14 @@ std::string_view Tape::text_of(std::uint32_t file) const {
 }
 
 TapeBlock Tape::cut(TapePos at) const {
+  TapeBlock b;
+  cut(at, b);
+  return b;
+}
+
+void Tape::cut(TapePos at, TapeBlock& b) const {
   const std::string_view text = text_of(at.file);
   PendingBlock p{at.offset, at.line, at.line_start, {}, at.offset};
-  TapeBlock b;
   for (std::size_t i = at.offset; i < text.size(); ++i) {
     const char c = text[i];
     if (!kDecides[static_cast<unsigned char>(c)]) {
@@ -213,12 +218,12 @@ TapeBlock Tape::cut(TapePos at) const {
     if (c == '%') {
       if (make_block(at.file, text, i, p, b)) {
         b.next = {at.file, p.line, i, p.line_start};
-        return b;
+        return;
       }
       b = TapeBlock{};
       b.at = {at.file, p.line, i, p.line_start};
       b.end = b.closed = true;
-      return b;
+      return;
     }
     if (c == ';' || c == '\n') {
       const bool made = make_block(at.file, text, i, p, b);
@@ -230,29 +235,31 @@ TapeBlock Tape::cut(TapePos at) const {
       }
       if (made) {
         b.next = {at.file, p.line, p.start, p.line_start};
-        return b;
+        return;
       }
       continue;
     }
   }
   if (p.start < text.size() && make_block(at.file, text, text.size(), p, b)) {
     b.next = {at.file, p.line, text.size(), p.line_start};
-    return b;
+    return;
   }
   b = TapeBlock{};
   b.at = {at.file, p.line, std::max<std::uint64_t>(at.offset, text.size()), p.line_start};
   b.end = true;
-  return b;
 }
 
-// The pending block cut at `stop` into `b`; false when it is empty.
+// The pending block cut at `stop` into `b`; false when it is empty. Every
+// field of `b` but `next` (cut's) is written here, in place: `b =
+// TapeBlock{}` built a whole block on the stack and copied it in, read back
+// before its stores had landed (issue 19).
 bool Tape::make_block(std::uint32_t file, std::string_view text, std::size_t stop,
                       const PendingBlock& p, TapeBlock& b) const {
   const std::string_view raw = text.substr(p.start, stop - p.start);
-  b = TapeBlock{};
-  b.file = file;
-  b.line = p.line;
-  b.line_offset = p.line_start;
+  b.sequence = -1;  // the head's words, when the block has them
+  b.deleted = false;
+  b.program = -1;
+  b.end = b.closed = false;
   b.col = static_cast<std::uint32_t>(p.start - p.line_start + 1);
   b.comment = p.comment;
   b.length = stop - p.start;
@@ -260,7 +267,7 @@ bool Tape::make_block(std::uint32_t file, std::string_view text, std::size_t sto
   const std::size_t k = read_block_head(raw, b);
   const std::size_t end = p.content_end > p.start + k ? p.content_end - p.start : k;
   b.text = raw.substr(k, end - k);
-  b.text_col = b.col + static_cast<std::uint32_t>(k);
+  b.loc = {file, p.line, b.col + static_cast<std::uint32_t>(k), 0, p.line_start};
   // Blank lines and stray ';' make no block.
   return !b.text.empty() || b.program >= 0 || b.sequence >= 0 || !p.comment.empty();
 }

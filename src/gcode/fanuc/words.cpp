@@ -134,7 +134,7 @@ bool Engine::machine_codes(const TapeBlock& b, Words& w) {
 
 void Engine::hand_on_machine_codes(const TapeBlock& b) {
   for (const canon::MachineCode& m : passed_m_)
-    stroke_.on(canon::Op{m, block_loc(b)});
+    stroke_.on(canon::Op{m, b.loc});
   passed_m_.clear();
 }
 
