@@ -229,6 +229,7 @@ int run_program(const RunOptions& o, canon::Sink& sink,
     return 2;
   }
   const bool ok = runner->run(main_id);
+  guard.flush();
   if (!o.save_vars.empty() && !save_vars(o, *runner->persistent_variables())) return 2;
   return ok && diags.errors() == 0 ? 0 : 1;
 }

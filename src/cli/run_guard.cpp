@@ -24,11 +24,13 @@ canon::ProgressSink::Show progress_output() {
 }  // namespace
 
 RunGuard::RunGuard(canon::Sink& sink, core::DiagnosticSink& diags, std::uint64_t max_ops)
-    : budget_(sink, max_ops, diags_),
+    : batch_(sink),
+      budget_(batch_, max_ops, diags_),
       progress_(budget_, progress_output(), max_ops),
-      diags_(diags, progress_) {}
+      diags_(diags, batch_, progress_) {}
 
 void RunGuard::Diagnostics::report(core::Diagnostic d) {
+  batch_.flush();
   progress_.erase();
   next_.report(std::move(d));
 }

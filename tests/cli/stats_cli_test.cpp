@@ -108,6 +108,27 @@ TEST(StatsCli, WithoutWorkZeroTheExtentIsChecked) {
   EXPECT_NE(usina("stats --work-zero 1,2" + vmc, "M2\n").status, 0);
 }
 
+// The simulation's warnings and the program's come in the order of their
+// blocks, on standard error and in the JSON: the ops reach the simulation
+// in batches (canon/batch_sink.hpp), handed on before each of the
+// program's diagnostics.
+TEST(StatsCli, TheSimulationsWarningsKeepTheirPlaceAmongTheProgramsDiagnostics) {
+  // Line 2: a feed with the spindle stopped (the simulation's warning);
+  // line 4: a coordinate without a decimal point (the fanuc reader's).
+  const std::string program = "G21 G90\nG1 X1. F100.\nG1 X2.\nX3\nM30\n";
+  const Result text = usina("stats --dialect fanuc -", program);
+  ASSERT_EQ(text.status, 0) << text.err;
+  const std::size_t sim = text.err.find("W_FEED_SPINDLE_STOPPED");
+  const std::size_t reader = text.err.find("W_INTEGER_COORDINATE");
+  ASSERT_NE(sim, std::string::npos) << text.err;
+  ASSERT_NE(reader, std::string::npos) << text.err;
+  EXPECT_LT(sim, reader) << text.err;
+  const json j = parse(usina("stats --format json --dialect fanuc -", program));
+  ASSERT_EQ(j["diagnostics"].size(), 2u) << j.dump();
+  EXPECT_EQ(j["diagnostics"][0]["code"], "W_FEED_SPINDLE_STOPPED");
+  EXPECT_EQ(j["diagnostics"][1]["code"], "W_INTEGER_COORDINATE");
+}
+
 TEST(StatsCli, ProgramErrorExitsOneWithTheFiguresBeforeIt) {
   const Result r = usina("stats --format json -", "G21\nS1000 M3\nG1 X10 F100\nG2 X20 R1\nM2\n");
   EXPECT_EQ(r.status, 1);
