@@ -25,7 +25,9 @@ canon::ProgressSink::Show progress_output() {
 
 RunGuard::RunGuard(canon::Sink& sink, core::DiagnosticSink& diags, std::uint64_t max_ops)
     : batch_(sink),
-      budget_(batch_, max_ops, diags_),
+      // A sink that reads no ops (check) is passed them unbatched: nothing
+      // to gain, a call a block to lose.
+      budget_(sink.reads_ops() ? static_cast<canon::Sink&>(batch_) : sink, max_ops, diags_),
       progress_(budget_, progress_output(), max_ops),
       diags_(diags, batch_, progress_) {}
 
