@@ -122,7 +122,9 @@ bool MacroReader::keyword(std::string_view word) {
   return true;
 }
 
-bool plain_digits(std::string_view text, std::size_t& i, double& v, bool& had_point) {
+// Aligned as gcode/parser.cpp's plain_number_at is (why there).
+[[gnu::aligned(64)]] bool plain_digits(std::string_view text, std::size_t& i, double& v,
+                                       bool& had_point) {
   const Decimal d = scan_decimal(text, i);
   if (d.digits == 0) return false;
   i = d.end;

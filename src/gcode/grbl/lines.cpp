@@ -154,7 +154,8 @@ namespace {
 // Grbl's read_float: an optional sign, then digits with at most one point,
 // at least one digit, read as every dialect reads them (gcode/decimal.hpp).
 // Returns the characters read, 0 when it is no number or beyond a double.
-std::size_t read_number(std::string_view s, double& value) {
+// Aligned as gcode/parser.cpp's plain_number_at is (why there).
+[[gnu::aligned(64)]] std::size_t read_number(std::string_view s, double& value) {
   std::size_t i = 0;
   if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
   const Decimal d = scan_decimal(s, i);

@@ -574,7 +574,9 @@ constexpr std::array<bool, 256> kPlainLetter = [] {
 // otherwise or refuses: no digit (a word of no value is 0), an E after it
 // (an exponent, refused), more than 15 digits, a character after it that
 // starts no word.
-std::size_t plain_number_at(std::string_view text, std::size_t i, double& value) {
+// Aligned as gcode/parser.cpp's plain_number_at is (why there).
+[[gnu::aligned(64)]] std::size_t plain_number_at(std::string_view text, std::size_t i,
+                                                 double& value) {
   const Decimal d = scan_decimal(text, i);
   if (d.digits == 0 || d.digits > decimal_detail::kExactDigits) return 0;
   if (d.end < text.size() && text[d.end] == 'E') return 0;
