@@ -26,9 +26,12 @@ void BatchSink::pass(const core::SourceLoc& src) {
 }
 
 void BatchSink::flush() {
+  if (flushing_) return;  // the ops held are on their way already
+  flushing_ = true;
   for (const Op& op : held_)
     next_.on(op);
   held_.clear();
+  flushing_ = false;
 }
 
 }  // namespace usina::canon

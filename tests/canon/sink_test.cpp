@@ -248,6 +248,29 @@ TEST(BatchSink, APassComesAfterTheOpsHeldBeforeIt) {
   EXPECT_EQ(out.seen, (std::vector<std::string>{"on 1", "pass 2", "on 3", "finish"}));
 }
 
+// A sink that has the batch flushed while it takes the batch, as a
+// diagnostic it reports through the runner's does (cli::RunGuard).
+class FlushesBack final : public Sink {
+ public:
+  void on(const Op& op) override {
+    lines.push_back(op.src.line);
+    if (batch != nullptr) batch->flush();
+  }
+
+  BatchSink* batch = nullptr;
+  std::vector<std::uint32_t> lines;
+};
+
+TEST(BatchSink, AFlushAskedForWhileFlushingHandsNothingOnTwice) {
+  FlushesBack out;
+  BatchSink batch(out, 3);
+  out.batch = &batch;
+  for (std::uint32_t i = 1; i <= 7; ++i)
+    batch.on(move(i, i));
+  batch.finish();
+  EXPECT_EQ(out.lines, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6, 7}));
+}
+
 TEST(BatchSink, AnswersForTheNextSink) {
   Log out;
   BatchSink batch(out);
