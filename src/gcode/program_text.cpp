@@ -7,9 +7,7 @@
 
 namespace usina::gcode {
 
-tl::expected<void, core::Diagnostic> check_block_length(std::string_view block,
-                                                        const core::SourceLoc& start) {
-  if (block.size() <= kMaxBlockLength) return {};
+core::Diagnostic block_too_long(std::string_view block, const core::SourceLoc& start) {
   core::SourceLoc at = start;
   constexpr std::uint64_t kMaxCol = std::numeric_limits<std::uint32_t>::max();
   at.col = static_cast<std::uint32_t>(
@@ -25,8 +23,7 @@ tl::expected<void, core::Diagnostic> check_block_length(std::string_view block,
   if (cr != std::string_view::npos && cr + 1 < block.size() && block[cr + 1] != '\n') {
     message += "; its lines end with CR alone: convert the line ends to LF";
   }
-  return tl::unexpected(
-      core::Diagnostic{core::Code::BlockTooLong, core::Severity::Error, at, std::move(message)});
+  return {core::Code::BlockTooLong, core::Severity::Error, at, std::move(message)};
 }
 
 namespace {
