@@ -127,6 +127,11 @@ inline CodeIndex code_index(const Dialect& d) {
 Checked check_block(const CodeIndex& codes, const OptionValues& options,
                     const std::vector<Word>& words, Modal& state, Accepted& out);
 
+// The same, every block the whole way: without the shortcut check_block
+// takes for a plain move (for the test that compares the two).
+Checked check_block_whole(const CodeIndex& codes, const OptionValues& options,
+                          const std::vector<Word>& words, Modal& state, Accepted& out);
+
 // Grbl's settings ($x=value) that usina reads; the others are recorded only.
 struct Settings {
   std::map<int, double> values;
