@@ -51,8 +51,8 @@ int write_to_stdout(const PostOutput& o,
                     const std::function<int(canon::Sink&, PostDiagnostics&)>& produce) {
   const core::HeldOutput held;
   if (held.stream() == nullptr) {
-    fmt::print(stderr, "usina: error: no temporary file to hold the program in: {}\n",
-               std::strerror(errno));
+    fmt::print(stderr, "usina: error: no temporary file to hold the program in ({}): {}\n",
+               held.folder(), std::strerror(errno));
     return 2;
   }
   core::FileOstream text(held.stream());

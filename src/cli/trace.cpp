@@ -48,8 +48,8 @@ int trace_cl(const TraceOptions& o, std::FILE* out) {
   if (o.out == "-" && o.format != "cldump") {
     held.emplace();
     if (held->stream() == nullptr) {
-      fmt::print(stderr, "usina: error: trace: no temporary file to hold the CL data in: {}\n",
-                 std::strerror(errno));
+      fmt::print(stderr, "usina: error: trace: no temporary file to hold the CL data in ({}): {}\n",
+                 held->folder(), std::strerror(errno));
       return 2;
     }
   }

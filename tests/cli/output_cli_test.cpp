@@ -159,6 +159,55 @@ TEST(OutputCli, AFailedConvertLeavesTheOldFileAndNoTemporary) {
   EXPECT_EQ(files, 2u);
 }
 
+// `usina ARGS` with TMPDIR set to `tmpdir`.
+test::Run usina_with_tmpdir(const std::string& tmpdir, const std::string& args) {
+  const TempDir io;
+  const std::string err = io.path("stderr");
+  return shell("TMPDIR=" + quote(tmpdir) + " " + quote(USINA_BINARY) + " " + args +
+                   " </dev/null 2>" + quote(err),
+               err);
+}
+
+// What goes to standard output only when the run is good waits in an
+// unnamed file in $TMPDIR (core/held_output.hpp): with a TMPDIR it can be
+// made in the output is whole; with one it cannot, the run is exit 2 with
+// the folder and the reason, and nothing reaches standard output.
+TEST(OutputCli, HeldOutputWaitsInTmpdirAndABadTmpdirIsExit2WithTheReason) {
+  const TempDir dir;
+  const std::string p = dir.write("p.ngc", kProgram);
+  const std::string not_a_folder = dir.write("file", "");
+  const std::string held = dir.path("held");
+  std::filesystem::create_directory(held);
+
+  struct Case {
+    std::string args;
+    std::string expected;  // in the output when the run is good
+    std::string what;      // the message's words for what is held
+  };
+
+  const std::vector<Case> cases{
+      {"convert " + quote(p) + " --post fanuc", "X20.", "the program"},
+      {"gen drill --at 10,10 --depth 3 --post grbl", "X10", "the program"},
+      {"trace --format cldata " + quote(p), "", "the CL data"}};
+  for (const Case& c : cases) {
+    const test::Run good = usina_with_tmpdir(held, c.args);
+    EXPECT_EQ(good.status, 0) << c.args << "\n" << good.err;
+    EXPECT_FALSE(good.out.empty()) << c.args;
+    EXPECT_TRUE(contains(good.out, c.expected)) << c.args << "\n" << good.out;
+    EXPECT_TRUE(std::filesystem::is_empty(held)) << c.args;  // unnamed: nothing left behind
+    for (const auto& [tmpdir, reason] : std::vector<std::pair<std::string, std::string>>{
+             {dir.path("none"), "No such file or directory"}, {not_a_folder, "Not a directory"}}) {
+      const test::Run bad = usina_with_tmpdir(tmpdir, c.args);
+      EXPECT_EQ(bad.status, 2) << c.args << "\n" << bad.err;
+      EXPECT_EQ(bad.out, "") << c.args;
+      EXPECT_TRUE(contains(
+          bad.err, "no temporary file to hold " + c.what + " in (" + tmpdir + "): " + reason))
+          << c.args << "\n"
+          << bad.err;
+    }
+  }
+}
+
 TEST(Cli, UsageErrorsExit2AndSayWhat) {
   struct Case {
     std::string args;
