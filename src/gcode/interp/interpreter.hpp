@@ -79,6 +79,11 @@ struct DialectRules {
   // The stop comment names the code with two digits, "M00 (program stop)",
   // as the control writes it (romi); LinuxCNC's trace says "M0".
   bool two_digit_stop_codes = false;
+  // An I J K arc whose centre is nearer than this to its start or its end
+  // is refused before its radii are compared: LinuxCNC's RADIUS_TOLERANCE
+  // (0.00005 in, 0.00127 mm: "Zero-radius arc"). 0: only a centre on the
+  // start point is (Grbl runs a tinier arc as a straight move).
+  double min_arc_radius_mm = 0.0;
 };
 
 struct BlockWords;

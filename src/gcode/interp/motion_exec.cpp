@@ -237,6 +237,13 @@ std::optional<Vec2> Interpreter::offset_arc_center(const BlockWords& w, GCode g,
   const Vec2 center = state_.arc_absolute ? off : start + off;
   const double r1 = core::distance(start, center);
   const double r2 = core::distance(stop, center);
+  if (const double least = rules_.min_arc_radius_mm; r1 < least || r2 < least) {
+    error(core::Code::ArcZeroLength, 0,
+          fmt::format("arc of zero radius: the centre is {:.4f} mm from the start and {:.4f} mm "
+                      "from the end, less than LinuxCNC's {:.5f} mm",
+                      r1, r2, least));
+    return std::nullopt;
+  }
   // LinuxCNC accepts a small difference (a spiral): up to 2·0.001·√2 in
   // (2·0.01·√2 mm), or 0.1 % of the larger radius.
   const double abs_tol =

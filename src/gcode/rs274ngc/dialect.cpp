@@ -8,8 +8,10 @@ namespace usina::gcode {
 namespace {
 
 // What LinuxCNC does where the interpreter serves other controls otherwise.
-constexpr DialectRules kLinuxcnc{
-    .start_motion = 800, .reselect_reloads_work_offsets = false, .g74_takes_l = false};
+constexpr DialectRules kLinuxcnc{.start_motion = 800,
+                                 .reselect_reloads_work_offsets = false,
+                                 .g74_takes_l = false,
+                                 .min_arc_radius_mm = 0.00005 * 25.4};
 
 class Rs274Runner final : public ProgramRunner {
  public:

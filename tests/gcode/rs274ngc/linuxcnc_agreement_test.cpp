@@ -287,5 +287,23 @@ TEST(LinuxcncAgreement, RoundToZeroIsPositiveZero) {
   EXPECT_EQ(r->ends()[1].x, -180.0);
 }
 
+// interp_arc.cc arc_data_ijk: a centre nearer than RADIUS_TOLERANCE
+// (0.00005 in, 0.00127 mm) to the start or the end is "Zero-radius arc",
+// before the radii are compared (found by the differential fuzzer, seed
+// 7301243). Grbl has no such rule: a tinier arc runs.
+TEST(LinuxcncAgreement, AnArcOfLessThanRadiusToleranceIsZeroRadius) {
+  for (const char* arc : {"G21 G2 X0.002 Y0 I0.001 J0", "G20 G2 X0.00008 Y0 I0.00004 J0",
+                          "G21 G2 X5 Y0 I0.0001 J0"}) {
+    auto r = dialect_test::run_in("rs274ngc", std::string("F100\nG0 X0 Y0\n") + arc + "\nM2\n");
+    EXPECT_EQ(r->first_error(), core::Code::ArcZeroLength) << arc;
+    EXPECT_NE(r->first_error_text().find("zero radius"), std::string::npos)
+        << r->first_error_text();
+  }
+  auto above = dialect_test::run_in("rs274ngc", "G21 F100\nG0 X0 Y0\nG2 X0.0026 Y0 I0.0013\nM2\n");
+  EXPECT_TRUE(above->ok) << above->first_error_text();
+  auto grbl = dialect_test::run_in("grbl", "G21 F100\nG0 X0 Y0\nG2 X0.002 Y0 I0.001 J0\nM2\n");
+  EXPECT_TRUE(grbl->ok) << grbl->first_error_text();
+}
+
 }  // namespace
 }  // namespace usina::gcode
