@@ -29,6 +29,10 @@ class Sink {
   // check): a front end may then check a move's numbers and call pass()
   // instead of building the op (a million moves built and dropped were a
   // tenth of check's time). A sink that wraps another answers for it too.
+  // The answer may change between ops (fanuc's stroke check reads ops only
+  // while a forbidden area is armed), so it is asked for each op; only the
+  // sinks of canon/ and of a verb answer the same all run, and only there
+  // may it be asked once (grbl's LineOps, cli::RunGuard's batch).
   virtual bool reads_ops() const { return true; }
 
   // An op of block `src` went by unbuilt; called only when !reads_ops().
