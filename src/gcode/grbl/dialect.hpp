@@ -102,6 +102,8 @@ struct Modal {
   bool inverse_time = false;
   double feed_mm = 0.0;         // 0: undefined (Grbl's F0)
   double tool_length_mm = 0.0;  // G43.1 Z, added to Z's machine position (G49: 0)
+
+  bool operator==(const Modal&) const = default;
 };
 
 // What a checked block asks of the interpreter's copy of the line.
@@ -112,6 +114,8 @@ struct Accepted {
   bool sets_distance = false;
   bool sets_feed_mode = false;
   bool sets_feed = false;
+
+  bool operator==(const Accepted&) const = default;
 };
 
 // Grbl reads a code's whole part from 0 to 255 (G255.9 at most).
