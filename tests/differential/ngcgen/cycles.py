@@ -109,7 +109,10 @@ def follow_block(b, g, state):
             if state['start'] is not None and state['start'] >= state['bottom']:
                 above.append(state['start'])  # R at the initial level
             state['r'] = b.rnd_units(b.pick(above))
-            words.append(word(b, 'R', state['r']))
+            # R at the initial level: a number, not an expression one rounding
+            # off it (known_differences.tsv: inch-ulp-raise).
+            exact = state['r'] == state['start']
+            words.append(word(b, 'R', state['r'], 0 if exact else 0.25))
         if b.chance(0.3):
             state['bottom'] = b.rnd_units(state['r'] - b.length(0, 15))
             words.append(word(b, AXES[n], state['bottom']))
