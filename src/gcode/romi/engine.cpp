@@ -135,20 +135,27 @@ bool Engine::block() {
 // Step 1: every word's value, with its column, and lower-case words marked
 // as increments when the dialect's option says so.
 bool Engine::evaluate_words() {
-  words_.clear();
-  EvalError err;
+  // Sized once and written in place, as the interpreter's evaluate() does
+  // (a push_back a word, issue 19); cut back to the words read on an error.
+  words_.resize(block_.words.size());
+  EvaluatedWord* out = words_.data();
+  const auto fail = [&](core::Code code, std::uint32_t col, std::string message) {
+    words_.resize(static_cast<std::size_t>(out - words_.data()));
+    return error(code, col, std::move(message));
+  };
   for (const RomiWord& w : block_.words) {
     double v = w.number;
     if (w.value != kPlainNumber) {
+      EvalError err;
       const auto e = gcode::evaluate(block_.base, w.value, *this, err);
-      if (!e) return error(err.error.code, err.col, err.error.message);
+      if (!e) return fail(err.error.code, err.col, err.error.message);
       v = *e;
     }
     if (!word_value_in_range(w.letter, v)) {
-      return error(core::Code::ValueOutOfRange, w.col, word_range_error(w.letter, v));
+      return fail(core::Code::ValueOutOfRange, w.col, word_range_error(w.letter, v));
     }
     const bool incremental = w.lower && dialect_options_.lowercase_incremental;
-    words_.push_back({w.letter, v, w.col, incremental});
+    *out++ = {w.letter, v, w.col, incremental};
   }
   return true;
 }
