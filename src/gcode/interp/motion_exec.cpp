@@ -201,9 +201,12 @@ bool Interpreter::arc_in_range(const BlockWords& w, Vec2 start, Vec2 stop, Vec2 
 
 // The centre of an R-format arc: of the two circles of radius |R| through
 // start and end, the one R's sign picks (core::arc_center_from_radius).
+// Half the chord may exceed |R| by LinuxCNC's RADIUS_TOLERANCE (0.00005 in,
+// 0.00127 mm, in either unit: interp_arc.cc arc_data_r); the arc is then a
+// half circle.
 std::optional<Vec2> Interpreter::radius_arc_center(const BlockWords& w, Vec2 start, Vec2 stop,
                                                    bool ccw, char first, char second) {
-  const double unit_tol = state_.units == core::LengthUnit::Inch ? 0.0005 * 25.4 : 0.001;
+  constexpr double kRadiusTolerance = 0.00005 * 25.4;
   if (w.has(first) || w.has(second)) {
     error(core::Code::ArcMissingCenter, w.col_of('R'), "an arc takes R or I/J/K, not both");
     return std::nullopt;
@@ -214,7 +217,7 @@ std::optional<Vec2> Interpreter::radius_arc_center(const BlockWords& w, Vec2 sta
           "R-format arc with its end at its start: use I/J/K for a full circle");
     return std::nullopt;
   }
-  auto c = core::arc_center_from_radius(start, stop, r, ccw, unit_tol);
+  auto c = core::arc_center_from_radius(start, stop, r, ccw, kRadiusTolerance);
   if (!c) {
     error(core::Code::ArcRadiusTooSmall, w.col_of('R'),
           fmt::format("arc radius {:.4f} mm is smaller than half the chord {:.4f} mm", std::fabs(r),

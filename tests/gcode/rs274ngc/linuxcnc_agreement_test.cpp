@@ -305,5 +305,25 @@ TEST(LinuxcncAgreement, AnArcOfLessThanRadiusToleranceIsZeroRadius) {
   EXPECT_TRUE(grbl->ok) << grbl->first_error_text();
 }
 
+// interp_arc.cc arc_data_r: half the chord may exceed |R| by
+// RADIUS_TOLERANCE, 0.00005 in or 0.00127 mm, no more (usina allowed 0.0005
+// in and 0.001 mm; found by the differential fuzzer, seed 7331363).
+TEST(LinuxcncAgreement, AnRArcMayFallShortOfItsChordByRadiusTolerance) {
+  struct Case {
+    const char* arc;
+    bool ok;
+  };
+
+  for (const Case& c :
+       {Case{"G20 G2 X1.0002 Y0 R0.5", false}, Case{"G20 G2 X1.00009 Y0 R0.5", true},
+        Case{"G21 G2 X10.0024 Y0 R5", true}, Case{"G21 G2 X10.0026 Y0 R5", false}}) {
+    auto r = dialect_test::run_in("rs274ngc", std::string("F10\nG0 X0 Y0\n") + c.arc + "\nM2\n");
+    EXPECT_EQ(r->ok, c.ok) << c.arc << ": " << r->first_error_text();
+    if (!c.ok) {
+      EXPECT_EQ(r->first_error(), core::Code::ArcRadiusTooSmall) << c.arc;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace usina::gcode
