@@ -272,14 +272,18 @@ bool Interpreter::probe(BlockWords& w, const Axes& end) {
     return error(core::Code::ProbeBadMove, 0, "probing with cutter compensation on");
   }
 
-  const Vec3 start = xyz(state_.pos);
   // No probe in a trace: the move is traced to its target and the probe
   // result is what LinuxCNC's stand-alone interpreter reports, a stop short
   // of the target, not tripped (#5070 = 0); the current point is that stop
   // (its conformance traces, smartprobe.ngc, x-trim.ngc). saicanon.cc backs
   // off 0.01 under G20 and 0.254 under G21: 0.254 mm in either unit.
   constexpr double kProbeBackOffMm = 0.254;
-  const Vec3 dir = xyz(end) - start;
+  // Along the move the canon makes: from where its last move ended, which is
+  // not the current point when a tool length offset or a work offset has
+  // changed since (G43 H12, then G38.4: the probe goes down as it goes
+  // over, and backs off up along that line; differential fuzzer, seed
+  // 8114888).
+  const Vec3 dir = xyz(end) - machine_.last_emitted();
   const double length = core::norm(dir);
   const Vec3 stop = length > 0.0 ? xyz(end) - dir * (kProbeBackOffMm / length) : xyz(end);
   machine_.probe_axes(end, stop);

@@ -276,6 +276,19 @@ TEST(LinuxcncAgreement, ToolChangeAfterAProbeStartsFromTheProbesStop) {
   EXPECT_NEAR(r->ends().back().z, -10.0 + 0.254, kTol);
 }
 
+// saicanon.cc STRAIGHT_PROBE backs off along the move the canon makes, from
+// where its last move ended: after G43 H8 (3 mm) with no move, a probe over
+// in Y also goes down 3 mm, and its stop is back along that slant, not
+// along Y alone (found by the differential fuzzer, seed 8114888).
+TEST(LinuxcncAgreement, AProbeBacksOffAlongTheMoveTheCanonMakes) {
+  auto r = run("G21 F100\nG0 X0 Y0 Z0\nG43 H8\nG38.4 Y4\nG1 X0\nM2\n", tool_eight());
+  ASSERT_TRUE(r->ok) << r->first_error();
+  // The move: (0, 0, 0) to (0, 4, -3), 5 mm long; 0.254 mm back along it.
+  const Vec3 stop = r->ends().back();
+  EXPECT_NEAR(stop.y, 4.0 - 0.254 * 4.0 / 5.0, kTol);
+  EXPECT_NEAR(stop.z, -3.0 + 0.254 * 3.0 / 5.0, kTol);
+}
+
 // interp_execute.cc: ROUND is (int)(x +- 0.5), so what rounds to zero is
 // +0; the two-argument ATAN tells the sign of a zero apart (atan2). MOD
 // keeps fmod's -0 (found by the differential fuzzer, seed 900576).
