@@ -223,7 +223,8 @@ EXPLAIN = {
         "start unless `G90.1`), or give the arc by its radius `R`."),
     "E_ARC_RADIUS_TOO_SMALL": (
         "An `R` arc whose radius is smaller than half the distance from its start to its "
-        "end, so no such circle exists.",
+        "end, so no such circle exists. In rs274ngc, as in LinuxCNC, half the chord may "
+        "exceed the radius by 0.00005 in (0.00127 mm): the arc is then a half circle.",
         "Increase `R` or correct the end point; the message gives the half chord."),
     "E_ARC_MISSING_CENTER": (
         "`G2`/`G3` with neither `R` nor a centre word of the plane (`I J` in G17, `I K` in "
@@ -231,7 +232,9 @@ EXPLAIN = {
         "Give either `R` or the centre words of the active plane."),
     "E_ARC_ZERO_LENGTH": (
         "An `R` arc that ends where it starts (a full circle cannot be given by `R`), or "
-        "an arc whose centre is at its start point (zero radius).",
+        "an arc whose centre is at its start point (zero radius). In rs274ngc, as in "
+        "LinuxCNC, an `I J K` arc whose centre is within 0.00005 in (0.00127 mm) of its "
+        "start or its end.",
         "Give a full circle with `I`/`J`/`K`; check the centre words."),
     # cutter compensation and tools
     "E_CUTTER_GOUGE": (
