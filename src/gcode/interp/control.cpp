@@ -308,9 +308,9 @@ Interpreter::Flow Interpreter::call(const OWord& o) {
     }
     label = fmt::format("{}", *v);
   }
-  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
+  if (static_cast<int>(frames_.size()) >= call_depth_limit()) {
     error(core::Code::RecursionTooDeep, o.col,
-          fmt::format("o<{}> call nests deeper than {} calls", label, options_.max_call_depth));
+          fmt::format("o<{}> call nests deeper than {} calls", label, call_depth_limit()));
     return Flow::Error;
   }
   std::vector<double> args;
@@ -425,8 +425,9 @@ bool Interpreter::fanuc_call(const BlockWords& w) {
     return error(core::Code::UnknownSubroutine, w.col_of('P'),
                  fmt::format("no subprogram O{} in this file", label));
   }
-  if (static_cast<int>(frames_.size()) >= options_.max_call_depth) {
-    return error(core::Code::RecursionTooDeep, w.col_of('P'), "M98 calls nest too deep");
+  if (static_cast<int>(frames_.size()) >= call_depth_limit()) {
+    return error(core::Code::RecursionTooDeep, w.col_of('P'),
+                 fmt::format("M98 calls nest deeper than {} calls", call_depth_limit()));
   }
   std::optional<int> l;
   if (w.has('L') && !(l = whole(w, 'L', 0, kMaxToolNumber))) return false;

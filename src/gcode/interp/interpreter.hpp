@@ -3,6 +3,7 @@
 // them, plan the targets, execute in the standard's order of execution.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -84,6 +85,11 @@ struct DialectRules {
   // (0.00005 in, 0.00127 mm: "Zero-radius arc"). 0: only a centre on the
   // start point is (Grbl runs a tinier arc as a straight move).
   double min_arc_radius_mm = 0.0;
+  // Calls (O-word and M98) that may be nested, when fewer than
+  // InterpOptions::max_call_depth: LinuxCNC refuses a tenth level
+  // (INTERP_SUB_ROUTINE_LEVELS, the main program counted), "Too many
+  // subroutine levels". 0: max_call_depth alone.
+  int max_call_nesting = 0;
 };
 
 struct BlockWords;
@@ -201,6 +207,13 @@ class Interpreter final : private ParameterSource {
   Flow control(const OWord& o, std::uint64_t line_offset);
   Flow percent_line(const LinePos& where);  // percent.cpp
   Flow call(const OWord& o);
+
+  // The calls that may be nested: the dialect's limit within the run's.
+  int call_depth_limit() const {
+    return rules_.max_call_nesting > 0 ? std::min(rules_.max_call_nesting, options_.max_call_depth)
+                                       : options_.max_call_depth;
+  }
+
   Flow leave_sub(const OWord& o);
   Flow branch(const ProgramIndex& idx, std::uint32_t e, const OWord& o);
   Flow loop(const ProgramIndex& idx, std::uint32_t e, const OWord& o);

@@ -11,7 +11,8 @@ namespace {
 constexpr DialectRules kLinuxcnc{.start_motion = 800,
                                  .reselect_reloads_work_offsets = false,
                                  .g74_takes_l = false,
-                                 .min_arc_radius_mm = 0.00005 * 25.4};
+                                 .min_arc_radius_mm = 0.00005 * 25.4,
+                                 .max_call_nesting = 9};
 
 class Rs274Runner final : public ProgramRunner {
  public:

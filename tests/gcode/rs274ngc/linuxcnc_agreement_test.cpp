@@ -276,6 +276,24 @@ TEST(LinuxcncAgreement, ToolChangeAfterAProbeStartsFromTheProbesStop) {
   EXPECT_NEAR(r->ends().back().z, -10.0 + 0.254, kTol);
 }
 
+// interp_o_word.cc enter_context: a tenth call level (the main program
+// counted, INTERP_SUB_ROUTINE_LEVELS) is "Too many subroutine levels": nine
+// nested calls run, ten do not (found by the differential fuzzer, seed
+// 9209076). M98 enters a level the same way.
+TEST(LinuxcncAgreement, CallsNestNineDeep) {
+  const auto nested = [](int n) {
+    return "o<r> sub\n  o1 if [#1 GT 0]\n    G1 X#1 F100\n    o<r> call [#1 - 1]\n"
+           "  o1 endif\no<r> endsub\no<r> call [" +
+           std::to_string(n) + "]\nM2\n";
+  };
+  auto nine = dialect_test::run_in("rs274ngc", nested(8));  // calls with 8, 7, ... 0
+  EXPECT_TRUE(nine->ok) << nine->first_error_text();
+  auto ten = dialect_test::run_in("rs274ngc", nested(9));
+  EXPECT_EQ(ten->first_error(), core::Code::RecursionTooDeep);
+  EXPECT_NE(ten->first_error_text().find("deeper than 9 calls"), std::string::npos)
+      << ten->first_error_text();
+}
+
 // saicanon.cc STRAIGHT_PROBE backs off along the move the canon makes, from
 // where its last move ended: after G43 H8 (3 mm) with no move, a probe over
 // in Y also goes down 3 mm, and its stop is back along that slant, not
