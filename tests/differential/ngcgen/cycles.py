@@ -106,8 +106,12 @@ def follow_block(b, g, state):
     if b.dist == 90:
         if b.chance(0.3):
             above = [state['bottom'] + b.length(0, 10)]
-            if state['start'] is not None and state['start'] >= state['bottom']:
-                above.append(state['start'])  # R at the initial level
+            # R at the initial level, in mm only: in inches a level reached by
+            # G91 moves is a sum one rounding off its decimal in rs274,
+            # which usina's mm do not keep (known_differences.tsv: inch-ulp-raise).
+            if (state['start'] is not None and state['start'] >= state['bottom']
+                    and b.units == 21):
+                above.append(state['start'])
             state['r'] = b.rnd_units(b.pick(above))
             # R at the initial level: a number, not an expression one rounding
             # off it (known_differences.tsv: inch-ulp-raise).
