@@ -53,35 +53,45 @@ void StatsChecks::extent(const canon::Op& op, int i, double low, double high) {
 }
 
 void StatsChecks::travel(const canon::Op& op, const Vec3& lo, const Vec3& hi, const Axes6& end) {
-  for (int i = 0; i < 6; ++i) {
-    const AxisLimits& a = machine_.axes[static_cast<std::size_t>(i)];
-    if (!a.present) continue;
-    if (i < 3 && !work_zero_) {
-      extent(op, i, lo[i], hi[i]);
-      continue;
+  // Without a work zero, the linear axes' spans are what can be checked;
+  // their limits only with one. Two loops, not one test of both a turn:
+  // every move of `stats` comes here (issue 19).
+  int first_limited = 0;
+  if (!work_zero_) {
+    for (int i = 0; i < 3; ++i) {
+      if (machine_.axes[static_cast<std::size_t>(i)].present) extent(op, i, lo[i], hi[i]);
     }
-    const double shift = i < 3 ? (*work_zero_)[i] : 0.0;
-    const double low = i < 3 ? lo[i] + shift : end[static_cast<std::size_t>(i)];
-    const double high = i < 3 ? hi[i] + shift : end[static_cast<std::size_t>(i)];
-    const char* unit = i < 3 ? "mm" : "deg";
-    auto& out = outside_[static_cast<std::size_t>(i)];
-    const bool below = low < a.min - kTolerance;
-    const bool above = high > a.max + kTolerance;
-    if (below) {
-      flag(core::Code::OverTravel, op, !out[0],
-           fmt::format("{} goes to {:.3f} {}, {:.3f} {} below its travel limit {:.3f}",
-                       axis_letter(i), low, unit, a.min - low, unit, a.min));
-    }
-    if (above) {
-      flag(core::Code::OverTravel, op, !out[1],
-           fmt::format("{} goes to {:.3f} {}, {:.3f} {} above its travel limit {:.3f}",
-                       axis_letter(i), high, unit, high - a.max, unit, a.max));
-    }
-    // The excursion lasts until a move ends back inside the limits.
-    const double at = end[static_cast<std::size_t>(i)] + shift;
-    out = {at<a.min - kTolerance, at> a.max + kTolerance};
+    first_limited = 3;
+  }
+  for (int i = first_limited; i < 6; ++i) {
+    if (machine_.axes[static_cast<std::size_t>(i)].present) limits(op, i, lo, hi, end);
   }
   spanned_ = true;
+}
+
+void StatsChecks::limits(const canon::Op& op, int i, const Vec3& lo, const Vec3& hi,
+                         const Axes6& end) {
+  const AxisLimits& a = machine_.axes[static_cast<std::size_t>(i)];
+  const double shift = i < 3 ? (*work_zero_)[i] : 0.0;
+  const double low = i < 3 ? lo[i] + shift : end[static_cast<std::size_t>(i)];
+  const double high = i < 3 ? hi[i] + shift : end[static_cast<std::size_t>(i)];
+  const char* unit = i < 3 ? "mm" : "deg";
+  auto& out = outside_[static_cast<std::size_t>(i)];
+  const bool below = low < a.min - kTolerance;
+  const bool above = high > a.max + kTolerance;
+  if (below) {
+    flag(core::Code::OverTravel, op, !out[0],
+         fmt::format("{} goes to {:.3f} {}, {:.3f} {} below its travel limit {:.3f}",
+                     axis_letter(i), low, unit, a.min - low, unit, a.min));
+  }
+  if (above) {
+    flag(core::Code::OverTravel, op, !out[1],
+         fmt::format("{} goes to {:.3f} {}, {:.3f} {} above its travel limit {:.3f}",
+                     axis_letter(i), high, unit, high - a.max, unit, a.max));
+  }
+  // The excursion lasts until a move ends back inside the limits.
+  const double at = end[static_cast<std::size_t>(i)] + shift;
+  out = {at<a.min - kTolerance, at> a.max + kTolerance};
 }
 
 void StatsChecks::feed(const canon::Op& op, bool has_rate, bool spindle_running) {

@@ -51,6 +51,9 @@ class StatsChecks {
   // Reports the span of axis `i` longer than its travel (apart from
   // extent(), which every move calls, so that one stays small).
   void span_too_long(const canon::Op& op, int i);
+  // Axis `i` (a rotary one, or any with a work zero) against its travel
+  // limits, reported once per excursion.
+  void limits(const canon::Op& op, int i, const Vec3& lo, const Vec3& hi, const Axes6& end);
 
   // Counts the op; reports it when `first_of_run` and under the cap.
   void flag(core::Code code, const canon::Op& op, bool first_of_run, const std::string& message);
