@@ -135,7 +135,9 @@ std::optional<double> Evaluator::binary(const ExprNode& n, double a, double b) {
 
 std::optional<double> Evaluator::function(const ExprNode& n, double a) {
   switch (static_cast<Func>(n.op)) {
-  case Func::Abs: return std::fabs(a);
+  // LinuxCNC negates only what is below zero: ABS[-0] stays -0, which
+  // ATAN's quadrant tells apart (differential fuzzer, seed 10432060).
+  case Func::Abs: return a < 0.0 ? -a : a;
   case Func::Acos:
   case Func::Asin:
     if (a < -1.0 || a > 1.0) {

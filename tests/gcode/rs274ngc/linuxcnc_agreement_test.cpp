@@ -318,6 +318,17 @@ TEST(LinuxcncAgreement, RoundToZeroIsPositiveZero) {
   EXPECT_EQ(r->ends()[1].x, -180.0);
 }
 
+// interp_execute.cc execute_unary: ABS negates what is below zero, so
+// ABS[-0] is -0, and ATAN[ABS[-0]]/[-1] is -180 (found by the differential
+// fuzzer, seed 10432060).
+TEST(LinuxcncAgreement, AbsOfNegativeZeroIsNegativeZero) {
+  auto r = run("G21\n#1 = [-0 * 1]\nG0 X[ATAN[ABS[#1]]/[-1]] Y[ABS[-2]]\nM2\n");
+  ASSERT_TRUE(r->ok) << r->first_error();
+  ASSERT_EQ(r->ends().size(), 1u);
+  EXPECT_EQ(r->ends()[0].x, -180.0);
+  EXPECT_EQ(r->ends()[0].y, 2.0);
+}
+
 // interp_arc.cc arc_data_ijk: a centre nearer than RADIUS_TOLERANCE
 // (0.00005 in, 0.00127 mm) to the start or the end is "Zero-radius arc",
 // before the radii are compared (found by the differential fuzzer, seed
