@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -29,6 +30,13 @@ double degrees(double radians) {
   return static_cast<double>((static_cast<long double>(radians) * 180.0L) / kPi);
 }
 
+std::string not_finite(double v) {
+  return fmt::format(
+      "the value is {}: beyond the largest number (about ±1.8e308) or undefined; check the "
+      "arithmetic",
+      v);
+}
+
 class Evaluator {
  public:
   Evaluator(const Block& block, const ParameterSource& params, EvalError& err)
@@ -40,6 +48,13 @@ class Evaluator {
   std::optional<double> fail(std::uint32_t col, core::Code code, std::string message) {
     err_ = {{code, std::move(message)}, col};
     return std::nullopt;
+  }
+
+  // A function's result and a checked bracket's value must be finite
+  // (ExprNode::checked_bracket says which values LinuxCNC checks).
+  std::optional<double> finite(const ExprNode& n, std::optional<double> v) {
+    if (!v || std::isfinite(*v)) return v;
+    return fail(n.col, core::Code::NumberOutOfRange, not_finite(*v));
   }
 
   std::optional<double> binary(const ExprNode& n, double a, double b);
@@ -71,7 +86,7 @@ std::optional<double> Evaluator::eval(ExprRef ref) {
   case ExprKind::Func: {
     auto a = eval(n.a);
     if (!a) return std::nullopt;
-    return function(n, *a);
+    return finite(n, function(n, *a));
   }
   case ExprKind::Atan2:
   case ExprKind::Binary: {
@@ -79,7 +94,8 @@ std::optional<double> Evaluator::eval(ExprRef ref) {
     if (!a) return std::nullopt;
     auto b = eval(n.b);
     if (!b) return std::nullopt;
-    if (n.kind == ExprKind::Atan2) return degrees(std::atan2(*a, *b));
+    if (n.kind == ExprKind::Atan2) return finite(n, degrees(std::atan2(*a, *b)));
+    if (n.checked_bracket) return finite(n, binary(n, *a, *b));
     return binary(n, *a, *b);
   }
   }
@@ -202,11 +218,7 @@ std::optional<double> evaluate(const Block& block, ExprRef ref, const ParameterS
   Evaluator e(block, params, err);
   auto v = e.eval(ref);
   if (v && !std::isfinite(*v)) {
-    err = {{core::Code::NumberOutOfRange,
-            fmt::format("the value is {}: beyond the largest number (about ±1.8e308) or "
-                        "undefined; check the arithmetic",
-                        *v)},
-           block.expr(ref).col};
+    err = {{core::Code::NumberOutOfRange, not_finite(*v)}, block.expr(ref).col};
     return std::nullopt;
   }
   return v;

@@ -284,7 +284,11 @@ ExprRef Parser::real_value(int depth) {
     return kNoExpr;
   }
   const char c = lex_.peek();
-  if (c == '[') return bracketed(depth);
+  if (c == '[') {
+    const ExprRef e = bracketed(depth);
+    if (e != kNoExpr) block_.exprs[e].checked_bracket = true;
+    return e;
+  }
   if (c == '#') return parameter(depth);
   if (c == '-' || c == '+') {
     lex_.advance();

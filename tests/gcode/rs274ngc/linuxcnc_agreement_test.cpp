@@ -329,6 +329,27 @@ TEST(LinuxcncAgreement, AbsOfNegativeZeroIsNegativeZero) {
   EXPECT_EQ(r->ends()[0].y, 2.0);
 }
 
+// interp_read.cc read_real_value refuses a value that is not finite: a
+// number, a parameter, a function's result, a bracket read as a value. What
+// one operation hands the next inside a bracket is not checked, nor is a
+// function's own bracket (differential fuzzer, seed 10427999: EXP[720]
+// inside a comparison). Each case checked against rs274.
+TEST(LinuxcncAgreement, AFunctionOrABracketThatIsNotFiniteIsAnError) {
+  for (const char* value : {"[EXP[720] GT 0]", "[[10 ** 400] GT 0]", "[-[10 ** 400] LT 0]",
+                            "[SQRT[10 ** 400] GT 0]", "[1 + ATAN[0]/[0 * [10 ** 400]]]"}) {
+    auto r = run(std::string("G21\n#1 = ") + value + "\nG0 X#1\nM2\n");
+    EXPECT_FALSE(r->ok) << value;
+    EXPECT_TRUE(r->has(core::Code::NumberOutOfRange)) << value << ": " << r->first_error();
+  }
+  for (const auto& [value, x] : std::vector<std::pair<const char*, double>>{
+           {"[10 ** 400 GT 0]", 1.0}, {"[ATAN[10 ** 400]/[1]]", 90.0}, {"[1 / 10 ** 400]", 0.0}}) {
+    auto r = run(std::string("G21\n#1 = ") + value + "\nG0 X#1\nM2\n");
+    ASSERT_TRUE(r->ok) << value << ": " << r->first_error();
+    ASSERT_EQ(r->ends().size(), 1u);
+    EXPECT_EQ(r->ends()[0].x, x) << value;
+  }
+}
+
 // interp_arc.cc arc_data_ijk: a centre nearer than RADIUS_TOLERANCE
 // (0.00005 in, 0.00127 mm) to the start or the end is "Zero-radius arc",
 // before the radii are compared (found by the differential fuzzer, seed
