@@ -31,6 +31,10 @@
 #    leaves this out;
 # 7. runs the Google Benchmark micro-benchmarks (parser, interpreter alone).
 #
+# Before step 3 it prints the floor: bench/number_floor maps the program and
+# reads its every number with usina's decimal routine, nothing else (the
+# least CPU time of R passes), so figures from two machines compare.
+#
 # --usina PATH times an executable already built (two builds compared under
 # the same load, one after the other) and skips step 1 and the
 # micro-benchmarks, which need the build.
@@ -52,7 +56,7 @@ while [[ $# -gt 0 ]]; do
     --no-draw) draw=0; shift ;;
     --no-dialects) dialects=0; shift ;;
     --usina) given="$2"; micro=0; shift 2 ;;
-    -h | --help) sed -n "2,35p" "$0"; exit 0 ;;
+    -h | --help) sed -n "2,40p" "$0"; exit 0 ;;
     *) echo "run_bench.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -65,9 +69,11 @@ if [[ -n "$given" ]]; then
 else
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS="${BENCH_CXXFLAGS:--Wno-error=restrict}" > /dev/null
-  cmake --build "$build" --target usina usina_bench > /dev/null
+  cmake --build "$build" --target usina usina_bench number_floor > /dev/null
   usina="$build/usina"
 fi
+# bench/number_floor beside the usina timed (its build's bench/ folder).
+floor_exe="$(dirname "$usina")/bench/number_floor"
 
 program="/tmp/usina-bench-surfacing-$blocks.ngc"
 if [[ ! -s "$program" || "$root/bench/gen_surfacing.py" -nt "$program" ]]; then
@@ -143,6 +149,13 @@ PY
 
 echo "load before timing: $(cut -d' ' -f1-3 /proc/loadavg) (wall figures need a quiet machine; cpu figures do not)"
 echo "timing: wall $(command -v hyperfine > /dev/null && echo "= hyperfine mean of $runs runs" || echo "= best of $runs runs"); cpu = least user+sys of $runs runs"
+if [[ -x "$floor_exe" ]]; then
+  # The floor: the file mapped and its numbers read, nothing else.
+  read -r _ _ _ floor_cpu floor_mbs < <("$floor_exe" "$program" "$runs")
+  echo "floor  cpu $floor_cpu s = $floor_mbs MB/s: the file mapped and every number read with usina's decimal routine, nothing else (bench/number_floor)"
+else
+  echo "floor: $floor_exe not built (cmake --build BUILD --target number_floor)"
+fi
 report check "'$usina' check '$program'" 100
 report trace "'$usina' trace --format jsonl '$program' > /dev/null" 30
 
