@@ -81,6 +81,15 @@ std::nullopt_t MacroReader::fail(core::Code code, std::string message) {
   return std::nullopt;
 }
 
+// A Fanuc control checks every operation's result (alarm 111): an infinity
+// a comparison or a division would hide ("[EXP[720] GT 0]", "1/EXP[720]")
+// is an error where it is made, not a silent 1 or 0.
+std::optional<Value> MacroReader::calculated(double v) {
+  if (std::isfinite(v)) return Value{v};
+  return fail(core::Code::NumberOutOfRange,
+              fmt::format("the value is {} (Fanuc alarm 111, calculated data overflow)", v));
+}
+
 // A comment reads as a blank where it stands (fanuc/tape.hpp).
 void MacroReader::blanks() {
   while (i_ < text_.size() && (text_[i_] == ' ' || text_[i_] == '\t' || text_[i_] == '(')) {
@@ -262,11 +271,12 @@ std::optional<Value> MacroReader::sum() {
     literal_ = false;
     const long x = to_integer(a->v), y = to_integer(b->v);
     switch (op) {
-    case '+': a = Value{a->v + b->v}; break;
-    case '-': a = Value{a->v - b->v}; break;
+    case '+': a = calculated(a->v + b->v); break;
+    case '-': a = calculated(a->v - b->v); break;
     case 'o': a = Value{static_cast<double>(x | y)}; break;
     default: a = Value{static_cast<double>(x ^ y)}; break;
     }
+    if (!a) return std::nullopt;
   }
 }
 
@@ -293,11 +303,12 @@ std::optional<Value> MacroReader::product() {
     if ((op == '/' && b->v == 0.0) || (op == 'm' && round_half_away(b->v) == 0.0))
       return fail(core::Code::DivisionByZero, "division by zero (Fanuc alarm 112)");
     switch (op) {
-    case '*': a = Value{a->v * b->v}; break;
-    case '/': a = Value{a->v / b->v}; break;
+    case '*': a = calculated(a->v * b->v); break;
+    case '/': a = calculated(a->v / b->v); break;
     case 'a': a = Value{static_cast<double>(to_integer(a->v) & to_integer(b->v))}; break;
-    default: a = Value{fanuc_mod(a->v, b->v)}; break;
+    default: a = calculated(fanuc_mod(a->v, b->v)); break;
     }
+    if (!a) return std::nullopt;
   }
 }
 
@@ -455,7 +466,7 @@ std::optional<Value> MacroReader::function(std::string_view name) {
   }
   single_var_ = false;
   literal_ = false;
-  return Value{r};
+  return calculated(r);
 }
 
 }  // namespace usina::gcode::fanuc

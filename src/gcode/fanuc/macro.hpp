@@ -83,6 +83,7 @@ class MacroReader {
   std::optional<Value> primary();
   std::optional<Value> bracket();
   std::optional<Value> function(std::string_view name);
+  std::optional<Value> calculated(double v);
   std::optional<double> number();
   std::optional<Value> plain_number();
   std::string_view letters();

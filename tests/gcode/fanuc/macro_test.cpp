@@ -130,6 +130,20 @@ TEST(FanucMacro, ErrorsHaveCodes) {
   EXPECT_EQ(code("5 +"), core::Code::ExpectedExpression);
 }
 
+// Alarm 111 at the operation that overflows, even where what follows would
+// hide it: a comparison, a division, a sum that comes back in range.
+TEST(FanucMacro, EveryOperationThatOverflowsIsAlarm111) {
+  Vars v;
+  v.set[1] = 720.0;
+  for (const char* text : {"[EXP[#1] GT 0]", "1 / EXP[#1]", "[1 / [EXP[#1]]]", "EXP[#1] - EXP[#1]",
+                           "[10 * EXP[709]] / 100", "ATAN[EXP[#1]]"}) {
+    MacroReader r(text, v);
+    EXPECT_FALSE(r.expression().has_value()) << text;
+    EXPECT_EQ(r.error().code, core::Code::NumberOutOfRange) << text << ": " << r.error().message;
+  }
+  EXPECT_DOUBLE_EQ(value("[EXP[700] GT 0]"), 1.0);
+}
+
 TEST(FanucMacro, IndirectVariable) {
   Vars v;
   v.set[1] = 3;
