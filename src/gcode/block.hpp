@@ -73,13 +73,15 @@ struct ExprNode {
   double value = 0.0;
   std::string_view name;  // NamedParam, Exists: as written (normalised on use)
   std::uint32_t col = 0;
-  // A bracket read as a value ("[a + b]" in "X[a + b]" or "2 * [a + b]"):
-  // LinuxCNC (read_real_value) refuses it when it is not finite, as it
-  // refuses every function's result, but not what one operation hands the
-  // next inside a bracket: "[10 ** 400 GT 0]" is 1, "[[10 ** 400] GT 0]"
-  // and "[EXP[720] GT 0]" are errors. A function's own bracket is not
-  // checked ("ATAN[10 ** 400]/[1]" is 90).
-  bool checked_bracket = false;
+  // Whether an operation's value must be finite where it is made (a
+  // function's result always must). rs274ngc sets it on a bracket read as a
+  // value ("[a + b]" in "X[a + b]" or "2 * [a + b]"): LinuxCNC
+  // (read_real_value) refuses such a value, but not what one operation
+  // hands the next inside a bracket: "[10 ** 400 GT 0]" is 1,
+  // "[[10 ** 400] GT 0]" and "[EXP[720] GT 0]" are errors, and a
+  // function's own bracket is not checked ("ATAN[10 ** 400]/[1]" is 90).
+  // romi sets it on every operation, as a control's overflow alarm.
+  bool checked = false;
 };
 
 // A word's value that is a plain number ("X12.5", nearly every word): kept

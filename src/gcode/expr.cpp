@@ -50,8 +50,8 @@ class Evaluator {
     return std::nullopt;
   }
 
-  // A function's result and a checked bracket's value must be finite
-  // (ExprNode::checked_bracket says which values LinuxCNC checks).
+  // A function's result and a checked operation's value must be finite
+  // (ExprNode::checked says which are checked).
   std::optional<double> finite(const ExprNode& n, std::optional<double> v) {
     if (!v || std::isfinite(*v)) return v;
     return fail(n.col, core::Code::NumberOutOfRange, not_finite(*v));
@@ -95,7 +95,7 @@ std::optional<double> Evaluator::eval(ExprRef ref) {
     auto b = eval(n.b);
     if (!b) return std::nullopt;
     if (n.kind == ExprKind::Atan2) return finite(n, degrees(std::atan2(*a, *b)));
-    if (n.checked_bracket) return finite(n, binary(n, *a, *b));
+    if (n.checked) return finite(n, binary(n, *a, *b));
     return binary(n, *a, *b);
   }
   }

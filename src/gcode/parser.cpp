@@ -286,7 +286,7 @@ ExprRef Parser::real_value(int depth) {
   const char c = lex_.peek();
   if (c == '[') {
     const ExprRef e = bracketed(depth);
-    if (e != kNoExpr) block_.exprs[e].checked_bracket = true;
+    if (e != kNoExpr) block_.exprs[e].checked = true;
     return e;
   }
   if (c == '#') return parameter(depth);

@@ -118,7 +118,11 @@ class Parser {
 
   ExprRef binary(BinOp op, ExprRef a, ExprRef b, std::size_t at) {
     if (a == kNoExpr || b == kNoExpr) return kNoExpr;
-    return node({ExprKind::Binary, static_cast<std::uint8_t>(op), a, b, 0.0, {}, col(at)});
+    // Every operation's value finite, as a control's overflow alarm:
+    // "1 / EXP[720]" is an error, not 0.
+    ExprNode n{ExprKind::Binary, static_cast<std::uint8_t>(op), a, b, 0.0, {}, col(at)};
+    n.checked = true;
+    return node(n);
   }
 
   std::string_view s_;

@@ -118,6 +118,17 @@ TEST(RomiParam, DivisionByZeroIsAnError) {
   EXPECT_EQ(run_romi("(P1 = 1 / 0)#M02#")->first_error(), Code::DivisionByZero);
 }
 
+// Every operation's value finite where it is made: a division or a
+// comparison after an overflow does not hide it.
+TEST(RomiParam, AnOverflowIsAnErrorWhereItIsMade) {
+  for (const char* text : {"(P1 = 1 / EXP(720))#M02#", "(P1 = (10 ^ 400) / 10 ^ 400)#M02#",
+                           "(P1 = 1 / (10 ^ 400))#M02#"}) {
+    EXPECT_EQ(run_romi(text)->first_error(), Code::NumberOutOfRange) << text;
+  }
+  auto fine = run_romi("(P1 = 1 / EXP(700))#M02#");
+  EXPECT_TRUE(fine->ok) << fine->first_error_text();
+}
+
 TEST(RomiParam, ACommentIsNotAStatement) {
   auto r = run_romi("(roughing pass)#(P1 is the radius)#M02#");
   ASSERT_TRUE(r->ok) << r->first_error_text();
