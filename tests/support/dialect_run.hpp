@@ -91,7 +91,8 @@ inline std::unique_ptr<Run> run_in(const char* name, const std::string& text,
 // lines, its diagnostics (line:col: message), whether it succeeded, the
 // modes it ended in (what a restart from there starts with). With
 // `whole_road`, every block takes the dialect's whole road, past its
-// plain-move shortcut (a key the command line refuses).
+// plain-move shortcut (a key the command line refuses) and past the
+// interpreter's (InterpOptions::plain_move_shortcut).
 inline std::string run_outcome(const char* name, const std::string& text, bool whole_road) {
   Run r;
   const std::uint32_t id = r.sources.add(core::SourceFile::from_string("p.nc", text));
@@ -99,8 +100,10 @@ inline std::string run_outcome(const char* name, const std::string& text, bool w
   EXPECT_NE(d, nullptr);
   OptionValues values = default_options(*d);
   if (whole_road) values["whole_road"] = "1";
+  InterpOptions opts;
+  opts.plain_move_shortcut = !whole_road;
   auto runner =
-      d->make_runner(RunContext{r.sources, InterpOptions{}, std::move(values), r.path, r.diags});
+      d->make_runner(RunContext{r.sources, std::move(opts), std::move(values), r.path, r.diags});
   r.ok = runner->run(id);
   fmt::memory_buffer out;
   for (const canon::Op& op : r.path.ops()) {

@@ -19,7 +19,19 @@ struct BlockWords {
 
   double get(char letter) const { return value[static_cast<std::size_t>(slot(letter))]; }
 
-  std::uint32_t col_of(char letter) const { return col[static_cast<std::size_t>(slot(letter))]; }
+  // 0 (the block) for a letter the block lacks: its slot may hold the
+  // column of an earlier block's word.
+  std::uint32_t col_of(char letter) const {
+    return has(letter) ? col[static_cast<std::size_t>(slot(letter))] : 0;
+  }
+
+  // The column of the first axis word the block has, 0 when none.
+  std::uint32_t axis_col() const {
+    for (const char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'}) {
+      if (has(c)) return col_of(c);
+    }
+    return 0;
+  }
 
   void set(char letter, double v, std::uint32_t c) {
     const auto i = static_cast<std::size_t>(slot(letter));

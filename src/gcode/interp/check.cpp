@@ -99,7 +99,7 @@ bool Interpreter::check(BlockWords& w) {
     w.motion = state_.motion;
   }
   if (w.motion == 800 && axes && !uses_axes(g0)) {
-    return error(core::Code::AxisWordsConflict, w.has_axis() ? w.col_of('X') : 0,
+    return error(core::Code::AxisWordsConflict, w.axis_col(),
                  "axis words with G80 (motion off): give G0, G1, G2 or G3, or remove them");
   }
   if (g1 != -1 && g1 != 800 && uses_axes(g0) && axes) {

@@ -29,6 +29,7 @@ Interpreter::Interpreter(core::SourceManager& sources, InterpOptions options, ca
   // Programs start in mm whatever the machine's units, as LinuxCNC's
   // stand-alone interpreter does (the conformance traces depend on it).
   check_execution_order(order_);
+  plain_moves_ = plain_moves_allowed(options_, codes_, order_);
   state_.units = core::LengthUnit::Mm;
   state_.motion = rules_.start_motion;
   set_xyz(state_.pos, options_.start);
@@ -121,6 +122,9 @@ bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
   run_.at(block.loc);
   machine_.set_source(run_.loc());
   if (block.empty()) return true;
+  if (plain_moves_) {
+    if (const std::optional<bool> ran = plain_move(block)) return *ran;
+  }
   BlockWords& w = *words_;
   if (!sort_words(block.words, w) || !assign(block.assigns) || !check(w)) return false;
   // The block works on a copy of the modal state: a failed block changes

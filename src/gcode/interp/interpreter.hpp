@@ -48,6 +48,9 @@ struct InterpOptions {
   bool ignore_cutter_comp = false;
   ToolTable tools;
   core::Vec3 start{};  // where the tool is when the program starts (usina draw --start)
+  // A plain move (G0/G1 X Y Z F) by its shortcut (plain_move.cpp); off, by
+  // the whole road, for the tests that compare the two.
+  bool plain_move_shortcut = true;
 };
 
 // Where a control that runs on this interpreter differs from it: set by the
@@ -261,6 +264,12 @@ class Interpreter final : private ParameterSource {
   bool execute(std::span<const CommentText> notes, BlockWords& w);
   // execute(), and the modal state put back to `before` if it fails.
   bool execute_from(const ModalState& before, std::span<const CommentText> notes, BlockWords& w);
+  // The block run by the plain-move shortcut, its result; nullopt when it is
+  // not plain in every respect (plain_move.cpp).
+  std::optional<bool> plain_move(const EvaluatedBlock& block);
+  bool plain_move_run(GCode motion, std::optional<double> feed, const Axes& end);
+  static bool plain_moves_allowed(const InterpOptions& options, const InterpCodes& codes,
+                                  const ExecutionOrder& order);
   bool run_step(ExecStep step, std::span<const CommentText> notes, BlockWords& w);
   bool comments(std::span<const CommentText> notes);
   void feed_mode(const BlockWords& w);
@@ -361,6 +370,7 @@ class Interpreter final : private ParameterSource {
   std::uint32_t pending_elseif_ = kNoEntry;
   bool at_eof_ = false;
   bool tool_changed_ = false;
+  bool plain_moves_ = false;  // plain_moves_allowed(), asked once
   std::unordered_map<std::uint32_t, ProgramIndex> indexes_;
   std::unordered_map<std::string, std::uint32_t> sub_files_;
   bool percent_mode_ = false;
