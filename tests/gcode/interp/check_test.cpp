@@ -55,7 +55,7 @@ constexpr ErrorCase kBlockErrors[] = {
      Code::UnusedWord, 2, 15},
     {"axis words with G80", "G80 X1\nM2\n", Code::AxisWordsConflict, 1, 5},
     // At the block's first axis word, not at an earlier block's X.
-    {"axis words with G80, no X", "G1 X1 F1\nG80\n  Y5 Z1\nM2\n", Code::AxisWordsConflict, 3, 3},
+    {"axis words with G80, no X", "G1 X1 F1\nG80\nS100 Y5 Z1\nM2\n", Code::AxisWordsConflict, 3, 6},
     // LinuxCNC starts in G80: a bare X is an error until G0/G1 is given.
     {"axis words before any motion code", "X1\nM2\n", Code::AxisWordsConflict, 1, 1},
     {"motion and a non-modal code both using axes", "G92 G1 X1 F1\nM2\n", Code::AxisWordsConflict,
