@@ -342,6 +342,7 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   // (fanuc/plain_move.cpp).
   bool plain_move(const Words& w) const;
   bool plain_move_block(const TapeBlock& b, const Words& w);
+  std::optional<bool> straight_past_words(const TapeBlock& b, const Words& w);
   bool plain_move_shortcut_ = true;
   bool hand(const TapeBlock& b, std::span<const EvaluatedWord> words);
   bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);

@@ -7,6 +7,8 @@
 // have recorded (issue 19). A block that is not plain in every respect
 // takes the whole road; a test compares the two
 // (tests/gcode/fanuc/plain_move_test.cpp).
+#include <bit>
+
 #include "gcode/fanuc/engine.hpp"
 
 namespace usina::gcode::fanuc {
@@ -31,6 +33,11 @@ bool Engine::plain_move(const Words& w) const {
 
 bool Engine::plain_move_block(const TapeBlock& b, const Words& w) {
   passed_m_.clear();  // machine_codes: no M word
+  if (const std::optional<bool> ran = straight_past_words(b, w)) {
+    if (!*ran) return false;
+    reset_program_point();
+    return true;
+  }
   handed_.clear();
   const std::uint32_t col0 = loc_of(b, 0).col;
   for (const NcWord& word : w.list) {
@@ -46,6 +53,33 @@ bool Engine::plain_move_block(const TapeBlock& b, const Words& w) {
   if (!hand(b, handed_)) return false;
   reset_program_point();
   return true;
+}
+
+// G00 or G01 and X Y Z F only, each once: handed to the interpreter as a
+// plain move, past the words, when it takes it as one (issue 19).
+std::optional<bool> Engine::straight_past_words(const TapeBlock& b, const Words& w) {
+  constexpr std::uint32_t kStraight = Words::letters_of("GXYZF");
+  if ((w.letters & ~kStraight) != 0 ||
+      w.list.size() != static_cast<std::size_t>(std::popcount(w.letters))) {
+    return std::nullopt;
+  }
+  Interpreter::PlainMove move;
+  for (const NcWord& word : w.list) {
+    if (word.letter == 'G') {
+      if (word.code != 0 && word.code != 10) return std::nullopt;
+      move.motion = word.code;
+    } else if (word.letter == 'F') {
+      move.f = word.value;
+      move.given |= Interpreter::PlainMove::kF;
+    } else {
+      const auto i = static_cast<unsigned>(word.letter - 'X');
+      move.xyz[i] = word.value;
+      move.given |= 1u << i;
+    }
+  }
+  const std::optional<bool> ran = interp_.run_plain_move(b.loc, move);
+  if (ran && move.motion != -1) motion_ = cycle_ = move.motion;  // fanuc_codes
+  return ran;
 }
 
 }  // namespace usina::gcode::fanuc

@@ -128,6 +128,23 @@ class Interpreter final : private ParameterSource {
   // an RS274NGC program through it; a front end with its own reader calls it
   // block by block and ends with finish().
   bool run_evaluated(const EvaluatedBlock& block);
+
+  // A plain move a front end has read already (romi, fanuc): G0 or G1
+  // (motion 0 or 10; -1, none: the motion in force), F and X Y Z as those
+  // words of a block would give them (program units; an axis left out
+  // stays). The block's result as run_evaluated would give it, past the
+  // words; nullopt when the move or the interpreter's state is not plain
+  // (plain_move.cpp), and the front end hands the words instead.
+  struct PlainMove {
+    static constexpr unsigned kF = 8;  // in `given` beside X (1), Y (2), Z (4)
+    GCode motion = -1;
+    unsigned given = 0;
+    double f = 0.0;
+    std::array<double, 3> xyz{};
+  };
+
+  std::optional<bool> run_plain_move(const core::SourceLoc& loc, const PlainMove& move);
+
   bool finish();
   // What run() does before the first block: the work offset and G92 a
   // parameter file holds are put in force. For a run of run_evaluated calls.
@@ -267,6 +284,7 @@ class Interpreter final : private ParameterSource {
   // The block run by the plain-move shortcut, its result; nullopt when it is
   // not plain in every respect (plain_move.cpp).
   std::optional<bool> plain_move(const EvaluatedBlock& block);
+  bool plain_state() const;
   bool plain_move_run(GCode motion, std::optional<double> feed, const Axes& end);
   static bool plain_moves_allowed(const InterpOptions& options, const InterpCodes& codes,
                                   const ExecutionOrder& order);

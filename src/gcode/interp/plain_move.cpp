@@ -34,17 +34,19 @@ bool Interpreter::plain_moves_allowed(const InterpOptions& options, const Interp
   return feed < motion && motion != order.steps.end();
 }
 
+// What the whole road would do more for: a tool change to resync after,
+// G7 diameters, G93's F on every move, and cutter compensation in any of
+// its states (on, holding a move, or refusing an arc until a straight move).
+bool Interpreter::plain_state() const {
+  const ModalState& s = state_;
+  return !tool_changed_ && !s.lathe_diameter && s.feed_mode != FeedMode::InverseTime &&
+         !comp_.active() && !comp_.holding() && comp_.arc_allowed();
+}
+
 std::optional<bool> Interpreter::plain_move(const EvaluatedBlock& block) {
   ModalState& s = state_;
-  // What the whole road would do more for: comments, assignments, a tool
-  // change to resync after, G7 diameters, G93's F on every move, and cutter
-  // compensation in any of its states (on, holding a move, or refusing an
-  // arc until a straight move).
-  if (!block.comments.empty() || !block.assigns.empty() || tool_changed_ || s.lathe_diameter ||
-      s.feed_mode == FeedMode::InverseTime || comp_.active() || comp_.holding() ||
-      !comp_.arc_allowed()) {
-    return std::nullopt;
-  }
+  // Comments and assignments run on the whole road.
+  if (!block.comments.empty() || !block.assigns.empty() || !plain_state()) return std::nullopt;
   GCode motion = s.motion;
   std::optional<double> f;
   Axes end = s.pos;
@@ -79,6 +81,33 @@ std::optional<bool> Interpreter::plain_move(const EvaluatedBlock& block) {
     return std::nullopt;
   }
   return plain_move_run(motion, f ? std::optional<double>(feed) : std::nullopt, end);
+}
+
+std::optional<bool> Interpreter::run_plain_move(const core::SourceLoc& loc, const PlainMove& move) {
+  if (!plain_moves_ || !plain_state()) return std::nullopt;
+  const ModalState& s = state_;
+  // The tests of plain_move() on the words.
+  const GCode motion = move.motion != -1 ? move.motion : s.motion;
+  const bool has_f = (move.given & PlainMove::kF) != 0;
+  if ((has_f && (!(move.f >= 0.0) || !word_value_in_range('F', move.f))) ||
+      (motion != 0 && motion != 10) || (move.given & 7u) == 0) {
+    return std::nullopt;
+  }
+  const double feed = has_f ? mm(move.f) : s.feed;
+  if (motion == 10 && feed <= 0.0) return std::nullopt;
+  Axes end = s.pos;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if ((move.given & (1u << i)) == 0) continue;
+    if (!word_value_in_range('X', move.xyz[i])) return std::nullopt;
+    const double v = mm(move.xyz[i]);
+    end[i] = s.incremental ? s.pos[i] + v : v;
+  }
+  // run_evaluated's start.
+  checkpoint_fresh_ = false;
+  if (run_.failed() || ended_) return !run_.failed();
+  run_.at(loc);
+  machine_.set_source(run_.loc());
+  return plain_move_run(motion, has_f ? std::optional<double>(feed) : std::nullopt, end);
 }
 
 // The plain move's steps in the whole road's order: F, the motion, the
