@@ -72,8 +72,12 @@ else
   cmake --build "$build" --target usina usina_bench number_floor > /dev/null
   usina="$build/usina"
 fi
-# bench/number_floor beside the usina timed (its build's bench/ folder).
-floor_exe="$(dirname "$usina")/bench/number_floor"
+# bench/number_floor of the usina timed (its build's bench/ folder), else
+# of the Release build or the README's build/.
+floor_exe=""
+for f in "$(dirname "$usina")/bench/number_floor" "$build/bench/number_floor" "$root/build/bench/number_floor"; do
+  if [[ -x "$f" ]]; then floor_exe="$f"; break; fi
+done
 
 program="/tmp/usina-bench-surfacing-$blocks.ngc"
 if [[ ! -s "$program" || "$root/bench/gen_surfacing.py" -nt "$program" ]]; then
@@ -154,7 +158,7 @@ if [[ -x "$floor_exe" ]]; then
   read -r _ _ _ floor_cpu floor_mbs < <("$floor_exe" "$program" "$runs")
   echo "floor  cpu $floor_cpu s = $floor_mbs MB/s: the file mapped and every number read with usina's decimal routine, nothing else (bench/number_floor)"
 else
-  echo "floor: $floor_exe not built (cmake --build BUILD --target number_floor)"
+  echo "floor: bench/number_floor not built (cmake --build BUILD --target number_floor)"
 fi
 report check "'$usina' check '$program'" 100
 report trace "'$usina' trace --format jsonl '$program' > /dev/null" 30
