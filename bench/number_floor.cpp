@@ -74,8 +74,14 @@ int main(int argc, char** argv) {
   for (int r = 0; r < runs; ++r) {
     const double start = cpu_seconds();
     const int fd = open(argv[1], O_RDONLY | O_CLOEXEC);
-    if (fd < 0 || fstat(fd, &st) != 0 || st.st_size == 0) {
+    if (fd < 0 || fstat(fd, &st) != 0) {
       std::perror(argv[1]);
+      if (fd >= 0) close(fd);
+      return 1;
+    }
+    if (st.st_size == 0) {  // mmap refuses a length of 0; errno would say nothing
+      std::fprintf(stderr, "%s: empty file\n", argv[1]);
+      close(fd);
       return 1;
     }
     const auto size = static_cast<std::size_t>(st.st_size);

@@ -3,11 +3,11 @@
 // dialect's order of steps, motion, target, straight) would do nothing but
 // set the feed rate and the motion and move. Most blocks of a long program
 // are such, in every dialect (each hands its blocks to run_evaluated); the
-// whole road costs each some 600 instructions more. A block or a state that
-// is not plain in every respect takes the whole road, and so does a plain
-// block the whole road would refuse, so the error is always the whole
-// road's. A test runs random programs both ways in every dialect
-// (tests/gcode/interp/plain_move_test.cpp).
+// whole road costs each some 480 instructions more (callgrind,
+// docs/performance.md). A block or a state that is not plain in every
+// respect takes the whole road, and so does a plain block the whole road
+// would refuse, so the error is always the whole road's. A test runs random
+// programs both ways in every dialect (tests/gcode/interp/plain_move_test.cpp).
 #include <algorithm>
 #include <cstdint>
 
