@@ -63,14 +63,14 @@ std::optional<bool> Engine::straight_past_words(const TapeBlock& b, const Words&
       w.list.size() != static_cast<std::size_t>(std::popcount(w.letters))) {
     return std::nullopt;
   }
-  Interpreter::PlainMove move;
+  PlainMove move;
   for (const NcWord& word : w.list) {
     if (word.letter == 'G') {
       if (word.code != 0 && word.code != 10) return std::nullopt;
       move.motion = word.code;
     } else if (word.letter == 'F') {
       move.f = word.value;
-      move.given |= Interpreter::PlainMove::kF;
+      move.given |= PlainMove::kF;
     } else {
       const auto i = static_cast<unsigned>(word.letter - 'X');
       move.xyz[i] = word.value;

@@ -330,22 +330,24 @@ Checked step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
   return {};
 }
 
+}  // namespace
+
 // The shortcut of a plain move: a block of X Y Z F words and at most one
 // G0 or G1, each letter once, F not negative, in G94, whose motion is G0
 // or G1 after it and, for a feed, has a feed rate. Such a block is most
 // lines of a long program, and every rule of the whole check lets it by
 // with only its motion and feed rate kept: they are kept here, and the
 // whole check is not run (a third of grbl's own work a line, issue 19).
-// False, and nothing changed, for any other block; a block the whole check
-// would refuse is one (the error is the whole check's to say). A test
-// compares the two roads (tests/gcode/grbl/plain_block_test.cpp).
-bool plain_block(const std::vector<Word>& words, Modal& state, Accepted& out) {
+// Nullopt, and nothing changed, for any other block; a block the whole
+// check would refuse is one (the error is the whole check's to say). A
+// test compares the two roads (tests/gcode/grbl/plain_block_test.cpp).
+bool check_plain_block(const std::vector<Word>& words, Modal& state, Accepted& out,
+                       PlainMove& move) {
   constexpr std::uint32_t kAxes = letters_of("XYZ");
   constexpr std::uint32_t kPlain = kAxes | letters_of("GF");
   if (state.inverse_time) return false;
   std::uint32_t letters = 0;
-  int motion = -1;
-  double feed = -1.0;
+  move = {};
   for (const Word& w : words) {
     if (w.letter < 'A' || w.letter > 'Z') return false;
     const std::uint32_t bit = letter_bit(w.letter);
@@ -353,31 +355,36 @@ bool plain_block(const std::vector<Word>& words, Modal& state, Accepted& out) {
     letters |= bit;
     if (w.letter == 'G') {
       if (w.value != 0.0 && w.value != 1.0) return false;
-      motion = w.value == 0.0 ? 0 : 10;
+      move.motion = w.value == 0.0 ? 0 : 10;
     } else if (w.letter == 'F') {
       if (!(w.value >= 0.0)) return false;
-      feed = w.value;
+      move.f = w.value;
+      move.given |= PlainMove::kF;
+    } else {
+      const auto axis = static_cast<std::size_t>(w.letter - 'X');
+      move.xyz[axis] = w.value;
+      move.given |= 1u << axis;
     }
   }
-  const int m = motion >= 0 ? motion : state.motion;
+  const int m = move.motion >= 0 ? move.motion : state.motion;
   if (m != 0 && m != 10) return false;
-  const bool moves = motion >= 0 || (letters & kAxes) != 0;
-  const double feed_mm = feed >= 0.0 ? feed * (state.inch ? 25.4 : 1.0) : state.feed_mm;
+  const bool sets_feed = (move.given & PlainMove::kF) != 0;
+  const bool moves = move.motion >= 0 || (letters & kAxes) != 0;
+  const double feed_mm = sets_feed ? move.f * (state.inch ? 25.4 : 1.0) : state.feed_mm;
   if (moves && m == 10 && feed_mm == 0.0) return false;
   state.feed_mm = feed_mm;
   state.motion = m;
   out = {};
-  out.sets_motion = motion >= 0;
-  out.uses_motion = moves && motion < 0;
-  out.sets_feed = feed >= 0.0;
+  out.sets_motion = move.motion >= 0;
+  out.uses_motion = moves && move.motion < 0;
+  out.sets_feed = sets_feed;
   return true;
 }
 
-}  // namespace
-
 Checked check_block(const CodeIndex& codes, const OptionValues& options,
                     const std::vector<Word>& words, Modal& state, Accepted& out) {
-  if (plain_block(words, state, out)) return {};
+  PlainMove move;
+  if (check_plain_block(words, state, out, move)) return {};
   return check_block_whole(codes, options, words, state, out);
 }
 

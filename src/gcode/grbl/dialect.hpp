@@ -131,6 +131,13 @@ inline CodeIndex code_index(const Dialect& d) {
 Checked check_block(const CodeIndex& codes, const OptionValues& options,
                     const std::vector<Word>& words, Modal& state, Accepted& out);
 
+// check_block's shortcut alone: a block of one plain move (X Y Z F and at
+// most a G0 or G1, grbl/check.cpp) checked, with `state` and `out` as
+// check_block leaves them, and the move for Interpreter::run_plain_move;
+// nullopt, and nothing changed, for any other block.
+bool check_plain_block(const std::vector<Word>& words, Modal& state, Accepted& out,
+                       PlainMove& move);
+
 // The same, every block the whole way: without the shortcut check_block
 // takes for a plain move (for the test that compares the two).
 Checked check_block_whole(const CodeIndex& codes, const OptionValues& options,

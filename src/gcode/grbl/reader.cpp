@@ -100,26 +100,46 @@ void LineReader::warnings_of_the_line() {
 
 // A G-code line, its words read: Grbl's checks on a copy of its modal
 // state, then Grbl's words for the interpreter, as Grbl read them (N is
-// Grbl's line number, no word of the block).
+// Grbl's line number, no word of the block). A plain move goes as the move,
+// unless the modes a jog kept go with it; its words are made if asked.
 LineKind LineReader::block() {
   Accepted acc;
-  if (auto f = check_block(codes_, options_, words_, next_.modal, acc); !f) return fail(f.error());
-  handed_.clear();
-  for (const Word& w : words_) {
-    if (w.letter != 'N') handed_.words.push_back({w.letter, w.value, w.col});
+  plain_ = check_plain_block(words_, next_.modal, acc, move_);
+  if (!plain_) {
+    if (auto f = check_block_whole(codes_, options_, words_, next_.modal, acc); !f)
+      return fail(f.error());
   }
   block_col_ = words_.front().col;
+  if (keeps_modes(acc)) plain_ = false;
+  handed_made_ = false;
+  if (!plain_) handed();
   append_kept_modes(acc);
   if (acc.program_end) next_.ended = true;
   facts_.tool_length_mm = next_.modal.tool_length_mm;
   return LineKind::Run;
 }
 
+const HandedBlock& LineReader::handed() {
+  if (handed_made_) return handed_;
+  handed_.clear();
+  for (const Word& w : words_) {
+    if (w.letter != 'N') handed_.words.push_back({w.letter, w.value, w.col});
+  }
+  handed_made_ = true;
+  return handed_;
+}
+
+// Whether the line takes modes a jog or `$H` changed along.
+bool LineReader::keeps_modes(const Accepted& acc) const {
+  const Restore& r = next_.restore;
+  return r.modes || (acc.uses_motion && r.motion);
+}
+
 // The words the interpreter's line needs besides Grbl's: the modes a jog or
 // `$H` changed.
 void LineReader::append_kept_modes(const Accepted& acc) {
   Restore& r = next_.restore;
-  if (!r.modes && !(acc.uses_motion && r.motion)) {
+  if (!keeps_modes(acc)) {
     if (acc.uses_motion || acc.sets_motion) r.motion = false;
     return;
   }
@@ -159,6 +179,8 @@ LineKind LineReader::system() {
     return LineKind::Nothing;
   }
   handed_ = std::move(r.handed);
+  handed_made_ = true;
+  plain_ = false;
   block_col_ = 1;
   return LineKind::Run;
 }

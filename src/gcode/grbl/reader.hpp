@@ -38,7 +38,11 @@ class LineReader {
   // read them, at the user's columns, and the modes a jog kept; a `$`
   // command's move), the column its block starts at, and what the checks
   // of its moves need.
-  const HandedBlock& handed() const { return handed_; }
+  // A line of one plain move (check_plain_block) is handed as the move
+  // (plain_move(), else null), and its words are made only when asked.
+  const PlainMove* plain_move() const { return plain_ ? &move_ : nullptr; }
+
+  const HandedBlock& handed();
 
   std::uint32_t block_col() const { return block_col_; }
 
@@ -70,6 +74,7 @@ class LineReader {
   LineKind fail(const Failure& f);
   void warn(core::Code code, std::uint32_t col, std::string message);
   void warnings_of_the_line();
+  bool keeps_modes(const Accepted& acc) const;
   void append_kept_modes(const Accepted& acc);
 
   CodeIndex codes_;
@@ -88,6 +93,9 @@ class LineReader {
   StrippedLine stripped_;
   std::vector<Word> words_;
   HandedBlock handed_;
+  bool plain_ = false;  // the line is one plain move, move_
+  PlainMove move_;
+  bool handed_made_ = false;  // handed_ holds the line's words
   std::uint32_t block_col_ = 1;
   MachineFacts facts_;
 };

@@ -84,6 +84,7 @@ class Pass {
  private:
   void line(std::uint32_t n, std::uint64_t offset, std::string_view text);
   bool hand_over(std::uint32_t n, std::uint64_t offset);
+  bool run_line(const core::SourceLoc& loc);
   void refuse(core::Diagnostic failure);
   void report_line();
 
@@ -138,9 +139,8 @@ bool Pass::hand_over(std::uint32_t n, std::uint64_t offset) {
   ops_.moves.clear();
   interp_diags_.clear();
   interp_.checkpoint();
-  const HandedBlock& block = reader_.handed();
   const core::SourceLoc loc{file_, n, reader_.block_col(), 0, offset};
-  const bool ran = interp_.run_evaluated({loc, block.words, block.assigns, {}});
+  const bool ran = run_line(loc);
   std::optional<core::Diagnostic> failure = check_.block(ops_.moves, reader_.facts());
   if (!failure && !ran) failure = first_error(interp_diags_);
   if (!ran || failure) {
@@ -160,6 +160,16 @@ bool Pass::hand_over(std::uint32_t n, std::uint64_t offset) {
         return true;
       });
   return true;
+}
+
+// The line in the interpreter: a plain move as one, when the interpreter's
+// state lets it by, else its words.
+bool Pass::run_line(const core::SourceLoc& loc) {
+  if (const PlainMove* move = reader_.plain_move()) {
+    if (const std::optional<bool> ran = interp_.run_plain_move(loc, *move)) return *ran;
+  }
+  const HandedBlock& block = reader_.handed();
+  return interp_.run_evaluated({loc, block.words, block.assigns, {}});
 }
 
 // An error of the interpreter or of the checks from the position: Grbl

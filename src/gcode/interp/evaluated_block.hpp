@@ -11,6 +11,7 @@
 // it over too.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -67,6 +68,18 @@ struct EvaluatedBlock {
   std::span<const CommentText> comments;
 
   bool empty() const { return words.empty() && assigns.empty() && comments.empty(); }
+};
+
+// A block that is one plain move, read by a front end (romi, fanuc, grbl)
+// for Interpreter::run_plain_move: G0 or G1 (motion 0 or 10; -1, none: the
+// motion in force), F and X Y Z as those words of a block would give them
+// (program units; an axis left out stays).
+struct PlainMove {
+  static constexpr unsigned kF = 8;  // in `given` beside X (1), Y (2), Z (4)
+  int motion = -1;
+  unsigned given = 0;
+  double f = 0.0;
+  std::array<double, 3> xyz{};
 };
 
 }  // namespace usina::gcode

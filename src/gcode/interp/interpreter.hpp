@@ -129,20 +129,10 @@ class Interpreter final : private ParameterSource {
   // block by block and ends with finish().
   bool run_evaluated(const EvaluatedBlock& block);
 
-  // A plain move a front end has read already (romi, fanuc): G0 or G1
-  // (motion 0 or 10; -1, none: the motion in force), F and X Y Z as those
-  // words of a block would give them (program units; an axis left out
-  // stays). The block's result as run_evaluated would give it, past the
-  // words; nullopt when the move or the interpreter's state is not plain
-  // (plain_move.cpp), and the front end hands the words instead.
-  struct PlainMove {
-    static constexpr unsigned kF = 8;  // in `given` beside X (1), Y (2), Z (4)
-    GCode motion = -1;
-    unsigned given = 0;
-    double f = 0.0;
-    std::array<double, 3> xyz{};
-  };
-
+  // A plain move a front end has read already (PlainMove): the block's
+  // result as run_evaluated would give it, past the words; nullopt when the
+  // move or the interpreter's state is not plain (plain_move.cpp), and the
+  // front end hands the words instead.
   std::optional<bool> run_plain_move(const core::SourceLoc& loc, const PlainMove& move);
 
   bool finish();

@@ -46,10 +46,10 @@ bool Translator::hand_move(int g, const Vec3& to) {
   // With nothing else waiting but F, past the words when the interpreter
   // takes it as a plain move (issue 19).
   if (pending_.empty() || (pending_.size() == 1 && pending_[0].letter == 'F')) {
-    Interpreter::PlainMove move{g * 10, 7u, 0.0, {to.x, to.y, to.z}};
+    PlainMove move{g * 10, 7u, 0.0, {to.x, to.y, to.z}};
     if (!pending_.empty()) {
       move.f = pending_[0].value;
-      move.given |= Interpreter::PlainMove::kF;
+      move.given |= PlainMove::kF;
     }
     if (const std::optional<bool> ran = interp_.run_plain_move(run_.loc(), move)) {
       work_.machine_at = to;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gcode/grbl/machine_check.hpp"
 #include "gcode/interp/interpreter.hpp"
 #include "grbl_test_support.hpp"
 
@@ -101,6 +102,40 @@ TEST(GrblMachine, ArcsAreCheckedAlongTheirSegments) {
   // A probe's target too.
   auto probe = run_grbl(kSoftLimits + "G38.3 Z1 F100\n");
   EXPECT_EQ(probe->with(core::Code::GrblAlarm).size(), 1u);
+}
+
+// A straight move that went by unbuilt (usina check's sink reads no op)
+// is where the next arc starts, whether soft limits are checked (the whole
+// visit of the line's moves) or not (MachineCheck's shortcut for a plain
+// line); after a probe too, whose end alone is unknown.
+TEST(GrblMachine, AMoveThatWentByUnbuiltIsWhereTheNextArcStarts) {
+  const core::SourceLoc src{0, 1, 1, 0, 0};
+  for (const bool soft_limits : {false, true}) {
+    // Inside the travel (machine space is negative) when it is checked.
+    const core::Vec3 o = soft_limits ? core::Vec3{-100, -100, 0} : core::Vec3{0, 0, 0};
+    grbl::MachineFacts facts;
+    facts.travel.soft_limits = soft_limits;
+    facts.travel.max = {1000, 1000, 1000};
+    grbl::LineMoves probe;
+    probe.built.push_back({canon::Probe{o + core::Vec3{0, 0, -5}, {}}, src});
+    auto unbuilt = [&](double x) {
+      grbl::LineMoves m;
+      m.passed.push_back({0, src, o + core::Vec3{x, 0, 0}});
+      return m;
+    };
+    // An arc about o to o + (0, 10): on its circle from o + (10, 0) only.
+    grbl::LineMoves arc;
+    arc.built.push_back(
+        {canon::Arc{o + core::Vec3{0, 10, 0}, o, {0, 0, 1}, 1, 100.0, {}, {}}, src});
+    grbl::MachineCheck check({0, 0, 0});
+    EXPECT_FALSE(check.block(probe, facts)) << soft_limits;
+    EXPECT_FALSE(check.block(unbuilt(5), facts)) << soft_limits;
+    const std::optional<core::Diagnostic> off = check.block(arc, facts);  // 5 mm off its circle
+    ASSERT_TRUE(off) << soft_limits;
+    EXPECT_NE(off->message.find("error:33"), std::string::npos) << off->message;
+    EXPECT_FALSE(check.block(unbuilt(10), facts)) << soft_limits;
+    EXPECT_FALSE(check.block(arc, facts)) << soft_limits;
+  }
 }
 
 TEST(GrblMachine, HomingIsNotCheckedAndFollows23) {
