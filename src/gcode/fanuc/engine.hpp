@@ -340,9 +340,10 @@ class Engine final : public ProgramRunner, private VariableSource, private Cycle
   bool hand_over(const TapeBlock& b, Words& w);
   // A plain move (most blocks of a long program) straight to the hand-over
   // (fanuc/plain_move.cpp).
+  bool plain_modes() const;
   bool plain_move(const Words& w) const;
   bool plain_move_block(const TapeBlock& b, const Words& w);
-  std::optional<bool> straight_past_words(const TapeBlock& b, const Words& w);
+  std::optional<bool> straight_block(const TapeBlock& b);
   bool plain_move_shortcut_ = true;
   bool hand(const TapeBlock& b, std::span<const EvaluatedWord> words);
   bool hand(const TapeBlock& b, std::initializer_list<EvaluatedWord> words);

@@ -298,6 +298,7 @@ bool Engine::macro_call(const TapeBlock& b, Words& w) {
 }
 
 bool Engine::nc_block(const TapeBlock& b) {
+  if (const std::optional<bool> ran = straight_block(b)) return *ran;
   Words& w = words_;  // its list's storage serves every block
   w.clear();
   if (!read_words(b, w)) return false;

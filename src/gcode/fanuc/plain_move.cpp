@@ -4,22 +4,82 @@
 // cycles, a modal macro call, the move after G69). Such a block is most
 // blocks of a long program, and each pass of nc_block would let it by
 // unchanged: it goes straight to the hand-over with what those passes would
-// have recorded (issue 19). A block that is not plain in every respect
-// takes the whole road; a test compares the two
+// have recorded (issue 19). A block of G00 or G01 and X Y Z F only goes
+// further: read from the tape into the interpreter's plain move, with no
+// list of words (straight_block). A block that is not plain in every
+// respect takes the whole road; a test compares the two
 // (tests/gcode/fanuc/plain_move_test.cpp).
-#include <bit>
-
 #include "gcode/fanuc/engine.hpp"
+#include "gcode/fanuc/macro.hpp"
 
 namespace usina::gcode::fanuc {
+
+namespace {
+
+// Whether a plain word may end at text[i]: at the end, a blank, or the
+// next word's letter (not an exponent of the number); nc.cpp's rule.
+bool straight_word_ends(std::string_view text, std::size_t i) {
+  if (i >= text.size()) return true;
+  const char c = text[i];
+  return c == ' ' || c == '\t' || (c >= 'A' && c <= 'Z' && c != 'E');
+}
+
+// A block of G00 or G01 and X Y Z F, each once, the distances written with
+// a point: the move it is, read from the tape in one pass. False for any
+// other block, which is read word by word. A value out of range is
+// Interpreter::run_plain_move's to find (it answers nullopt, and the words
+// give the error).
+bool read_straight(std::string_view text, PlainMove& move) {
+  constexpr std::uint32_t kStraight = Words::letters_of("GXYZF");
+  std::uint32_t seen = 0;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char l = text[i];
+    if (l == ' ' || l == '\t') {
+      ++i;
+      continue;
+    }
+    if (l < 'A' || l > 'Z') return false;
+    const std::uint32_t bit = Words::letter_bit(l);
+    if ((kStraight & bit) == 0 || (seen & bit) != 0) return false;
+    seen |= bit;
+    std::size_t j = i + 1;
+    const bool negative = j < text.size() && text[j] == '-';
+    if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
+    double value = 0;
+    bool point = false;
+    if (!plain_digits(text, j, value, point) || !straight_word_ends(text, j)) return false;
+    if (negative) value = -value;
+    if (l == 'G') {
+      if (value != 0.0 && value != 1.0) return false;
+      move.motion = value == 0.0 ? 0 : 10;
+    } else if (l == 'F') {
+      move.f = value;
+      move.given |= PlainMove::kF;
+    } else {
+      if (!point) return false;  // the decimal-point rule's (it may warn)
+      const auto axis = static_cast<unsigned>(l - 'X');
+      move.xyz[axis] = value;
+      move.given |= 1u << axis;
+    }
+    i = j;
+  }
+  return true;
+}
+
+}  // namespace
+
+// The modes that change moves or add words (nc_block's passes).
+bool Engine::plain_modes() const {
+  return plain_move_shortcut_ && !xf_.active() && !polar_ && !polar_interp_.active() &&
+         !after_g69_ && !modal_call_ && interp_.state().motion <= 30 && cycle_ != 760 &&
+         cycle_ != 870;
+}
 
 bool Engine::plain_move(const Words& w) const {
   constexpr std::uint32_t kPlain = Words::letters_of("GXYZIJKRFS");
   constexpr std::uint32_t kDistances = Words::letters_of("XYZIJKR");
-  if (!plain_move_shortcut_ || (w.letters & ~kPlain) != 0) return false;
-  // The modes that change moves or add words (nc_block's passes).
-  if (xf_.active() || polar_ || polar_interp_.active() || after_g69_ || modal_call_) return false;
-  if (interp_.state().motion > 30 || cycle_ == 760 || cycle_ == 870) return false;
+  if ((w.letters & ~kPlain) != 0 || !plain_modes()) return false;
   for (const NcWord& word : w.list) {
     // A vacant word, a value to check after its rule, or a distance the
     // decimal-point rule reads (it may also warn).
@@ -33,11 +93,6 @@ bool Engine::plain_move(const Words& w) const {
 
 bool Engine::plain_move_block(const TapeBlock& b, const Words& w) {
   passed_m_.clear();  // machine_codes: no M word
-  if (const std::optional<bool> ran = straight_past_words(b, w)) {
-    if (!*ran) return false;
-    reset_program_point();
-    return true;
-  }
   handed_.clear();
   const std::uint32_t col0 = loc_of(b, 0).col;
   for (const NcWord& word : w.list) {
@@ -55,31 +110,19 @@ bool Engine::plain_move_block(const TapeBlock& b, const Words& w) {
   return true;
 }
 
-// G00 or G01 and X Y Z F only, each once: handed to the interpreter as a
-// plain move, past the words, when it takes it as one (issue 19).
-std::optional<bool> Engine::straight_past_words(const TapeBlock& b, const Words& w) {
-  constexpr std::uint32_t kStraight = Words::letters_of("GXYZF");
-  if ((w.letters & ~kStraight) != 0 ||
-      w.list.size() != static_cast<std::size_t>(std::popcount(w.letters))) {
-    return std::nullopt;
-  }
+// G00 or G01 and X Y Z F only (read_straight): handed to the interpreter as
+// a plain move, past the words, when the modes and the interpreter take it
+// as one (issue 19); what plain_move_block would do for it.
+std::optional<bool> Engine::straight_block(const TapeBlock& b) {
+  if (!plain_modes()) return std::nullopt;
   PlainMove move;
-  for (const NcWord& word : w.list) {
-    if (word.letter == 'G') {
-      if (word.code != 0 && word.code != 10) return std::nullopt;
-      move.motion = word.code;
-    } else if (word.letter == 'F') {
-      move.f = word.value;
-      move.given |= PlainMove::kF;
-    } else {
-      const auto i = static_cast<unsigned>(word.letter - 'X');
-      move.xyz[i] = word.value;
-      move.given |= 1u << i;
-    }
-  }
+  if (!read_straight(b.text, move)) return std::nullopt;
   const std::optional<bool> ran = interp_.run_plain_move(b.loc, move);
-  if (ran && move.motion != -1) motion_ = cycle_ = move.motion;  // fanuc_codes
-  return ran;
+  if (!ran) return std::nullopt;
+  if (move.motion != -1) motion_ = cycle_ = move.motion;  // fanuc_codes
+  if (!*ran) return false;
+  reset_program_point();
+  return true;
 }
 
 }  // namespace usina::gcode::fanuc

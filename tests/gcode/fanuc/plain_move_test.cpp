@@ -2,8 +2,10 @@
 // random programs that put plain moves under every mode the front end
 // changes moves in (scaling, rotation, mirror, polar coordinates and
 // interpolation, canned cycles, modal macro calls, G69, incremental, inch,
-// integer words, vacant variables) give the same operations and the same
+// integer words, vacant variables, letters twice, values out of range)
+// give the same operations and the same
 // diagnostics both ways.
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -20,6 +22,7 @@ std::string coordinate(std::mt19937& rng) {
   std::uniform_real_distribution<double> v(-50.0, 50.0);
   const double x = v(rng);
   if (rng() % 10 == 0) return std::to_string(static_cast<int>(x));  // no point
+  if (rng() % 30 == 0) return fmt::format("+{:.3f}", std::fabs(x));
   return fmt::format("{:.3f}", x);
 }
 
@@ -31,6 +34,11 @@ std::string plain_move(std::mt19937& rng) {
     if (rng() % 10 < 6) words.push_back(axis + coordinate(rng));
   if (rng() % 5 == 0) words.push_back(fmt::format("F{}.", 1 + rng() % 3000));
   if (rng() % 20 == 0) words.push_back(fmt::format("S{}", 100 + rng() % 9000));
+  // Rare, as each ends the run: a letter twice, a negative feed rate, a
+  // value beyond usina's range (each an error of the whole road's).
+  if (rng() % 400 == 0) words.push_back(words.empty() ? "Z1." : words.front());
+  if (rng() % 400 == 0) words.push_back("F-100.");
+  if (rng() % 400 == 0) words.push_back("Y2000000000.");
   std::shuffle(words.begin(), words.end(), rng);
   std::string block;
   for (const std::string& w : words)
