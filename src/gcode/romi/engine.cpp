@@ -125,6 +125,10 @@ bool Engine::block() {
     run_.note(core::Code::TypographicDash, core::Severity::Warning, dash,
               "a typographic dash read as a minus sign");
   }
+  if (PlainMove move; plain_words(move)) {
+    if (const std::optional<bool> ran = translator_.run_plain_move(block_.base.loc, move))
+      return *ran;
+  }
   if (!statements(false) || !evaluate_words()) return false;
   const EvaluatedBlock evaluated{block_.base.loc, words_, {}, block_.base.comments};
   // No jump to run after most blocks: no call through a std::function.

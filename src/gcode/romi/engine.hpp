@@ -74,6 +74,7 @@ class Engine final : public ProgramRunner, private ParameterSource {
   void step();
   bool block();
   bool evaluate_words();
+  bool plain_words(PlainMove& move) const;
   bool statements(bool flow);
   void end_of_program();
 

@@ -1,71 +1,84 @@
 // The shortcut of a plain move: a block of G00 or G01 and absolute X Y Z
 // (F besides), with no blend arc waiting, no drilling cycle in force and
-// G90. Such a block is most blocks of a long program; importing its words
-// into the groups, running the motion handler and working out its end by
-// the general road would let it by unchanged: it is handed over with what
-// those steps would have recorded (issue 19). A block that is not plain in
-// every respect takes the whole road; a test compares the two
-// (tests/gcode/romi/plain_move_test.cpp).
+// G90. Such a block is most blocks of a long program; evaluating its words,
+// importing them into the groups, running the motion handler and working
+// out its end by the general road would let it by unchanged: the engine
+// reads the move from the parsed words (Engine::plain_words) and the
+// translator hands it over with what those steps would have recorded
+// (issue 19). A block that is not plain in every respect takes the whole
+// road; a test compares the two (tests/gcode/romi/plain_move_test.cpp).
+#include "gcode/romi/engine.hpp"
 #include "gcode/romi/translate.hpp"
+#include "gcode/word_range.hpp"
 
 namespace usina::gcode::romi {
 
-bool Translator::plain_move(const EvaluatedBlock& block) const {
-  if (!dialect_options_.plain_move_shortcut || !block.comments.empty() || !block.assigns.empty())
-    return false;
-  if (work_.blend || work_.drill.active || work_.machine.incremental) return false;
-  GCode motion = work_.machine.motion;
-  double feed = work_.machine.feed;
+// The block's words as a plain move, read where the parser left them (no
+// evaluated words): G00 or G01, F, X Y Z, each once, plain numbers in
+// range. False for any other block: the whole road reads it (and says what
+// is wrong with it). Plain numbers (kPlainNumber) come from
+// parse_plain_romi_block alone, which reads a block of upper-case words and
+// nothing else: no comment, statement, typographic dash or lower case.
+bool Engine::plain_words(PlainMove& move) const {
+  if (!dialect_options_.plain_move_shortcut) return false;
   std::uint32_t seen = 0;
-  bool position = false;
-  for (const EvaluatedWord& w : block.words) {
-    // Lower case under lowercase_incremental; a letter twice: an error the
-    // whole road reports.
-    if (w.incremental || w.letter < 'A' || w.letter > 'Z') return false;
+  for (const RomiWord& w : block_.words) {
+    // A letter twice: an error the whole road reports, as a value out of
+    // range. (A plain letter is upper case: the second test guards the shift.)
+    if (w.value != kPlainNumber || w.letter < 'A' || w.letter > 'Z' ||
+        !word_value_in_range(w.letter, w.number))
+      return false;
     const std::uint32_t bit = 1u << (w.letter - 'A');
     if ((seen & bit) != 0) return false;
     seen |= bit;
     if (w.letter == 'G') {
-      if (w.value != 0.0 && w.value != 1.0) return false;
-      motion = w.value == 0.0 ? 0 : 10;
+      if (w.number != 0.0 && w.number != 1.0) return false;
+      move.motion = w.number == 0.0 ? 0 : 10;
     } else if (w.letter == 'F') {
-      if (!(w.value >= 0.0)) return false;  // a negative feed rate: its error
-      feed = mm(w.value);
+      if (!(w.number >= 0.0)) return false;  // a negative feed rate: its error
+      move.f = w.number;
+      move.given |= PlainMove::kF;
     } else if (w.letter == 'X' || w.letter == 'Y' || w.letter == 'Z') {
-      position = true;
+      const auto axis = static_cast<unsigned>(w.letter - 'X');
+      move.xyz[axis] = w.number;
+      move.given |= 1u << axis;
     } else {
       return false;
     }
   }
-  // G01 with no feed rate: the whole road says so.
-  return position && (motion == 0 || (motion == 10 && feed > 0.0));
+  return (move.given & 7u) != 0;
+}
+
+// The plain move in romi's modes: nullopt when one of them changes how a
+// move is read (a blend waiting, a drilling cycle, G91), or for G01 with
+// no feed rate (the whole road says so); else the block's result.
+std::optional<bool> Translator::run_plain_move(const core::SourceLoc& loc, const PlainMove& move) {
+  if (work_.blend || work_.drill.active || work_.machine.incremental) return std::nullopt;
+  const bool feed_given = (move.given & PlainMove::kF) != 0;
+  const GCode motion = move.motion >= 0 ? move.motion : work_.machine.motion;
+  const double feed = feed_given ? mm(move.f) : work_.machine.feed;
+  if (motion != 0 && (motion != 10 || !(feed > 0.0))) return std::nullopt;
+  PlainWords words{move.motion, feed_given, feed, work_.pos};
+  // By name, not end[axis]: an indexed store kept `end` in memory, read
+  // back whole before the store had landed (issue 19).
+  if ((move.given & 1u) != 0) words.end.x = mm(move.xyz[0]);
+  if ((move.given & 2u) != 0) words.end.y = mm(move.xyz[1]);
+  if ((move.given & 4u) != 0) words.end.z = mm(move.xyz[2]);
+  return plain_move_block(loc, words);
 }
 
 // run_evaluated's steps for the block: values() (F), the motion handler,
 // move() (the end point, absolute in program units), then as for any block.
-bool Translator::plain_move_block(const EvaluatedBlock& block, const std::function<bool()>& after) {
-  begin_block(block);
-  Vec3 end = work_.pos;
-  for (const EvaluatedWord& w : block.words) {
-    if (w.letter == 'G') {
-      work_.machine.motion = w.value == 0.0 ? 0 : 10;
-    } else if (w.letter == 'F') {
-      work_.machine.feed = mm(w.value);
-      give('F', work_.machine.feed);
-    } else if (w.letter == 'X') {
-      // By name, not end[letter - 'X']: an indexed store kept `end` in
-      // memory, read back whole before the store had landed (issue 19).
-      end.x = mm(w.value);
-    } else if (w.letter == 'Y') {
-      end.y = mm(w.value);
-    } else {
-      end.z = mm(w.value);
-    }
+bool Translator::plain_move_block(const core::SourceLoc& loc, const PlainWords& move) {
+  begin_block(EvaluatedBlock{loc, {}, {}, {}});
+  if (move.motion >= 0) work_.machine.motion = move.motion;
+  if (move.feed_given) {
+    work_.machine.feed = move.feed;
+    give('F', move.feed);
   }
-  bool ok = emit_line(end, work_.machine.motion == 0);
-  ok = ok && (!after || after());
+  bool ok = emit_line(move.end, work_.machine.motion == 0);
   if (!interp_failed_) {
-    at(block.loc);
+    at(loc);
     ok = hand() && ok;
   }
   end_plain_move(ok);

@@ -73,7 +73,6 @@ void Translator::start(const std::vector<CodeEntry>& start_codes, const core::So
 }
 
 bool Translator::run_evaluated(const EvaluatedBlock& block, const std::function<bool()>& after) {
-  if (plain_move(block)) return plain_move_block(block, after);
   begin_block(block);
   bool ok = hand_comments();
   for (const EvaluatedWord& w : block.words) {

@@ -89,6 +89,12 @@ class Translator {
   // error (reported, by romi or by the interpreter).
   bool run_evaluated(const EvaluatedBlock& block, const std::function<bool()>& after = {});
 
+  // A block of one plain move (most blocks of a long program; the engine
+  // read it, Engine::plain_words), past the steps that would let it by:
+  // its result as run_evaluated would give it, or nullopt when romi's modes
+  // are not plain and the block takes the whole road (romi/plain_move.cpp).
+  std::optional<bool> run_plain_move(const core::SourceLoc& loc, const PlainMove& move);
+
   // The end of the file without M02/M30: a pending blend is an error. The
   // front end then lets the interpreter finish (held moves go out). False
   // after an error.
@@ -127,10 +133,15 @@ class Translator {
   bool execute();
   void end_block(bool ok);
 
-  // A plain move (most blocks of a long program) past the steps that would
-  // let it by (romi/plain_move.cpp).
-  bool plain_move(const EvaluatedBlock& block) const;
-  bool plain_move_block(const EvaluatedBlock& block, const std::function<bool()>& after);
+  // A plain move's steps (romi/plain_move.cpp): what its words set.
+  struct PlainWords {
+    GCode motion = -1;  // -1: no G word
+    bool feed_given = false;
+    double feed = 0.0;  // mm/min
+    Vec3 end;           // absolute, program units in mm
+  };
+
+  bool plain_move_block(const core::SourceLoc& loc, const PlainWords& move);
   void end_plain_move(bool ok);
 
   std::optional<double> take_whole(char letter, int lo, int hi);
