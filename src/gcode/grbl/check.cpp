@@ -341,35 +341,12 @@ Checked step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
 // Nullopt, and nothing changed, for any other block; a block the whole
 // check would refuse is one (the error is the whole check's to say). A
 // test compares the two roads (tests/gcode/grbl/plain_block_test.cpp).
-bool check_plain_block(const std::vector<Word>& words, Modal& state, Accepted& out,
-                       PlainMove& move) {
-  constexpr std::uint32_t kAxes = letters_of("XYZ");
-  constexpr std::uint32_t kPlain = kAxes | letters_of("GF");
+bool check_plain_move(const PlainMove& move, Modal& state, Accepted& out) {
   if (state.inverse_time) return false;
-  std::uint32_t letters = 0;
-  move = {};
-  for (const Word& w : words) {
-    if (w.letter < 'A' || w.letter > 'Z') return false;
-    const std::uint32_t bit = letter_bit(w.letter);
-    if ((kPlain & bit) == 0 || (letters & bit) != 0) return false;
-    letters |= bit;
-    if (w.letter == 'G') {
-      if (w.value != 0.0 && w.value != 1.0) return false;
-      move.motion = w.value == 0.0 ? 0 : 10;
-    } else if (w.letter == 'F') {
-      if (!(w.value >= 0.0)) return false;
-      move.f = w.value;
-      move.given |= PlainMove::kF;
-    } else {
-      const auto axis = static_cast<std::size_t>(w.letter - 'X');
-      move.xyz[axis] = w.value;
-      move.given |= 1u << axis;
-    }
-  }
   const int m = move.motion >= 0 ? move.motion : state.motion;
   if (m != 0 && m != 10) return false;
   const bool sets_feed = (move.given & PlainMove::kF) != 0;
-  const bool moves = move.motion >= 0 || (letters & kAxes) != 0;
+  const bool moves = move.motion >= 0 || (move.given & 7u) != 0;
   const double feed_mm = sets_feed ? move.f * (state.inch ? 25.4 : 1.0) : state.feed_mm;
   if (moves && m == 10 && feed_mm == 0.0) return false;
   state.feed_mm = feed_mm;
@@ -379,6 +356,14 @@ bool check_plain_block(const std::vector<Word>& words, Modal& state, Accepted& o
   out.uses_motion = moves && move.motion < 0;
   out.sets_feed = sets_feed;
   return true;
+}
+
+bool check_plain_block(const std::vector<Word>& words, Modal& state, Accepted& out,
+                       PlainMove& move) {
+  StraightWords straight(move);
+  for (const Word& w : words)
+    if (!straight.add(w.letter, w.value)) return false;
+  return check_plain_move(move, state, out);
 }
 
 Checked check_block(const CodeIndex& codes, const OptionValues& options,

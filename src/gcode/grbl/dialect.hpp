@@ -93,6 +93,12 @@ Checked read_words(std::string_view text, const std::vector<std::uint32_t>& cols
 // blank inside a word, an error...), which strip_line and read_words read.
 bool read_plain_words(std::string_view line, std::vector<Word>& out, std::size_t& kept);
 
+// A plain line of one plain move (StraightWords: X Y Z F, G0 or G1), read
+// in one pass: the move, `kept` as read_plain_words gives it, and the
+// column of its first word; false for any other line.
+bool read_straight_line(std::string_view line, PlainMove& move, std::size_t& kept,
+                        std::uint32_t& first_col);
+
 // What the checks need to know between blocks (a subset of Grbl's gc_state).
 struct Modal {
   int motion = 0;  // tenths: 0, 10, 20, 30, 382..385, 800; Grbl starts in G0
@@ -134,9 +140,51 @@ Checked check_block(const CodeIndex& codes, const OptionValues& options,
 // check_block's shortcut alone: a block of one plain move (X Y Z F and at
 // most a G0 or G1, grbl/check.cpp) checked, with `state` and `out` as
 // check_block leaves them, and the move for Interpreter::run_plain_move;
-// nullopt, and nothing changed, for any other block.
+// false, and nothing changed, for any other block.
 bool check_plain_block(const std::vector<Word>& words, Modal& state, Accepted& out,
                        PlainMove& move);
+
+// Its two halves. The words of a plain move, added one at a time: false
+// for a word that makes the block another (a letter but X Y Z F G, a
+// letter twice, a G but G0 or G1, a negative F).
+// The move is written where it is kept: a move built apart and copied
+// there is read back 16 bytes at a time before its narrower fields' stores
+// have landed (a stalled store forward a line, issue 19).
+struct StraightWords {
+  explicit StraightWords(PlainMove& into) : move(into) { move = {}; }
+
+  PlainMove& move;
+  std::uint32_t seen = 0;  // a bit a letter
+
+  // Inline: it runs for every word of most lines.
+  bool add(char letter, double value) {
+    constexpr std::uint32_t kPlain = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) |
+                                     (1u << ('Z' - 'A')) | (1u << ('G' - 'A')) |
+                                     (1u << ('F' - 'A'));
+    if (letter < 'A' || letter > 'Z') return false;
+    const std::uint32_t bit = 1u << (letter - 'A');
+    if ((kPlain & bit) == 0 || (seen & bit) != 0) return false;
+    seen |= bit;
+    if (letter == 'G') {
+      if (value != 0.0 && value != 1.0) return false;
+      move.motion = value == 0.0 ? 0 : 10;
+    } else if (letter == 'F') {
+      if (!(value >= 0.0)) return false;
+      move.f = value;
+      move.given |= PlainMove::kF;
+    } else {
+      const auto axis = static_cast<std::size_t>(letter - 'X');
+      move.xyz[axis] = value;
+      move.given |= 1u << axis;
+    }
+    return true;
+  }
+};
+
+// Grbl's checks of the move in its modal state (G94, G0 or G1 in force
+// after it, a feed rate for a feed): `state` and `out` as check_block
+// leaves them, or false and nothing changed.
+bool check_plain_move(const PlainMove& move, Modal& state, Accepted& out);
 
 // The same, every block the whole way: without the shortcut check_block
 // takes for a plain move (for the test that compares the two).

@@ -198,15 +198,20 @@ Checked read_words(std::string_view text, const std::vector<std::uint32_t>& cols
   return {};
 }
 
-bool read_plain_words(std::string_view line, std::vector<Word>& out, std::size_t& kept) {
-  out.clear();
+namespace {
+
+// The words of a plain line, each handed to `word(letter, value, col)`
+// (false from it: the line is not read on); `kept` the characters
+// strip_line keeps. False for a line that is not plain.
+template <class OnWord>
+bool plain_line_words(std::string_view line, std::size_t& kept, OnWord&& word) {
   kept = 0;
   const std::size_t n = line.size();
   std::size_t i = 0;
   for (;;) {
     while (i < n && line[i] == ' ')
       ++i;
-    if (i == n) return !out.empty();
+    if (i == n) return kept > 0;
     const char letter = line[i];
     if (letter < 'A' || letter > 'Z') return false;
     double value = 0.0;
@@ -216,10 +221,30 @@ bool read_plain_words(std::string_view line, std::vector<Word>& out, std::size_t
     // ends the word elsewhere: the general road reads it.
     if (digits == 0 || (end < n && line[end] != ' ' && (line[end] < 'A' || line[end] > 'Z')))
       return false;
-    out.push_back({letter, value, static_cast<std::uint32_t>(i + 1)});
+    if (!word(letter, value, static_cast<std::uint32_t>(i + 1))) return false;
     kept += end - i;
     i = end;
   }
+}
+
+}  // namespace
+
+bool read_plain_words(std::string_view line, std::vector<Word>& out, std::size_t& kept) {
+  out.clear();
+  return plain_line_words(line, kept, [&](char letter, double value, std::uint32_t col) {
+    out.push_back({letter, value, col});
+    return true;
+  });
+}
+
+bool read_straight_line(std::string_view line, PlainMove& move, std::size_t& kept,
+                        std::uint32_t& first_col) {
+  StraightWords straight(move);
+  first_col = 0;
+  return plain_line_words(line, kept, [&](char letter, double value, std::uint32_t col) {
+    if (first_col == 0) first_col = col;
+    return straight.add(letter, value);
+  });
 }
 
 }  // namespace usina::gcode::grbl

@@ -24,6 +24,7 @@ LineReader::LineReader(const Dialect& d, const OptionValues& options, std::uint3
       options_(options),
       file_(file),
       max_length_(line_length(options)),
+      straight_lines_(options.find("whole_road") == options.end()),
       travel_(Travel::of(settings_)) {}
 
 LineKind LineReader::read(std::uint32_t n, std::uint64_t offset, std::string_view text,
@@ -35,8 +36,11 @@ LineKind LineReader::read(std::uint32_t n, std::uint64_t offset, std::string_vie
     diags.push_back(std::move(length.error()));
     return LineKind::Refused;
   }
-  // Most lines are words and blanks, read straight from the line; the
-  // others are stripped as Grbl's line reader strips them first.
+  line_ = text;
+  if (straight(text)) return LineKind::Run;
+  // Most other lines are words and blanks, read straight from the line;
+  // the others are stripped as Grbl's line reader strips them first.
+  words_of_line_ = true;
   std::size_t kept = 0;
   const bool plain = read_plain_words(text, words_, kept);
   if (!plain) {
@@ -58,6 +62,29 @@ LineKind LineReader::read(std::uint32_t n, std::uint64_t offset, std::string_vie
   if (stripped_.text[0] == '$') return system();
   if (auto f = read_words(stripped_.text, stripped_.cols, words_); !f) return fail(f.error());
   return block();
+}
+
+// Most lines: one plain move (read_straight_line) that Grbl's checks let
+// by (check_plain_move), handed as the move; its words are read only if
+// the interpreter asks for them (handed()). False, with nothing changed
+// that stands, for any other line: the general road reads it (a line over
+// Grbl's length too, for its error).
+bool LineReader::straight(std::string_view text) {
+  std::size_t kept = 0;
+  std::uint32_t col = 0;
+  if (!straight_lines_ || !read_straight_line(text, move_, kept, col) || kept > max_length_)
+    return false;
+  next_ = now_;
+  Accepted acc;
+  if (!check_plain_move(move_, next_.modal, acc) || keeps_modes(acc)) return false;
+  next_settings_.reset();
+  facts_ = {travel_, now_.modal.tool_length_mm, false, false};
+  append_kept_modes(acc);  // none kept: the kept motion ends if the line moves
+  plain_ = true;
+  words_of_line_ = false;
+  handed_made_ = false;
+  block_col_ = col;
+  return true;
 }
 
 // A line after M2/M30: nothing to run, a warning for the first that holds
@@ -121,6 +148,11 @@ LineKind LineReader::block() {
 
 const HandedBlock& LineReader::handed() {
   if (handed_made_) return handed_;
+  if (!words_of_line_) {
+    std::size_t kept = 0;
+    read_plain_words(line_, words_, kept);  // a straight line: plain
+    words_of_line_ = true;
+  }
   handed_.clear();
   for (const Word& w : words_) {
     if (w.letter != 'N') handed_.words.push_back({w.letter, w.value, w.col});

@@ -69,6 +69,7 @@ class LineReader {
   };
 
   LineKind after_end(std::string_view text);
+  bool straight(std::string_view text);
   LineKind block();
   LineKind system();
   LineKind fail(const Failure& f);
@@ -81,6 +82,7 @@ class LineReader {
   const OptionValues& options_;
   std::uint32_t file_;
   std::size_t max_length_;
+  bool straight_lines_;  // the straight road (no whole_road option: its tests)
   State now_;
   State next_;  // the line's, until accept()
   Settings settings_;
@@ -95,7 +97,9 @@ class LineReader {
   HandedBlock handed_;
   bool plain_ = false;  // the line is one plain move, move_
   PlainMove move_;
-  bool handed_made_ = false;  // handed_ holds the line's words
+  bool handed_made_ = false;    // handed_ holds the line's words
+  bool words_of_line_ = false;  // words_ holds them as Grbl read them
+  std::string_view line_;       // the line being read
   std::uint32_t block_col_ = 1;
   MachineFacts facts_;
 };

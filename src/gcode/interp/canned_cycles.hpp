@@ -68,6 +68,9 @@ class CannedCycles {
   // LinuxCNC's cycle_il as it holds it (program units), if a cycle runs.
   std::optional<double> initial_level() const { return initial_level_; }
 
+  // A refused block's note_other_motion() undone (Interpreter::roll_back).
+  void put_back_initial_level(std::optional<double> level) { initial_level_ = level; }
+
   // Program start: every sticky value back to LinuxCNC's initial one.
   void reset() { *this = CannedCycles{}; }
 

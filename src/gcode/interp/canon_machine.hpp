@@ -69,6 +69,29 @@ class CanonMachine final : public MotionTarget {
     feed_mode_ = mode;
   }
 
+  // What a straight move (traverse_axes, feed_axes after set_feed and
+  // set_source) changes in the machine: taken before it, put back when its
+  // block is refused (Interpreter::roll_back after a plain move).
+  struct MoveMark {
+    double feed;
+    FeedMode feed_mode;
+    bool moved;
+    bool faulted;
+    Vec3 last;
+    core::SourceLoc src;
+  };
+
+  MoveMark mark() const { return {feed_, feed_mode_, moved_, faulted_, last_, src_}; }
+
+  void put_back(const MoveMark& m) {
+    feed_ = m.feed;
+    feed_mode_ = m.feed_mode;
+    moved_ = m.moved;
+    faulted_ = m.faulted;
+    last_ = m.last;
+    src_ = m.src;
+  }
+
   // Diameter of the tool in the spindle, for hole features.
   void set_tool_diameter(double mm) { hole_diameter_ = mm; }
 

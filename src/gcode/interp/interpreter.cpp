@@ -117,6 +117,7 @@ Interpreter::Flow Interpreter::step() {
 }
 
 bool Interpreter::run_evaluated(const EvaluatedBlock& block) {
+  if (marked_ == Marked::Pending) take_checkpoint();
   const bool checkpointed = std::exchange(checkpoint_fresh_, false);
   if (run_.failed() || ended_) return !run_.failed();
   run_.at(block.loc);

@@ -148,7 +148,9 @@ class Interpreter final : private ParameterSource {
   // refused it, and lets run_evaluated go on. Blocks of cutter compensation,
   // subroutines, loops and named parameters are not covered. The next
   // block run puts back the checkpoint's modal state if it fails (no copy
-  // of its own): take the checkpoint just before that block.
+  // of its own): take the checkpoint just before that block. The copy is
+  // made by the block's road: the whole state for run_evaluated, what a
+  // plain move changes for run_plain_move.
   void checkpoint();
   void roll_back();
 
@@ -366,6 +368,24 @@ class Interpreter final : private ParameterSource {
   // A checkpoint taken since the last block: that block's failure puts the
   // state back from it, without a copy of its own (interpreter.cpp).
   bool checkpoint_fresh_ = false;
+
+  // What a plain move changes (run_plain_move), all a checkpoint copies
+  // before one: the whole state is a few hundred bytes, a tenth of Grbl's
+  // check of a plain line (issue 19).
+  struct PlainMark {
+    GCode motion;
+    double feed;
+    Axes pos;
+    std::optional<double> initial_level;
+    CanonMachine::MoveMark machine;
+  };
+  // checkpoint() asked, its copy not yet made: the block's road makes the
+  // one it needs (take_checkpoint, or a PlainMark).
+  enum class Marked { None, Pending, Whole, Plain };
+  Marked marked_ = Marked::None;
+  PlainMark plain_mark_{};
+  void take_checkpoint();
+  void mark_plain_move();
   // Runs `effect` now, or after the move cutter compensation holds.
   void in_order(std::function<void()> effect);
   bool comp_forbids(const BlockWords& w);

@@ -105,6 +105,7 @@ std::optional<bool> Interpreter::run_plain_move(const core::SourceLoc& loc, cons
   // run_evaluated's start.
   checkpoint_fresh_ = false;
   if (run_.failed() || ended_) return !run_.failed();
+  if (marked_ == Marked::Pending) mark_plain_move();
   run_.at(loc);
   machine_.set_source(run_.loc());
   return plain_move_run(motion, has_f ? std::optional<double>(feed) : std::nullopt, end);

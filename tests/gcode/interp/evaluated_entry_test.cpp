@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "support/interp_run.hpp"
@@ -15,10 +16,12 @@ namespace {
 
 // An interpreter fed block by block, as a dialect's front end feeds it.
 struct Fed {
+  explicit Fed(const InterpOptions& options = {}) : interp{sources, options, path, diags} {}
+
   core::SourceManager sources;
   core::DiagnosticList diags;
   canon::Toolpath path;
-  Interpreter interp{sources, InterpOptions{}, path, diags};
+  Interpreter interp;
   std::uint32_t line = 0;
 
   bool block(std::vector<EvaluatedWord> words) {
@@ -141,6 +144,63 @@ TEST(EvaluatedEntry, ABlockRefusedAfterACheckpointPutsBackItsOwnStart) {
   ASSERT_TRUE(f.block({{'G', 91, 1}}));
   EXPECT_FALSE(f.block({{'G', 90, 1}, {'G', 1, 5}, {'X', 10, 8}}));
   EXPECT_TRUE(f.interp.state().incremental);
+}
+
+// Every op but those of block `skip`: its kind, end point and feed rate.
+std::vector<std::string> moves_but(const canon::Toolpath& path, std::uint32_t skip) {
+  std::vector<std::string> out;
+  for (const canon::Op& op : path.ops()) {
+    if (op.src.line == skip) continue;
+    std::string move = canon::op_name(op.kind);
+    if (const auto* t = std::get_if<canon::Traverse>(&op.kind))
+      move += fmt::format(" {} {} {}", t->to.x, t->to.y, t->to.z);
+    if (const auto* f = std::get_if<canon::Feed>(&op.kind))
+      move += fmt::format(" {} {} {} F{}", f->to.x, f->to.y, f->to.z, f->f.value_or(-1));
+    out.push_back(move);
+  }
+  return out;
+}
+
+// A plain move the interpreter took, then refused by the front end (as
+// Grbl's soft limits refuse a line), leaves nothing behind once rolled
+// back: the motion mode, the feed rate, the position, the cycle's initial
+// level and the canonical machine are as if it never ran. By the plain
+// move's road (run_plain_move, its own putting back) and the whole road.
+TEST(EvaluatedEntry, ARolledBackPlainMoveLeavesNothingBehind) {
+  for (const bool shortcut : {true, false}) {
+    InterpOptions options;
+    options.plain_move_shortcut = shortcut;
+    Fed refused(options), never(options);
+    for (Fed* f : {&refused, &never}) {
+      ASSERT_TRUE(f->block({{'G', 21, 1}, {'G', 94, 5}, {'G', 0, 9}, {'Z', 5, 12}}));
+      ASSERT_TRUE(f->block({{'F', 500, 1}}));
+      // G99: the tool stays at R, the initial level Z5 kept for the next hole.
+      ASSERT_TRUE(f->block(
+          {{'G', 99, 1}, {'G', 81, 5}, {'X', 1, 9}, {'Y', 1, 12}, {'Z', -2, 15}, {'R', 1, 19}}));
+    }
+    refused.interp.checkpoint();
+    const core::SourceLoc at{0, 99, 1, 0, 0};
+    const PlainMove move{0, 7u | PlainMove::kF, 900, {7, 8, 9}};
+    const std::optional<bool> ran = refused.interp.run_plain_move(at, move);
+    EXPECT_EQ(ran.has_value(), shortcut);
+    if (!ran) {
+      const std::vector<EvaluatedWord> words{
+          {'G', 0, 1}, {'X', 7, 4}, {'Y', 8, 7}, {'Z', 9, 10}, {'F', 900, 13}};
+      ASSERT_TRUE(refused.interp.run_evaluated({at, words, {}, {}}));
+    }
+    refused.interp.roll_back();
+    // What the ops below do not show: the feed rate of the modal state
+    // (#<_feed>, a feed move's check that F is set).
+    EXPECT_EQ(refused.interp.state().feed, never.interp.state().feed) << shortcut;
+    for (Fed* f : {&refused, &never}) {
+      // The cycle goes on from its initial level; then a feed at F500.
+      ASSERT_TRUE(f->block({{'G', 98, 1}, {'X', 2, 5}, {'Y', 2, 8}}));
+      ASSERT_TRUE(f->block({{'G', 80, 1}}));
+      ASSERT_TRUE(f->block({{'G', 1, 1}, {'X', 3, 4}}));
+    }
+    EXPECT_EQ(moves_but(refused.path, 99), moves_but(never.path, 99)) << shortcut;
+    EXPECT_GT(refused.path.ops().size(), moves_but(refused.path, 99).size()) << shortcut;
+  }
 }
 
 }  // namespace
