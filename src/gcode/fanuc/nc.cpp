@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "gcode/fanuc/engine.hpp"
+#include "gcode/fanuc/plain_words.hpp"
 #include "gcode/number_form.hpp"
 #include "gcode/word_range.hpp"
 
@@ -126,47 +127,22 @@ bool Engine::word_in_range(const TapeBlock& b, char letter, std::size_t at, cons
 
 namespace {
 
-// Whether a plain block's word may end at text[i]: at the end, a blank, or
-// the next word's letter (not an exponent of the number).
-bool word_may_end(std::string_view text, std::size_t i) {
-  if (i >= text.size()) return true;
-  const char c = text[i];
-  return c == ' ' || c == '\t' || (c >= 'A' && c <= 'Z' && c != 'E');
-}
-
-// The words of a block made of letters and signed numbers only ("G1
-// X-1.25 Y0.5"), most blocks of a long program, read without the macro
-// reader, with the values it gives; false with `w` empty for any other
-// block (variables, brackets, functions, comments, lower case...).
+// The words of a plain block (plain_words.hpp) into `w`; false with `w`
+// empty for any other block.
 bool plain_block_words(std::string_view text, Words& w) {
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const char l = text[i];
-    if (l == ' ' || l == '\t') {
-      ++i;
-      continue;
-    }
-    if (l < 'A' || l > 'Z') break;
-    std::size_t j = i + 1;
-    const bool negative = j < text.size() && text[j] == '-';
-    if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
-    double value = 0;
-    bool point = false;
-    if (!plain_digits(text, j, value, point) || !word_may_end(text, j)) break;
-    if (negative) value = -value;
+  const bool plain = plain_words(text, [&](char l, double value, bool point, std::size_t pos) {
     NcWord& word = w.next();
     word.letter = l;
     word.value = word.raw = value;
     word.integer_literal = !point;
-    word.pos = i;
+    word.pos = pos;
     if (l == 'G') word.code = tenths(value);
     if (l == 'M') word.code = as_code(whole(value));
     w.added();
-    i = j;
-  }
-  if (i >= text.size()) return true;
-  w.clear();
-  return false;
+    return true;
+  });
+  if (!plain) w.clear();
+  return plain;
 }
 
 }  // namespace

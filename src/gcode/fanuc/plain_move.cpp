@@ -10,19 +10,11 @@
 // respect takes the whole road; a test compares the two
 // (tests/gcode/fanuc/plain_move_test.cpp).
 #include "gcode/fanuc/engine.hpp"
-#include "gcode/fanuc/macro.hpp"
+#include "gcode/fanuc/plain_words.hpp"
 
 namespace usina::gcode::fanuc {
 
 namespace {
-
-// Whether a plain word may end at text[i]: at the end, a blank, or the
-// next word's letter (not an exponent of the number); nc.cpp's rule.
-bool straight_word_ends(std::string_view text, std::size_t i) {
-  if (i >= text.size()) return true;
-  const char c = text[i];
-  return c == ' ' || c == '\t' || (c >= 'A' && c <= 'Z' && c != 'E');
-}
 
 // A block of G00 or G01 and X Y Z F, each once, the distances written with
 // a point: the move it is, read from the tape in one pass. False for any
@@ -32,39 +24,14 @@ bool straight_word_ends(std::string_view text, std::size_t i) {
 bool read_straight(std::string_view text, PlainMove& move) {
   constexpr std::uint32_t kStraight = Words::letters_of("GXYZF");
   std::uint32_t seen = 0;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const char l = text[i];
-    if (l == ' ' || l == '\t') {
-      ++i;
-      continue;
-    }
-    if (l < 'A' || l > 'Z') return false;
+  return plain_words(text, [&](char l, double value, bool point, std::size_t) {
     const std::uint32_t bit = Words::letter_bit(l);
     if ((kStraight & bit) == 0 || (seen & bit) != 0) return false;
     seen |= bit;
-    std::size_t j = i + 1;
-    const bool negative = j < text.size() && text[j] == '-';
-    if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
-    double value = 0;
-    bool point = false;
-    if (!plain_digits(text, j, value, point) || !straight_word_ends(text, j)) return false;
-    if (negative) value = -value;
-    if (l == 'G') {
-      if (value != 0.0 && value != 1.0) return false;
-      move.motion = value == 0.0 ? 0 : 10;
-    } else if (l == 'F') {
-      move.f = value;
-      move.given |= PlainMove::kF;
-    } else {
-      if (!point) return false;  // the decimal-point rule's (it may warn)
-      const auto axis = static_cast<unsigned>(l - 'X');
-      move.xyz[axis] = value;
-      move.given |= 1u << axis;
-    }
-    i = j;
-  }
-  return true;
+    // An integer distance is the decimal-point rule's (it may warn).
+    if (!point && l != 'G' && l != 'F') return false;
+    return move.take(l, value);
+  });
 }
 
 }  // namespace

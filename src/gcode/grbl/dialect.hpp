@@ -165,19 +165,8 @@ struct StraightWords {
     const std::uint32_t bit = 1u << (letter - 'A');
     if ((kPlain & bit) == 0 || (seen & bit) != 0) return false;
     seen |= bit;
-    if (letter == 'G') {
-      if (value != 0.0 && value != 1.0) return false;
-      move.motion = value == 0.0 ? 0 : 10;
-    } else if (letter == 'F') {
-      if (!(value >= 0.0)) return false;
-      move.f = value;
-      move.given |= PlainMove::kF;
-    } else {
-      const auto axis = static_cast<std::size_t>(letter - 'X');
-      move.xyz[axis] = value;
-      move.given |= 1u << axis;
-    }
-    return true;
+    if (letter == 'F' && !(value >= 0.0)) return false;
+    return move.take(letter, value);
   }
 };
 

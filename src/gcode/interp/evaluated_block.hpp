@@ -80,6 +80,23 @@ struct PlainMove {
   unsigned given = 0;
   double f = 0.0;
   std::array<double, 3> xyz{};
+
+  // One word of the move, whose letter is G, F, X, Y or Z (the front end
+  // has checked it, and that it comes once): false for a G but G0 or G1.
+  bool take(char letter, double value) {
+    if (letter == 'G') {
+      if (value != 0.0 && value != 1.0) return false;
+      motion = value == 0.0 ? 0 : 10;
+    } else if (letter == 'F') {
+      f = value;
+      given |= kF;
+    } else {
+      const auto axis = static_cast<unsigned>(letter - 'X');
+      xyz[axis] = value;
+      given |= 1u << axis;
+    }
+    return true;
+  }
 };
 
 }  // namespace usina::gcode

@@ -28,23 +28,14 @@ bool Engine::plain_words(PlainMove& move) const {
     if (w.value != kPlainNumber || w.letter < 'A' || w.letter > 'Z' ||
         !word_value_in_range(w.letter, w.number))
       return false;
+    constexpr std::uint32_t kPlain = (1u << ('G' - 'A')) | (1u << ('F' - 'A')) |
+                                     (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) |
+                                     (1u << ('Z' - 'A'));
     const std::uint32_t bit = 1u << (w.letter - 'A');
-    if ((seen & bit) != 0) return false;
+    if ((kPlain & bit) == 0 || (seen & bit) != 0) return false;
     seen |= bit;
-    if (w.letter == 'G') {
-      if (w.number != 0.0 && w.number != 1.0) return false;
-      move.motion = w.number == 0.0 ? 0 : 10;
-    } else if (w.letter == 'F') {
-      if (!(w.number >= 0.0)) return false;  // a negative feed rate: its error
-      move.f = w.number;
-      move.given |= PlainMove::kF;
-    } else if (w.letter == 'X' || w.letter == 'Y' || w.letter == 'Z') {
-      const auto axis = static_cast<unsigned>(w.letter - 'X');
-      move.xyz[axis] = w.number;
-      move.given |= 1u << axis;
-    } else {
-      return false;
-    }
+    if (w.letter == 'F' && !(w.number >= 0.0)) return false;  // a negative feed rate: its error
+    if (!move.take(w.letter, w.number)) return false;
   }
   return (move.given & 7u) != 0;
 }
