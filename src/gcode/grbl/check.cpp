@@ -338,7 +338,7 @@ Checked step3(const BlockCodes& b, std::uint32_t col0, Modal& state) {
 // lines of a long program, and every rule of the whole check lets it by
 // with only its motion and feed rate kept: they are kept here, and the
 // whole check is not run (a third of grbl's own work a line, issue 19).
-// Nullopt, and nothing changed, for any other block; a block the whole
+// False, and nothing changed, for any other block; a block the whole
 // check would refuse is one (the error is the whole check's to say). A
 // test compares the two roads (tests/gcode/grbl/plain_block_test.cpp).
 bool check_plain_move(const PlainMove& move, Modal& state, Accepted& out) {
