@@ -115,9 +115,9 @@ draw::WriteResult write_stream(const draw::Drawing& drawing, Format format, std:
   case Format::Dxf: return draw::write_dxf(drawing, file);
   case Format::Svg: {
     core::FileOstream out(file);
-    draw::write_svg(drawing, out);
+    const draw::WriteResult written = draw::write_svg(drawing, out);
     out.flush();
-    return {};
+    return written;
   }
   case Format::Png: return raster->write_png(drawing, file, size);
   case Format::Pdf: return raster->write_pdf(drawing, file);

@@ -80,9 +80,9 @@ void draw_stock(const job::Stock& s, draw::Drawing& d) {
   if (s.shape == "box") {
     const core::Vec2 a{s.origin[0], s.origin[1]};
     const core::Vec2 b{a.x + s.size[0], a.y + s.size[1]};
-    layer.entities.emplace_back(draw::Polyline{{a, {b.x, a.y}, b, {a.x, b.y}}, true});
+    layer.entities.push_back(draw::Polyline{{a, {b.x, a.y}, b, {a.x, b.y}}, true});
   } else {
-    layer.entities.emplace_back(draw::Circle{{s.origin[0], s.origin[1]}, s.size[0] / 2});
+    layer.entities.push_back(draw::Circle{{s.origin[0], s.origin[1]}, s.size[0] / 2});
   }
 }
 
@@ -99,7 +99,7 @@ bool same_path(const std::string& a, const std::string& b) {
 void draw_holes(const job::SheetLog& log, draw::Drawing& d) {
   for (const job::SheetStep& s : log.steps) {
     for (const core::Vec2& c : s.holes)
-      d.layer(draw::kHolesLayer).entities.emplace_back(draw::Circle{c, s.tool.diameter / 2});
+      d.layer(draw::kHolesLayer).entities.push_back(draw::Circle{c, s.tool.diameter / 2});
   }
 }
 
@@ -111,7 +111,7 @@ draw::WriteResult write_sheet(const JobCli& o, const core::Document& doc,
     if (!w) return tl::unexpected(file.write_error().value_or(w.error()));
   } else {
     std::ostringstream svg;
-    draw::write_svg(picture, svg);
+    if (const draw::WriteResult w = draw::write_svg(picture, svg); !w) return w;
     // Inside the page the SVG element goes without its XML declaration.
     const std::string svg_text = svg.str();
     const std::size_t element = std::min(svg_text.find("<svg"), svg_text.size());

@@ -1,29 +1,18 @@
 #include "core/held_output.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdlib>
 #include <vector>
+
+#include "core/temporary_file.hpp"
 
 namespace usina::core {
 namespace {
 
-std::string temporary_folder() {
-  const char* dir = std::getenv("TMPDIR");
-  return dir != nullptr && *dir != '\0' ? dir : "/tmp";
-}
-
-// An unnamed file in `dir`: O_TMPFILE where the file system has it, else a
-// named one removed at once. Null, errno set, when neither can be made.
+// An unnamed file in `dir` as a stream; null, errno set, when none can be made.
 std::FILE* unnamed_file(const std::string& dir) {
-  int fd = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
-  if (fd < 0 && (errno == EOPNOTSUPP || errno == EISDIR)) {
-    std::string name = dir + "/usina-held-XXXXXX";
-    fd = ::mkostemp(name.data(), O_CLOEXEC);
-    if (fd >= 0) ::unlink(name.c_str());
-  }
+  const int fd = open_unnamed_file(dir);
   if (fd < 0) return nullptr;
   std::FILE* f = ::fdopen(fd, "w+b");
   if (f == nullptr) {

@@ -1,11 +1,9 @@
 // Output for standard output held until the run says it goes out: standard
 // output cannot be taken back, and a program with an error must leave
 // nothing a machine would take. The bytes wait in an unnamed temporary file
-// (gone when closed, whatever happens), so memory stays flat however long
-// the output (issue 19: `convert` held 24 MB of program text in memory at
-// 1,000,000 blocks, 50 MB with the string's growth). The file is made in
-// $TMPDIR when it is set, else /tmp, as a user who points TMPDIR at a
-// bigger disk expects (std::tmpfile uses /tmp whatever TMPDIR says).
+// (core/temporary_file.hpp: in $TMPDIR, else /tmp), so memory stays flat
+// however long the output (issue 19: `convert` held 24 MB of program text in
+// memory at 1,000,000 blocks, 50 MB with the string's growth).
 #pragma once
 
 #include <cstdio>

@@ -39,9 +39,10 @@ class FirstError final : public core::DiagnosticSink {
   std::optional<core::Diagnostic> first_;
 };
 
-std::string svg_text(const draw::Drawing& drawing) {
+tl::expected<std::string, std::string> svg_text(const draw::Drawing& drawing) {
   std::ostringstream out;
-  draw::write_svg(drawing, out);
+  if (const draw::WriteResult written = draw::write_svg(drawing, out); !written)
+    return tl::unexpected(written.error());
   return std::move(out).str();
 }
 
@@ -116,13 +117,9 @@ DrawingAnswer program_drawing(std::string_view text, const DrawingSettings& sett
     a.complete = false;
     a.note = *full;
   }
-  if (settings.format == DrawingFormat::Svg) {
-    a.body = svg_text(drawing);
-  } else {
-    auto dxf = dxf_text(drawing);
-    if (!dxf) return refused(500, dxf.error());
-    a.body = std::move(*dxf);
-  }
+  auto body = settings.format == DrawingFormat::Svg ? svg_text(drawing) : dxf_text(drawing);
+  if (!body) return refused(500, body.error());
+  a.body = std::move(*body);
   if (a.body.size() > settings.max_bytes) {
     // Said to the page and to a script alike: where to see it instead, both ways.
     return refused(413, fmt::format("the drawing is {} bytes, more than the {} the server sends: "

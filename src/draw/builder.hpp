@@ -8,11 +8,14 @@
 // Toolpath view: every move, feeds on one layer per tool (TOOLPATH_T<n>),
 // rapids on RAPID; features are not drawn (their moves are).
 //
-// Memory is bounded by what a picture can show: a move that retraces one of
-// the last DrawLimits::retrace_window / 2 (up to retrace_window) segments,
-// arcs or circles drawn on its layer (at the SVG's 0.0001 mm) adds nothing, so a loop going over
-// the same path draws it once; past DrawLimits::max_entities entities (or max_polyline_points
-// points of polylines) the moves are counted and not drawn, and limit_note() says so.
+// The drawing is bounded by what a picture can show: a move that retraces
+// one of the last DrawLimits::retrace_window / 2 (up to retrace_window)
+// segments, arcs or circles drawn on its layer (at the SVG's 0.0001 mm) adds
+// nothing, so a loop going over the same path draws it once; past
+// DrawLimits::max_entities entities (or max_polyline_points points of
+// polylines) the moves are counted and not drawn, and limit_note() says so.
+// Memory stays flat below that: older entities wait in a temporary file
+// (entity_list.hpp).
 #pragma once
 
 #include <cstdint>
@@ -33,9 +36,9 @@ class RetraceWindow;
 
 // What a DrawingBuilder keeps at most.
 struct DrawLimits {
-  // Some 2 million entities (about 100-200 MB) are more than any picture
-  // shows: a 2000 x 2000 PNG, an SVG a browser opens. A 1,000,000-block
-  // program draws whole.
+  // Some 2 million entities (a DXF or SVG of 100-200 MB) are more than any
+  // picture shows: a 2000 x 2000 PNG, an SVG a browser opens. A
+  // 1,000,000-block program draws whole.
   std::size_t max_entities = 2'000'000;
   std::size_t max_polyline_points = 8'000'000;
   // Segments, arcs and circles remembered for the retrace test (the last

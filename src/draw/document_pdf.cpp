@@ -432,6 +432,7 @@ WriteResult write_document_pdf(const core::Document& doc, const Drawing& figure,
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
+  if (auto error = figure.read_error()) return tl::unexpected(*error);
   return finish_surface(surface.get());
 }
 

@@ -130,7 +130,8 @@ Box view_box(const Box& bounds) {
 Layer& Drawing::layer(std::string_view name) {
   for (auto& l : layers_)
     if (l->name == name) return *l;
-  layers_.push_back(std::make_unique<Layer>(Layer{std::string(name), style_of(name), {}, {}, {}}));
+  layers_.push_back(std::make_unique<Layer>(
+      Layer{std::string(name), style_of(name), EntityList(hold_bytes_, hold_folder_), {}, {}}));
   return *layers_.back();
 }
 
@@ -149,7 +150,7 @@ void Drawing::add_line(Layer& layer, Vec2 from, Vec2 to) {
   bounds_.add(from);
   bounds_.add(to);
   if (extend_run(layer, from, to)) return;
-  layer.entities.emplace_back(Line{from, to});
+  layer.entities.push_back(Line{from, to});
   start_run(layer, from, to);
 }
 
@@ -208,13 +209,13 @@ void Drawing::start_run(Layer& layer, Vec2 from, Vec2 to) {
 void Drawing::add_arc(Layer& layer, const Arc& arc) {
   if (arc.radius < kMinLength) return;
   bounds_.add(bounds_of(arc));
-  layer.entities.emplace_back(arc);
+  layer.entities.push_back(arc);
 }
 
 void Drawing::add_circle(Layer& layer, const Circle& circle) {
   if (circle.radius < kMinLength) return;
   bounds_.add(bounds_of(circle));
-  layer.entities.emplace_back(circle);
+  layer.entities.push_back(circle);
 }
 
 void Drawing::add_polyline(Layer& layer, std::vector<Vec2> points, bool closed) {
@@ -235,7 +236,7 @@ void Drawing::add_polyline(Layer& layer, std::vector<Vec2> points, bool closed) 
   }
   for (const Vec2& p : kept)
     bounds_.add(p);
-  layer.entities.emplace_back(Polyline{std::move(kept), closed});
+  layer.entities.push_back(Polyline{std::move(kept), closed});
 }
 
 std::size_t Drawing::entity_count() const {
@@ -243,6 +244,12 @@ std::size_t Drawing::entity_count() const {
   for (const auto& l : layers_)
     n += l->entities.size();
   return n;
+}
+
+std::optional<std::string> Drawing::read_error() const {
+  for (const auto& l : layers_)
+    if (!l->entities.read_error().empty()) return l->entities.read_error();
+  return std::nullopt;
 }
 
 }  // namespace usina::draw

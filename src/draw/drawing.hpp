@@ -5,44 +5,16 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
+#include <utility>
 #include <vector>
 
-#include "core/vec3.hpp"
+#include "draw/entity.hpp"
+#include "draw/entity_list.hpp"
 
 namespace usina::draw {
-
-using core::Vec2;
-
-struct Line {
-  Vec2 from;
-  Vec2 to;
-};
-
-// A true arc: from `start_angle` to `end_angle` (radians, in (-π, π]) about
-// `center`, counter-clockwise when `ccw`, clockwise otherwise; never a full
-// circle (that is a Circle).
-struct Arc {
-  Vec2 center;
-  double radius = 0.0;
-  double start_angle = 0.0;
-  double end_angle = 0.0;
-  bool ccw = true;
-};
-
-struct Circle {
-  Vec2 center;
-  double radius = 0.0;
-};
-
-struct Polyline {
-  std::vector<Vec2> points;
-  bool closed = false;
-};
-
-using Entity = std::variant<Line, Arc, Circle, Polyline>;
 
 // Start and end points of an arc.
 Vec2 arc_start(const Arc& a);
@@ -106,7 +78,7 @@ struct ToolRun {
 struct Layer {
   std::string name;
   LayerStyle style;
-  std::vector<Entity> entities;
+  EntityList entities;
   // On CONTOUR: which tool cut which entities, so that the pictures colour
   // the contour by tool (the toolpath view has a layer per tool instead).
   std::vector<ToolRun> tool_runs;
@@ -147,9 +119,21 @@ class Drawing {
   // left become a line, fewer nothing.
   void add_polyline(Layer& layer, std::vector<Vec2> points, bool closed = false);
 
+  // How many bytes of entities a layer made from now on holds in memory
+  // before older ones go to a temporary file in `folder` (entity_list.hpp;
+  // empty folder: $TMPDIR or /tmp).
+  void set_hold(std::size_t bytes, std::string folder = {}) {
+    hold_bytes_ = bytes;
+    hold_folder_ = std::move(folder);
+  }
+
   const Box& bounds() const { return bounds_; }
 
   std::size_t entity_count() const;
+
+  // Why a writer could not read all of a layer's entities back (entity_list.hpp);
+  // none when it could. Every writer asks when it is done.
+  std::optional<std::string> read_error() const;
 
  private:
   double line_tolerance() const;
@@ -161,6 +145,8 @@ class Drawing {
   double tolerance_ = 0.0;
   int picture_width_ = 0;
   int picture_height_ = 0;
+  std::size_t hold_bytes_ = EntityList::kHoldBytes;
+  std::string hold_folder_;
 };
 
 }  // namespace usina::draw

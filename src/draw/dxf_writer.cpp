@@ -233,6 +233,7 @@ WriteResult write_dxf(const Drawing& drawing, std::FILE* file) {
   dw->dxfEOF();
   dw->flush();
   dw->close();
+  if (auto error = drawing.read_error()) return tl::unexpected(*error);
   return {};
 }
 

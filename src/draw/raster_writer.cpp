@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -164,12 +165,23 @@ void draw_pieces(cairo_t* cr, const std::vector<Piece>& pieces, const Frame& fra
                  const Furniture& f) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  // A layer's pieces come in the order of its entities, which are read
+  // once, in order (entity_list.hpp: they may be in a temporary file).
+  const Layer* layer = nullptr;
+  std::optional<EntityList::Cursor> at;
+  std::size_t index = 0;
   for (const Piece& piece : pieces) {
+    if (piece.layer != layer || piece.first < index) {
+      layer = piece.layer;
+      at.emplace(layer->entities.begin());
+      index = 0;
+    }
+    for (; index < piece.first; ++index)
+      ++*at;
     set_style(cr, piece.style, f);
-    for (std::size_t i = piece.first; i < piece.last; ++i) {
-      if (is_finite(piece.layer->entities[i]))
-        std::visit(PathOf{cr, frame}, piece.layer->entities[i]);
-      if ((i + 1 - piece.first) % kStrokeBatch == 0) cairo_stroke(cr);
+    for (; index < piece.last; ++index, ++*at) {
+      if (is_finite(**at)) std::visit(PathOf{cr, frame}, **at);
+      if ((index + 1 - piece.first) % kStrokeBatch == 0) cairo_stroke(cr);
     }
     cairo_stroke(cr);
   }
@@ -278,6 +290,7 @@ WriteResult write_png(const Drawing& drawing, std::FILE* file, PixelSize size) {
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
+  if (auto error = drawing.read_error()) return tl::unexpected(*error);
   const cairo_status_t s = cairo_surface_write_to_png_stream(surface.get(), write_to_stream, file);
   if (s != CAIRO_STATUS_SUCCESS) return tl::unexpected(status_text(s));
   return {};
@@ -298,6 +311,7 @@ WriteResult write_pdf(const Drawing& drawing, std::FILE* file) {
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
       return tl::unexpected(status_text(cairo_status(cr.get())));
   }
+  if (auto error = drawing.read_error()) return tl::unexpected(*error);
   return finish_surface(surface.get());
 }
 

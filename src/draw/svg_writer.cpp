@@ -80,7 +80,7 @@ std::string svg_number(double v) {
   return s;
 }
 
-void write_svg(const Drawing& drawing, std::ostream& out) {
+WriteResult write_svg(const Drawing& drawing, std::ostream& out) {
   const Box box = finite_view_box(drawing);
   const double w = box.width();
   const double h = box.height();
@@ -112,15 +112,17 @@ void write_svg(const Drawing& drawing, std::ostream& out) {
   }
   fmt::format_to(std::back_inserter(buf), "</svg>\n");
   flush(buf, out);
+  if (auto error = drawing.read_error()) return tl::unexpected(*error);
+  return {};
 }
 
 WriteResult write_svg_file(const Drawing& drawing, const std::string& path,
                            const std::vector<std::string>& inputs) {
   return write_to_file(path, inputs, [&](std::FILE* file) -> WriteResult {
     core::FileOstream out(file);
-    write_svg(drawing, out);
+    const WriteResult written = write_svg(drawing, out);
     out.flush();
-    return {};
+    return written;
   });
 }
 

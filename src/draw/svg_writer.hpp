@@ -13,7 +13,9 @@
 
 namespace usina::draw {
 
-void write_svg(const Drawing& drawing, std::ostream& out);
+// Nothing, or why the drawing could not all be read (Drawing::read_error);
+// a failed stream is the caller's to see.
+WriteResult write_svg(const Drawing& drawing, std::ostream& out);
 
 // Through core::OutputFile; `inputs` may not be the output.
 WriteResult write_svg_file(const Drawing& drawing, const std::string& path,

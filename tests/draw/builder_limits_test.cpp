@@ -65,7 +65,7 @@ TEST(BuilderLimits, AClockwiseArcRetracesItsCounterClockwiseTwin) {
     b.on(arc({10, 0, -1}, {0, 0, 0}, -1));  // a full circle down
   }
   b.finish();
-  const auto& e = d.layer(toolpath_layer(0)).entities;
+  const auto e = d.layer(toolpath_layer(0)).entities.to_vector();
   ASSERT_EQ(e.size(), 2u);
   EXPECT_TRUE(std::holds_alternative<Arc>(e[0]));
   EXPECT_TRUE(std::holds_alternative<Circle>(e[1]));

@@ -37,8 +37,8 @@ Drawing draw(const std::vector<canon::Op>& ops, View view = View::Part, Vec3 sta
   return d;
 }
 
-const std::vector<Entity>& entities(Drawing& d, std::string_view layer) {
-  return d.layer(layer).entities;
+std::vector<Entity> entities(Drawing& d, std::string_view layer) {
+  return d.layer(layer).entities.to_vector();
 }
 
 TEST(Builder, CounterClockwiseArcKeepsItsAngles) {
@@ -57,7 +57,7 @@ TEST(Builder, ClockwiseArcAndArcAboutMinusZ) {
   for (const auto& [normal, turn] : {std::pair{kUp, -1}, std::pair{Vec3{0, 0, -1}, 1}}) {
     Drawing d =
         draw({op(canon::Traverse{{0, 10, 0}}), op(arc({10, 0, 0}, {0, 0, 0}, normal, turn))});
-    const Arc& a = std::get<Arc>(entities(d, kContourLayer).at(0));
+    const Arc a = std::get<Arc>(entities(d, kContourLayer).at(0));
     EXPECT_FALSE(a.ccw);
     EXPECT_NEAR(a.start_angle, kPi / 2, 1e-12);
     EXPECT_NEAR(a.end_angle, 0.0, 1e-12);
@@ -67,7 +67,7 @@ TEST(Builder, ClockwiseArcAndArcAboutMinusZ) {
 
 TEST(Builder, HelixProjectsToItsArc) {
   Drawing d = draw({op(canon::Traverse{{5, 0, 0}}), op(arc({-5, 0, -3}, {0, 0, 0}, kUp, 1))});
-  const Arc& a = std::get<Arc>(entities(d, kContourLayer).at(0));
+  const Arc a = std::get<Arc>(entities(d, kContourLayer).at(0));
   EXPECT_NEAR(a.radius, 5.0, 1e-12);
   EXPECT_NEAR(std::fabs(a.end_angle), kPi, 1e-12);
   EXPECT_NEAR(arc_sweep(a), kPi, 1e-12);
@@ -104,7 +104,7 @@ TEST(Builder, ArcInAVerticalPlaneProjectsToItsShadow) {
 TEST(Builder, SplineIsAPolyline) {
   canon::Spline s{{3, 1, 0}, {{1, 1, 0}, {2, 0, 0}, {3, 1, 0}}, std::nullopt};
   Drawing d = draw({op(s)});
-  const auto& p = std::get<Polyline>(entities(d, kContourLayer).at(0));
+  const auto p = std::get<Polyline>(entities(d, kContourLayer).at(0));
   const std::vector<Vec2> want{{0, 0}, {1, 1}, {2, 0}, {3, 1}};
   EXPECT_EQ(p.points, want);
 }
@@ -114,7 +114,7 @@ TEST(Builder, PartViewPutsFeedsOnContourAndRapidsOnRapid) {
                     op(canon::Feed{{10, 0, -1}, 100.0}), op(canon::Feed{{20, 0, -1}, 100.0})});
   ASSERT_EQ(entities(d, kRapidLayer).size(), 1u);
   ASSERT_EQ(entities(d, kContourLayer).size(), 1u);
-  const Line& l = std::get<Line>(entities(d, kContourLayer)[0]);
+  const Line l = std::get<Line>(entities(d, kContourLayer)[0]);
   EXPECT_EQ(l.from, (Vec2{10, 0}));
   EXPECT_EQ(l.to, (Vec2{20, 0}));
   std::vector<std::string> names;

@@ -22,8 +22,7 @@ using Kind = core::DocBlock::Kind;
 // The PDF of `doc` (with a square as its figure) in `dir`; its path.
 std::string written(const core::Document& doc, const test::TempDir& dir) {
   Drawing figure;
-  figure.layer("CONTOUR").entities.emplace_back(
-      Polyline{{{0, 0}, {50, 0}, {50, 50}, {0, 50}}, true});
+  figure.layer("CONTOUR").entities.push_back(Polyline{{{0, 0}, {50, 0}, {50, 50}, {0, 50}}, true});
   const std::string path = dir.path("doc.pdf");
   std::FILE* f = std::fopen(path.c_str(), "wb");
   EXPECT_NE(f, nullptr);

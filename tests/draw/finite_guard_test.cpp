@@ -46,9 +46,9 @@ Drawing poisoned() {
   Layer& l = d.layer("CONTOUR");
   d.add_line(l, {0, 0}, {10, 0});
   d.add_line(l, {10, 0}, {10, 10});
-  l.entities.emplace_back(Arc{{kNan, -kInf}, 1.0, kNan, 0.0, false});
-  l.entities.emplace_back(Line{{0, 0}, {kInf, 1}});
-  l.entities.emplace_back(Polyline{{{0, 0}, {1, kNan}, {2, 2}}, false});
+  l.entities.push_back(Arc{{kNan, -kInf}, 1.0, kNan, 0.0, false});
+  l.entities.push_back(Line{{0, 0}, {kInf, 1}});
+  l.entities.push_back(Polyline{{{0, 0}, {1, kNan}, {2, 2}}, false});
   return d;
 }
 

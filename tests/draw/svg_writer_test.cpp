@@ -19,7 +19,7 @@ constexpr double kPi = std::numbers::pi;
 
 std::string svg(const Drawing& d) {
   std::ostringstream out;
-  write_svg(d, out);
+  EXPECT_TRUE(write_svg(d, out));
   return out.str();
 }
 
