@@ -165,21 +165,22 @@ void draw_pieces(cairo_t* cr, const std::vector<Piece>& pieces, const Frame& fra
                  const Furniture& f) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  // A layer's pieces come in the order of its entities, which are read
-  // once, in order (entity_list.hpp: they may be in a temporary file).
+  // A layer's pieces follow one another in the order of its entities
+  // (pieces_of), which are read once, in order (entity_list.hpp: they may
+  // be in a temporary file).
   const Layer* layer = nullptr;
   std::optional<EntityList::Cursor> at;
   std::size_t index = 0;
   for (const Piece& piece : pieces) {
-    if (piece.layer != layer || piece.first < index) {
+    if (piece.layer != layer) {
       layer = piece.layer;
       at.emplace(layer->entities.begin());
       index = 0;
     }
-    for (; index < piece.first; ++index)
-      ++*at;
     set_style(cr, piece.style, f);
-    for (; index < piece.last; ++index, ++*at) {
+    // A cursor ends early only when the file cannot be read back; the
+    // writer then says so (Drawing::read_error).
+    for (; index < piece.last && *at != std::default_sentinel; ++index, ++*at) {
       if (is_finite(**at)) std::visit(PathOf{cr, frame}, **at);
       if ((index + 1 - piece.first) % kStrokeBatch == 0) cairo_stroke(cr);
     }
