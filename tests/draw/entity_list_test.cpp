@@ -169,9 +169,11 @@ Drawing spiral_part(std::size_t hold, const std::string& folder = {}) {
   return d;
 }
 
-std::string dxf_of(const Drawing& d) {
+// What `write(FILE*)` wrote.
+template <class Write>
+std::string bytes_of(Write write) {
   std::FILE* f = std::tmpfile();
-  EXPECT_TRUE(write_dxf(d, f).has_value());
+  EXPECT_TRUE(write(f).has_value());
   std::string out(static_cast<std::size_t>(std::ftell(f)), '\0');
   std::rewind(f);
   EXPECT_EQ(std::fread(out.data(), 1, out.size(), f), out.size());
@@ -179,14 +181,12 @@ std::string dxf_of(const Drawing& d) {
   return out;
 }
 
+std::string dxf_of(const Drawing& d) {
+  return bytes_of([&](std::FILE* f) { return write_dxf(d, f); });
+}
+
 std::string png_of(const Drawing& d) {
-  std::FILE* f = std::tmpfile();
-  EXPECT_TRUE(write_png(d, f, {800, 600}).has_value());
-  std::string out(static_cast<std::size_t>(std::ftell(f)), '\0');
-  std::rewind(f);
-  EXPECT_EQ(std::fread(out.data(), 1, out.size(), f), out.size());
-  std::fclose(f);
-  return out;
+  return bytes_of([&](std::FILE* f) { return write_png(d, f, {800, 600}); });
 }
 
 std::string svg_of(const Drawing& d) {
