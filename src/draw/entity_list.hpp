@@ -21,8 +21,10 @@ namespace usina::draw {
 
 class EntityList {
  public:
-  // Some 4,000 lines held in memory a layer before they go to the file.
-  static constexpr std::size_t kHoldBytes = std::size_t{256} << 10;
+  // Some 1,100 lines held in memory a layer before they go to the file: a
+  // program with a hundred tools, a layer each in the toolpath view, holds
+  // 6.4 MB.
+  static constexpr std::size_t kHoldBytes = std::size_t{64} << 10;
 
   // `folder`: where the temporary file goes; empty, $TMPDIR or /tmp.
   explicit EntityList(std::size_t hold_bytes = kHoldBytes, std::string folder = {});

@@ -83,7 +83,7 @@ TEST(EntityList, WhatWentToTheFileComesBackWholeAndInOrder) {
   EXPECT_GT(list.spilled(), entities.size() / 2);
   EXPECT_EQ(list.size(), entities.size());
   EXPECT_EQ(list.to_vector(), entities);
-  EXPECT_EQ(filled(every_kind(5), EntityList::kHoldBytes).spilled(), 0u);
+  EXPECT_EQ(filled(every_kind(5), std::size_t{1} << 20).spilled(), 0u);
 }
 
 TEST(EntityList, TheLastEntityStaysInMemoryToBeLengthened) {
