@@ -125,6 +125,19 @@ draw::WriteResult write_stream(const draw::Drawing& drawing, Format format, std:
   return tl::unexpected(std::string("unknown format"));
 }
 
+// Runs the program into `drawing`; says when the drawing was full. The
+// builder's retrace window (4 MB) is gone before the picture is made, so the
+// two never add up (a PNG's image is 7.7 MB).
+int build(const RunOptions& run, draw::View view, draw::Drawing& drawing) {
+  draw::DrawingBuilder builder(drawing, view, run.start);
+  const int status = run_program(run, builder);
+  if (status == kBadInput) return status;
+  builder.finish();
+  if (auto note = builder.limit_note("usina trace lists them"))
+    fmt::print(stderr, "usina: warning: {}\n", *note);
+  return status;
+}
+
 // `-o -` is standard output (main checks that it was written).
 draw::WriteResult write(const draw::Drawing& drawing, Format format, const std::string& path,
                         draw::PixelSize size, const std::vector<std::string>& inputs,
@@ -186,12 +199,8 @@ int draw_program(DrawOptions& o) {
   // a long program grow with what the picture can show, not with its moves.
   if (*format == Format::Png) drawing.set_picture(size.width, size.height);
   if (*format == Format::Pdf) drawing.set_picture(kPdfDots, kPdfDots);
-  draw::DrawingBuilder builder(drawing, view, o.run.start);
-  const int status = run_program(o.run, builder);
+  const int status = build(o.run, view, drawing);
   if (status == kBadInput) return status;
-  builder.finish();
-  if (auto note = builder.limit_note("usina trace lists them"))
-    fmt::print(stderr, "usina: warning: {}\n", *note);
   // What was drawn before an error is written all the same.
   if (auto written = write(drawing, *format, o.output, size, inputs, raster); !written)
     return fail(written.error());
