@@ -131,7 +131,7 @@ Layer& Drawing::layer(std::string_view name) {
   for (auto& l : layers_)
     if (l->name == name) return *l;
   layers_.push_back(std::make_unique<Layer>(
-      Layer{std::string(name), style_of(name), EntityList(hold_bytes_, hold_folder_), {}, {}}));
+      Layer{std::string(name), style_of(name), EntityList(hold_bytes_, *spill_), {}, {}}));
   return *layers_.back();
 }
 
@@ -244,6 +244,12 @@ std::size_t Drawing::entity_count() const {
   for (const auto& l : layers_)
     n += l->entities.size();
   return n;
+}
+
+void Drawing::set_hold(std::size_t layer_bytes, std::size_t drawing_bytes, std::string folder) {
+  hold_bytes_ = layer_bytes;
+  spill_->hold_limit = drawing_bytes;
+  spill_->set_folder(std::move(folder));
 }
 
 std::optional<std::string> Drawing::read_error() const {

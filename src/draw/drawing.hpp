@@ -119,13 +119,12 @@ class Drawing {
   // left become a line, fewer nothing.
   void add_polyline(Layer& layer, std::vector<Vec2> points, bool closed = false);
 
-  // How many bytes of entities a layer made from now on holds in memory
-  // before older ones go to a temporary file in `folder` (entity_list.hpp;
-  // empty folder: $TMPDIR or /tmp).
-  void set_hold(std::size_t bytes, std::string folder = {}) {
-    hold_bytes_ = bytes;
-    hold_folder_ = std::move(folder);
-  }
+  // How many bytes of entities a layer made from now on holds in memory,
+  // and all layers together, before older ones go to the drawing's
+  // temporary file in `folder` (entity_list.hpp; empty folder: $TMPDIR or
+  // /tmp; the folder only until the file is made).
+  void set_hold(std::size_t layer_bytes, std::size_t drawing_bytes = SpillFile::kHoldLimit,
+                std::string folder = {});
 
   const Box& bounds() const { return bounds_; }
 
@@ -140,13 +139,14 @@ class Drawing {
   bool extend_run(Layer& layer, Vec2 from, Vec2 to);
   void start_run(Layer& layer, Vec2 from, Vec2 to);
 
+  // Before the layers, which use it until they are gone.
+  std::unique_ptr<SpillFile> spill_ = std::make_unique<SpillFile>();
   std::vector<std::unique_ptr<Layer>> layers_;
   Box bounds_;
   double tolerance_ = 0.0;
   int picture_width_ = 0;
   int picture_height_ = 0;
   std::size_t hold_bytes_ = EntityList::kHoldBytes;
-  std::string hold_folder_;
 };
 
 }  // namespace usina::draw

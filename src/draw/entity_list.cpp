@@ -1,15 +1,11 @@
 #include "draw/entity_list.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <utility>
 
 #include <fmt/format.h>
-
-#include "core/temporary_file.hpp"
 
 namespace usina::draw {
 namespace {
@@ -77,30 +73,23 @@ class Encoder {
   std::vector<char>& out_;
 };
 
-// Writes all of `bytes` at `offset`; false, errno set, when it could not.
-bool write_all(int fd, const std::vector<char>& bytes, std::uint64_t offset) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n =
-        ::pwrite(fd, bytes.data() + done, bytes.size() - done, static_cast<off_t>(offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 }  // namespace
 
 EntityList::EntityList(std::size_t hold_bytes, std::string folder)
-    : hold_bytes_(hold_bytes), folder_(std::move(folder)) {}
+    : hold_bytes_(hold_bytes),
+      own_file_(std::make_unique<SpillFile>(std::move(folder))),
+      file_(own_file_.get()) {
+  file_->hold_limit = hold_bytes;
+}
+
+EntityList::EntityList(std::size_t hold_bytes, SpillFile& file)
+    : hold_bytes_(hold_bytes), file_(&file) {}
 
 EntityList::EntityList(EntityList&& other) noexcept
     : hold_bytes_(other.hold_bytes_),
-      folder_(std::move(other.folder_)),
-      fd_(std::exchange(other.fd_, -1)),
-      spill_failed_(other.spill_failed_),
-      file_bytes_(std::exchange(other.file_bytes_, 0)),
+      own_file_(std::move(other.own_file_)),
+      file_(std::exchange(other.file_, nullptr)),
+      chunks_(std::move(other.chunks_)),
       spilled_(std::exchange(other.spilled_, 0)),
       held_(std::move(other.held_)),
       held_bytes_(std::exchange(other.held_bytes_, 0)),
@@ -108,12 +97,11 @@ EntityList::EntityList(EntityList&& other) noexcept
 
 EntityList& EntityList::operator=(EntityList&& other) noexcept {
   if (this == &other) return *this;
-  close_file();
+  let_go_of_held();
   hold_bytes_ = other.hold_bytes_;
-  folder_ = std::move(other.folder_);
-  fd_ = std::exchange(other.fd_, -1);
-  spill_failed_ = other.spill_failed_;
-  file_bytes_ = std::exchange(other.file_bytes_, 0);
+  own_file_ = std::move(other.own_file_);
+  file_ = std::exchange(other.file_, nullptr);
+  chunks_ = std::move(other.chunks_);
   spilled_ = std::exchange(other.spilled_, 0);
   held_ = std::move(other.held_);
   held_bytes_ = std::exchange(other.held_bytes_, 0);
@@ -122,38 +110,43 @@ EntityList& EntityList::operator=(EntityList&& other) noexcept {
 }
 
 EntityList::~EntityList() {
-  close_file();
+  let_go_of_held();
 }
 
-void EntityList::close_file() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
+// The drawing's count of held bytes no longer counts this list's.
+void EntityList::let_go_of_held() {
+  if (file_ != nullptr) file_->held -= held_bytes_;
+  held_bytes_ = 0;
 }
 
 void EntityList::push_back(Entity e) {
-  held_bytes_ += bytes_of(e);
+  const std::size_t bytes = bytes_of(e);
+  held_bytes_ += bytes;
+  file_->held += bytes;
   held_.push_back(std::move(e));
-  if (held_bytes_ > hold_bytes_ && held_.size() > 1 && !spill_failed_) spill();
+  if (held_.size() > 1 && !file_->failed() &&
+      (held_bytes_ > hold_bytes_ ||
+       (file_->held > file_->hold_limit && held_bytes_ >= kLeastSpill)))
+    spill();
 }
 
-// All held entities but the last go to the file. Nothing is dropped from
-// memory until it is written; a file that cannot be made or written is
-// not tried again (spill_failed_): the rest of the drawing stays in memory.
+// All held entities but the last go to the file, as one chunk. Nothing is
+// dropped from memory until it is written; a file that cannot be made or
+// written is not tried again: the rest of the drawing stays in memory.
 void EntityList::spill() {
-  if (fd_ < 0) fd_ = core::open_unnamed_file(folder_.empty() ? core::temporary_folder() : folder_);
   std::vector<char> bytes;
   bytes.reserve(held_bytes_);
   Encoder encode(bytes);
   for (std::size_t i = 0; i + 1 < held_.size(); ++i)
     std::visit(encode, held_[i]);
-  if (fd_ < 0 || !write_all(fd_, bytes, file_bytes_)) {
-    spill_failed_ = true;
-    return;
-  }
-  file_bytes_ += bytes.size();
+  const auto offset = file_->append(bytes);
+  if (!offset) return;
+  chunks_.push_back({*offset, bytes.size()});
   spilled_ += held_.size() - 1;
   held_.erase(held_.begin(), held_.end() - 1);
-  held_bytes_ = bytes_of(held_.back());
+  const std::size_t left = bytes_of(held_.back());
+  file_->held -= held_bytes_ - left;
+  held_bytes_ = left;
 }
 
 EntityList::Cursor EntityList::begin() const {
@@ -168,8 +161,8 @@ std::vector<Entity> EntityList::to_vector() const {
   return out;
 }
 
-EntityList::Cursor::Cursor(const EntityList& list)
-    : list_(&list), file_end_(list.file_bytes_), in_file_(list.spilled_) {
+EntityList::Cursor::Cursor(const EntityList& list) : list_(&list), in_file_(list.spilled_) {
+  list.read_error_.clear();
   next();
 }
 
@@ -191,7 +184,7 @@ void EntityList::Cursor::next() {
 void EntityList::Cursor::fail(int error) {
   list_->read_error_ = fmt::format(
       "the drawing's entities could not be read back from their temporary file in {}: {}",
-      list_->folder_.empty() ? core::temporary_folder() : list_->folder_, std::strerror(error));
+      list_->file_->folder(), std::strerror(error));
   in_file_ = 0;
   held_index_ = list_->held_.size();
   where_ = Where::Done;
@@ -200,6 +193,12 @@ void EntityList::Cursor::fail(int error) {
 // 0, or the errno of why the next entity could not be read; a tag or a
 // count the list never wrote is EIO (the file was changed from outside).
 int EntityList::Cursor::decode_next() {
+  if (at_ == buffer_.size() && offset_ == chunk_end_) {  // the next chunk
+    if (next_chunk_ == list_->chunks_.size()) return EIO;
+    const Chunk& c = list_->chunks_[next_chunk_++];
+    offset_ = c.offset;
+    chunk_end_ = c.offset + c.bytes;
+  }
   if (const int error = fill(1); error != 0) return error;
   const char tag = buffer_[at_++];
   switch (tag) {
@@ -227,7 +226,7 @@ int EntityList::Cursor::decode_polyline(bool closed) {
   if (const int error = fill(sizeof n); error != 0) return error;
   std::memcpy(&n, buffer_.data() + at_, sizeof n);
   at_ += sizeof n;
-  if (n > (file_end_ - offset_ + (buffer_.size() - at_)) / sizeof(Vec2)) return EIO;
+  if (n > (chunk_end_ - offset_ + (buffer_.size() - at_)) / sizeof(Vec2)) return EIO;
   if (const int error = fill(static_cast<std::size_t>(n) * sizeof(Vec2)); error != 0) return error;
   Polyline p{std::vector<Vec2>(static_cast<std::size_t>(n)), closed};
   for (Vec2& v : p.points)
@@ -243,29 +242,22 @@ double EntityList::Cursor::number() {
   return d;
 }
 
-// Keeps the unread bytes, then reads pieces of the file after them until
-// `n` are there: 0, or the errno of a failed read (EIO when the file ends
-// before, cut short from outside).
+// Keeps the unread bytes, then reads pieces of the chunk after them until
+// `n` are there: 0, or the errno of a failed read (EIO when the chunk ends
+// before: an entity never spans two).
 int EntityList::Cursor::fill(std::size_t n) {
-  std::size_t have = buffer_.size() - at_;
+  const std::size_t have = buffer_.size() - at_;
   if (have >= n) return 0;
+  const std::uint64_t left = chunk_end_ - offset_;
+  if (left < n - have) return EIO;
+  const auto want =
+      static_cast<std::size_t>(std::min<std::uint64_t>(left, std::max(kReadPiece, n - have)));
   buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(at_));
   at_ = 0;
-  while (have < n) {
-    const std::uint64_t left = file_end_ - offset_;
-    if (left == 0) return EIO;
-    const std::size_t want =
-        static_cast<std::size_t>(std::min<std::uint64_t>(left, std::max(kReadPiece, n - have)));
-    buffer_.resize(have + want);
-    const ssize_t got =
-        ::pread(list_->fd_, buffer_.data() + have, want, static_cast<off_t>(offset_));
-    buffer_.resize(have + static_cast<std::size_t>(std::max<ssize_t>(got, 0)));
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) return errno;
-    if (got == 0) return EIO;
-    have += static_cast<std::size_t>(got);
-    offset_ += static_cast<std::uint64_t>(got);
-  }
+  buffer_.resize(have + want);
+  if (const int error = list_->file_->read(buffer_.data() + have, want, offset_); error != 0)
+    return error;
+  offset_ += want;
   return 0;
 }
 

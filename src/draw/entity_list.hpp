@@ -2,20 +2,23 @@
 // (issue 19: the 10,000,000-block spiral held 28 MB of entities until the
 // writers ran, because a picture's scale needs the bounds of all of them).
 // The newest are held in memory, for the drawing lengthens its last line;
-// once they pass `hold_bytes`, all but the last go in a compact binary form
-// to an unnamed temporary file (core/temporary_file.hpp), and the writers
-// read them back in order. Where no temporary file can be made or written
-// (a full or read-only folder) the entities stay in memory: the same
-// drawing, only bigger.
+// once they pass `hold_bytes`, or all the drawing's lists together pass the
+// SpillFile's limit, all but the last go in a compact binary form to the
+// drawing's unnamed temporary file (spill_file.hpp), and the writers read
+// them back in order. Where no temporary file can be made or written (a
+// full or read-only folder) the entities stay in memory: the same drawing,
+// only bigger.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "draw/entity.hpp"
+#include "draw/spill_file.hpp"
 
 namespace usina::draw {
 
@@ -26,8 +29,14 @@ class EntityList {
   // 6.4 MB.
   static constexpr std::size_t kHoldBytes = std::size_t{64} << 10;
 
-  // `folder`: where the temporary file goes; empty, $TMPDIR or /tmp.
+  // Past the drawing's limit, a list spills when it holds this much or more:
+  // a write a hundred lines or so, however many layers share the file.
+  static constexpr std::size_t kLeastSpill = std::size_t{4} << 10;
+
+  // A list of its own file (in `folder`; empty, $TMPDIR or /tmp).
   explicit EntityList(std::size_t hold_bytes = kHoldBytes, std::string folder = {});
+  // A list of the drawing's file, which outlives it.
+  EntityList(std::size_t hold_bytes, SpillFile& file);
   EntityList(EntityList&& other) noexcept;
   EntityList& operator=(EntityList&& other) noexcept;
   EntityList(const EntityList&) = delete;
@@ -61,18 +70,26 @@ class EntityList {
   // Every entity, in a vector: for small lists (tests).
   std::vector<Entity> to_vector() const;
 
-  // Why a cursor ended before the last entity; empty when none did.
+  // Why the last cursor begun ended before the last entity; empty when it
+  // did not.
   const std::string& read_error() const { return read_error_; }
 
  private:
+  // Entities in the file, written at one go.
+  struct Chunk {
+    std::uint64_t offset = 0;
+    std::uint64_t bytes = 0;
+  };
+
   void spill();
-  void close_file();
+  void let_go_of_held();
 
   std::size_t hold_bytes_;
-  std::string folder_;
-  int fd_ = -1;
-  bool spill_failed_ = false;
-  std::uint64_t file_bytes_ = 0;
+  // Not a shared_ptr: its atomic count would keep these lists out of the
+  // raster module (a shared object built from position-dependent code).
+  std::unique_ptr<SpillFile> own_file_;
+  SpillFile* file_;
+  std::vector<Chunk> chunks_;
   std::size_t spilled_ = 0;
   std::vector<Entity> held_;
   std::size_t held_bytes_ = 0;
@@ -114,8 +131,9 @@ class EntityList::Cursor {
   double number();
 
   const EntityList* list_;
-  std::uint64_t file_end_;    // the file's bytes when the cursor began
-  std::uint64_t offset_ = 0;  // the next byte of the file to read
+  std::size_t next_chunk_ = 0;
+  std::uint64_t offset_ = 0;     // the next byte of the file to read
+  std::uint64_t chunk_end_ = 0;  // where the chunk being read ends
   std::vector<char> buffer_;
   std::size_t at_ = 0;          // the next unread byte of the buffer
   std::size_t in_file_;         // entities still to read from the file
